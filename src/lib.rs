@@ -1,0 +1,11 @@
+//! # lncert — proven answers about curves with linear normals
+//!
+//! lncert implements the constructions and tests of four papers on planar curves
+//! with linear normals (LN curves) as kernels written once and run in three
+//! arithmetics: exact rationals, certified intervals and `f64`. See the
+//! [`scalar`] module for the design and [`ln`] for the propositions.
+
+pub mod curve;
+pub mod ln;
+pub mod poly;
+pub mod scalar;

@@ -1,0 +1,247 @@
+//! Exact rationals (`BigRational`): parsing decimal and fraction literals exactly,
+//! exact conversion from `f64`, and the [`Scalar`] impl.
+
+use super::{Scalar, Sign};
+use num_bigint::BigInt;
+use num_traits::{Signed, ToPrimitive, Zero};
+
+/// Exact rational numbers, the ground truth of every decision.
+pub type Rational = num_rational::BigRational;
+
+impl Scalar for Rational {
+    const KIND: &'static str = "rational";
+    const EXACT: bool = true;
+    fn from_rational(r: &Rational) -> Self {
+        r.clone()
+    }
+    fn from_i64(n: i64) -> Self {
+        Rational::from_integer(BigInt::from(n))
+    }
+    fn sign(&self) -> Sign {
+        if self.is_zero() {
+            Sign::Zero
+        } else if self.is_positive() {
+            Sign::Positive
+        } else {
+            Sign::Negative
+        }
+    }
+    fn recip(&self) -> Option<Self> {
+        if self.is_zero() {
+            None
+        } else {
+            Some(num_traits::Inv::inv(self.clone()))
+        }
+    }
+    fn approx(&self) -> f64 {
+        rational_to_f64_nearest(self)
+    }
+}
+
+/// Why a number literal was rejected.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("cannot read {input:?} as an exact number: {reason}")]
+pub struct ParseNumberError {
+    /// The text as given.
+    pub input: String,
+    /// What is wrong with it.
+    pub reason: &'static str,
+}
+
+/// Largest decimal exponent accepted (`1e100000` would allocate a huge integer).
+const MAX_EXPONENT: i64 = 4000;
+
+/// Reads a decimal (`-0.95`, `1.5e-3`) or fraction (`1/3`, `-7/6`) literal
+/// *exactly*: `0.95` is `19/20`, never the nearest float.
+///
+/// # Examples
+/// ```
+/// use lncert::scalar::{parse_rational, rational_to_string};
+/// assert_eq!(rational_to_string(&parse_rational("0.95").unwrap()), "19/20");
+/// assert_eq!(rational_to_string(&parse_rational("-1/3").unwrap()), "-1/3");
+/// assert_eq!(rational_to_string(&parse_rational("2.5e-1").unwrap()), "1/4");
+/// assert!(parse_rational("NaN").is_err());
+/// assert!(parse_rational("1/0").is_err());
+/// ```
+pub fn parse_rational(text: &str) -> Result<Rational, ParseNumberError> {
+    let err = |reason| ParseNumberError { input: text.to_string(), reason };
+    let s = text.trim();
+    if s.is_empty() {
+        return Err(err("empty"));
+    }
+    if let Some((num, den)) = s.split_once('/') {
+        let n = parse_decimal(num.trim()).map_err(err)?;
+        let d = parse_decimal(den.trim()).map_err(err)?;
+        if d.is_zero() {
+            return Err(err("zero denominator"));
+        }
+        return Ok(n / d);
+    }
+    parse_decimal(s).map_err(err)
+}
+
+fn parse_decimal(s: &str) -> Result<Rational, &'static str> {
+    let (neg, body) = match s.as_bytes().first() {
+        Some(b'-') => (true, &s[1..]),
+        Some(b'+') => (false, &s[1..]),
+        Some(_) => (false, s),
+        None => return Err("empty"),
+    };
+    let (mantissa, exp) = match body.find(['e', 'E']) {
+        Some(i) => {
+            let e: i64 = body[i + 1..].parse().map_err(|_| "malformed exponent")?;
+            (&body[..i], e)
+        }
+        None => (body, 0),
+    };
+    let (int_part, frac_part) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    if int_part.is_empty() && frac_part.is_empty() {
+        return Err("no digits");
+    }
+    if !int_part.bytes().chain(frac_part.bytes()).all(|b| b.is_ascii_digit()) {
+        return Err("not a finite decimal or fraction (digits, '.', 'e', '/' only)");
+    }
+    let digits = format!("{int_part}{frac_part}");
+    let scale = exp - frac_part.len() as i64;
+    if scale.abs() > MAX_EXPONENT {
+        return Err("exponent out of range (|e| > 4000)");
+    }
+    let mut value = Rational::from_integer(digits.parse::<BigInt>().map_err(|_| "no digits")?);
+    let ten = BigInt::from(10u32);
+    let pow = num_traits::pow(ten, scale.unsigned_abs() as usize);
+    if scale >= 0 {
+        value *= Rational::from_integer(pow);
+    } else {
+        value /= Rational::from_integer(pow);
+    }
+    Ok(if neg { -value } else { value })
+}
+
+/// The exact rational value of a finite float; `None` for NaN and infinities.
+///
+/// # Examples
+/// ```
+/// use lncert::scalar::{rational_from_f64, rational_to_string};
+/// assert_eq!(rational_to_string(&rational_from_f64(0.75).unwrap()), "3/4");
+/// assert!(rational_from_f64(f64::NAN).is_none());
+/// ```
+pub fn rational_from_f64(x: f64) -> Option<Rational> {
+    if x.is_finite() {
+        Rational::from_float(x)
+    } else {
+        None
+    }
+}
+
+/// `"p/q"` (or `"p"` for integers), the CLI's and JSON's exact format.
+pub fn rational_to_string(r: &Rational) -> String {
+    r.to_string()
+}
+
+/// Nearest float (ties to even) of a rational; `±inf` beyond the float range.
+pub(crate) fn rational_to_f64_nearest(r: &Rational) -> f64 {
+    let (lo, hi) = rational_to_f64_bracket(r);
+    if lo == hi {
+        return lo;
+    }
+    // Pick the nearer end exactly.
+    match (rational_from_f64(lo), rational_from_f64(hi)) {
+        (Some(l), Some(h)) => {
+            let dl = r - &l;
+            let dh = &h - r;
+            if dl < dh || (dl == dh && lo.to_bits() % 2 == 0) {
+                lo
+            } else {
+                hi
+            }
+        }
+        (None, _) => hi,
+        (_, None) => lo,
+    }
+}
+
+/// Floats `lo <= r <= hi` with `lo == hi` iff `r` is a float; adjacent otherwise.
+/// Outside the float range the bracket ends at `±inf`.
+pub(crate) fn rational_to_f64_bracket(r: &Rational) -> (f64, f64) {
+    let guess = approx_quotient(r);
+    if !guess.is_finite() {
+        return if r.is_negative() {
+            (f64::NEG_INFINITY, -f64::MAX)
+        } else {
+            (f64::MAX, f64::INFINITY)
+        };
+    }
+    let mut lo = guess;
+    // Walk down until lo <= r, then up until the next float exceeds r.
+    while rational_from_f64(lo).is_some_and(|v| &v > r) {
+        lo = lo.next_down();
+    }
+    loop {
+        let nx = lo.next_up();
+        match rational_from_f64(nx) {
+            Some(v) if &v <= r => lo = nx,
+            _ => break,
+        }
+    }
+    if rational_from_f64(lo).is_some_and(|v| &v == r) {
+        (lo, lo)
+    } else {
+        (lo, lo.next_up())
+    }
+}
+
+/// A float close to `r` (within a few ulps) without overflow on huge numerators.
+fn approx_quotient(r: &Rational) -> f64 {
+    let (n, d) = (r.numer(), r.denom());
+    let nb = n.bits() as i64;
+    let db = d.bits() as i64;
+    // Shift both to ~64 significant bits, then scale by 2^(shift difference).
+    let sn = (nb - 64).max(0);
+    let sd = (db - 64).max(0);
+    let nf = (n >> sn as usize).to_f64().unwrap_or(f64::NAN);
+    let df = (d >> sd as usize).to_f64().unwrap_or(f64::NAN);
+    let e = sn - sd;
+    let q = nf / df;
+    if e > 2100 {
+        return if q == 0.0 { 0.0 } else { q.signum() * f64::INFINITY };
+    }
+    if e < -2200 {
+        return 0.0 * q.signum();
+    }
+    // Apply 2^e in two steps to avoid intermediate overflow/underflow.
+    let half = e / 2;
+    q * 2f64.powi(half as i32) * 2f64.powi((e - half) as i32)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bracket_is_tight_and_correct() {
+        for s in ["1/3", "-1/3", "0.1", "1e-320", "123456789012345678901234567890/7", "-2/3"] {
+            let r = parse_rational(s).unwrap();
+            let (lo, hi) = rational_to_f64_bracket(&r);
+            assert!(rational_from_f64(lo).unwrap() <= r, "{s}");
+            assert!(rational_from_f64(hi).unwrap() >= r, "{s}");
+            assert!(lo == hi || lo.next_up() == hi, "{s}");
+        }
+        let big = parse_rational("1e400").unwrap();
+        assert_eq!(rational_to_f64_bracket(&big), (f64::MAX, f64::INFINITY));
+    }
+
+    #[test]
+    fn nearest_matches_std_parse_for_decimals() {
+        for s in ["0.1", "0.95", "-2.5e-3", "1e22", "3.14159", "7e-310"] {
+            let r = parse_rational(s).unwrap();
+            assert_eq!(rational_to_f64_nearest(&r), s.parse::<f64>().unwrap(), "{s}");
+        }
+    }
+
+    #[test]
+    fn parse_rejects_garbage() {
+        for s in ["", "-", "1/", "/2", "1.2.3", "inf", "1e", "0x10", "1/0", "1e99999", "--1"] {
+            assert!(parse_rational(s).is_err(), "{s:?} should be rejected");
+        }
+    }
+}
