@@ -9,3 +9,4 @@ pub mod curve;
 pub mod ln;
 pub mod poly;
 pub mod scalar;
+pub mod reproduce;

@@ -1,1 +1,7 @@
-//! Curves.
+//! Planar vectors and Bézier curves of any degree, generic over the scalar.
+
+mod bezier;
+mod vec2;
+
+pub use bezier::{bernstein_product, Bezier};
+pub use vec2::V2;

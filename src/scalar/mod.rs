@@ -17,11 +17,13 @@ mod filter;
 mod float;
 mod interval;
 mod rational;
+mod surd;
 
 pub use filter::{filter_stats, filtered, reset_filter_stats, Decision, FilterStats, Predicate};
 pub use interval::{
     interval_from_rational, interval_to_json, sin_cos_enclosure, Interval, IntervalExt,
 };
+pub use surd::Surd;
 pub use rational::{parse_rational, rational_from_f64, rational_to_string, ParseNumberError, Rational};
 
 use std::fmt::Debug;
@@ -152,4 +154,34 @@ pub trait ScalarSqrt: Scalar {
 /// ```
 pub fn frac<S: Scalar>(p: i64, q: i64) -> S {
     S::from_rational(&Rational::new(p.into(), q.into()))
+}
+
+/// The exact sign of `a + b·sqrt(c)` (`c >= 0`) from signs and squares only:
+/// no square root is taken, so with rationals the answer is exact. Returns
+/// `Unknown` if `c` is (or may be) negative or a sign cannot be decided.
+///
+/// # Examples
+/// ```
+/// use lncert::scalar::{frac, sign_a_plus_b_sqrt_c, Rational, Sign};
+/// // 3 - 2·sqrt(2) > 0 because 9 > 8.
+/// let s = sign_a_plus_b_sqrt_c::<Rational>(&frac(3, 1), &frac(-2, 1), &frac(2, 1));
+/// assert_eq!(s, Sign::Positive);
+/// ```
+pub fn sign_a_plus_b_sqrt_c<S: Scalar>(a: &S, b: &S, c: &S) -> Sign {
+    let sc = c.sign();
+    if sc == Sign::Negative || sc == Sign::Unknown {
+        return Sign::Unknown;
+    }
+    let (sa, sb) = (a.sign(), if sc == Sign::Zero { Sign::Zero } else { b.sign() });
+    match (sa, sb) {
+        (Sign::Unknown, _) | (_, Sign::Unknown) => Sign::Unknown,
+        (x, Sign::Zero) => x,
+        (Sign::Zero, y) => y,
+        (x, y) if x == y => x,
+        (x, y) => match (a.sqr() - b.sqr() * c.clone()).sign() {
+            Sign::Positive => x,
+            Sign::Negative => y,
+            s => s,
+        },
+    }
 }

@@ -1,0 +1,290 @@
+//! Bézier curves of any degree: evaluation, hodograph, subdivision, restriction,
+//! degree elevation, and products of Bernstein polynomials.
+
+use super::V2;
+use crate::poly::{binomial, Poly};
+use crate::scalar::{Rational, Scalar};
+
+/// A planar Bézier curve `b(t) = sum_i p_i B^n_i(t)`, `t in [0, 1]`.
+///
+/// # Examples
+/// ```
+/// use lncert::curve::{Bezier, V2};
+/// let c = Bezier::new(vec![V2::new(0.0, 0.0), V2::new(1.0, 2.0), V2::new(2.0, 0.0)]);
+/// assert_eq!(c.eval(&0.5), V2::new(1.0, 1.0));
+/// assert_eq!(c.hodograph().points()[0], V2::new(2.0, 4.0));
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Bezier<S> {
+    pts: Vec<V2<S>>,
+}
+
+impl<S: Scalar> Bezier<S> {
+    /// From control points (at least one).
+    pub fn new(pts: Vec<V2<S>>) -> Self {
+        assert!(!pts.is_empty(), "a Bézier curve needs at least one control point");
+        Bezier { pts }
+    }
+    /// Converts exact control points into `S`.
+    pub fn from_rational(c: &Bezier<Rational>) -> Self {
+        Bezier { pts: c.pts.iter().map(V2::from_rational).collect() }
+    }
+    pub fn points(&self) -> &[V2<S>] {
+        &self.pts
+    }
+    pub fn degree(&self) -> usize {
+        self.pts.len() - 1
+    }
+    /// de Casteljau evaluation.
+    pub fn eval(&self, t: &S) -> V2<S> {
+        let mut p = self.pts.clone();
+        let n = p.len();
+        for r in 1..n {
+            for i in 0..n - r {
+                p[i] = p[i].lerp(&p[i + 1], t);
+            }
+        }
+        p.swap_remove(0)
+    }
+    /// The derivative curve `b'(t)`, of degree `n - 1` (a single zero point for
+    /// a constant curve).
+    pub fn hodograph(&self) -> Bezier<S> {
+        let n = self.degree();
+        if n == 0 {
+            return Bezier { pts: vec![V2::zero()] };
+        }
+        let k = S::from_i64(n as i64);
+        Bezier { pts: self.pts.windows(2).map(|w| w[1].sub(&w[0]).scale(&k)).collect() }
+    }
+    /// Splits at `t` into the pieces over `[0, t]` and `[t, 1]`, each
+    /// reparametrised to `[0, 1]`.
+    pub fn split(&self, t: &S) -> (Bezier<S>, Bezier<S>) {
+        let mut p = self.pts.clone();
+        let n = p.len();
+        let mut left = Vec::with_capacity(n);
+        let mut right = Vec::with_capacity(n);
+        left.push(p[0].clone());
+        right.push(p[n - 1].clone());
+        for r in 1..n {
+            for i in 0..n - r {
+                p[i] = p[i].lerp(&p[i + 1], t);
+            }
+            left.push(p[0].clone());
+            right.push(p[n - 1 - r].clone());
+        }
+        right.reverse();
+        (Bezier { pts: left }, Bezier { pts: right })
+    }
+    /// The piece over `[a, b]` reparametrised to `[0, 1]` (`a > b` reverses).
+    pub fn restrict(&self, a: &S, b: &S) -> Bezier<S> {
+        // Blossom: control point i = blossom(a^(n-i), b^i).
+        let n = self.degree();
+        let pts = (0..=n)
+            .map(|i| {
+                let mut p = self.pts.clone();
+                for r in 0..n {
+                    let u = if r < n - i { a } else { b };
+                    for j in 0..n - r {
+                        p[j] = p[j].lerp(&p[j + 1], u);
+                    }
+                }
+                p.swap_remove(0)
+            })
+            .collect();
+        Bezier { pts }
+    }
+    /// The same curve written with one more control point.
+    pub fn elevate(&self) -> Bezier<S> {
+        let n = self.degree();
+        let n1 = S::from_i64(n as i64 + 1);
+        let mut pts = vec![self.pts[0].clone()];
+        for i in 1..=n {
+            let a = S::from_i64(i as i64).div(&n1).expect("n+1 > 0");
+            pts.push(self.pts[i - 1].lerp(&self.pts[i], &(S::one() - a)));
+        }
+        pts.push(self.pts[n].clone());
+        Bezier { pts }
+    }
+    /// Bernstein coefficients of the x and y coordinates.
+    pub fn coords(&self) -> (Vec<S>, Vec<S>) {
+        (self.pts.iter().map(|p| p.x.clone()).collect(), self.pts.iter().map(|p| p.y.clone()).collect())
+    }
+    /// Power-form coordinate polynomials `(x(t), y(t))`.
+    pub fn power_coords(&self) -> (Poly<S>, Poly<S>) {
+        let (x, y) = self.coords();
+        (Poly::from_bernstein(&x), Poly::from_bernstein(&y))
+    }
+    /// Bernstein coefficients (degree `2n - 3`) of `x' y'' - y' x''`, whose
+    /// sign is the sign of the curvature.
+    pub fn cross_hodograph(&self) -> Vec<S> {
+        let d1 = self.hodograph();
+        let d2 = d1.hodograph();
+        let (x1, y1) = d1.coords();
+        let (x2, y2) = d2.coords();
+        let a = bernstein_product(&x1, &y2);
+        let b = bernstein_product(&y1, &x2);
+        a.into_iter().zip(b).map(|(p, q)| p - q).collect()
+    }
+    /// Maps every coordinate.
+    pub fn map<T: Scalar>(&self, f: impl Fn(&S) -> T + Copy) -> Bezier<T> {
+        Bezier { pts: self.pts.iter().map(|p| p.map(f)).collect() }
+    }
+}
+
+impl Bezier<f64> {
+    /// Evaluation with glam vectors (the f64 fast path for hot loops).
+    pub fn eval_fast(&self, t: f64) -> glam::DVec2 {
+        let mut buf: smallvec_like::Buf = smallvec_like::Buf::new(&self.pts);
+        let n = buf.len();
+        for r in 1..n {
+            for i in 0..n - r {
+                let (a, b) = (buf.get(i), buf.get(i + 1));
+                buf.set(i, a + (b - a) * t);
+            }
+        }
+        buf.get(0)
+    }
+}
+
+/// A small fixed buffer for the fast path (no allocation up to degree 15).
+mod smallvec_like {
+    use super::V2;
+    use glam::DVec2;
+    pub enum Buf {
+        Inline([DVec2; 16], usize),
+        Heap(Vec<DVec2>),
+    }
+    impl Buf {
+        pub fn new(p: &[V2<f64>]) -> Buf {
+            if p.len() <= 16 {
+                let mut a = [DVec2::ZERO; 16];
+                for (d, s) in a.iter_mut().zip(p) {
+                    *d = s.to_dvec2();
+                }
+                Buf::Inline(a, p.len())
+            } else {
+                Buf::Heap(p.iter().map(|v| v.to_dvec2()).collect())
+            }
+        }
+        pub fn len(&self) -> usize {
+            match self {
+                Buf::Inline(_, n) => *n,
+                Buf::Heap(v) => v.len(),
+            }
+        }
+        pub fn get(&self, i: usize) -> DVec2 {
+            match self {
+                Buf::Inline(a, _) => a[i],
+                Buf::Heap(v) => v[i],
+            }
+        }
+        pub fn set(&mut self, i: usize, x: DVec2) {
+            match self {
+                Buf::Inline(a, _) => a[i] = x,
+                Buf::Heap(v) => v[i] = x,
+            }
+        }
+    }
+}
+
+/// Bernstein coefficients of the product of two Bernstein polynomials of
+/// degrees `m` and `n` (degree `m + n`):
+/// `c_k = sum_{i+j=k} C(m,i) C(n,j) / C(m+n,k) a_i b_j`.
+///
+/// # Examples
+/// ```
+/// use lncert::curve::bernstein_product;
+/// // (1 - t) * t = B^2_1 / 2
+/// assert_eq!(bernstein_product(&[1.0, 0.0], &[0.0, 1.0]), vec![0.0, 0.5, 0.0]);
+/// ```
+pub fn bernstein_product<S: Scalar>(a: &[S], b: &[S]) -> Vec<S> {
+    if a.is_empty() || b.is_empty() {
+        return Vec::new();
+    }
+    let (m, n) = (a.len() - 1, b.len() - 1);
+    (0..=m + n)
+        .map(|k| {
+            let mut s = S::zero();
+            for i in k.saturating_sub(n)..=k.min(m) {
+                let j = k - i;
+                let w = Rational::new(
+                    (binomial(m, i) * binomial(n, j)).into(),
+                    binomial(m + n, k).into(),
+                );
+                s = s + S::from_rational(&w) * a[i].clone() * b[j].clone();
+            }
+            s
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scalar::parse_rational;
+
+    fn q(s: &str) -> Rational {
+        parse_rational(s).unwrap()
+    }
+    fn pt(x: &str, y: &str) -> V2<Rational> {
+        V2::new(q(x), q(y))
+    }
+    fn cubic() -> Bezier<Rational> {
+        Bezier::new(vec![pt("-0.95", "0.7"), pt("-0.3", "0.5"), pt("0.3", "-2.5"), pt("0.9", "-0.2")])
+    }
+
+    #[test]
+    fn split_pieces_agree_with_the_curve() {
+        let c = cubic();
+        let t = q("2/7");
+        let (l, r) = c.split(&t);
+        for s in ["0", "1/3", "1/2", "1"] {
+            let s = q(s);
+            assert_eq!(l.eval(&s), c.eval(&(&t * &s)));
+            assert_eq!(r.eval(&s), c.eval(&(&t + (q("1") - &t) * &s)));
+        }
+    }
+
+    #[test]
+    fn restrict_and_elevate_are_exact() {
+        let c = cubic();
+        let (a, b) = (q("1/5"), q("3/4"));
+        let r = c.restrict(&a, &b);
+        let e = c.elevate();
+        for s in ["0", "1/3", "2/3", "1"] {
+            let s = q(s);
+            assert_eq!(r.eval(&s), c.eval(&(&a + (&b - &a) * &s)));
+            assert_eq!(e.eval(&s), c.eval(&s));
+        }
+    }
+
+    #[test]
+    fn hodograph_matches_power_derivative() {
+        let c = cubic();
+        let (x, y) = c.power_coords();
+        let (hx, hy) = c.hodograph().power_coords();
+        assert_eq!(hx.trimmed(), x.derivative().trimmed());
+        assert_eq!(hy.trimmed(), y.derivative().trimmed());
+    }
+
+    #[test]
+    fn cross_hodograph_matches_power_form() {
+        let c = cubic();
+        let (x, y) = c.power_coords();
+        let (x1, y1, x2, y2) = (x.derivative(), y.derivative(), x.derivative().derivative(), y.derivative().derivative());
+        let direct = x1.mul(&y2).sub(&y1.mul(&x2));
+        let bern = Poly::from_bernstein(&c.cross_hodograph());
+        assert_eq!(bern.trimmed(), direct.trimmed());
+    }
+
+    #[test]
+    fn fast_eval_matches_generic() {
+        let c = cubic().map(|v: &Rational| v.approx());
+        for i in 0..=10 {
+            let t = i as f64 / 10.0;
+            let g = c.eval(&t);
+            let f = c.eval_fast(t);
+            assert!((g.x - f.x).abs() < 1e-15 && (g.y - f.y).abs() < 1e-15);
+        }
+    }
+}

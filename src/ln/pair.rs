@@ -1,0 +1,231 @@
+//! Seed 000 §4: pairs of compatible cubic LN curves with one linear normal map.
+//!
+//! Two frames are *compatible* when their end tangents are parallel:
+//! `∇b0ʳ = c0 ∇b0ˡ`, `∇b1ʳ = c1 ∇b1ˡ` with `c0 c1 > 0`. Both signs occur in the
+//! paper: Fig. 5(a) has `c0, c1 > 0`, Fig. 5(b) has `c0, c1 < 0` (the right curve
+//! runs against the left one, so its normals `R∇b` point the other way; the
+//! Gauss maps agree up to orientation).
+//!
+//! The key quantity `q = λr/λl = c1/c0` is **rational** for rational data, so
+//! Prop 4.2 (`1/4 < q < 4`) and Remark 4.3 (`1/4 <= q <= 4`) are decided
+//! exactly without square roots. With `ρl = κ/λl`, the right curve has
+//! `ρr = κ/λr = ρl/q`; the admissible `ρl` form the open interval
+//! `(1/2, 2) ∩ (q/2, 2q)`.
+
+use super::cubic::{deltas_from_rho, tau_from_delta0, LnFrame, Tau};
+use super::{nonzero, LnError, OpenRange};
+use crate::curve::{Bezier, V2};
+use crate::scalar::{frac, Scalar, ScalarSqrt, Sign};
+
+/// Two compatible frames and their end ratios `c0`, `c1`.
+///
+/// # Examples
+/// ```
+/// use lncert::curve::V2;
+/// use lncert::ln::cubic::LnFrame;
+/// use lncert::ln::pair::CompatiblePair;
+/// use lncert::scalar::{frac, Rational};
+/// let p = |x: i64, y: i64, d: i64| V2::<Rational>::new(frac(x, d), frac(y, d));
+/// // Seed 000 Fig. 5(a).
+/// let l = LnFrame::new(p(5, -2, 2), p(1, 2, 2), p(7, 10, 2)).unwrap();
+/// let r = LnFrame::new(p(15, -24, 6), p(6, -15, 6), p(12, -7, 6)).unwrap();
+/// let pair = CompatiblePair::new(l, r).unwrap();
+/// assert_eq!(pair.ratio(), frac(4, 9)); // λr/λl
+/// assert_eq!(pair.prop_4_2(), Some(true));
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct CompatiblePair<S> {
+    pub left: LnFrame<S>,
+    pub right: LnFrame<S>,
+    /// `∇b0ʳ = c0 ∇b0ˡ`.
+    pub c0: S,
+    /// `∇b1ʳ = c1 ∇b1ˡ`.
+    pub c1: S,
+}
+
+/// How to choose κ inside the admissible interval.
+#[derive(Clone, Debug, PartialEq)]
+pub enum KappaChoice<S> {
+    /// `κ = sqrt(λl λr)`, the paper's choice: `ρl = sqrt(q)` (needs square roots).
+    GeometricMean,
+    /// The midpoint of the admissible `ρl` interval (exact for rational data).
+    Midpoint,
+    /// A given `ρl = κ/λl`, checked against the admissible interval.
+    Rho(S),
+}
+
+/// A pair of LN cubics with one normal map, and their convolution.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LnPair<S> {
+    /// `ρl = κ/λl`.
+    pub rho_left: S,
+    /// `ρr = κ/λr = ρl/q`.
+    pub rho_right: S,
+    pub deltas_left: (S, S),
+    pub deltas_right: (S, S),
+    pub left: Bezier<S>,
+    pub right: Bezier<S>,
+}
+
+/// The convolution `bl + br` of an [`LnPair`]: again an LN cubic (Prop 4.4).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Convolution<S> {
+    pub frame: LnFrame<S>,
+    /// `δ0 = (δ0ˡ + c0 δ0ʳ) / (1 + c0)`, `δ1 = (δ1ˡ + c1 δ1ʳ) / (1 + c1)`.
+    pub deltas: (S, S),
+    pub curve: Bezier<S>,
+}
+
+/// The ratio `c` with `b = c a` for parallel `a, b` (`a ≠ 0`), or an error.
+fn parallel_ratio<S: Scalar>(a: &V2<S>, b: &V2<S>, field: &'static str) -> Result<S, LnError> {
+    match a.cross(b).sign() {
+        Sign::Zero => {}
+        Sign::Unknown => return Err(LnError::Undecided { field }),
+        _ => return Err(LnError::NotCompatible { field, reason: "end tangents are not parallel" }),
+    }
+    let c = b.dot(a).div(&a.norm2()).ok_or(LnError::Undecided { field })?;
+    nonzero(c.sign(), field, "degenerate end tangent")?;
+    Ok(c)
+}
+
+impl<S: Scalar> CompatiblePair<S> {
+    /// Checks compatibility: parallel end tangents with `c0 c1 > 0`.
+    pub fn new(left: LnFrame<S>, right: LnFrame<S>) -> Result<Self, LnError> {
+        let c0 = parallel_ratio(&left.d0(), &right.d0(), "right.bm-right.b0")?;
+        let c1 = parallel_ratio(&left.d1(), &right.d1(), "right.b3-right.bm")?;
+        match c0.sign().mul(c1.sign()) {
+            Sign::Positive => Ok(CompatiblePair { left, right, c0, c1 }),
+            Sign::Unknown => Err(LnError::Undecided { field: "c0*c1" }),
+            _ => Err(LnError::NotCompatible {
+                field: "right",
+                reason: "one end tangent is parallel, the other anti-parallel (Gauss maps differ)",
+            }),
+        }
+    }
+    /// `q = λr/λl = c1/c0` (exact, no square root).
+    pub fn ratio(&self) -> S {
+        self.c1.div(&self.c0).expect("c0 ≠ 0 checked")
+    }
+    /// Prop 4.2: one linear normal map with both curves regular iff `1/4 < q < 4`.
+    pub fn prop_4_2(&self) -> Option<bool> {
+        let q = self.ratio();
+        Some(q.cmp_sign(&frac(1, 4)).is_positive()? && S::from_i64(4).cmp_sign(&q).is_positive()?)
+    }
+    /// Remark 4.3: one *extended* linear normal map (cusps allowed at the end
+    /// points only) iff `1/4 <= q <= 4`.
+    pub fn remark_4_3(&self) -> Option<bool> {
+        let q = self.ratio();
+        Some(!q.cmp_sign(&frac(1, 4)).is_negative()? && !S::from_i64(4).cmp_sign(&q).is_negative()?)
+    }
+    /// The admissible `ρl = κ/λl`: `(1/2, 2) ∩ (q/2, 2q)` (empty iff Prop 4.2 fails).
+    pub fn admissible_rho_left(&self) -> Option<OpenRange<S>> {
+        let q = self.ratio();
+        let half = frac::<S>(1, 2);
+        let lo_q = q.clone() * half.clone();
+        let hi_q = q.scale(2);
+        let lo = if lo_q.cmp_sign(&half).is_positive()? { lo_q } else { half };
+        let hi = if hi_q.cmp_sign(&S::from_i64(2)).is_negative()? { hi_q } else { S::from_i64(2) };
+        Some(OpenRange { lo, hi })
+    }
+    /// Builds the two curves for `ρl`, without checking regularity.
+    pub fn curves_for_rho(&self, rho_left: &S) -> Result<LnPair<S>, LnError> {
+        let rho_right = rho_left.div(&self.ratio()).expect("q ≠ 0");
+        let dl = deltas_from_rho(rho_left)?;
+        let dr = deltas_from_rho(&rho_right)?;
+        Ok(LnPair {
+            left: self.left.cubic(&dl.0, &dl.1),
+            right: self.right.cubic(&dr.0, &dr.1),
+            rho_left: rho_left.clone(),
+            rho_right,
+            deltas_left: dl,
+            deltas_right: dr,
+        })
+    }
+    /// Chooses κ and builds the regular pair; fails if Prop 4.2 does not hold
+    /// or a given `ρl` is not admissible.
+    pub fn ln_pair(&self, choice: &KappaChoice<S>) -> Result<LnPair<S>, LnError>
+    where
+        S: ScalarSqrt,
+    {
+        let rho = match choice {
+            KappaChoice::GeometricMean => self.ratio().sqrt().ok_or(LnError::Undecided { field: "sqrt(q)" })?,
+            _ => return self.ln_pair_exact(choice),
+        };
+        self.ln_pair_exact(&KappaChoice::Rho(rho))
+    }
+    /// As [`Self::ln_pair`] for choices that need no square root (`Midpoint`, `Rho`).
+    pub fn ln_pair_exact(&self, choice: &KappaChoice<S>) -> Result<LnPair<S>, LnError> {
+        let range = self.admissible_rho_left().ok_or(LnError::Undecided { field: "q" })?;
+        if range.is_empty().ok_or(LnError::Undecided { field: "q" })? {
+            return Err(LnError::InvalidParameter {
+                field: "lambda_r/lambda_l",
+                reason: "outside (1/4, 4): no pair of regular LN cubics with one normal map (Prop 4.2)",
+            });
+        }
+        let rho = match choice {
+            KappaChoice::Midpoint => (range.lo.clone() + range.hi.clone()) * frac(1, 2),
+            KappaChoice::Rho(r) => r.clone(),
+            KappaChoice::GeometricMean => {
+                return Err(LnError::InvalidParameter { field: "kappa", reason: "geometric mean needs square roots" })
+            }
+        };
+        if !range.contains(&rho).ok_or(LnError::Undecided { field: "kappa" })? {
+            return Err(LnError::InvalidParameter {
+                field: "kappa",
+                reason: "κ/λl outside the admissible interval (1/2, 2) ∩ (q/2, 2q)",
+            });
+        }
+        self.curves_for_rho(&rho)
+    }
+    /// The convolution `bl + br` (sum of control points) of a pair built from this frame pair.
+    pub fn convolution(&self, pair: &LnPair<S>) -> Result<Convolution<S>, LnError> {
+        let one = S::one();
+        let den0 = one.clone() + self.c0.clone();
+        let den1 = one + self.c1.clone();
+        nonzero(den0.sign(), "c0", "c0 = -1: the convolution's b0 and bm coincide")?;
+        nonzero(den1.sign(), "c1", "c1 = -1: the convolution's bm and b3 coincide")?;
+        let d0 = (pair.deltas_left.0.clone() + self.c0.clone() * pair.deltas_right.0.clone()).div(&den0).expect("checked");
+        let d1 = (pair.deltas_left.1.clone() + self.c1.clone() * pair.deltas_right.1.clone()).div(&den1).expect("checked");
+        let frame = LnFrame::new(
+            self.left.b0.add(&self.right.b0),
+            self.left.bm.add(&self.right.bm),
+            self.left.b3.add(&self.right.b3),
+        )?;
+        let pts = pair.left.points().iter().zip(pair.right.points()).map(|(a, b)| a.add(b)).collect();
+        Ok(Convolution { frame, deltas: (d0, d1), curve: Bezier::new(pts) })
+    }
+}
+
+/// Prop 4.4 **as printed**: the convolution has a cusp in `(0,1)` iff `δ0 ∉ (0,1)`
+/// or `δ1 ∉ (0,1)`. Wrong when `δ0 ∈ {0, 1}` (cusp at an end point): see
+/// [`convolution_has_interior_cusp`] and `proofs/000-prop-4.4.md`.
+pub fn prop_4_4_as_printed<S: Scalar>(deltas: &(S, S)) -> Option<bool> {
+    let inside = |d: &S| -> Option<bool> {
+        Some(d.sign().is_positive()? && S::one().cmp_sign(d).is_positive()?)
+    };
+    Some(!inside(&deltas.0)? || !inside(&deltas.1)?)
+}
+
+/// The engine's (corrected) Prop 4.4: an LN cubic of eq. (1) has a cusp in the
+/// open interval `(0,1)` iff `τ ∈ (0,1)` iff `δ0 ∉ [0,1]` or `δ1 ∉ [0,1]`.
+///
+/// # Examples
+/// ```
+/// use lncert::ln::pair::{convolution_has_interior_cusp, prop_4_4_as_printed};
+/// use lncert::scalar::{frac, Rational};
+/// // δ0 = 0, δ1 = 1 is τ = 0: the cusp is at the end point t = 0, not inside.
+/// let d: (Rational, Rational) = (frac(0, 1), frac(1, 1));
+/// assert_eq!(convolution_has_interior_cusp(&d), Some(false));
+/// assert_eq!(prop_4_4_as_printed(&d), Some(true)); // the printed statement errs here
+/// ```
+pub fn convolution_has_interior_cusp<S: Scalar>(deltas: &(S, S)) -> Option<bool> {
+    let in_closed = |d: &S| -> Option<bool> {
+        Some(!d.sign().is_negative()? && !d.cmp_sign(&S::one()).is_positive()?)
+    };
+    Some(!in_closed(&deltas.0)? || !in_closed(&deltas.1)?)
+}
+
+/// Where the convolution's cusp is: `τ = δ0/(3δ0 - 2)` (eq. (1) inverted).
+pub fn cusp_parameter<S: Scalar>(deltas: &(S, S)) -> Option<Tau<S>> {
+    tau_from_delta0(&deltas.0)
+}
