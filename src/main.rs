@@ -1,1 +1,12 @@
-fn main() {}
+//! The `lncert` command line. Everything lives in [`cli`]; this file only
+//! parses the arguments and exits with the code the command returns
+//! (0 = certified/OK, 1 = refuted/erratum/undecided, 2 = bad input).
+
+mod cli;
+
+use clap::Parser;
+
+fn main() {
+    let args = cli::Cli::parse();
+    std::process::exit(cli::run(args));
+}

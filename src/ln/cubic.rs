@@ -51,6 +51,11 @@ impl<S: Scalar> LnFrame<S> {
             _ => Ok(f),
         }
     }
+    /// Builds a frame without the collinearity check, for symbolic scalars
+    /// (whose signs are unknown). The caller guarantees non-collinearity.
+    pub fn new_unchecked(b0: V2<S>, bm: V2<S>, b3: V2<S>) -> Self {
+        LnFrame { b0, bm, b3 }
+    }
     /// `∇b0 = bm - b0`.
     pub fn d0(&self) -> V2<S> {
         self.bm.sub(&self.b0)
@@ -79,8 +84,8 @@ impl<S: Scalar> LnFrame<S> {
             self.b3.clone(),
         ])
     }
-    /// `(1-t) ∇b0 ... `: the direction field `(3τ-2)∇b0(1-t) + (3τ-1)∇b1 t`
-    /// of seed 000 §3 (the tangent of the curve is parallel to it).
+    /// The direction field `(3τ-2)∇b0(1-t) + (3τ-1)∇b1 t` of seed 000 §3: the
+    /// tangent of the eq. (1) curve is parallel to it.
     pub fn tangent_direction(&self, tau: &S, t: &S) -> V2<S> {
         let a = tau.scale(3) - S::from_i64(2);
         let b = tau.scale(3) - S::one();

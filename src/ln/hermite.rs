@@ -217,14 +217,66 @@ impl<S: Scalar> HermiteData<S> {
     /// Prop 3.2 **as printed**: is `a2` inside the printed interval? Exact, no
     /// square root (`a2 > α0` is decided as the sign of `a + b√D1`).
     pub fn prop_3_2_contains(&self, a2: &S) -> Option<bool> {
+        let case = self.prop_3_2_case()?;
+        if case == A2Case::Empty {
+            return Some(false);
+        }
         let above_a0 = self.cmp_alpha(a2, 0).is_positive()?;
-        let upper = match self.prop_3_2_case()? {
+        let upper = match case {
             A2Case::Empty => return Some(false),
             A2Case::Alpha0Alpha1 => self.cmp_alpha(a2, 1).is_negative()?,
             A2Case::Alpha0Zero => a2.sign().is_negative()?,
             A2Case::Alpha0Alpha2 => a2.cmp_sign(&self.alpha2()).is_negative()?,
         };
         Some(above_a0 && upper)
+    }
+    /// The mirrored data `(-x1, -y1, u)`: the point reflection `K → -K` maps
+    /// `f → -f`, so `a2 → -a2` and `s` is unchanged.
+    fn mirrored(&self) -> HermiteData<S> {
+        HermiteData { x1: -self.x1.clone(), y1: -self.y1.clone(), u: self.u.clone() }
+    }
+    /// The engine's Prop 3.2 (corrected for `x1 < 0`): is the quartic with this
+    /// `a2` nonsingular on `[0, u]`? The printed table assumes `x1 > 0`; for
+    /// `x1 < 0` the intervals are mirrored (`(α1, α0)`, `(0, α0)`, `(α2, α0)`),
+    /// see `proofs/003-prop-3.2.md`. Exact, no square root.
+    ///
+    /// # Examples
+    /// ```
+    /// use lncert::ln::hermite::HermiteData;
+    /// use lncert::scalar::{frac, Rational};
+    /// let h = HermiteData::<Rational>::new(frac(-1, 1), frac(2, 3), frac(11, 4)).unwrap();
+    /// assert_eq!(h.prop_3_2_contains(&frac(4, 7)), Some(false)); // as printed
+    /// assert_eq!(h.nonsingular_a2_contains(&frac(4, 7)), Some(true)); // corrected
+    /// ```
+    pub fn nonsingular_a2_contains(&self, a2: &S) -> Option<bool> {
+        if self.x1.sign().is_positive()? {
+            self.prop_3_2_contains(a2)
+        } else {
+            self.mirrored().prop_3_2_contains(&-a2.clone())
+        }
+    }
+    /// The open `a2` interval of nonsingular quartics (sorted ends; `None` if
+    /// empty or undecided). Certified with intervals, approximate with `f64`.
+    pub fn nonsingular_a2_interval(&self) -> Option<(S, S)>
+    where
+        S: ScalarSqrt,
+    {
+        if !self.x1.sign().is_positive()? {
+            let (lo, hi) = self.mirrored().nonsingular_a2_interval()?;
+            return Some((-hi, -lo));
+        }
+        let (a0, a1) = self.alphas()?;
+        match self.prop_3_2_case()? {
+            A2Case::Empty => None,
+            A2Case::Alpha0Alpha1 => Some((a0, a1)),
+            A2Case::Alpha0Zero => Some((a0, S::zero())),
+            A2Case::Alpha0Alpha2 => Some((a0, self.alpha2())),
+        }
+    }
+    /// The engine's Prop 3.3 (corrected for `x1 < 0` like
+    /// [`Self::nonsingular_a2_contains`]): is the intercept `b` valid for slope `m ∈ (0, u)`?
+    pub fn valid_intercept(&self, m: &S, b: &S) -> Option<bool> {
+        self.nonsingular_a2_contains(&self.a2_from_b(m, b)?)
     }
     /// `b = f(m)` for the quartic with this `a2` (tangent line `m x + y + b = 0`).
     pub fn b_from_a2(&self, m: &S, a2: &S) -> S {

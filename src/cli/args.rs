@@ -1,0 +1,207 @@
+//! Exact parsing of command-line values. Every number goes through
+//! [`parse_rational`] (never through `f64`), and every error names the flag.
+//!
+//! | syntax | example | parser |
+//! |---|---|---|
+//! | number | `0.95`, `-1/3`, `2.5e-1` | [`number`] |
+//! | point `x,y` | `2.5,-1` | [`point`] |
+//! | frame `b0x,b0y;bmx,bmy;b3x,b3y` | `0,0;1,1;2,0` | [`frame`] |
+//! | power coefficients `c0,c1,...` | `0,0,-1,1` | [`coefficients`] |
+//! | cusp parameter τ | `-1`, `3/2`, `inf` | [`tau`] |
+
+use super::CliError;
+use lncert::curve::V2;
+use lncert::ln::cubic::{LnFrame, Tau};
+use lncert::ln::LnError;
+use lncert::poly::Poly;
+use lncert::scalar::{parse_rational, Rational};
+
+/// A bad-input error `--flag: reason`.
+pub fn bad(flag: &str, reason: impl std::fmt::Display) -> CliError {
+    CliError(format!("{flag}: {reason}"))
+}
+
+/// An [`LnError`] reported against the command-line flag that produced it.
+/// The library's own field name is kept in parentheses when it adds information.
+pub fn ln_error(flag: &str, e: LnError) -> CliError {
+    let (field, reason) = match &e {
+        LnError::Collinear { field } => (
+            *field,
+            "points b0, bm, b3 are collinear or coincide (cross product is 0)".to_string(),
+        ),
+        LnError::InvalidParameter { field, reason } => (*field, reason.to_string()),
+        LnError::NotCompatible { field, reason } => {
+            (*field, format!("curves are not compatible: {reason}"))
+        }
+        LnError::Undecided { field } => (
+            *field,
+            "undecided in interval arithmetic (enclosure straddles a boundary)".to_string(),
+        ),
+    };
+    if flag.trim_start_matches('-') == field || matches!(e, LnError::Collinear { .. }) {
+        bad(flag, reason)
+    } else {
+        bad(flag, format!("{reason} ({field})"))
+    }
+}
+
+/// An [`LnError`] whose library field is itself a flag name (`x1`, `u`, `tau`, ...).
+pub fn ln_error_own_field(e: LnError) -> CliError {
+    let field = match &e {
+        LnError::Collinear { field }
+        | LnError::InvalidParameter { field, .. }
+        | LnError::NotCompatible { field, .. }
+        | LnError::Undecided { field } => *field,
+    };
+    ln_error(&format!("--{field}"), e)
+}
+
+/// The value of a required flag, or an error naming it.
+pub fn required<'a>(
+    flag: &str,
+    value: &'a Option<String>,
+    usage: &str,
+) -> Result<&'a str, CliError> {
+    value
+        .as_deref()
+        .ok_or_else(|| bad(flag, format!("missing; usage: {usage}")))
+}
+
+/// An exact rational: `0.95` is `19/20`, `1/3` is `1/3`.
+pub fn number(flag: &str, text: &str) -> Result<Rational, CliError> {
+    parse_rational(text).map_err(|e| bad(flag, e))
+}
+
+/// A required exact number.
+pub fn required_number(
+    flag: &str,
+    value: &Option<String>,
+    usage: &str,
+) -> Result<Rational, CliError> {
+    number(flag, required(flag, value, usage)?)
+}
+
+/// An optional exact number.
+pub fn optional_number(flag: &str, value: &Option<String>) -> Result<Option<Rational>, CliError> {
+    value.as_deref().map(|t| number(flag, t)).transpose()
+}
+
+/// A point `x,y`.
+pub fn point(flag: &str, text: &str) -> Result<V2<Rational>, CliError> {
+    let parts: Vec<&str> = text.split(',').collect();
+    if parts.len() != 2 {
+        return Err(bad(flag, format!("expected a point `x,y`, got {text:?}")));
+    }
+    Ok(V2::new(number(flag, parts[0])?, number(flag, parts[1])?))
+}
+
+/// A frame `b0x,b0y;bmx,bmy;b3x,b3y`, checked non-collinear.
+pub fn frame(flag: &str, text: &str) -> Result<LnFrame<Rational>, CliError> {
+    let parts: Vec<&str> = text.split(';').collect();
+    if parts.len() != 3 {
+        return Err(bad(
+            flag,
+            format!("expected three points `b0x,b0y;bmx,bmy;b3x,b3y`, got {text:?}"),
+        ));
+    }
+    let names = ["b0", "bm", "b3"];
+    let mut pts = Vec::with_capacity(3);
+    for (p, name) in parts.iter().zip(names) {
+        pts.push(point(&format!("{flag} ({name})"), p)?);
+    }
+    let b3 = pts.pop().expect("three points");
+    let bm = pts.pop().expect("three points");
+    let b0 = pts.pop().expect("three points");
+    LnFrame::new(b0, bm, b3).map_err(|e| ln_error(flag, e))
+}
+
+/// Power-basis coefficients `c0,c1,c2,...` (constant term first).
+pub fn coefficients(flag: &str, text: &str) -> Result<Poly<Rational>, CliError> {
+    let cs = text
+        .split(',')
+        .map(|c| number(flag, c))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(Poly::new(cs))
+}
+
+/// A cusp parameter: an exact number, or `inf` / `infinity` / `∞` (with an
+/// optional sign: τ = ±∞ is the same projective point).
+pub fn tau(flag: &str, text: &str) -> Result<Tau<Rational>, CliError> {
+    let t = text.trim().to_ascii_lowercase();
+    let unsigned = t.trim_start_matches(['+', '-']);
+    if matches!(unsigned, "inf" | "infinity" | "∞") {
+        return Ok(Tau::Infinite);
+    }
+    Ok(Tau::Finite(number(flag, text)?))
+}
+
+/// Rejects flags that the chosen proposition does not read, so that nothing
+/// is silently ignored. `given` pairs each flag with whether it was set.
+pub fn reject_unused(
+    id: &str,
+    usage: &str,
+    allowed: &[&str],
+    given: &[(&str, bool)],
+) -> Result<(), CliError> {
+    for (flag, set) in given {
+        if *set && !allowed.contains(flag) {
+            return Err(bad(flag, format!("not used by prop {id}; usage: {usage}")));
+        }
+    }
+    Ok(())
+}
+
+/// `"p/q"` (or `"p"`), the exact output format.
+pub fn q(r: &Rational) -> String {
+    r.to_string()
+}
+
+/// `"(x, y)"` with exact coordinates.
+pub fn show_point(p: &V2<Rational>) -> String {
+    format!("({}, {})", q(&p.x), q(&p.y))
+}
+
+/// `["x", "y"]` with exact coordinates.
+pub fn point_json(p: &V2<Rational>) -> serde_json::Value {
+    serde_json::json!([q(&p.x), q(&p.y)])
+}
+
+/// A frame as the exact string `b0x,b0y;bmx,bmy;b3x,b3y`.
+pub fn show_frame(f: &LnFrame<Rational>) -> String {
+    let p = |v: &V2<Rational>| format!("{},{}", q(&v.x), q(&v.y));
+    format!("{};{};{}", p(&f.b0), p(&f.bm), p(&f.b3))
+}
+
+/// A τ as text (`"inf"` for ∞).
+pub fn show_tau(t: &Tau<Rational>) -> String {
+    match t {
+        Tau::Finite(x) => q(x),
+        Tau::Infinite => "inf".to_string(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_are_exact_and_errors_name_the_flag() {
+        assert_eq!(q(&number("--u", "0.95").unwrap()), "19/20");
+        let e = number("--x1", "abc").unwrap_err();
+        assert!(e.0.starts_with("--x1: cannot read \"abc\""), "{e}");
+    }
+
+    #[test]
+    fn frames_points_and_tau() {
+        let f = frame("--frame", "0,0;1,1;2,0").unwrap();
+        assert_eq!(show_point(&f.bm), "(1, 1)");
+        assert!(frame("--frame", "0,0;1,1;2,2")
+            .unwrap_err()
+            .0
+            .contains("collinear"));
+        assert!(frame("--frame", "0,0;1,1").is_err());
+        assert!(point("--b0", "1").is_err());
+        assert_eq!(tau("--tau", "-inf").unwrap(), Tau::Infinite);
+        assert_eq!(show_tau(&tau("--tau", "-3/2").unwrap()), "-3/2");
+    }
+}

@@ -1,0 +1,77 @@
+//! The `lncert` command line (the contract is in `DESIGN.md`, "The CLI contract").
+//!
+//! * `lncert reproduce [--json] [--out DIR]` — every claim of [`lncert::reproduce`];
+//! * `lncert prop ID [ARGS] [--json]` — one proposition on user data.
+//!
+//! Exit codes: 0 = certified / the proposition agrees with the direct check,
+//! 1 = refuted / erratum / undecided, 2 = bad input (message on stderr naming
+//! the field and the reason; never a panic).
+//!
+//! | module | content |
+//! |---|---|
+//! | [`args`] | exact parsing of numbers, points, frames, coefficient lists, τ |
+//! | [`report`] | one result as text lines or one JSON document, and its exit code |
+//! | [`reproduce`] | `lncert reproduce` |
+//! | [`svg`] | the Fig. 5 pictures of `reproduce --out` |
+//! | [`prop`] | `lncert prop`: ID resolution and one module per seed |
+
+pub mod args;
+pub mod prop;
+pub mod report;
+pub mod reproduce;
+pub mod svg;
+
+use clap::{Parser, Subcommand};
+
+/// Exit code for bad input.
+pub const EXIT_BAD_INPUT: i32 = 2;
+
+/// Proven answers about planar curves with linear normals (LN curves).
+#[derive(Parser, Debug)]
+#[command(name = "lncert", version, about)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The subcommands.
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Recompute every worked example and printed value of the seeds, with verdicts.
+    Reproduce(reproduce::ReproduceArgs),
+    /// Check one proposition on given data (numbers are read exactly: 0.95 is 19/20).
+    Prop(Box<prop::PropArgs>),
+}
+
+/// A bad-input error: the message names the field and the reason (exit code 2).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct CliError(pub String);
+
+impl std::fmt::Display for CliError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+/// Writes `text` to stdout, ignoring write errors (a closed pipe, as in
+/// `lncert reproduce | head`, must not panic).
+pub fn print_out(text: &str) {
+    use std::io::Write;
+    let mut out = std::io::stdout().lock();
+    let _ = out.write_all(text.as_bytes()).and_then(|_| out.flush());
+}
+
+/// Runs a parsed command line and returns the process exit code.
+pub fn run(cli: Cli) -> i32 {
+    let result = match cli.command {
+        Command::Reproduce(a) => reproduce::run(&a),
+        Command::Prop(a) => prop::run(&a),
+    };
+    match result {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("error: {e}");
+            EXIT_BAD_INPUT
+        }
+    }
+}

@@ -1,0 +1,96 @@
+//! `lncert reproduce [--json] [--out DIR]`: runs [`lncert::reproduce::run_all`]
+//! and prints every claim with its verdict, then a summary.
+//!
+//! Exit code 0 if no claim is `undecided`, else 1. `--out DIR` also writes one
+//! SVG picture per Fig. 5 case of seed 000 (see [`super::svg`]).
+
+use super::{print_out, svg, CliError};
+use lncert::reproduce::{run_all, Claim, Verdict};
+use serde_json::{json, Map, Value};
+use std::fmt::Write as _;
+use std::path::PathBuf;
+
+/// Arguments of `lncert reproduce`.
+#[derive(clap::Args, Debug)]
+pub struct ReproduceArgs {
+    /// Print one JSON document `{"claims": [...], "summary": {...}}`.
+    #[arg(long)]
+    pub json: bool,
+    /// Write SVG pictures (one per Fig. 5 case of seed 000) into this directory.
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+}
+
+const VERDICTS: [Verdict; 4] = [
+    Verdict::Certified,
+    Verdict::Refuted,
+    Verdict::Erratum,
+    Verdict::Undecided,
+];
+
+/// Runs the command; returns the exit code.
+pub fn run(a: &ReproduceArgs) -> Result<i32, CliError> {
+    let claims = run_all();
+    let written = match &a.out {
+        Some(dir) => svg::write_fig5(dir)?,
+        None => Vec::new(),
+    };
+    if a.json {
+        print_json(&claims, &written);
+    } else {
+        print_text(&claims, &written);
+    }
+    let undecided = claims.iter().any(|c| c.verdict == Verdict::Undecided);
+    Ok(if undecided { 1 } else { 0 })
+}
+
+/// Number of claims per verdict, in the order of [`VERDICTS`].
+fn summary(claims: &[Claim]) -> Vec<(Verdict, usize)> {
+    VERDICTS
+        .iter()
+        .map(|v| (*v, claims.iter().filter(|c| c.verdict == *v).count()))
+        .collect()
+}
+
+fn print_json(claims: &[Claim], written: &[PathBuf]) {
+    let counts: Map<String, Value> = summary(claims)
+        .into_iter()
+        .map(|(v, n)| (v.to_string(), json!(n)))
+        .collect();
+    let mut doc = json!({ "claims": claims, "summary": counts });
+    if !written.is_empty() {
+        let files: Vec<String> = written.iter().map(|p| p.display().to_string()).collect();
+        doc["pictures"] = json!(files);
+    }
+    print_out(&format!(
+        "{}\n",
+        serde_json::to_string_pretty(&doc).expect("claims serialize")
+    ));
+}
+
+fn print_text(claims: &[Claim], written: &[PathBuf]) {
+    let mut s = format!(
+        "lncert reproduce — {} claims recomputed from the built-in data\n\n",
+        claims.len()
+    );
+    for c in claims {
+        let _ = writeln!(
+            s,
+            "{:<9}  {}  {} — {}",
+            c.verdict.to_string(),
+            c.id,
+            c.source,
+            c.statement
+        );
+        let _ = writeln!(s, "           {}", c.detail);
+    }
+    let parts: Vec<String> = summary(claims)
+        .into_iter()
+        .map(|(v, n)| format!("{n} {v}"))
+        .collect();
+    let _ = writeln!(s, "\nsummary: {}", parts.join(", "));
+    for p in written {
+        let _ = writeln!(s, "wrote {}", p.display());
+    }
+    print_out(&s);
+}

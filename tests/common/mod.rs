@@ -1,0 +1,91 @@
+//! Shared generators for the property tests: small exact rationals, LN frames,
+//! compatible pairs and Hermite data, with planted boundary cases.
+#![allow(dead_code)]
+
+use lncert::curve::V2;
+use lncert::ln::cubic::LnFrame;
+use lncert::scalar::{frac, Rational};
+use proptest::prelude::*;
+
+/// Cases per property: `LNCERT_PROPTEST_CASES` (default 2000, the CI setting).
+pub fn cases() -> u32 {
+    std::env::var("LNCERT_PROPTEST_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(2000)
+}
+
+pub fn config() -> ProptestConfig {
+    ProptestConfig { cases: cases(), failure_persistence: None, ..ProptestConfig::default() }
+}
+
+pub fn q(p: i64, d: i64) -> Rational {
+    frac(p, d)
+}
+
+/// A rational `n/d` with `|n| <= 40`, `1 <= d <= 12`.
+pub fn rat() -> impl Strategy<Value = Rational> {
+    (-40i64..=40, 1i64..=12).prop_map(|(n, d)| q(n, d))
+}
+
+/// A nonzero rational.
+pub fn rat_nonzero() -> impl Strategy<Value = Rational> {
+    rat().prop_filter("nonzero", |r| *r != q(0, 1))
+}
+
+/// A positive rational in (0, 10].
+pub fn rat_pos() -> impl Strategy<Value = Rational> {
+    (1i64..=60, 1i64..=8).prop_map(|(n, d)| q(n, d))
+}
+
+pub fn point() -> impl Strategy<Value = V2<Rational>> {
+    (rat(), rat()).prop_map(|(x, y)| V2::new(x, y))
+}
+
+/// A non-collinear frame `b0, bm, b3`.
+pub fn frame() -> impl Strategy<Value = LnFrame<Rational>> {
+    (point(), point(), point()).prop_filter_map("collinear", |(a, b, c)| LnFrame::new(a, b, c).ok())
+}
+
+/// τ: random rationals, the boundary values 0 and 1, and values near them.
+pub fn tau() -> impl Strategy<Value = Rational> {
+    prop_oneof![
+        3 => rat(),
+        1 => prop::sample::select(vec![q(0, 1), q(1, 1), q(-1, 1), q(1, 2), q(1, 6), q(5, 6), q(-1, 1000), q(1001, 1000), q(1, 1000), q(999, 1000)]),
+    ]
+}
+
+/// ρ = κ/λ: random positive and negative rationals and the boundaries 1/2, 2.
+pub fn rho() -> impl Strategy<Value = Rational> {
+    prop_oneof![
+        3 => rat_nonzero(),
+        1 => prop::sample::select(vec![q(1, 2), q(2, 1), q(1, 1), q(501, 1000), q(1999, 1000), q(499, 1000), q(2001, 1000)]),
+    ]
+}
+
+/// A frame compatible with `left`: `∇b0ʳ = c0 ∇b0ˡ`, `∇b1ʳ = c1 ∇b1ˡ`, `c0 c1 > 0`.
+pub fn compatible_right(left: &LnFrame<Rational>, b0: V2<Rational>, c0: Rational, c1: Rational) -> LnFrame<Rational> {
+    let bm = b0.add(&left.d0().scale(&c0));
+    let b3 = bm.add(&left.d1().scale(&c1));
+    LnFrame::new(b0, bm, b3).expect("scaled frame stays non-collinear")
+}
+
+/// End ratios c0, c1 of one sign; q = c1/c0 includes the boundaries 1/4 and 4.
+pub fn end_ratios() -> impl Strategy<Value = (Rational, Rational)> {
+    let pos = (1i64..=30, 1i64..=6).prop_map(|(n, d)| q(n, d));
+    prop_oneof![
+        3 => (pos.clone(), pos.clone(), any::<bool>()).prop_map(|(a, b, neg)| if neg { (-a, -b) } else { (a, b) }),
+        1 => (pos, prop::sample::select(vec![q(1, 4), q(4, 1), q(1, 1), q(1, 5), q(5, 1)]), any::<bool>())
+            .prop_map(|(a, k, neg)| { let b = &a * &k; if neg { (-a, -b) } else { (a, b) } }),
+    ]
+}
+
+/// End ratios c0, c1 of one sign with 1/4 < c1/c0 < 4 (Prop 4.2 holds).
+pub fn end_ratios_admissible() -> impl Strategy<Value = (Rational, Rational)> {
+    ((1i64..=30, 1i64..=6), (1i64..=15, 1i64..=15), any::<bool>()).prop_filter_map("q in (1/4, 4)", |((a, b), (kn, kd), neg)| {
+        let k = q(kn, kd);
+        if k <= q(1, 4) || k >= q(4, 1) {
+            return None;
+        }
+        let c0 = q(a, b);
+        let c1 = &c0 * &k;
+        Some(if neg { (-c0, -c1) } else { (c0, c1) })
+    })
+}

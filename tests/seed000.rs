@@ -1,0 +1,238 @@
+//! Seed 000 (cubic LN Béziers, pairs, convolution, Prop 6.1): every "iff" is
+//! checked against the direct decision by exact root isolation of the curve's
+//! own hodograph (Sturm sequences), never against the proposition's formula.
+//! Cases per property: `LNCERT_PROPTEST_CASES` (default 2000).
+
+mod common;
+
+use common::*;
+use lncert::curve::Bezier;
+use lncert::ln::circle::{ArcApprox, Prop61Case};
+use lncert::ln::cubic::{deltas_from_rho, deltas_from_tau, lemma_4_1_regular, prop_3_1_regular, LnFrame, Tau};
+use lncert::ln::direct::{is_regular_on, singular_points};
+use lncert::ln::pair::{convolution_has_interior_cusp, cusp_parameter, prop_4_4_as_printed, CompatiblePair, KappaChoice};
+use lncert::ln::LnError;
+use lncert::poly::{isolate_roots, refine_root, Poly, Span};
+use lncert::scalar::{Interval, IntervalExt, Rational, Scalar};
+use proptest::prelude::*;
+
+fn zero() -> Rational {
+    q(0, 1)
+}
+fn one() -> Rational {
+    q(1, 1)
+}
+
+/// Hodographs parallel for all t: x'l y'r - y'l x'r is the zero polynomial.
+fn parallel(a: &Bezier<Rational>, b: &Bezier<Rational>) -> bool {
+    let (ax, ay) = a.hodograph().power_coords();
+    let (bx, by) = b.hodograph().power_coords();
+    ax.mul(&by).sub(&ay.mul(&bx)).trimmed().degree().is_none()
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// Prop 3.1: regular on [0,1] iff τ ∉ [0,1]; the cusp is at τ itself;
+    /// δ0, δ1 ∈ [0,1] in the regular range. τ = 1/3, 2/3 are typed errors.
+    #[test]
+    fn prop_3_1_iff(f in frame(), t in tau()) {
+        let res = deltas_from_tau(&Tau::Finite(t.clone()));
+        if t == q(1, 3) || t == q(2, 3) {
+            let is_invalid = matches!(res, Err(LnError::InvalidParameter { field: "tau", .. }));
+            prop_assert!(is_invalid);
+            return Ok(());
+        }
+        let (d0, d1) = res.unwrap();
+        let curve = f.cubic(&d0, &d1);
+        let direct = is_regular_on(&curve, &Span::unit_closed());
+        prop_assert_eq!(prop_3_1_regular(&Tau::Finite(t.clone())), Some(direct));
+        // The interval path never contradicts the exact answer.
+        let ti = Interval::from_rational(&t);
+        if let Some(v) = prop_3_1_regular(&Tau::Finite(ti)) { prop_assert_eq!(v, direct); }
+        if direct {
+            prop_assert!(zero() <= d0 && d0 <= one() && zero() <= d1 && d1 <= one());
+        } else {
+            let h = curve.hodograph().eval(&t);
+            prop_assert!(h.x == zero() && h.y == zero(), "hodograph vanishes at τ");
+            let roots = singular_points(&curve, &Span::unit_closed()).unwrap();
+            prop_assert_eq!(roots.len(), 1);
+        }
+    }
+
+    /// Lemma 4.1: with the normal map N0(1-t) + κ N1 t the curve is regular iff
+    /// ρ = κ/λ ∈ (1/2, 2).
+    #[test]
+    fn lemma_4_1_iff(f in frame(), r in rho()) {
+        let (d0, d1) = deltas_from_rho(&r).unwrap();
+        let curve = f.cubic(&d0, &d1);
+        prop_assert_eq!(lemma_4_1_regular(&r), Some(is_regular_on(&curve, &Span::unit_closed())));
+        // The curve's normal map is linear: its hodograph is parallel to
+        // (3τ-2)∇b0(1-t) + (3τ-1)∇b1 t, here with ρ: ∇b0(1-t) + ρ ∇b1 t.
+        let (hx, hy) = curve.hodograph().power_coords();
+        let dir_x = Poly::new(vec![f.d0().x.clone(), f.d1().x.clone() * r.clone() - f.d0().x.clone()]);
+        let dir_y = Poly::new(vec![f.d0().y.clone(), f.d1().y.clone() * r.clone() - f.d0().y.clone()]);
+        prop_assert!(hx.mul(&dir_y).sub(&hy.mul(&dir_x)).trimmed().degree().is_none());
+    }
+
+    /// Prop 4.2 and Remark 4.3, against direct regularity of both curves.
+    #[test]
+    fn prop_4_2_iff(l in frame(), b0 in point(), (c0, c1) in end_ratios(), probes in prop::collection::vec(rat_pos(), 8)) {
+        let r = compatible_right(&l, b0, c0, c1);
+        let pair = CompatiblePair::new(l, r).unwrap();
+        let ratio = pair.ratio();
+        let holds = pair.prop_4_2().unwrap();
+        let holds_closed = pair.remark_4_3().unwrap();
+        let both_regular = |rho: &Rational, span: &Span| -> Result<bool, TestCaseError> {
+            let p = pair.curves_for_rho(rho).unwrap();
+            prop_assert!(parallel(&p.left, &p.right), "one normal map for every ρ");
+            Ok(is_regular_on(&p.left, span) && is_regular_on(&p.right, span))
+        };
+        // Probe κ values: random ones, the interval ends and midpoints.
+        let mut rhos: Vec<Rational> = probes;
+        let h = q(1, 2);
+        for x in [h.clone(), q(2, 1), &ratio * &h, &ratio * q(2, 1), (h.clone() + &ratio * &h) * &h, (q(2, 1) + &ratio * q(2, 1)) * &h] {
+            rhos.push(x);
+        }
+        if holds {
+            let p = pair.ln_pair_exact(&KappaChoice::Midpoint).unwrap();
+            prop_assert!(is_regular_on(&p.left, &Span::unit_closed()) && is_regular_on(&p.right, &Span::unit_closed()));
+            prop_assert!(parallel(&p.left, &p.right));
+        } else {
+            for rho in &rhos {
+                prop_assert!(!both_regular(rho, &Span::unit_closed())?, "ρ = {} regularises both though q = {}", rho, ratio);
+            }
+            prop_assert!(pair.ln_pair_exact(&KappaChoice::Midpoint).is_err());
+        }
+        if holds_closed {
+            // The closed intersection [1/2,2] ∩ [q/2,2q] is non-empty: its lower end works.
+            let lo = if &ratio * &h > h { &ratio * &h } else { h.clone() };
+            prop_assert!(both_regular(&lo, &Span::unit_open())?);
+        } else {
+            for rho in &rhos {
+                prop_assert!(!both_regular(rho, &Span::unit_open())?);
+            }
+        }
+    }
+
+    /// Prop 4.4: the convolution of a regular pair has a cusp in (0,1) iff
+    /// δ0 ∉ [0,1] or δ1 ∉ [0,1] (the engine's corrected form); the printed
+    /// form (open interval) errs exactly when a δ is 0 or 1.
+    #[test]
+    fn prop_4_4_iff(l in frame(), b0 in point(), (c0, c1) in end_ratios_admissible(), t in (1i64..=99)) {
+        let r = compatible_right(&l, b0, c0, c1);
+        let pair = CompatiblePair::new(l, r).unwrap();
+        prop_assert_eq!(pair.prop_4_2(), Some(true));
+        let range = pair.admissible_rho_left().unwrap();
+        let s = q(t, 100);
+        let rho = range.lo.clone() + (range.hi.clone() - range.lo.clone()) * s;
+        let p = pair.ln_pair_exact(&KappaChoice::Rho(rho)).unwrap();
+        let conv = match pair.convolution(&p) {
+            Ok(c) => c,
+            Err(e) => {
+                prop_assert!(pair.c0 == q(-1, 1) || pair.c1 == q(-1, 1), "unexpected {e}");
+                return Ok(());
+            }
+        };
+        let roots = singular_points(&conv.curve, &Span::unit_open()).unwrap();
+        let direct = !roots.is_empty();
+        prop_assert_eq!(convolution_has_interior_cusp(&conv.deltas), Some(direct));
+        let printed = prop_4_4_as_printed(&conv.deltas).unwrap();
+        if printed != direct {
+            let boundary = |d: &Rational| *d == zero() || *d == one();
+            prop_assert!(boundary(&conv.deltas.0) || boundary(&conv.deltas.1));
+        }
+        if direct {
+            let Some(Tau::Finite(tau)) = cusp_parameter(&conv.deltas) else { return Err(TestCaseError::fail("no τ")) };
+            prop_assert!(roots[0].lo <= tau && tau <= roots[0].hi);
+            let h = conv.curve.hodograph().eval(&tau);
+            prop_assert!(h.x == zero() && h.y == zero());
+        }
+        // The convolution is again LN: its hodograph is parallel to both.
+        prop_assert!(parallel(&conv.curve, &p.left));
+    }
+
+    /// Prop 6.1 (seed 000): the critical points of ‖ca‖ inside (0,1) are exactly
+    /// the s1, s2 of eq. (9) that the printed κ-ranges select, and the closed
+    /// form equals the maximum of |‖ca‖ - 1| over them. Arcs with rational
+    /// (cos α, sin α) = ((1-m²)/(1+m²), 2m/(1+m²)), m ∈ (0, 1).
+    #[test]
+    fn prop_6_1_critical_points(mn in 1i64..=40, kn in 50i64..=200) {
+        let m = q(mn, 41);
+        let (c, s) = ((one() - &m * &m) / (one() + &m * &m), (q(2, 1) * &m) / (one() + &m * &m));
+        let kappa = q(kn, 100);
+        prop_assume!(kappa != one());
+        let arc = ArcApprox::new(c.clone(), s.clone(), kappa.clone()).unwrap();
+        let ca = arc.cubic().unwrap();
+        // Direct: g(s) = ca'(s)·ca(s), roots in (0,1) by Sturm isolation.
+        let (x, y) = ca.power_coords();
+        let g = x.derivative().mul(&x).add(&y.derivative().mul(&y));
+        let roots = isolate_roots(&g, &Span::unit_open());
+        // Closed form with intervals.
+        let iv = |r: &Rational| Interval::from_rational(r);
+        let arc_i = ArcApprox::new(iv(&c), iv(&s), iv(&kappa)).unwrap();
+        let Some((in1, in2)) = arc_i.params_in_unit() else { return Ok(()) }; // undecided near a boundary: allowed
+        let (s1, s2) = arc_i.critical_params().unwrap();
+        let inside: Vec<Interval> = [(in1, s1), (in2, s2)].into_iter().filter(|(b, _)| *b).map(|(_, v)| v).collect();
+        prop_assert_eq!(inside.len(), roots.len(), "critical points: closed form {:?}, direct {:?}", inside, roots);
+        for (r, si) in roots.iter().zip(inside.iter().rev().collect::<Vec<_>>().iter().rev()) {
+            let r = refine_root(&g, r, &q(1, 1_000_000_000));
+            let ri = Interval::from_rational(&r.lo).convex_hull(Interval::from_rational(&r.hi));
+            let _ = si;
+            prop_assert!(inside.iter().any(|v| !v.disjoint(ri)), "root {:?} not among s1, s2", ri);
+        }
+        // The printed case split agrees with the computed membership (Fig. 9).
+        let case = arc.prop_6_1_case().unwrap();
+        let expect = match (in1, in2) { (true, false) => Prop61Case::S1, (false, true) => Prop61Case::S2, (true, true) => Prop61Case::Both, _ => return Err(TestCaseError::fail("no interior critical point")) };
+        prop_assert_eq!(case, expect);
+        // The closed form encloses the max of |‖ca‖ - 1| at the exact roots.
+        let d = arc_i.prop_6_1_distance().unwrap();
+        let at_roots = roots.iter().map(|r| {
+            let r = refine_root(&g, r, &q(1, 1_000_000_000_000));
+            let ri = Interval::from_rational(&r.lo).convex_hull(Interval::from_rational(&r.hi));
+            arc_i.radial_error(&ri).unwrap()
+        }).fold(Interval::point(0.0).unwrap(), |a: Interval, b| a.max(b));
+        prop_assert!(!d.disjoint(at_roots), "closed form {:?} vs direct {:?}", d, at_roots);
+    }
+}
+
+/// Erratum (Prop 4.4): a regular compatible pair whose convolution has δ0 = 0
+/// exactly: τ = 0, the cusp is at the end point t = 0, not in (0,1), yet the
+/// printed statement ("δ0 ∉ (0,1) ⇒ cusp in (0,1)") says it is inside.
+#[test]
+fn erratum_prop_4_4_cusp_at_end_point() {
+    let p = |x: i64, y: i64| lncert::curve::V2::new(q(x, 1), q(y, 1));
+    let l = LnFrame::new(p(0, 0), p(1, 0), p(1, 1)).unwrap();
+    // ρl = 1, ρr = 1 ⇒ q = 1, δ0ˡ = δ0ʳ = 2/3; c0 = -δ0ˡ/δ0ʳ = -1 is degenerate,
+    // so take ρr = 3/2 (δ0ʳ = 8/9): c0 = -(2/3)/(8/9) = -3/4, c1 = q c0 = -1/2.
+    let (c0, c1) = (q(-3, 4), q(-1, 2));
+    let r = compatible_right(&l, p(5, 5), c0, c1);
+    let pair = CompatiblePair::new(l, r).unwrap();
+    assert_eq!(pair.ratio(), q(2, 3));
+    let pr = pair.ln_pair_exact(&KappaChoice::Rho(q(1, 1))).unwrap();
+    assert_eq!(pr.rho_right, q(3, 2));
+    let conv = pair.convolution(&pr).unwrap();
+    assert_eq!(conv.deltas.0, q(0, 1));
+    assert_eq!(prop_4_4_as_printed(&conv.deltas), Some(true));
+    assert_eq!(convolution_has_interior_cusp(&conv.deltas), Some(false));
+    let inside = singular_points(&conv.curve, &Span::unit_open()).unwrap();
+    assert!(inside.is_empty(), "no cusp in the open interval");
+    let closed = singular_points(&conv.curve, &Span::unit_closed()).unwrap();
+    assert_eq!(closed.len(), 1);
+    assert!(closed[0].is_exact() && closed[0].lo == q(0, 1), "the cusp is at t = 0");
+}
+
+/// The f64 path agrees with the exact path on well-conditioned data.
+#[test]
+fn f64_path_matches_exact_on_fig5a() {
+    let p = |x: i64, y: i64, d: i64| lncert::curve::V2::new(q(x, d), q(y, d));
+    let l = LnFrame::new(p(5, -2, 2), p(1, 2, 2), p(7, 10, 2)).unwrap();
+    let r = LnFrame::new(p(15, -24, 6), p(6, -15, 6), p(12, -7, 6)).unwrap();
+    let exact = CompatiblePair::new(l.clone(), r.clone()).unwrap();
+    let to_f = |f: &LnFrame<Rational>| LnFrame::<f64>::new(
+        f.b0.map(|v| v.approx()), f.bm.map(|v| v.approx()), f.b3.map(|v| v.approx())).unwrap();
+    let fl = CompatiblePair::new(to_f(&l), to_f(&r)).unwrap();
+    assert!((fl.ratio() - exact.ratio().approx()).abs() < 1e-15);
+    let pf = fl.ln_pair(&KappaChoice::GeometricMean).unwrap();
+    assert!((pf.deltas_left.0 - 1.0 / 3.0).abs() < 1e-15 && (pf.deltas_left.1 - 8.0 / 9.0).abs() < 1e-15);
+}
