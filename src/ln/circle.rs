@@ -66,11 +66,12 @@ impl<S: Scalar> ArcApprox<S> {
     /// The LN frame `(cos α, -sin α), (sec α, 0), (cos α, sin α)`.
     pub fn frame(&self) -> Result<LnFrame<S>, LnError> {
         let sec = self.cos_a.recip().ok_or(LnError::Undecided { field: "cos_alpha" })?;
-        LnFrame::new(
+        // Never collinear: sin α > 0 and cos α > 0 are checked by `new`.
+        Ok(LnFrame::new_unchecked(
             V2::new(self.cos_a.clone(), -self.sin_a.clone()),
             V2::new(sec, S::zero()),
             V2::new(self.cos_a.clone(), self.sin_a.clone()),
-        )
+        ))
     }
     /// The cubic LN approximation `ca`.
     pub fn cubic(&self) -> Result<Bezier<S>, LnError> {

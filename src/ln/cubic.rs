@@ -11,7 +11,7 @@
 //! rational `ρ` every curve here is exact. `λ = |bm - b3| / |b0 - bm|` itself is
 //! irrational in general: exact code compares `λ²` (see [`LnFrame::lambda2`]).
 
-use super::{nonzero, LnError};
+use super::{checked_div, LnError};
 use crate::curve::{Bezier, V2};
 use crate::scalar::{frac, Scalar, ScalarSqrt, Sign};
 
@@ -109,10 +109,8 @@ pub fn deltas_from_tau<S: Scalar>(tau: &Tau<S>) -> Result<(S, S), LnError> {
         Tau::Finite(t) => {
             let d0den = t.scale(3) - S::one();
             let d1den = t.scale(3) - S::from_i64(2);
-            nonzero(d0den.sign(), "tau", "τ = 1/3 makes δ0 = 2τ/(3τ-1) undefined")?;
-            nonzero(d1den.sign(), "tau", "τ = 2/3 makes δ1 = 2(τ-1)/(3τ-2) undefined")?;
-            let d0 = t.scale(2).div(&d0den).expect("checked");
-            let d1 = (t.clone() - S::one()).scale(2).div(&d1den).expect("checked");
+            let d0 = checked_div(t.scale(2), &d0den, "tau", "τ = 1/3 makes δ0 = 2τ/(3τ-1) undefined")?;
+            let d1 = checked_div((t.clone() - S::one()).scale(2), &d1den, "tau", "τ = 2/3 makes δ1 = 2(τ-1)/(3τ-2) undefined")?;
             Ok((d0, d1))
         }
     }
@@ -142,9 +140,9 @@ pub fn prop_3_1_regular<S: Scalar>(tau: &Tau<S>) -> Option<bool> {
 /// assert_eq!((d0, d1), (frac(-2, 3), frac(10, 9)));
 /// ```
 pub fn deltas_from_rho<S: Scalar>(rho: &S) -> Result<(S, S), LnError> {
-    nonzero(rho.sign(), "rho", "ρ = κ/λ = 0 makes δ0 = 2/3 (2 - 1/ρ) undefined")?;
+    let inv = checked_div(S::one(), rho, "rho", "ρ = κ/λ = 0 makes δ0 = 2/3 (2 - 1/ρ) undefined")?;
     let two = S::from_i64(2);
-    let d0 = (two.clone() - rho.recip().expect("checked")) * frac(2, 3);
+    let d0 = (two.clone() - inv) * frac(2, 3);
     let d1 = (two - rho.clone()) * frac(2, 3);
     Ok((d0, d1))
 }

@@ -287,10 +287,14 @@ impl<S: Scalar> HermiteData<S> {
         if !(m.sign().is_positive()? && self.u.cmp_sign(m).is_positive()?) {
             return None;
         }
+        Some(self.a2_from_b_symbolic(m, b))
+    }
+    /// [`Self::a2_from_b`] without the `0 < m < u` check (for symbolic scalars).
+    pub fn a2_from_b_symbolic(&self, m: &S, b: &S) -> S {
         let m3 = m.sqr() * m.clone();
         let num = self.upow(4) * b.clone() - m3 * self.x1.clone() * self.beta(m);
         let den = m.sqr() * self.upow(2) * (self.u.clone() - m.clone()).sqr();
-        num.div(&den)
+        num.div(&den).expect("m ≠ 0, u ≠ m")
     }
     /// The printed `β = -(m(3s - 2u) + u(3u - 4s))`.
     pub fn beta(&self, m: &S) -> S {

@@ -46,6 +46,15 @@ pub(crate) fn nonzero(s: Sign, field: &'static str, reason: &'static str) -> Res
     }
 }
 
+/// `num / den`, or `InvalidParameter` if `den` is zero, `Undecided` if it may
+/// be zero. Symbolic scalars divide whenever `den` is not the zero function.
+pub(crate) fn checked_div<S: crate::scalar::Scalar>(num: S, den: &S, field: &'static str, reason: &'static str) -> Result<S, LnError> {
+    num.div(den).ok_or(match den.sign() {
+        Sign::Unknown => LnError::Undecided { field },
+        _ => LnError::InvalidParameter { field, reason },
+    })
+}
+
 /// An open interval `(lo, hi)` of a parameter; empty when `lo >= hi`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct OpenRange<S> {

@@ -13,7 +13,7 @@
 //! `(1/2, 2) ∩ (q/2, 2q)`.
 
 use super::cubic::{deltas_from_rho, tau_from_delta0, LnFrame, Tau};
-use super::{nonzero, LnError, OpenRange};
+use super::{checked_div, nonzero, LnError, OpenRange};
 use crate::curve::{Bezier, V2};
 use crate::scalar::{frac, Scalar, ScalarSqrt, Sign};
 
@@ -179,13 +179,7 @@ impl<S: Scalar> CompatiblePair<S> {
     }
     /// The convolution `bl + br` (sum of control points) of a pair built from this frame pair.
     pub fn convolution(&self, pair: &LnPair<S>) -> Result<Convolution<S>, LnError> {
-        let one = S::one();
-        let den0 = one.clone() + self.c0.clone();
-        let den1 = one + self.c1.clone();
-        nonzero(den0.sign(), "c0", "c0 = -1: the convolution's b0 and bm coincide")?;
-        nonzero(den1.sign(), "c1", "c1 = -1: the convolution's bm and b3 coincide")?;
-        let d0 = (pair.deltas_left.0.clone() + self.c0.clone() * pair.deltas_right.0.clone()).div(&den0).expect("checked");
-        let d1 = (pair.deltas_left.1.clone() + self.c1.clone() * pair.deltas_right.1.clone()).div(&den1).expect("checked");
+        let (d0, d1) = convolution_deltas(&self.c0, &self.c1, &pair.deltas_left, &pair.deltas_right)?;
         let frame = LnFrame::new(
             self.left.b0.add(&self.right.b0),
             self.left.bm.add(&self.right.bm),
@@ -228,4 +222,69 @@ pub fn convolution_has_interior_cusp<S: Scalar>(deltas: &(S, S)) -> Option<bool>
 /// Where the convolution's cusp is: `τ = δ0/(3δ0 - 2)` (eq. (1) inverted).
 pub fn cusp_parameter<S: Scalar>(deltas: &(S, S)) -> Option<Tau<S>> {
     tau_from_delta0(&deltas.0)
+}
+
+/// The δ's of the convolution `bl + br` in its own frame `(b0ˡ+b0ʳ, bmˡ+bmʳ, b3ˡ+b3ʳ)`:
+/// `δ0 = (δ0ˡ + c0 δ0ʳ)/(1 + c0)`, `δ1 = (δ1ˡ + c1 δ1ʳ)/(1 + c1)`.
+/// `c0 = -1` or `c1 = -1` collapses a side of the convolution's frame: an error.
+pub fn convolution_deltas<S: Scalar>(c0: &S, c1: &S, left: &(S, S), right: &(S, S)) -> Result<(S, S), LnError> {
+    let den0 = S::one() + c0.clone();
+    let den1 = S::one() + c1.clone();
+    let d0 = checked_div(left.0.clone() + c0.clone() * right.0.clone(), &den0, "c0", "c0 = -1: the convolution's b0 and bm coincide")?;
+    let d1 = checked_div(left.1.clone() + c1.clone() * right.1.clone(), &den1, "c1", "c1 = -1: the convolution's bm and b3 coincide")?;
+    Ok((d0, d1))
+}
+
+/// The decisions of Prop 4.2 and Prop 4.4 for a compatible pair given by its
+/// end ratios `c0, c1` (exact) and a choice `ρl = κ/λl`, as a [`Predicate`]:
+/// evaluate it in any arithmetic, or [`crate::scalar::filtered`] (intervals
+/// first, rationals when they cannot decide).
+///
+/// The answer is `(one normal map exists, convolution has a cusp in (0,1))`,
+/// the second `None` when `ρl` is not admissible or the convolution degenerates.
+///
+/// # Examples
+/// ```
+/// use lncert::ln::pair::PairDecision;
+/// use lncert::scalar::{filtered, frac, Predicate};
+/// // Fig. 5(b): c0 = -3/2, c1 = -1/2 (q = 1/3), ρl = 7/12 ∈ (1/2, 2/3).
+/// let d = PairDecision { c0: frac(-3, 2), c1: frac(-1, 2), rho_left: frac(7, 12) };
+/// assert_eq!(filtered(&d), Some((true, Some(true))));
+/// assert_eq!(d.decide::<f64>(), Some((true, Some(true))));
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct PairDecision {
+    pub c0: crate::scalar::Rational,
+    pub c1: crate::scalar::Rational,
+    pub rho_left: crate::scalar::Rational,
+}
+
+impl crate::scalar::Predicate for PairDecision {
+    type Out = (bool, Option<bool>);
+    fn decide<S: Scalar>(&self) -> Option<Self::Out> {
+        let conv = |r: &crate::scalar::Rational| S::from_rational(r);
+        pair_decision(&conv(&self.c0), &conv(&self.c1), &conv(&self.rho_left))
+    }
+}
+
+/// The kernel of [`PairDecision`] on inputs already in `S` (the fast path takes
+/// `f64` inputs directly): `(Prop 4.2 holds, convolution cusp in (0,1))`.
+pub fn pair_decision<S: Scalar>(c0: &S, c1: &S, rho: &S) -> Option<(bool, Option<bool>)> {
+    let q = c1.div(c0)?;
+    let exists = q.cmp_sign(&frac(1, 4)).is_positive()? && S::from_i64(4).cmp_sign(&q).is_positive()?;
+    let admissible = exists
+        && rho.cmp_sign(&frac(1, 2)).is_positive()?
+        && S::from_i64(2).cmp_sign(rho).is_positive()?
+        && rho.cmp_sign(&(q.clone() * frac(1, 2))).is_positive()?
+        && q.scale(2).cmp_sign(rho).is_positive()?;
+    if !admissible {
+        return Some((exists, None));
+    }
+    let dl = deltas_from_rho(rho).ok()?;
+    let dr = deltas_from_rho(&rho.div(&q)?).ok()?;
+    match convolution_deltas(c0, c1, &dl, &dr) {
+        Ok(d) => Some((exists, Some(convolution_has_interior_cusp(&d)?))),
+        Err(LnError::Undecided { .. }) => None,
+        Err(_) => Some((exists, None)),
+    }
 }

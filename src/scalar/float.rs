@@ -13,6 +13,14 @@ impl Scalar for f64 {
     fn from_i64(n: i64) -> Self {
         n as f64
     }
+    fn from_frac(p: i64, q: i64) -> Self {
+        if p.unsigned_abs() < 1 << 53 && q.unsigned_abs() < 1 << 53 && q != 0 {
+            // Both exact, and IEEE division rounds the quotient correctly.
+            p as f64 / q as f64
+        } else {
+            Self::from_rational(&Rational::new(p.into(), q.into()))
+        }
+    }
     fn sign(&self) -> Sign {
         if self.is_nan() {
             Sign::Unknown

@@ -13,7 +13,20 @@ impl Scalar for Interval {
         interval_from_rational(r)
     }
     fn from_i64(n: i64) -> Self {
-        interval_from_rational(&Rational::from_integer(n.into()))
+        if n.unsigned_abs() < 1 << 53 {
+            let x = n as f64;
+            Interval::try_from((x, x)).expect("finite")
+        } else {
+            interval_from_rational(&Rational::from_integer(n.into()))
+        }
+    }
+    fn from_frac(p: i64, q: i64) -> Self {
+        if p.unsigned_abs() < 1 << 53 && q.unsigned_abs() < 1 << 53 && q != 0 {
+            // Exact point intervals; inari's division rounds outward.
+            Self::from_i64(p) / Self::from_i64(q)
+        } else {
+            interval_from_rational(&Rational::new(p.into(), q.into()))
+        }
     }
     fn sign(&self) -> Sign {
         if self.is_empty() {

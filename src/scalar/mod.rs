@@ -107,6 +107,10 @@ pub trait Scalar:
     fn from_i64(n: i64) -> Self {
         Self::from_rational(&Rational::from_integer(n.into()))
     }
+    /// The fraction `p/q` (`q != 0`); arithmetics override this with a fast path.
+    fn from_frac(p: i64, q: i64) -> Self {
+        Self::from_rational(&Rational::new(p.into(), q.into()))
+    }
     fn zero() -> Self {
         Self::from_i64(0)
     }
@@ -153,7 +157,7 @@ pub trait ScalarSqrt: Scalar {
 /// assert_eq!(x.to_string(), "1/3");
 /// ```
 pub fn frac<S: Scalar>(p: i64, q: i64) -> S {
-    S::from_rational(&Rational::new(p.into(), q.into()))
+    S::from_frac(p, q)
 }
 
 /// The exact sign of `a + b·sqrt(c)` (`c >= 0`) from signs and squares only:
