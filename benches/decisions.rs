@@ -7,7 +7,9 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use lncert::ln::pair::{pair_decision, PairDecision};
-use lncert::scalar::{filter_stats, filtered, frac, reset_filter_stats, Interval, Predicate, Rational, Scalar};
+use lncert::scalar::{
+    filter_stats, filtered, frac, reset_filter_stats, Interval, Predicate, Rational, Scalar,
+};
 use std::hint::black_box;
 
 /// Deterministic pseudo-random pairs (64-bit LCG), c0, c1 of one sign, ρl
@@ -16,7 +18,9 @@ use std::hint::black_box;
 fn cases(n: usize) -> Vec<PairDecision> {
     let mut s: u64 = 0x9E37_79B9_7F4A_7C15;
     let mut next = |m: u64| {
-        s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        s = s
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
         (s >> 33) % m
     };
     (0..n)
@@ -30,7 +34,11 @@ fn cases(n: usize) -> Vec<PairDecision> {
             };
             let c1 = &c0 * &k;
             let rho = frac(1 + next(2999) as i64, 1000);
-            PairDecision { c0, c1, rho_left: rho }
+            PairDecision {
+                c0,
+                c1,
+                rho_left: rho,
+            }
         })
         .collect()
 }
@@ -59,21 +67,52 @@ fn bench(c: &mut Criterion) {
     // arithmetic's values, as a caller of that path would hold them.
     let conv = |d: &PairDecision| (d.c0.clone(), d.c1.clone(), d.rho_left.clone());
     let rat: Vec<_> = data.iter().map(conv).collect();
-    let flt: Vec<(f64, f64, f64)> = rat.iter().map(|(a, b, r)| (a.approx(), b.approx(), r.approx())).collect();
-    let ivs: Vec<(Interval, Interval, Interval)> =
-        rat.iter().map(|(a, b, r)| (Interval::from_rational(a), Interval::from_rational(b), Interval::from_rational(r))).collect();
+    let flt: Vec<(f64, f64, f64)> = rat
+        .iter()
+        .map(|(a, b, r)| (a.approx(), b.approx(), r.approx()))
+        .collect();
+    let ivs: Vec<(Interval, Interval, Interval)> = rat
+        .iter()
+        .map(|(a, b, r)| {
+            (
+                Interval::from_rational(a),
+                Interval::from_rational(b),
+                Interval::from_rational(r),
+            )
+        })
+        .collect();
     let mut g = c.benchmark_group("prop_4_2_and_4_4");
-    g.bench_function("f64", |b| b.iter(|| flt.iter().filter_map(|(a, c, r)| pair_decision(black_box(a), c, r)).count()));
-    g.bench_function("interval", |b| b.iter(|| ivs.iter().filter_map(|(a, c, r)| pair_decision(black_box(a), c, r)).count()));
+    g.bench_function("f64", |b| {
+        b.iter(|| {
+            flt.iter()
+                .filter_map(|(a, c, r)| pair_decision(black_box(a), c, r))
+                .count()
+        })
+    });
+    g.bench_function("interval", |b| {
+        b.iter(|| {
+            ivs.iter()
+                .filter_map(|(a, c, r)| pair_decision(black_box(a), c, r))
+                .count()
+        })
+    });
     g.bench_function("filtered", |b| {
         b.iter(|| {
             ivs.iter()
                 .zip(&rat)
-                .filter_map(|((a, c, r), (ea, ec, er))| pair_decision(black_box(a), c, r).or_else(|| pair_decision(ea, ec, er)))
+                .filter_map(|((a, c, r), (ea, ec, er))| {
+                    pair_decision(black_box(a), c, r).or_else(|| pair_decision(ea, ec, er))
+                })
                 .count()
         })
     });
-    g.bench_function("rational", |b| b.iter(|| rat.iter().filter_map(|(a, c, r)| pair_decision(black_box(a), c, r)).count()));
+    g.bench_function("rational", |b| {
+        b.iter(|| {
+            rat.iter()
+                .filter_map(|(a, c, r)| pair_decision(black_box(a), c, r))
+                .count()
+        })
+    });
     g.finish();
 }
 

@@ -8,5 +8,5 @@
 pub mod curve;
 pub mod ln;
 pub mod poly;
-pub mod scalar;
 pub mod reproduce;
+pub mod scalar;

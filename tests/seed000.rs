@@ -8,9 +8,13 @@ mod common;
 use common::*;
 use lncert::curve::Bezier;
 use lncert::ln::circle::{ArcApprox, Prop61Case};
-use lncert::ln::cubic::{deltas_from_rho, deltas_from_tau, lemma_4_1_regular, prop_3_1_regular, LnFrame, Tau};
+use lncert::ln::cubic::{
+    deltas_from_rho, deltas_from_tau, lemma_4_1_regular, prop_3_1_regular, LnFrame, Tau,
+};
 use lncert::ln::direct::{is_regular_on, singular_points};
-use lncert::ln::pair::{convolution_has_interior_cusp, cusp_parameter, prop_4_4_as_printed, CompatiblePair, KappaChoice};
+use lncert::ln::pair::{
+    convolution_has_interior_cusp, cusp_parameter, prop_4_4_as_printed, CompatiblePair, KappaChoice,
+};
 use lncert::ln::LnError;
 use lncert::poly::{isolate_roots, refine_root, Poly, Span};
 use lncert::scalar::{Interval, IntervalExt, Rational, Scalar};
@@ -219,7 +223,10 @@ fn erratum_prop_4_4_cusp_at_end_point() {
     assert!(inside.is_empty(), "no cusp in the open interval");
     let closed = singular_points(&conv.curve, &Span::unit_closed()).unwrap();
     assert_eq!(closed.len(), 1);
-    assert!(closed[0].is_exact() && closed[0].lo == q(0, 1), "the cusp is at t = 0");
+    assert!(
+        closed[0].is_exact() && closed[0].lo == q(0, 1),
+        "the cusp is at t = 0"
+    );
 }
 
 /// The f64 path agrees with the exact path on well-conditioned data.
@@ -229,10 +236,19 @@ fn f64_path_matches_exact_on_fig5a() {
     let l = LnFrame::new(p(5, -2, 2), p(1, 2, 2), p(7, 10, 2)).unwrap();
     let r = LnFrame::new(p(15, -24, 6), p(6, -15, 6), p(12, -7, 6)).unwrap();
     let exact = CompatiblePair::new(l.clone(), r.clone()).unwrap();
-    let to_f = |f: &LnFrame<Rational>| LnFrame::<f64>::new(
-        f.b0.map(|v| v.approx()), f.bm.map(|v| v.approx()), f.b3.map(|v| v.approx())).unwrap();
+    let to_f = |f: &LnFrame<Rational>| {
+        LnFrame::<f64>::new(
+            f.b0.map(|v| v.approx()),
+            f.bm.map(|v| v.approx()),
+            f.b3.map(|v| v.approx()),
+        )
+        .unwrap()
+    };
     let fl = CompatiblePair::new(to_f(&l), to_f(&r)).unwrap();
     assert!((fl.ratio() - exact.ratio().approx()).abs() < 1e-15);
     let pf = fl.ln_pair(&KappaChoice::GeometricMean).unwrap();
-    assert!((pf.deltas_left.0 - 1.0 / 3.0).abs() < 1e-15 && (pf.deltas_left.1 - 8.0 / 9.0).abs() < 1e-15);
+    assert!(
+        (pf.deltas_left.0 - 1.0 / 3.0).abs() < 1e-15
+            && (pf.deltas_left.1 - 8.0 / 9.0).abs() < 1e-15
+    );
 }

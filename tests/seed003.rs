@@ -7,14 +7,18 @@ mod common;
 use common::*;
 use lncert::ln::cubic::{deltas_from_tau, prop_3_1_regular, Tau};
 use lncert::ln::direct::{is_regular_on, normal_form_regular};
-use lncert::ln::hermite::{convolve_normal_forms, cubic_nonsingular_u_range, normal_form, prop_7_1_recommended, HermiteData};
+use lncert::ln::hermite::{
+    convolve_normal_forms, cubic_nonsingular_u_range, normal_form, prop_7_1_recommended,
+    HermiteData,
+};
 use lncert::ln::LnError;
 use lncert::poly::{Poly, Span};
 use lncert::scalar::{rational_from_f64, Interval, Rational, Scalar};
 use proptest::prelude::*;
 
 fn hermite() -> impl Strategy<Value = HermiteData<Rational>> {
-    (rat_nonzero(), rat(), rat_pos()).prop_filter_map("valid", |(x1, y1, u)| HermiteData::new(x1, y1, u).ok())
+    (rat_nonzero(), rat(), rat_pos())
+        .prop_filter_map("valid", |(x1, y1, u)| HermiteData::new(x1, y1, u).ok())
 }
 
 /// Hermite data with s > 0 and u placed around the interesting ratios u/s.
@@ -148,7 +152,9 @@ fn erratum_prop_7_1_range_too_small() {
     for t in [q(-1, 2), q(-1, 1), q(-1, 10)] {
         let (d0, d1) = deltas_from_tau(&Tau::Finite(t.clone())).unwrap();
         assert!(is_regular_on(&f.cubic(&d0, &d1), &Span::unit_closed()));
-        if t != q(-1, 1) { assert_eq!(prop_7_1_recommended(&t), Some(false)); }
+        if t != q(-1, 1) {
+            assert_eq!(prop_7_1_recommended(&t), Some(false));
+        }
     }
 }
 
@@ -157,8 +163,17 @@ fn erratum_prop_7_1_range_too_small() {
 fn prop_2_1_example_and_bad_input() {
     let r = cubic_nonsingular_u_range(&q(3, 1), &q(-1, 1)).unwrap();
     assert_eq!((r.lo, r.hi), (q(1, 2), q(1, 1)));
-    assert!(matches!(HermiteData::new(q(0, 1), q(1, 1), q(1, 1)), Err(LnError::InvalidParameter { field: "x1", .. })));
-    assert!(matches!(HermiteData::new(q(1, 1), q(1, 1), q(0, 1)), Err(LnError::InvalidParameter { field: "u", .. })));
-    assert!(matches!(HermiteData::new(q(1, 1), q(1, 1), q(-1, 1)), Err(LnError::InvalidParameter { field: "u", .. })));
+    assert!(matches!(
+        HermiteData::new(q(0, 1), q(1, 1), q(1, 1)),
+        Err(LnError::InvalidParameter { field: "x1", .. })
+    ));
+    assert!(matches!(
+        HermiteData::new(q(1, 1), q(1, 1), q(0, 1)),
+        Err(LnError::InvalidParameter { field: "u", .. })
+    ));
+    assert!(matches!(
+        HermiteData::new(q(1, 1), q(1, 1), q(-1, 1)),
+        Err(LnError::InvalidParameter { field: "u", .. })
+    ));
     assert!(HermiteData::new(f64::NAN, 1.0, 1.0).is_err());
 }

@@ -22,12 +22,17 @@ pub struct Bezier<S> {
 impl<S: Scalar> Bezier<S> {
     /// From control points (at least one).
     pub fn new(pts: Vec<V2<S>>) -> Self {
-        assert!(!pts.is_empty(), "a Bézier curve needs at least one control point");
+        assert!(
+            !pts.is_empty(),
+            "a Bézier curve needs at least one control point"
+        );
         Bezier { pts }
     }
     /// Converts exact control points into `S`.
     pub fn from_rational(c: &Bezier<Rational>) -> Self {
-        Bezier { pts: c.pts.iter().map(V2::from_rational).collect() }
+        Bezier {
+            pts: c.pts.iter().map(V2::from_rational).collect(),
+        }
     }
     pub fn points(&self) -> &[V2<S>] {
         &self.pts
@@ -51,10 +56,18 @@ impl<S: Scalar> Bezier<S> {
     pub fn hodograph(&self) -> Bezier<S> {
         let n = self.degree();
         if n == 0 {
-            return Bezier { pts: vec![V2::zero()] };
+            return Bezier {
+                pts: vec![V2::zero()],
+            };
         }
         let k = S::from_i64(n as i64);
-        Bezier { pts: self.pts.windows(2).map(|w| w[1].sub(&w[0]).scale(&k)).collect() }
+        Bezier {
+            pts: self
+                .pts
+                .windows(2)
+                .map(|w| w[1].sub(&w[0]).scale(&k))
+                .collect(),
+        }
     }
     /// Splits at `t` into the pieces over `[0, t]` and `[t, 1]`, each
     /// reparametrised to `[0, 1]`.
@@ -107,7 +120,10 @@ impl<S: Scalar> Bezier<S> {
     }
     /// Bernstein coefficients of the x and y coordinates.
     pub fn coords(&self) -> (Vec<S>, Vec<S>) {
-        (self.pts.iter().map(|p| p.x.clone()).collect(), self.pts.iter().map(|p| p.y.clone()).collect())
+        (
+            self.pts.iter().map(|p| p.x.clone()).collect(),
+            self.pts.iter().map(|p| p.y.clone()).collect(),
+        )
     }
     /// Power-form coordinate polynomials `(x(t), y(t))`.
     pub fn power_coords(&self) -> (Poly<S>, Poly<S>) {
@@ -127,7 +143,9 @@ impl<S: Scalar> Bezier<S> {
     }
     /// Maps every coordinate.
     pub fn map<T: Scalar>(&self, f: impl Fn(&S) -> T + Copy) -> Bezier<T> {
-        Bezier { pts: self.pts.iter().map(|p| p.map(f)).collect() }
+        Bezier {
+            pts: self.pts.iter().map(|p| p.map(f)).collect(),
+        }
     }
 }
 
@@ -230,7 +248,12 @@ mod tests {
         V2::new(q(x), q(y))
     }
     fn cubic() -> Bezier<Rational> {
-        Bezier::new(vec![pt("-0.95", "0.7"), pt("-0.3", "0.5"), pt("0.3", "-2.5"), pt("0.9", "-0.2")])
+        Bezier::new(vec![
+            pt("-0.95", "0.7"),
+            pt("-0.3", "0.5"),
+            pt("0.3", "-2.5"),
+            pt("0.9", "-0.2"),
+        ])
     }
 
     #[test]
@@ -271,7 +294,12 @@ mod tests {
     fn cross_hodograph_matches_power_form() {
         let c = cubic();
         let (x, y) = c.power_coords();
-        let (x1, y1, x2, y2) = (x.derivative(), y.derivative(), x.derivative().derivative(), y.derivative().derivative());
+        let (x1, y1, x2, y2) = (
+            x.derivative(),
+            y.derivative(),
+            x.derivative().derivative(),
+            y.derivative().derivative(),
+        );
         let direct = x1.mul(&y2).sub(&y1.mul(&x2));
         let bern = Poly::from_bernstein(&c.cross_hodograph());
         assert_eq!(bern.trimmed(), direct.trimmed());

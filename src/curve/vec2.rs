@@ -23,24 +23,42 @@ impl<S: Scalar> V2<S> {
         V2 { x, y }
     }
     pub fn zero() -> Self {
-        V2 { x: S::zero(), y: S::zero() }
+        V2 {
+            x: S::zero(),
+            y: S::zero(),
+        }
     }
     /// Converts exact coordinates into `S`.
     pub fn from_rational(p: &V2<Rational>) -> Self {
-        V2 { x: S::from_rational(&p.x), y: S::from_rational(&p.y) }
+        V2 {
+            x: S::from_rational(&p.x),
+            y: S::from_rational(&p.y),
+        }
     }
     pub fn add(&self, o: &Self) -> Self {
-        V2 { x: self.x.clone() + o.x.clone(), y: self.y.clone() + o.y.clone() }
+        V2 {
+            x: self.x.clone() + o.x.clone(),
+            y: self.y.clone() + o.y.clone(),
+        }
     }
     pub fn sub(&self, o: &Self) -> Self {
-        V2 { x: self.x.clone() - o.x.clone(), y: self.y.clone() - o.y.clone() }
+        V2 {
+            x: self.x.clone() - o.x.clone(),
+            y: self.y.clone() - o.y.clone(),
+        }
     }
     pub fn neg(&self) -> Self {
-        V2 { x: -self.x.clone(), y: -self.y.clone() }
+        V2 {
+            x: -self.x.clone(),
+            y: -self.y.clone(),
+        }
     }
     /// `k * self`.
     pub fn scale(&self, k: &S) -> Self {
-        V2 { x: self.x.clone() * k.clone(), y: self.y.clone() * k.clone() }
+        V2 {
+            x: self.x.clone() * k.clone(),
+            y: self.y.clone() * k.clone(),
+        }
     }
     /// `(1-t) self + t o`.
     pub fn lerp(&self, o: &Self, t: &S) -> Self {
@@ -59,11 +77,17 @@ impl<S: Scalar> V2<S> {
     }
     /// Rotation by +pi/2: `R (x, y) = (-y, x)` (seed 000's `R`).
     pub fn rot90(&self) -> Self {
-        V2 { x: -self.y.clone(), y: self.x.clone() }
+        V2 {
+            x: -self.y.clone(),
+            y: self.x.clone(),
+        }
     }
     /// Maps both coordinates.
     pub fn map<T: Scalar>(&self, f: impl Fn(&S) -> T) -> V2<T> {
-        V2 { x: f(&self.x), y: f(&self.y) }
+        V2 {
+            x: f(&self.x),
+            y: f(&self.y),
+        }
     }
 }
 

@@ -50,14 +50,27 @@ impl<S: Scalar> ArcApprox<S> {
     /// `(cos α, sin α)` need not be normalised exactly for intervals, but the
     /// formulas assume `cos² + sin² = 1`.
     pub fn new(cos_a: S, sin_a: S, kappa: S) -> Result<Self, LnError> {
-        for (v, field) in [(&cos_a, "cos_alpha"), (&sin_a, "sin_alpha"), (&kappa, "kappa")] {
+        for (v, field) in [
+            (&cos_a, "cos_alpha"),
+            (&sin_a, "sin_alpha"),
+            (&kappa, "kappa"),
+        ] {
             match v.sign() {
                 Sign::Positive => {}
                 Sign::Unknown => return Err(LnError::Undecided { field }),
-                _ => return Err(LnError::InvalidParameter { field, reason: "must be > 0 (0 < 2α < π, κ > 0)" }),
+                _ => {
+                    return Err(LnError::InvalidParameter {
+                        field,
+                        reason: "must be > 0 (0 < 2α < π, κ > 0)",
+                    })
+                }
             }
         }
-        Ok(ArcApprox { cos_a, sin_a, kappa })
+        Ok(ArcApprox {
+            cos_a,
+            sin_a,
+            kappa,
+        })
     }
     /// `sin² α`.
     pub fn sin2(&self) -> S {
@@ -65,7 +78,10 @@ impl<S: Scalar> ArcApprox<S> {
     }
     /// The LN frame `(cos α, -sin α), (sec α, 0), (cos α, sin α)`.
     pub fn frame(&self) -> Result<LnFrame<S>, LnError> {
-        let sec = self.cos_a.recip().ok_or(LnError::Undecided { field: "cos_alpha" })?;
+        let sec = self
+            .cos_a
+            .recip()
+            .ok_or(LnError::Undecided { field: "cos_alpha" })?;
         // Never collinear: sin α > 0 and cos α > 0 are checked by `new`.
         Ok(LnFrame::new_unchecked(
             V2::new(self.cos_a.clone(), -self.sin_a.clone()),
@@ -133,7 +149,11 @@ impl<S: ScalarSqrt> ArcApprox<S> {
             Prop61Case::S2 => self.radial_error(&s2),
             Prop61Case::Both => {
                 let (e1, e2) = (self.radial_error(&s1)?, self.radial_error(&s2)?);
-                Some(if e1.cmp_sign(&e2).is_positive()? { e1 } else { e2 })
+                Some(if e1.cmp_sign(&e2).is_positive()? {
+                    e1
+                } else {
+                    e2
+                })
             }
         }
     }

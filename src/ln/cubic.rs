@@ -66,7 +66,10 @@ impl<S: Scalar> LnFrame<S> {
     }
     /// `λ² = |∇b1|² / |∇b0|²` (exact for rational data).
     pub fn lambda2(&self) -> S {
-        self.d1().norm2().div(&self.d0().norm2()).expect("non-collinear frame has ∇b0 ≠ 0")
+        self.d1()
+            .norm2()
+            .div(&self.d0().norm2())
+            .expect("non-collinear frame has ∇b0 ≠ 0")
     }
     /// `λ = |∇b1| / |∇b0|` (needs square roots).
     pub fn lambda(&self) -> Option<S>
@@ -89,7 +92,9 @@ impl<S: Scalar> LnFrame<S> {
     pub fn tangent_direction(&self, tau: &S, t: &S) -> V2<S> {
         let a = tau.scale(3) - S::from_i64(2);
         let b = tau.scale(3) - S::one();
-        self.d0().scale(&(a * (S::one() - t.clone()))).add(&self.d1().scale(&(b * t.clone())))
+        self.d0()
+            .scale(&(a * (S::one() - t.clone())))
+            .add(&self.d1().scale(&(b * t.clone())))
     }
 }
 
@@ -109,8 +114,18 @@ pub fn deltas_from_tau<S: Scalar>(tau: &Tau<S>) -> Result<(S, S), LnError> {
         Tau::Finite(t) => {
             let d0den = t.scale(3) - S::one();
             let d1den = t.scale(3) - S::from_i64(2);
-            let d0 = checked_div(t.scale(2), &d0den, "tau", "τ = 1/3 makes δ0 = 2τ/(3τ-1) undefined")?;
-            let d1 = checked_div((t.clone() - S::one()).scale(2), &d1den, "tau", "τ = 2/3 makes δ1 = 2(τ-1)/(3τ-2) undefined")?;
+            let d0 = checked_div(
+                t.scale(2),
+                &d0den,
+                "tau",
+                "τ = 1/3 makes δ0 = 2τ/(3τ-1) undefined",
+            )?;
+            let d1 = checked_div(
+                (t.clone() - S::one()).scale(2),
+                &d1den,
+                "tau",
+                "τ = 2/3 makes δ1 = 2(τ-1)/(3τ-2) undefined",
+            )?;
             Ok((d0, d1))
         }
     }
@@ -140,7 +155,12 @@ pub fn prop_3_1_regular<S: Scalar>(tau: &Tau<S>) -> Option<bool> {
 /// assert_eq!((d0, d1), (frac(-2, 3), frac(10, 9)));
 /// ```
 pub fn deltas_from_rho<S: Scalar>(rho: &S) -> Result<(S, S), LnError> {
-    let inv = checked_div(S::one(), rho, "rho", "ρ = κ/λ = 0 makes δ0 = 2/3 (2 - 1/ρ) undefined")?;
+    let inv = checked_div(
+        S::one(),
+        rho,
+        "rho",
+        "ρ = κ/λ = 0 makes δ0 = 2/3 (2 - 1/ρ) undefined",
+    )?;
     let two = S::from_i64(2);
     let d0 = (two.clone() - inv) * frac(2, 3);
     let d1 = (two - rho.clone()) * frac(2, 3);

@@ -48,5 +48,8 @@ pub fn has_no_root_on(p: &Poly<Rational>, span: &Span) -> bool {
 /// has no root there.
 pub fn normal_form_regular(f: &Poly<Rational>, u: &Rational) -> bool {
     let f2 = f.derivative().derivative();
-    has_no_root_on(&f2, &Span::closed(Rational::from_integer(0.into()), u.clone()))
+    has_no_root_on(
+        &f2,
+        &Span::closed(Rational::from_integer(0.into()), u.clone()),
+    )
 }

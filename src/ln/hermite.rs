@@ -70,9 +70,16 @@ pub enum A2Case {
 /// assert_eq!((r.lo, r.hi), (frac(1, 2), frac(1, 1)));
 /// ```
 pub fn cubic_nonsingular_u_range<S: Scalar>(x1: &S, y1: &S) -> Result<OpenRange<S>, LnError> {
-    nonzero(x1.sign(), "x1", "x1 = 0: the end point lies on the start normal, s = -y1/x1 undefined")?;
+    nonzero(
+        x1.sign(),
+        "x1",
+        "x1 = 0: the end point lies on the start normal, s = -y1/x1 undefined",
+    )?;
     let s = (-y1.clone()).div(x1).expect("checked");
-    Ok(OpenRange { lo: s.clone() * frac(3, 2), hi: s.scale(3) })
+    Ok(OpenRange {
+        lo: s.clone() * frac(3, 2),
+        hi: s.scale(3),
+    })
 }
 
 impl<S: Scalar> HermiteData<S> {
@@ -82,7 +89,10 @@ impl<S: Scalar> HermiteData<S> {
         match u.sign() {
             Sign::Positive => Ok(HermiteData { x1, y1, u }),
             Sign::Unknown => Err(LnError::Undecided { field: "u" }),
-            _ => Err(LnError::InvalidParameter { field: "u", reason: "u must be > 0 (parameter interval [0, u])" }),
+            _ => Err(LnError::InvalidParameter {
+                field: "u",
+                reason: "u must be > 0 (parameter interval [0, u])",
+            }),
         }
     }
     /// `s = -y1/x1`.
@@ -98,8 +108,12 @@ impl<S: Scalar> HermiteData<S> {
     /// System (1): `a2 = (-2u x1 - 3y1)/u²`, `a3 = (u x1 + 2y1)/u³`.
     pub fn cubic_coefficients(&self) -> (S, S) {
         let (x1, y1, u) = (&self.x1, &self.y1, &self.u);
-        let a2 = (-(u.clone() * x1.clone()).scale(2) - y1.scale(3)).div(&self.upow(2)).expect("u > 0");
-        let a3 = (u.clone() * x1.clone() + y1.scale(2)).div(&self.upow(3)).expect("u > 0");
+        let a2 = (-(u.clone() * x1.clone()).scale(2) - y1.scale(3))
+            .div(&self.upow(2))
+            .expect("u > 0");
+        let a3 = (u.clone() * x1.clone() + y1.scale(2))
+            .div(&self.upow(3))
+            .expect("u > 0");
         (a2, a3)
     }
     /// `f(t) = a2 t² + a3 t³` of the cubic interpolant.
@@ -114,7 +128,9 @@ impl<S: Scalar> HermiteData<S> {
     }
     /// Prop 2.1's verdict for this `u`: nonsingular on `[0, u]` iff `3s/2 < u < 3s`.
     pub fn prop_2_1(&self) -> Option<bool> {
-        cubic_nonsingular_u_range(&self.x1, &self.y1).ok()?.contains(&self.u)
+        cubic_nonsingular_u_range(&self.x1, &self.y1)
+            .ok()?
+            .contains(&self.u)
     }
 
     // ---- quartic (Props 3.1–3.3) ----
@@ -123,8 +139,12 @@ impl<S: Scalar> HermiteData<S> {
     pub fn quartic_coefficients(&self, a2: &S) -> (S, S) {
         let (x1, y1, u) = (&self.x1, &self.y1, &self.u);
         let ux = u.clone() * x1.clone();
-        let a3 = (-(a2.clone() * self.upow(2)).scale(2) - ux.scale(3) - y1.scale(4)).div(&self.upow(3)).expect("u > 0");
-        let a4 = (a2.clone() * self.upow(2) + ux.scale(2) + y1.scale(3)).div(&self.upow(4)).expect("u > 0");
+        let a3 = (-(a2.clone() * self.upow(2)).scale(2) - ux.scale(3) - y1.scale(4))
+            .div(&self.upow(3))
+            .expect("u > 0");
+        let a4 = (a2.clone() * self.upow(2) + ux.scale(2) + y1.scale(3))
+            .div(&self.upow(4))
+            .expect("u > 0");
         (a3, a4)
     }
     /// `f(t) = a2 t² + a3 t³ + a4 t⁴` of the quartic interpolant.
@@ -135,8 +155,11 @@ impl<S: Scalar> HermiteData<S> {
     /// Eq. (4): `g4(t) = 6t²(a2u² + 2ux1 + 3y1) - 3t(2u³a2 + 3u²x1 + 4uy1) + a2u⁴`.
     pub fn g4(&self, a2: &S) -> Poly<S> {
         let (x1, y1, u) = (&self.x1, &self.y1, &self.u);
-        let c2 = (a2.clone() * self.upow(2) + (u.clone() * x1.clone()).scale(2) + y1.scale(3)).scale(6);
-        let c1 = -(a2.clone() * self.upow(3)).scale(2) - (self.upow(2) * x1.clone()).scale(3) - (u.clone() * y1.clone()).scale(4);
+        let c2 =
+            (a2.clone() * self.upow(2) + (u.clone() * x1.clone()).scale(2) + y1.scale(3)).scale(6);
+        let c1 = -(a2.clone() * self.upow(3)).scale(2)
+            - (self.upow(2) * x1.clone()).scale(3)
+            - (u.clone() * y1.clone()).scale(4);
         Poly::new(vec![a2.clone() * self.upow(4), c1.scale(3), c2])
     }
     /// The printed `D` (the discriminant of `g4` divided by `3u² > 0`), a quadratic in `a2`:
@@ -150,7 +173,9 @@ impl<S: Scalar> HermiteData<S> {
         let (x1, y1, u) = (&self.x1, &self.y1, &self.u);
         let a = self.upow(4).scale(4);
         let b = (self.upow(3) * x1.clone()).scale(20) + (self.upow(2) * y1.clone()).scale(24);
-        let c = (self.upow(2) * x1.sqr()).scale(27) + (u.clone() * x1.clone() * y1.clone()).scale(72) + y1.sqr().scale(48);
+        let c = (self.upow(2) * x1.sqr()).scale(27)
+            + (u.clone() * x1.clone() * y1.clone()).scale(72)
+            + y1.sqr().scale(48);
         (a, b, c)
     }
     /// The printed `D1 = -2(u - (3-√3)s)(u - (3+√3)s) = -2(u² - 6us + 6s²)`.
@@ -160,7 +185,9 @@ impl<S: Scalar> HermiteData<S> {
     }
     /// `α2 = (6s - 3u)/(u²/x1)`, where `g4(u) = 0`.
     pub fn alpha2(&self) -> S {
-        ((self.s().scale(6) - self.u.scale(3)) * self.x1.clone()).div(&self.upow(2)).expect("u > 0")
+        ((self.s().scale(6) - self.u.scale(3)) * self.x1.clone())
+            .div(&self.upow(2))
+            .expect("u > 0")
     }
     /// The printed `α0, α1 = (6s - 5u ∓ √D1)/(2u²/x1)` (needs square roots;
     /// `None` when `D1 < 0`). Note: for `x1 < 0`, `α0 > α1`.
@@ -233,7 +260,11 @@ impl<S: Scalar> HermiteData<S> {
     /// The mirrored data `(-x1, -y1, u)`: the point reflection `K → -K` maps
     /// `f → -f`, so `a2 → -a2` and `s` is unchanged.
     fn mirrored(&self) -> HermiteData<S> {
-        HermiteData { x1: -self.x1.clone(), y1: -self.y1.clone(), u: self.u.clone() }
+        HermiteData {
+            x1: -self.x1.clone(),
+            y1: -self.y1.clone(),
+            u: self.u.clone(),
+        }
     }
     /// The engine's Prop 3.2 (corrected for `x1 < 0`): is the quartic with this
     /// `a2` nonsingular on `[0, u]`? The printed table assumes `x1 > 0`; for
@@ -304,7 +335,8 @@ impl<S: Scalar> HermiteData<S> {
     /// The printed `βi = m²(mβ + u²(u-m)²αi/x1)/(u⁴/x1)` for a given `αi`.
     pub fn beta_i(&self, m: &S, alpha: &S) -> Option<S> {
         let (u, x1) = (&self.u, &self.x1);
-        let inner = m.clone() * self.beta(m) + self.upow(2) * (u.clone() - m.clone()).sqr() * alpha.div(x1)?;
+        let inner = m.clone() * self.beta(m)
+            + self.upow(2) * (u.clone() - m.clone()).sqr() * alpha.div(x1)?;
         (m.sqr() * inner).div(&self.upow(4).div(x1)?)
     }
     /// Prop 3.3 as printed: is the intercept `b` valid for slope `m ∈ (0, u)`?

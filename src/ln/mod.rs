@@ -28,10 +28,16 @@ pub enum LnError {
     Collinear { field: &'static str },
     /// A parameter is outside the domain of a formula.
     #[error("{field}: {reason}")]
-    InvalidParameter { field: &'static str, reason: &'static str },
+    InvalidParameter {
+        field: &'static str,
+        reason: &'static str,
+    },
     /// Two frames are not compatible (their end normals differ).
     #[error("{field}: curves are not compatible: {reason}")]
-    NotCompatible { field: &'static str, reason: &'static str },
+    NotCompatible {
+        field: &'static str,
+        reason: &'static str,
+    },
     /// Interval arithmetic cannot decide a sign the result depends on.
     #[error("{field}: undecided in interval arithmetic (enclosure straddles a boundary)")]
     Undecided { field: &'static str },
@@ -48,7 +54,12 @@ pub(crate) fn nonzero(s: Sign, field: &'static str, reason: &'static str) -> Res
 
 /// `num / den`, or `InvalidParameter` if `den` is zero, `Undecided` if it may
 /// be zero. Symbolic scalars divide whenever `den` is not the zero function.
-pub(crate) fn checked_div<S: crate::scalar::Scalar>(num: S, den: &S, field: &'static str, reason: &'static str) -> Result<S, LnError> {
+pub(crate) fn checked_div<S: crate::scalar::Scalar>(
+    num: S,
+    den: &S,
+    field: &'static str,
+    reason: &'static str,
+) -> Result<S, LnError> {
     num.div(den).ok_or(match den.sign() {
         Sign::Unknown => LnError::Undecided { field },
         _ => LnError::InvalidParameter { field, reason },

@@ -81,9 +81,17 @@ fn parallel_ratio<S: Scalar>(a: &V2<S>, b: &V2<S>, field: &'static str) -> Resul
     match a.cross(b).sign() {
         Sign::Zero => {}
         Sign::Unknown => return Err(LnError::Undecided { field }),
-        _ => return Err(LnError::NotCompatible { field, reason: "end tangents are not parallel" }),
+        _ => {
+            return Err(LnError::NotCompatible {
+                field,
+                reason: "end tangents are not parallel",
+            })
+        }
     }
-    let c = b.dot(a).div(&a.norm2()).ok_or(LnError::Undecided { field })?;
+    let c = b
+        .dot(a)
+        .div(&a.norm2())
+        .ok_or(LnError::Undecided { field })?;
     nonzero(c.sign(), field, "degenerate end tangent")?;
     Ok(c)
 }
@@ -94,7 +102,12 @@ impl<S: Scalar> CompatiblePair<S> {
         let c0 = parallel_ratio(&left.d0(), &right.d0(), "right.bm-right.b0")?;
         let c1 = parallel_ratio(&left.d1(), &right.d1(), "right.b3-right.bm")?;
         match c0.sign().mul(c1.sign()) {
-            Sign::Positive => Ok(CompatiblePair { left, right, c0, c1 }),
+            Sign::Positive => Ok(CompatiblePair {
+                left,
+                right,
+                c0,
+                c1,
+            }),
             Sign::Unknown => Err(LnError::Undecided { field: "c0*c1" }),
             _ => Err(LnError::NotCompatible {
                 field: "right",
@@ -115,7 +128,10 @@ impl<S: Scalar> CompatiblePair<S> {
     /// points only) iff `1/4 <= q <= 4`.
     pub fn remark_4_3(&self) -> Option<bool> {
         let q = self.ratio();
-        Some(!q.cmp_sign(&frac(1, 4)).is_negative()? && !S::from_i64(4).cmp_sign(&q).is_negative()?)
+        Some(
+            !q.cmp_sign(&frac(1, 4)).is_negative()?
+                && !S::from_i64(4).cmp_sign(&q).is_negative()?,
+        )
     }
     /// The admissible `ρl = κ/λl`: `(1/2, 2) ∩ (q/2, 2q)` (empty iff Prop 4.2 fails).
     pub fn admissible_rho_left(&self) -> Option<OpenRange<S>> {
@@ -123,8 +139,16 @@ impl<S: Scalar> CompatiblePair<S> {
         let half = frac::<S>(1, 2);
         let lo_q = q.clone() * half.clone();
         let hi_q = q.scale(2);
-        let lo = if lo_q.cmp_sign(&half).is_positive()? { lo_q } else { half };
-        let hi = if hi_q.cmp_sign(&S::from_i64(2)).is_negative()? { hi_q } else { S::from_i64(2) };
+        let lo = if lo_q.cmp_sign(&half).is_positive()? {
+            lo_q
+        } else {
+            half
+        };
+        let hi = if hi_q.cmp_sign(&S::from_i64(2)).is_negative()? {
+            hi_q
+        } else {
+            S::from_i64(2)
+        };
         Some(OpenRange { lo, hi })
     }
     /// Builds the two curves for `ρl`, without checking regularity.
@@ -148,28 +172,40 @@ impl<S: Scalar> CompatiblePair<S> {
         S: ScalarSqrt,
     {
         let rho = match choice {
-            KappaChoice::GeometricMean => self.ratio().sqrt().ok_or(LnError::Undecided { field: "sqrt(q)" })?,
+            KappaChoice::GeometricMean => self
+                .ratio()
+                .sqrt()
+                .ok_or(LnError::Undecided { field: "sqrt(q)" })?,
             _ => return self.ln_pair_exact(choice),
         };
         self.ln_pair_exact(&KappaChoice::Rho(rho))
     }
     /// As [`Self::ln_pair`] for choices that need no square root (`Midpoint`, `Rho`).
     pub fn ln_pair_exact(&self, choice: &KappaChoice<S>) -> Result<LnPair<S>, LnError> {
-        let range = self.admissible_rho_left().ok_or(LnError::Undecided { field: "q" })?;
+        let range = self
+            .admissible_rho_left()
+            .ok_or(LnError::Undecided { field: "q" })?;
         if range.is_empty().ok_or(LnError::Undecided { field: "q" })? {
             return Err(LnError::InvalidParameter {
                 field: "lambda_r/lambda_l",
-                reason: "outside (1/4, 4): no pair of regular LN cubics with one normal map (Prop 4.2)",
+                reason:
+                    "outside (1/4, 4): no pair of regular LN cubics with one normal map (Prop 4.2)",
             });
         }
         let rho = match choice {
             KappaChoice::Midpoint => (range.lo.clone() + range.hi.clone()) * frac(1, 2),
             KappaChoice::Rho(r) => r.clone(),
             KappaChoice::GeometricMean => {
-                return Err(LnError::InvalidParameter { field: "kappa", reason: "geometric mean needs square roots" })
+                return Err(LnError::InvalidParameter {
+                    field: "kappa",
+                    reason: "geometric mean needs square roots",
+                })
             }
         };
-        if !range.contains(&rho).ok_or(LnError::Undecided { field: "kappa" })? {
+        if !range
+            .contains(&rho)
+            .ok_or(LnError::Undecided { field: "kappa" })?
+        {
             return Err(LnError::InvalidParameter {
                 field: "kappa",
                 reason: "κ/λl outside the admissible interval (1/2, 2) ∩ (q/2, 2q)",
@@ -179,14 +215,25 @@ impl<S: Scalar> CompatiblePair<S> {
     }
     /// The convolution `bl + br` (sum of control points) of a pair built from this frame pair.
     pub fn convolution(&self, pair: &LnPair<S>) -> Result<Convolution<S>, LnError> {
-        let (d0, d1) = convolution_deltas(&self.c0, &self.c1, &pair.deltas_left, &pair.deltas_right)?;
+        let (d0, d1) =
+            convolution_deltas(&self.c0, &self.c1, &pair.deltas_left, &pair.deltas_right)?;
         let frame = LnFrame::new(
             self.left.b0.add(&self.right.b0),
             self.left.bm.add(&self.right.bm),
             self.left.b3.add(&self.right.b3),
         )?;
-        let pts = pair.left.points().iter().zip(pair.right.points()).map(|(a, b)| a.add(b)).collect();
-        Ok(Convolution { frame, deltas: (d0, d1), curve: Bezier::new(pts) })
+        let pts = pair
+            .left
+            .points()
+            .iter()
+            .zip(pair.right.points())
+            .map(|(a, b)| a.add(b))
+            .collect();
+        Ok(Convolution {
+            frame,
+            deltas: (d0, d1),
+            curve: Bezier::new(pts),
+        })
     }
 }
 
@@ -227,11 +274,26 @@ pub fn cusp_parameter<S: Scalar>(deltas: &(S, S)) -> Option<Tau<S>> {
 /// The δ's of the convolution `bl + br` in its own frame `(b0ˡ+b0ʳ, bmˡ+bmʳ, b3ˡ+b3ʳ)`:
 /// `δ0 = (δ0ˡ + c0 δ0ʳ)/(1 + c0)`, `δ1 = (δ1ˡ + c1 δ1ʳ)/(1 + c1)`.
 /// `c0 = -1` or `c1 = -1` collapses a side of the convolution's frame: an error.
-pub fn convolution_deltas<S: Scalar>(c0: &S, c1: &S, left: &(S, S), right: &(S, S)) -> Result<(S, S), LnError> {
+pub fn convolution_deltas<S: Scalar>(
+    c0: &S,
+    c1: &S,
+    left: &(S, S),
+    right: &(S, S),
+) -> Result<(S, S), LnError> {
     let den0 = S::one() + c0.clone();
     let den1 = S::one() + c1.clone();
-    let d0 = checked_div(left.0.clone() + c0.clone() * right.0.clone(), &den0, "c0", "c0 = -1: the convolution's b0 and bm coincide")?;
-    let d1 = checked_div(left.1.clone() + c1.clone() * right.1.clone(), &den1, "c1", "c1 = -1: the convolution's bm and b3 coincide")?;
+    let d0 = checked_div(
+        left.0.clone() + c0.clone() * right.0.clone(),
+        &den0,
+        "c0",
+        "c0 = -1: the convolution's b0 and bm coincide",
+    )?;
+    let d1 = checked_div(
+        left.1.clone() + c1.clone() * right.1.clone(),
+        &den1,
+        "c1",
+        "c1 = -1: the convolution's bm and b3 coincide",
+    )?;
     Ok((d0, d1))
 }
 
@@ -271,7 +333,8 @@ impl crate::scalar::Predicate for PairDecision {
 /// `f64` inputs directly): `(Prop 4.2 holds, convolution cusp in (0,1))`.
 pub fn pair_decision<S: Scalar>(c0: &S, c1: &S, rho: &S) -> Option<(bool, Option<bool>)> {
     let q = c1.div(c0)?;
-    let exists = q.cmp_sign(&frac(1, 4)).is_positive()? && S::from_i64(4).cmp_sign(&q).is_positive()?;
+    let exists =
+        q.cmp_sign(&frac(1, 4)).is_positive()? && S::from_i64(4).cmp_sign(&q).is_positive()?;
     let admissible = exists
         && rho.cmp_sign(&frac(1, 2)).is_positive()?
         && S::from_i64(2).cmp_sign(rho).is_positive()?

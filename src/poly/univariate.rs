@@ -31,7 +31,9 @@ impl<S: Scalar> Poly<S> {
     }
     /// The monomial `t`.
     pub fn t() -> Self {
-        Poly { c: vec![S::zero(), S::one()] }
+        Poly {
+            c: vec![S::zero(), S::one()],
+        }
     }
     /// `a + b t`.
     pub fn linear(a: S, b: S) -> Self {
@@ -55,17 +57,29 @@ impl<S: Scalar> Poly<S> {
     }
     /// The derivative.
     pub fn derivative(&self) -> Self {
-        Poly { c: self.c.iter().enumerate().skip(1).map(|(i, a)| a.scale(i as i64)).collect() }
+        Poly {
+            c: self
+                .c
+                .iter()
+                .enumerate()
+                .skip(1)
+                .map(|(i, a)| a.scale(i as i64))
+                .collect(),
+        }
     }
     /// `k * self`.
     pub fn scale(&self, k: &S) -> Self {
-        Poly { c: self.c.iter().map(|a| a.clone() * k.clone()).collect() }
+        Poly {
+            c: self.c.iter().map(|a| a.clone() * k.clone()).collect(),
+        }
     }
     /// Sum.
     pub fn add(&self, o: &Self) -> Self {
         let n = self.c.len().max(o.c.len());
         let get = |v: &Vec<S>, i: usize| v.get(i).cloned().unwrap_or_else(S::zero);
-        Poly { c: (0..n).map(|i| get(&self.c, i) + get(&o.c, i)).collect() }
+        Poly {
+            c: (0..n).map(|i| get(&self.c, i) + get(&o.c, i)).collect(),
+        }
     }
     /// Difference.
     pub fn sub(&self, o: &Self) -> Self {
@@ -73,7 +87,9 @@ impl<S: Scalar> Poly<S> {
     }
     /// Negation.
     pub fn neg(&self) -> Self {
-        Poly { c: self.c.iter().map(|a| -a.clone()).collect() }
+        Poly {
+            c: self.c.iter().map(|a| -a.clone()).collect(),
+        }
     }
     /// Product.
     pub fn mul(&self, o: &Self) -> Self {
@@ -100,7 +116,9 @@ impl<S: Scalar> Poly<S> {
     /// Converts to another scalar through exact rationals is not possible in
     /// general; this maps each coefficient.
     pub fn map<T: Scalar>(&self, f: impl Fn(&S) -> T) -> Poly<T> {
-        Poly { c: self.c.iter().map(f).collect() }
+        Poly {
+            c: self.c.iter().map(f).collect(),
+        }
     }
     /// Power form of the Bernstein polynomial `sum b_i B^n_i(t)`.
     pub fn from_bernstein(b: &[S]) -> Self {
@@ -108,7 +126,9 @@ impl<S: Scalar> Poly<S> {
         let mut acc = Poly::zero();
         for (i, bi) in b.iter().enumerate() {
             // B^n_i(t) = C(n,i) t^i (1-t)^(n-i)
-            let mut term = Poly::constant(S::from_rational(&Rational::from_integer(binomial(n, i).into())));
+            let mut term = Poly::constant(S::from_rational(&Rational::from_integer(
+                binomial(n, i).into(),
+            )));
             for _ in 0..i {
                 term = term.mul(&Poly::t());
             }

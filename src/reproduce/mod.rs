@@ -13,6 +13,7 @@
 //! "known wrong".
 
 pub mod printed;
+mod scans;
 mod seed000;
 mod seed003;
 
@@ -55,8 +56,20 @@ pub struct Claim {
 }
 
 impl Claim {
-    pub(crate) fn new(id: &str, source: &str, statement: impl Into<String>, verdict: Verdict, detail: impl Into<String>) -> Claim {
-        Claim { id: id.into(), source: source.into(), statement: statement.into(), verdict, detail: detail.into() }
+    pub(crate) fn new(
+        id: &str,
+        source: &str,
+        statement: impl Into<String>,
+        verdict: Verdict,
+        detail: impl Into<String>,
+    ) -> Claim {
+        Claim {
+            id: id.into(),
+            source: source.into(),
+            statement: statement.into(),
+            verdict,
+            detail: detail.into(),
+        }
     }
 }
 
@@ -80,5 +93,6 @@ pub fn run_all() -> Vec<Claim> {
     let mut out = Vec::new();
     seed000::claims(&mut out);
     seed003::claims(&mut out);
+    scans::claims(&mut out);
     out
 }

@@ -35,9 +35,19 @@ pub struct PrintedValue {
 impl PrintedValue {
     /// Splits at `=` and `~` and parses each part.
     pub fn parse(text: &str) -> PrintedValue {
-        let mut out = PrintedValue { text: text.to_string(), ..Default::default() };
-        for part in text.split(['=', '~']).map(str::trim).filter(|p| !p.is_empty()) {
-            let is_decimal = part.chars().all(|c| c.is_ascii_digit() || c == '.' || c == '-') && part.contains('.');
+        let mut out = PrintedValue {
+            text: text.to_string(),
+            ..Default::default()
+        };
+        for part in text
+            .split(['=', '~'])
+            .map(str::trim)
+            .filter(|p| !p.is_empty())
+        {
+            let is_decimal = part
+                .chars()
+                .all(|c| c.is_ascii_digit() || c == '.' || c == '-')
+                && part.contains('.');
             if is_decimal {
                 out.decimals.push(part.to_string());
             } else if let Ok(v) = parse_expr(part) {
@@ -60,7 +70,10 @@ impl PrintedValue {
 /// The constant value of a polynomial of degree 0.
 pub fn constant_of(p: &Poly<Surd>) -> Option<Surd> {
     let c = p.coeffs();
-    if c.iter().skip(1).all(|a| a.as_rational().is_some_and(|r| r == num_traits::Zero::zero())) {
+    if c.iter().skip(1).all(|a| {
+        a.as_rational()
+            .is_some_and(|r| r == num_traits::Zero::zero())
+    }) {
         Some(c.first().cloned().unwrap_or_else(Surd::zero))
     } else {
         None
@@ -109,7 +122,11 @@ fn tokenize(s: &str) -> Result<Vec<Tok>, String> {
                 i += 1;
             }
             out.push(Tok::Num(cs[st..i].iter().collect()));
-        } else if c == 't' && !cs.get(i + 1).is_some_and(|c| c.is_alphanumeric() || *c == '_') {
+        } else if c == 't'
+            && !cs
+                .get(i + 1)
+                .is_some_and(|c| c.is_alphanumeric() || *c == '_')
+        {
             out.push(Tok::T);
             i += 1;
         } else if s[s.char_indices().nth(i).map_or(0, |x| x.0)..].starts_with("sqrt") {
@@ -133,7 +150,9 @@ struct Parser {
 fn mul(a: Val, b: Val) -> Result<Val, String> {
     match (a, b) {
         (Val::Scalar(p), Val::Scalar(q)) => Ok(Val::Scalar(p.mul(&q))),
-        (Val::Scalar(p), Val::Vector(x, y)) | (Val::Vector(x, y), Val::Scalar(p)) => Ok(Val::Vector(p.mul(&x), p.mul(&y))),
+        (Val::Scalar(p), Val::Vector(x, y)) | (Val::Vector(x, y), Val::Scalar(p)) => {
+            Ok(Val::Vector(p.mul(&x), p.mul(&y)))
+        }
         _ => Err("product of two vectors".into()),
     }
 }
@@ -142,7 +161,9 @@ fn add(a: Val, b: Val, sign: i64) -> Result<Val, String> {
     let k = Poly::constant(Surd::from_i64(sign));
     match (a, b) {
         (Val::Scalar(p), Val::Scalar(q)) => Ok(Val::Scalar(p.add(&q.mul(&k)))),
-        (Val::Vector(a, b), Val::Vector(c, d)) => Ok(Val::Vector(a.add(&c.mul(&k)), b.add(&d.mul(&k)))),
+        (Val::Vector(a, b), Val::Vector(c, d)) => {
+            Ok(Val::Vector(a.add(&c.mul(&k)), b.add(&d.mul(&k))))
+        }
         _ => Err("sum of a scalar and a vector".into()),
     }
 }
@@ -178,11 +199,16 @@ impl Parser {
                 v = mul(v, self.unary()?)?;
             } else if self.eat('/') {
                 let d = self.unary()?;
-                let Val::Scalar(d) = d else { return Err("division by a vector".into()) };
+                let Val::Scalar(d) = d else {
+                    return Err("division by a vector".into());
+                };
                 let c = constant_of(&d).ok_or("division by a non-constant")?;
                 let r = c.recip().ok_or("division by zero")?;
                 v = mul(v, Val::Scalar(Poly::constant(r)))?;
-            } else if matches!(self.peek(), Some(Tok::Num(_) | Tok::T | Tok::Sqrt | Tok::Op('(') | Tok::Op('<'))) {
+            } else if matches!(
+                self.peek(),
+                Some(Tok::Num(_) | Tok::T | Tok::Sqrt | Tok::Op('(') | Tok::Op('<'))
+            ) {
                 v = mul(v, self.unary()?)?;
             } else {
                 return Ok(v);
@@ -217,9 +243,13 @@ impl Parser {
                 } else {
                     self.atom()?
                 };
-                let Val::Scalar(p) = arg else { return Err("sqrt of a vector".into()) };
+                let Val::Scalar(p) = arg else {
+                    return Err("sqrt of a vector".into());
+                };
                 let c = constant_of(&p).ok_or("sqrt of a non-constant")?;
-                Ok(Val::Scalar(Poly::constant(c.sqrt().ok_or("sqrt outside one quadratic field")?)))
+                Ok(Val::Scalar(Poly::constant(
+                    c.sqrt().ok_or("sqrt outside one quadratic field")?,
+                )))
             }
             Tok::Op('(') => {
                 let v = self.expr()?;

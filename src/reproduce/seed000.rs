@@ -7,19 +7,31 @@ use crate::curve::{Bezier, V2};
 use crate::ln::circle::ArcApprox;
 use crate::ln::cubic::{deltas_from_rho, tau_from_rho, LnFrame, Tau};
 use crate::ln::direct::singular_points;
-use crate::ln::pair::{convolution_has_interior_cusp, cusp_parameter, prop_4_4_as_printed, CompatiblePair, KappaChoice};
+use crate::ln::pair::{
+    convolution_has_interior_cusp, cusp_parameter, prop_4_4_as_printed, CompatiblePair, KappaChoice,
+};
 use crate::poly::{Poly, Span};
-use crate::scalar::{parse_rational, sin_cos_enclosure, Interval, IntervalExt, Rational, Scalar, ScalarSqrt, Sign, Surd};
+use crate::scalar::{
+    parse_rational, sin_cos_enclosure, Interval, IntervalExt, Rational, Scalar, ScalarSqrt, Sign,
+    Surd,
+};
 use serde_json::Value;
 
 type R<T> = Result<T, String>;
 
 fn q(v: &Value) -> R<Rational> {
-    let s = v.as_str().map(str::to_string).or_else(|| v.as_f64().map(|f| f.to_string())).ok_or("not a number")?;
+    let s = v
+        .as_str()
+        .map(str::to_string)
+        .or_else(|| v.as_f64().map(|f| f.to_string()))
+        .ok_or("not a number")?;
     parse_rational(&s).map_err(|e| e.to_string())
 }
 fn pt(v: &Value) -> R<V2<Surd>> {
-    Ok(V2::new(Surd::rational(q(&v[0])?), Surd::rational(q(&v[1])?)))
+    Ok(V2::new(
+        Surd::rational(q(&v[0])?),
+        Surd::rational(q(&v[1])?),
+    ))
 }
 fn frame(v: &Value) -> R<LnFrame<Surd>> {
     LnFrame::new(pt(&v["b0"])?, pt(&v["bm"])?, pt(&v["b3"])?).map_err(|e| e.to_string())
@@ -56,7 +68,9 @@ pub(crate) fn judge(printed: &str, exact: &Surd) -> (Verdict, String) {
     }
     let mut decimals_ok = Vec::new();
     for d in &p.decimals {
-        let ok = Interval::printed(d).zip(exact.enclosure()).map(|(pi, e)| e.subset(pi));
+        let ok = Interval::printed(d)
+            .zip(exact.enclosure())
+            .map(|(pi, e)| e.subset(pi));
         match ok {
             Some(true) => decimals_ok.push(d.clone()),
             Some(false) => wrong.push(format!("printed decimal {d} does not round the true value")),
@@ -68,9 +82,15 @@ pub(crate) fn judge(printed: &str, exact: &Surd) -> (Verdict, String) {
         let agree = if decimals_ok.is_empty() {
             String::new()
         } else {
-            format!(" (the printed decimal {} agrees with the engine: the closed form is the misprint)", decimals_ok.join(", "))
+            format!(
+                " (the printed decimal {} agrees with the engine: the closed form is the misprint)",
+                decimals_ok.join(", ")
+            )
         };
-        (Verdict::Erratum, format!("{truth}; {}{agree}", wrong.join("; ")))
+        (
+            Verdict::Erratum,
+            format!("{truth}; {}{agree}", wrong.join("; ")),
+        )
     } else if undecided || (p.exact.is_empty() && p.decimals.is_empty()) {
         (Verdict::Undecided, truth)
     } else {
@@ -80,18 +100,42 @@ pub(crate) fn judge(printed: &str, exact: &Surd) -> (Verdict, String) {
 
 /// Exact equality of a printed vector polynomial with a computed one.
 fn judge_vector(printed: &str, x: &Poly<Surd>, y: &Poly<Surd>) -> (Verdict, String) {
-    let fmt = |p: &Poly<Surd>| p.coeffs().iter().map(|c| c.to_string()).collect::<Vec<_>>().join(", ");
-    let engine = format!("engine: x' coefficients [{}], y' coefficients [{}] (power basis)", fmt(x), fmt(y));
+    let fmt = |p: &Poly<Surd>| {
+        p.coeffs()
+            .iter()
+            .map(|c| c.to_string())
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let engine = format!(
+        "engine: x' coefficients [{}], y' coefficients [{}] (power basis)",
+        fmt(x),
+        fmt(y)
+    );
     match parse_expr(printed) {
         Ok(Val::Vector(px, py)) => {
-            let zero = |p: Poly<Surd>| p.coeffs().iter().map(|c| c.sign().is_zero()).try_fold(true, |a, b| Some(a && b?));
+            let zero = |p: Poly<Surd>| {
+                p.coeffs()
+                    .iter()
+                    .map(|c| c.sign().is_zero())
+                    .try_fold(true, |a, b| Some(a && b?))
+            };
             match (zero(px.sub(x)), zero(py.sub(y))) {
-                (Some(true), Some(true)) => (Verdict::Certified, format!("equal as polynomials; {engine}")),
-                (Some(_), Some(_)) => (Verdict::Erratum, format!("printed [{}], [{}] differ; {engine}", fmt(&px), fmt(&py))),
+                (Some(true), Some(true)) => (
+                    Verdict::Certified,
+                    format!("equal as polynomials; {engine}"),
+                ),
+                (Some(_), Some(_)) => (
+                    Verdict::Erratum,
+                    format!("printed [{}], [{}] differ; {engine}", fmt(&px), fmt(&py)),
+                ),
                 _ => (Verdict::Undecided, engine),
             }
         }
-        _ => (Verdict::Undecided, format!("could not read the printed expression; {engine}")),
+        _ => (
+            Verdict::Undecided,
+            format!("could not read the printed expression; {engine}"),
+        ),
     }
 }
 
@@ -108,7 +152,11 @@ fn printed_vector(v: &Value) -> Option<V2<Surd>> {
 
 /// Checks a printed unit normal against both ends of the left frame.
 fn judge_normal(which: usize, printed: &Value, f: &LnFrame<Surd>) -> (Verdict, String) {
-    let (Some(n), Some(n0), Some(n1)) = (printed_vector(printed), unit_normal(&f.d0()), unit_normal(&f.d1())) else {
+    let (Some(n), Some(n0), Some(n1)) = (
+        printed_vector(printed),
+        unit_normal(&f.d0()),
+        unit_normal(&f.d1()),
+    ) else {
         return (Verdict::Undecided, "could not evaluate".into());
     };
     let eq = |a: &V2<Surd>, b: &V2<Surd>| Some(equal(&a.x, &b.x)? && equal(&a.y, &b.y)?);
@@ -144,25 +192,48 @@ fn fig5(out: &mut Vec<Claim>, case: &str) -> R<()> {
     let (l, r) = (frame(&d["left"])?, frame(&d["right"])?);
     let pair = CompatiblePair::new(l.clone(), r.clone()).map_err(|e| e.to_string())?;
     let qr = pair.ratio();
-    let orient = if pair.c0.sign() == Sign::Positive { "parallel" } else { "anti-parallel" };
+    let orient = if pair.c0.sign() == Sign::Positive {
+        "parallel"
+    } else {
+        "anti-parallel"
+    };
     let ok = pair.remark_4_3() == Some(true) && pair.prop_4_2() == Some(true);
     out.push(Claim::new(
         &id("compatible"),
         &src,
         "the two curves are compatible and λl, λr satisfy eq. (7)",
-        if ok { Verdict::Certified } else { Verdict::Refuted },
-        format!("end tangents {orient} (c0 = {}, c1 = {}); λr/λl = {} exactly", pair.c0, pair.c1, qr),
+        if ok {
+            Verdict::Certified
+        } else {
+            Verdict::Refuted
+        },
+        format!(
+            "end tangents {orient} (c0 = {}, c1 = {}); λr/λl = {} exactly",
+            pair.c0, pair.c1, qr
+        ),
     ));
     for (which, key) in [(0, "N0_printed"), (1, "N1_printed")] {
         let (v, det) = judge_normal(which, &d[key], &l);
-        out.push(Claim::new(&id(&format!("N{which}")), &src, format!("N{which} = {}", d[key]), v, det));
+        out.push(Claim::new(
+            &id(&format!("N{which}")),
+            &src,
+            format!("N{which} = {}", d[key]),
+            v,
+            det,
+        ));
     }
     let lam_l = l.lambda().ok_or("λl")?;
     let lam_r = r.lambda().ok_or("λr")?;
     for (key, lam) in [("lambda_l_printed", &lam_l), ("lambda_r_printed", &lam_r)] {
         let p = d[key].as_str().unwrap_or_default();
         let (v, det) = judge(p, lam);
-        out.push(Claim::new(&id(key.trim_end_matches("_printed")), &src, format!("{} = {p}", &key[..8]), v, det));
+        out.push(Claim::new(
+            &id(key.trim_end_matches("_printed")),
+            &src,
+            format!("{} = {p}", &key[..8]),
+            v,
+            det,
+        ));
     }
     // κ = sqrt(λl λr) = sqrt(λl² q), exact.
     let kappa2 = (l.lambda2() * qr.clone()).as_rational().ok_or("κ²")?;
@@ -184,28 +255,58 @@ fn fig5(out: &mut Vec<Claim>, case: &str) -> R<()> {
                 verdicts.push((format!("end {i} ≈ {dec}"), judge(dec, end)));
             }
         }
-        let bad: Vec<_> = verdicts.iter().filter(|(_, (v, _))| *v != Verdict::Certified).collect();
-        let verdict = if bad.is_empty() { Verdict::Certified } else if bad.iter().any(|(_, (v, _))| *v == Verdict::Undecided) { Verdict::Undecided } else { Verdict::Erratum };
+        let bad: Vec<_> = verdicts
+            .iter()
+            .filter(|(_, (v, _))| *v != Verdict::Certified)
+            .collect();
+        let verdict = if bad.is_empty() {
+            Verdict::Certified
+        } else if bad.iter().any(|(_, (v, _))| *v == Verdict::Undecided) {
+            Verdict::Undecided
+        } else {
+            Verdict::Erratum
+        };
         let printed = iv.to_string();
-        let wrong: Vec<String> = bad.iter().map(|(w, (_, det))| format!("{w}: {det}")).collect();
+        let wrong: Vec<String> = bad
+            .iter()
+            .map(|(w, (_, det))| format!("{w}: {det}"))
+            .collect();
         out.push(Claim::new(
             &id("kappa-interval"),
             &src,
             format!("κ may be chosen in {printed}"),
             verdict,
-            format!("engine: open interval ({}, {}); {}", show(&klo), show(&khi), wrong.join("; ")),
+            format!(
+                "engine: open interval ({}, {}); {}",
+                show(&klo),
+                show(&khi),
+                wrong.join("; ")
+            ),
         ));
     }
     // δ's from κ = geometric mean (exact in Q(√q)).
-    let ln = pair.ln_pair(&KappaChoice::GeometricMean).map_err(|e| e.to_string())?;
-    for (key, deltas) in [("delta_l_printed", &ln.deltas_left), ("delta_r_printed", &ln.deltas_right)] {
+    let ln = pair
+        .ln_pair(&KappaChoice::GeometricMean)
+        .map_err(|e| e.to_string())?;
+    for (key, deltas) in [
+        ("delta_l_printed", &ln.deltas_left),
+        ("delta_r_printed", &ln.deltas_right),
+    ] {
         let text_key = format!("fig5{case}_{}", key.trim_end_matches("_printed"));
-        let Some(arr) = d.get(key).or_else(|| text["seed000"].get(&text_key)) else { continue };
+        let Some(arr) = d.get(key).or_else(|| text["seed000"].get(&text_key)) else {
+            continue;
+        };
         for (i, dv) in [&deltas.0, &deltas.1].into_iter().enumerate() {
             let p = arr[i].as_str().unwrap_or_default();
             let (v, det) = judge(p, dv);
             let side = &key[6..7];
-            out.push(Claim::new(&id(&format!("delta{side}{i}")), &src, format!("δ{i}^{side} = {p}"), v, det));
+            out.push(Claim::new(
+                &id(&format!("delta{side}{i}")),
+                &src,
+                format!("δ{i}^{side} = {p}"),
+                v,
+                det,
+            ));
         }
     }
     // Hodographs as printed.
@@ -216,13 +317,33 @@ fn fig5(out: &mut Vec<Claim>, case: &str) -> R<()> {
     let (lx, ly) = hodo(&ln.left);
     let (rx, ry) = hodo(&ln.right);
     let printed_hodo = [
-        ("bl-prime", d.get("bl_prime_printed").cloned().or_else(|| text["seed000"].get(format!("fig5{case}_bl_prime")).cloned()), &lx, &ly),
-        ("br-prime", d.get("br_prime_printed").cloned().or_else(|| text["seed000"].get(format!("fig5{case}_br_prime")).cloned()), &rx, &ry),
+        (
+            "bl-prime",
+            d.get("bl_prime_printed")
+                .cloned()
+                .or_else(|| text["seed000"].get(format!("fig5{case}_bl_prime")).cloned()),
+            &lx,
+            &ly,
+        ),
+        (
+            "br-prime",
+            d.get("br_prime_printed")
+                .cloned()
+                .or_else(|| text["seed000"].get(format!("fig5{case}_br_prime")).cloned()),
+            &rx,
+            &ry,
+        ),
     ];
     for (name, pv, x, y) in printed_hodo {
         if let Some(p) = pv.as_ref().and_then(Value::as_str) {
             let (v, det) = judge_vector(p, x, y);
-            out.push(Claim::new(&id(name), &src, format!("{}'(t) = {p}", &name[..2]), v, det));
+            out.push(Claim::new(
+                &id(name),
+                &src,
+                format!("{}'(t) = {p}", &name[..2]),
+                v,
+                det,
+            ));
         }
     }
     // b'_l ∥ b'_r for all t: the cross product vanishes identically.
@@ -232,7 +353,11 @@ fn fig5(out: &mut Vec<Claim>, case: &str) -> R<()> {
         &id("parallel"),
         &src,
         "b'l(t) ∥ b'r(t) for all t (one linear normal map)",
-        if parallel { Verdict::Certified } else { Verdict::Refuted },
+        if parallel {
+            Verdict::Certified
+        } else {
+            Verdict::Refuted
+        },
         "x'l y'r - y'l x'r is the zero polynomial (exact)",
     ));
     // Convolution.
@@ -241,13 +366,28 @@ fn fig5(out: &mut Vec<Claim>, case: &str) -> R<()> {
         for (i, dv) in [&conv.deltas.0, &conv.deltas.1].into_iter().enumerate() {
             let p = arr[i].as_str().unwrap_or_default();
             let (v, det) = judge(p, dv);
-            out.push(Claim::new(&id(&format!("conv-delta{i}")), &src, format!("convolution δ{i} = {p}"), v, det));
+            out.push(Claim::new(
+                &id(&format!("conv-delta{i}")),
+                &src,
+                format!("convolution δ{i} = {p}"),
+                v,
+                det,
+            ));
         }
     }
     let (cx, cy) = hodo(&conv.curve);
-    if let Some(p) = text["seed000"].get(format!("fig5{case}_conv_prime")).and_then(Value::as_str) {
+    if let Some(p) = text["seed000"]
+        .get(format!("fig5{case}_conv_prime"))
+        .and_then(Value::as_str)
+    {
         let (v, det) = judge_vector(p, &cx, &cy);
-        out.push(Claim::new(&id("conv-prime"), &src, format!("(bl*br)'(t) = {p}"), v, det));
+        out.push(Claim::new(
+            &id("conv-prime"),
+            &src,
+            format!("(bl*br)'(t) = {p}"),
+            v,
+            det,
+        ));
     }
     let printed_says = prop_4_4_as_printed(&conv.deltas);
     let engine_says = convolution_has_interior_cusp(&conv.deltas);
@@ -268,7 +408,9 @@ fn fig5(out: &mut Vec<Claim>, case: &str) -> R<()> {
         Some(Tau::Infinite) => Some(false),
         None => None,
     };
-    let rational_direct = to_rational_curve(&conv.curve).and_then(|c| singular_points(&c, &Span::unit_open())).map(|r| !r.is_empty());
+    let rational_direct = to_rational_curve(&conv.curve)
+        .and_then(|c| singular_points(&c, &Span::unit_open()))
+        .map(|r| !r.is_empty());
     let direct = rational_direct.or(direct);
     let verdict = match (printed_says, engine_says, direct) {
         (Some(p), Some(e), Some(dr)) if p == e && e == dr => Verdict::Certified,
@@ -282,15 +424,29 @@ fn fig5(out: &mut Vec<Claim>, case: &str) -> R<()> {
         verdict,
         format!("convolution δ = ({}, {}); cusp parameter τ = {tau_txt}; direct check (hodograph zero in (0,1)): {direct:?}", show(&conv.deltas.0), show(&conv.deltas.1)),
     ));
-    if let (Some(p), Some(Tau::Finite(t))) = (d.get("convolution_cusp_tau_printed").and_then(Value::as_str), &tau) {
+    if let (Some(p), Some(Tau::Finite(t))) = (
+        d.get("convolution_cusp_tau_printed")
+            .and_then(Value::as_str),
+        &tau,
+    ) {
         let (v, det) = judge(p, t);
-        out.push(Claim::new(&id("cusp-tau"), &src, format!("the convolution's cusp is at τ = {p}"), v, det));
+        out.push(Claim::new(
+            &id("cusp-tau"),
+            &src,
+            format!("the convolution's cusp is at τ = {p}"),
+            v,
+            det,
+        ));
     }
     Ok(())
 }
 
 fn to_rational_curve(c: &Bezier<Surd>) -> Option<Bezier<Rational>> {
-    let pts = c.points().iter().map(|p| Some(V2::new(p.x.as_rational()?, p.y.as_rational()?))).collect::<Option<Vec<_>>>()?;
+    let pts = c
+        .points()
+        .iter()
+        .map(|p| Some(V2::new(p.x.as_rational()?, p.y.as_rational()?)))
+        .collect::<Option<Vec<_>>>()?;
     Some(Bezier::new(pts))
 }
 
@@ -319,13 +475,29 @@ fn fig4(out: &mut Vec<Claim>) -> R<()> {
         let deltas_ok = q(&case["deltas"][0])? == d0 && q(&case["deltas"][1])? == d1;
         let curve = f.cubic(&d0, &d1);
         let sing = singular_points(&curve, &Span::unit_closed()).ok_or("hodograph ≡ 0")?;
-        let sing_txt: Vec<String> = sing.iter().map(|r| if r.is_exact() { r.lo.to_string() } else { format!("[{}, {}]", r.lo, r.hi) }).collect();
+        let sing_txt: Vec<String> = sing
+            .iter()
+            .map(|r| {
+                if r.is_exact() {
+                    r.lo.to_string()
+                } else {
+                    format!("[{}, {}]", r.lo, r.hi)
+                }
+            })
+            .collect();
         // The singular points must be exactly {τ} ∩ [0, 1]: one isolating interval
         // containing τ, and the hodograph vanishing at τ exactly.
         let sing_ok = match &tau {
-            Tau::Finite(t) if *t >= Rational::from_integer(0.into()) && *t <= Rational::from_integer(1.into()) => {
+            Tau::Finite(t)
+                if *t >= Rational::from_integer(0.into())
+                    && *t <= Rational::from_integer(1.into()) =>
+            {
                 let h = curve.hodograph().eval(t);
-                sing.len() == 1 && sing[0].lo <= *t && *t <= sing[0].hi && h.x == Rational::from_integer(0.into()) && h.y == Rational::from_integer(0.into())
+                sing.len() == 1
+                    && sing[0].lo <= *t
+                    && *t <= sing[0].hi
+                    && h.x == Rational::from_integer(0.into())
+                    && h.y == Rational::from_integer(0.into())
             }
             _ => sing.is_empty(),
         };
@@ -349,16 +521,29 @@ fn fig10(out: &mut Vec<Claim>) -> R<()> {
             let d: f64 = den.parse().ok()?;
             Some(Interval::PI / Interval::point(d)?)
         } else {
-            Some(crate::scalar::interval_from_rational(&parse_rational(s).ok()?))
+            Some(crate::scalar::interval_from_rational(
+                &parse_rational(s).ok()?,
+            ))
         }
     };
-    for (i, case) in text["seed000"]["fig10"]["cases"].as_array().ok_or("fig10")?.iter().enumerate() {
+    for (i, case) in text["seed000"]["fig10"]["cases"]
+        .as_array()
+        .ok_or("fig10")?
+        .iter()
+        .enumerate()
+    {
         let first = case["first"].as_str().unwrap_or_default();
         let second = case["second"].as_str().unwrap_or_default();
-        let expect: Vec<&str> = case["inside"].as_array().map(|a| a.iter().filter_map(Value::as_str).collect()).unwrap_or_default();
+        let expect: Vec<&str> = case["inside"]
+            .as_array()
+            .map(|a| a.iter().filter_map(Value::as_str).collect())
+            .unwrap_or_default();
         let eval = |alpha: Interval, kappa: Interval| -> Option<(Vec<&'static str>, bool)> {
             let (s, c) = sin_cos_enclosure(alpha);
-            let valid = alpha.inf() > 0.0 && alpha.sup() * 2.0 < std::f64::consts::PI && kappa.inf() >= 0.5 && kappa.sup() <= 2.0;
+            let valid = alpha.inf() > 0.0
+                && alpha.sup() * 2.0 < std::f64::consts::PI
+                && kappa.inf() >= 0.5
+                && kappa.sup() <= 2.0;
             let arc = ArcApprox::new(c, s, kappa).ok()?;
             let (in1, in2) = arc.params_in_unit()?;
             let mut v = Vec::new();
@@ -370,7 +555,10 @@ fn fig10(out: &mut Vec<Claim>) -> R<()> {
             }
             Some((v, valid))
         };
-        let (a, b) = (read_angle(first).ok_or("angle")?, read_angle(second).ok_or("angle")?);
+        let (a, b) = (
+            read_angle(first).ok_or("angle")?,
+            read_angle(second).ok_or("angle")?,
+        );
         let literal = eval(b, a); // printed as (κ, α) = (first, second)
         let swapped = eval(a, b); // read as (α, κ)
         let (verdict, detail) = match (&literal, &swapped) {
@@ -396,11 +584,21 @@ fn fig10(out: &mut Vec<Claim>) -> R<()> {
 }
 
 pub(super) fn claims(out: &mut Vec<Claim>) {
-    let parts: [(&str, fn(&mut Vec<Claim>) -> R<()>); 4] =
-        [("fig4", fig4), ("fig5a", |o| fig5(o, "a")), ("fig5b", |o| fig5(o, "b")), ("fig10", fig10)];
+    let parts: [(&str, fn(&mut Vec<Claim>) -> R<()>); 4] = [
+        ("fig4", fig4),
+        ("fig5a", |o| fig5(o, "a")),
+        ("fig5b", |o| fig5(o, "b")),
+        ("fig10", fig10),
+    ];
     for (name, f) in parts {
         if let Err(e) = f(out) {
-            out.push(Claim::new(&format!("000-{name}"), "seed 000", "built-in data", Verdict::Undecided, format!("error: {e}")));
+            out.push(Claim::new(
+                &format!("000-{name}"),
+                "seed 000",
+                "built-in data",
+                Verdict::Undecided,
+                format!("error: {e}"),
+            ));
         }
     }
 }

@@ -45,7 +45,10 @@ impl FilterStats {
 
 /// Process-wide counters of [`filtered`] (relaxed atomics; thread-safe).
 pub fn filter_stats() -> FilterStats {
-    FilterStats { calls: CALLS.load(Ordering::Relaxed), fallbacks: FALLBACKS.load(Ordering::Relaxed) }
+    FilterStats {
+        calls: CALLS.load(Ordering::Relaxed),
+        fallbacks: FALLBACKS.load(Ordering::Relaxed),
+    }
 }
 
 /// Resets the counters of [`filter_stats`].

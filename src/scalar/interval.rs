@@ -107,8 +107,10 @@ impl IntervalExt for Interval {
         if self.is_empty() {
             return false;
         }
-        let lo_ok = self.inf() == f64::NEG_INFINITY || rational_from_f64(self.inf()).is_some_and(|l| &l <= r);
-        let hi_ok = self.sup() == f64::INFINITY || rational_from_f64(self.sup()).is_some_and(|h| &h >= r);
+        let lo_ok = self.inf() == f64::NEG_INFINITY
+            || rational_from_f64(self.inf()).is_some_and(|l| &l <= r);
+        let hi_ok =
+            self.sup() == f64::INFINITY || rational_from_f64(self.sup()).is_some_and(|h| &h >= r);
         lo_ok && hi_ok
     }
     fn printed(digits: &str) -> Option<Interval> {
@@ -209,8 +211,14 @@ mod tests {
         for i in -40..=40 {
             let x = i as f64 * 0.37;
             let (s, c) = sin_cos_enclosure(Interval::point(x).unwrap());
-            assert!(s.contains(x.sin()) || (s.inf() - x.sin()).abs() < 1e-15, "sin {x}");
-            assert!(c.contains(x.cos()) || (c.inf() - x.cos()).abs() < 1e-15, "cos {x}");
+            assert!(
+                s.contains(x.sin()) || (s.inf() - x.sin()).abs() < 1e-15,
+                "sin {x}"
+            );
+            assert!(
+                c.contains(x.cos()) || (c.inf() - x.cos()).abs() < 1e-15,
+                "cos {x}"
+            );
             assert!(s.wid() < 1e-13 && c.wid() < 1e-13);
             // sin^2 + cos^2 = 1 must be inside the enclosure.
             assert!((s.sqr() + c.sqr()).contains(1.0));

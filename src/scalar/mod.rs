@@ -23,8 +23,10 @@ pub use filter::{filter_stats, filtered, reset_filter_stats, Decision, FilterSta
 pub use interval::{
     interval_from_rational, interval_to_json, sin_cos_enclosure, Interval, IntervalExt,
 };
+pub use rational::{
+    parse_rational, rational_from_f64, rational_to_string, ParseNumberError, Rational,
+};
 pub use surd::Surd;
-pub use rational::{parse_rational, rational_from_f64, rational_to_string, ParseNumberError, Rational};
 
 use std::fmt::Debug;
 use std::ops::{Add, Mul, Neg, Sub};
@@ -176,7 +178,14 @@ pub fn sign_a_plus_b_sqrt_c<S: Scalar>(a: &S, b: &S, c: &S) -> Sign {
     if sc == Sign::Negative || sc == Sign::Unknown {
         return Sign::Unknown;
     }
-    let (sa, sb) = (a.sign(), if sc == Sign::Zero { Sign::Zero } else { b.sign() });
+    let (sa, sb) = (
+        a.sign(),
+        if sc == Sign::Zero {
+            Sign::Zero
+        } else {
+            b.sign()
+        },
+    );
     match (sa, sb) {
         (Sign::Unknown, _) | (_, Sign::Unknown) => Sign::Unknown,
         (x, Sign::Zero) => x,

@@ -64,7 +64,10 @@ const MAX_EXPONENT: i64 = 4000;
 /// assert!(parse_rational("1/0").is_err());
 /// ```
 pub fn parse_rational(text: &str) -> Result<Rational, ParseNumberError> {
-    let err = |reason| ParseNumberError { input: text.to_string(), reason };
+    let err = |reason| ParseNumberError {
+        input: text.to_string(),
+        reason,
+    };
     let s = text.trim();
     if s.is_empty() {
         return Err(err("empty"));
@@ -98,7 +101,11 @@ fn parse_decimal(s: &str) -> Result<Rational, &'static str> {
     if int_part.is_empty() && frac_part.is_empty() {
         return Err("no digits");
     }
-    if !int_part.bytes().chain(frac_part.bytes()).all(|b| b.is_ascii_digit()) {
+    if !int_part
+        .bytes()
+        .chain(frac_part.bytes())
+        .all(|b| b.is_ascii_digit())
+    {
         return Err("not a finite decimal or fraction (digits, '.', 'e', '/' only)");
     }
     let digits = format!("{int_part}{frac_part}");
@@ -203,7 +210,11 @@ fn approx_quotient(r: &Rational) -> f64 {
     let e = sn - sd;
     let q = nf / df;
     if e > 2100 {
-        return if q == 0.0 { 0.0 } else { q.signum() * f64::INFINITY };
+        return if q == 0.0 {
+            0.0
+        } else {
+            q.signum() * f64::INFINITY
+        };
     }
     if e < -2200 {
         return 0.0 * q.signum();
@@ -219,7 +230,14 @@ mod tests {
 
     #[test]
     fn bracket_is_tight_and_correct() {
-        for s in ["1/3", "-1/3", "0.1", "1e-320", "123456789012345678901234567890/7", "-2/3"] {
+        for s in [
+            "1/3",
+            "-1/3",
+            "0.1",
+            "1e-320",
+            "123456789012345678901234567890/7",
+            "-2/3",
+        ] {
             let r = parse_rational(s).unwrap();
             let (lo, hi) = rational_to_f64_bracket(&r);
             assert!(rational_from_f64(lo).unwrap() <= r, "{s}");
@@ -234,13 +252,19 @@ mod tests {
     fn nearest_matches_std_parse_for_decimals() {
         for s in ["0.1", "0.95", "-2.5e-3", "1e22", "3.14159", "7e-310"] {
             let r = parse_rational(s).unwrap();
-            assert_eq!(rational_to_f64_nearest(&r), s.parse::<f64>().unwrap(), "{s}");
+            assert_eq!(
+                rational_to_f64_nearest(&r),
+                s.parse::<f64>().unwrap(),
+                "{s}"
+            );
         }
     }
 
     #[test]
     fn parse_rejects_garbage() {
-        for s in ["", "-", "1/", "/2", "1.2.3", "inf", "1e", "0x10", "1/0", "1e99999", "--1"] {
+        for s in [
+            "", "-", "1/", "/2", "1.2.3", "inf", "1e", "0x10", "1/0", "1e99999", "--1",
+        ] {
             assert!(parse_rational(s).is_err(), "{s:?} should be rejected");
         }
     }

@@ -36,7 +36,11 @@ pub enum Surd {
 impl Surd {
     /// A rational as a surd.
     pub fn rational(a: Rational) -> Surd {
-        Surd::Num { a, b: q0(), d: BigInt::one() }
+        Surd::Num {
+            a,
+            b: q0(),
+            d: BigInt::one(),
+        }
     }
     /// `√r` for a rational `r >= 0`, reduced (`√(8/9) = (2/3)√2`); `None` if `r < 0`
     /// or the numbers are too large to factor (> 10^12 after reduction).
@@ -48,12 +52,18 @@ impl Surd {
         let pq = r.numer() * r.denom();
         let (outside, inside) = square_part(&pq)?;
         let coeff = Rational::new(outside, r.denom().clone());
-        Some(if inside.is_one() {
-            Surd::rational(coeff)
-        } else {
-            Surd::Num { a: q0(), b: coeff, d: inside }
-        }
-        .normalised())
+        Some(
+            if inside.is_one() {
+                Surd::rational(coeff)
+            } else {
+                Surd::Num {
+                    a: q0(),
+                    b: coeff,
+                    d: inside,
+                }
+            }
+            .normalised(),
+        )
     }
     fn normalised(self) -> Surd {
         match self {
@@ -95,7 +105,18 @@ impl Surd {
     /// independent over Q). `None` only for [`Surd::Mixed`].
     pub fn exact_eq(&self, o: &Surd) -> Option<bool> {
         match (self, o) {
-            (Surd::Num { a: a1, b: b1, d: d1 }, Surd::Num { a: a2, b: b2, d: d2 }) => {
+            (
+                Surd::Num {
+                    a: a1,
+                    b: b1,
+                    d: d1,
+                },
+                Surd::Num {
+                    a: a2,
+                    b: b2,
+                    d: d2,
+                },
+            ) => {
                 if b1.is_zero() || b2.is_zero() || d1 == d2 {
                     Some(a1 == a2 && b1 == b2 && (b1.is_zero() || d1 == d2))
                 } else {
@@ -108,7 +129,11 @@ impl Surd {
     /// The conjugate `a - b√d`.
     pub fn conjugate(&self) -> Surd {
         match self {
-            Surd::Num { a, b, d } => Surd::Num { a: a.clone(), b: -b.clone(), d: d.clone() },
+            Surd::Num { a, b, d } => Surd::Num {
+                a: a.clone(),
+                b: -b.clone(),
+                d: d.clone(),
+            },
             Surd::Mixed => Surd::Mixed,
         }
     }
@@ -153,7 +178,11 @@ fn square_part(n: &BigInt) -> Option<(BigInt, BigInt)> {
     Some((outside.into(), inside.into()))
 }
 
-fn combine(x: Surd, y: Surd, f: impl Fn((Rational, Rational), (Rational, Rational), &BigInt) -> (Rational, Rational)) -> Surd {
+fn combine(
+    x: Surd,
+    y: Surd,
+    f: impl Fn((Rational, Rational), (Rational, Rational), &BigInt) -> (Rational, Rational),
+) -> Surd {
     match Surd::common_d(&x, &y) {
         Some(d) => {
             let (a, b) = f(x.parts(), y.parts(), &d);
@@ -179,7 +208,19 @@ impl Mul for Surd {
     type Output = Surd;
     fn mul(self, o: Surd) -> Surd {
         // Two pure surds of different fields multiply into a third field.
-        if let (Surd::Num { a: a1, b: b1, d: d1 }, Surd::Num { a: a2, b: b2, d: d2 }) = (&self, &o) {
+        if let (
+            Surd::Num {
+                a: a1,
+                b: b1,
+                d: d1,
+            },
+            Surd::Num {
+                a: a2,
+                b: b2,
+                d: d2,
+            },
+        ) = (&self, &o)
+        {
             if a1.is_zero() && a2.is_zero() && !b1.is_zero() && !b2.is_zero() && d1 != d2 {
                 let g = d1.gcd(d2);
                 let d = (d1 / &g) * (d2 / &g);
@@ -226,7 +267,14 @@ impl Scalar for Surd {
                 if n.is_zero() {
                     return None;
                 }
-                Some(Surd::Num { a: a / &n, b: -b / &n, d: d.clone() }.normalised())
+                Some(
+                    Surd::Num {
+                        a: a / &n,
+                        b: -b / &n,
+                        d: d.clone(),
+                    }
+                    .normalised(),
+                )
             }
         }
     }
@@ -268,8 +316,14 @@ mod tests {
 
     #[test]
     fn sqrt_reduces() {
-        assert_eq!(Surd::sqrt_of(&frac(8, 9)).unwrap().to_string(), "2/3*sqrt(2)");
-        assert_eq!(Surd::sqrt_of(&frac(1, 3)).unwrap().to_string(), "1/3*sqrt(3)");
+        assert_eq!(
+            Surd::sqrt_of(&frac(8, 9)).unwrap().to_string(),
+            "2/3*sqrt(2)"
+        );
+        assert_eq!(
+            Surd::sqrt_of(&frac(1, 3)).unwrap().to_string(),
+            "1/3*sqrt(3)"
+        );
         assert_eq!(Surd::sqrt_of(&frac(49, 4)).unwrap().to_string(), "7/2");
         assert!(Surd::sqrt_of(&frac(-1, 1)).is_none());
     }
@@ -281,14 +335,20 @@ mod tests {
         assert_eq!((r2.clone() * r3.clone()).to_string(), "1*sqrt(6)");
         assert_eq!((r2.clone() + r3.clone()), Surd::Mixed);
         assert_eq!(r2.exact_eq(&r3), Some(false));
-        assert_eq!(r2.exact_eq(&(Surd::sqrt_of(&frac(8, 1)).unwrap() * frac(1, 2))), Some(true));
+        assert_eq!(
+            r2.exact_eq(&(Surd::sqrt_of(&frac(8, 1)).unwrap() * frac(1, 2))),
+            Some(true)
+        );
         assert_eq!(Surd::from_i64(1).exact_eq(&r2), Some(false));
         assert_eq!((r2.clone() + r3).sign(), Sign::Unknown);
         let x = Surd::from_i64(1) + r2.clone();
         let y = x.recip().unwrap();
         assert_eq!(x * y, Surd::from_i64(1));
         // 3 - 2√2 > 0 but tiny; 1.41 - √2 < 0
-        assert_eq!((Surd::from_i64(3) - r2.clone() * Surd::from_i64(2)).sign(), Sign::Positive);
+        assert_eq!(
+            (Surd::from_i64(3) - r2.clone() * Surd::from_i64(2)).sign(),
+            Sign::Positive
+        );
         assert_eq!((frac::<Surd>(141, 100) - r2).sign(), Sign::Negative);
     }
 }

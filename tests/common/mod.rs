@@ -9,11 +9,18 @@ use proptest::prelude::*;
 
 /// Cases per property: `LNCERT_PROPTEST_CASES` (default 2000, the CI setting).
 pub fn cases() -> u32 {
-    std::env::var("LNCERT_PROPTEST_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(2000)
+    std::env::var("LNCERT_PROPTEST_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(2000)
 }
 
 pub fn config() -> ProptestConfig {
-    ProptestConfig { cases: cases(), failure_persistence: None, ..ProptestConfig::default() }
+    ProptestConfig {
+        cases: cases(),
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    }
 }
 
 pub fn q(p: i64, d: i64) -> Rational {
@@ -61,7 +68,12 @@ pub fn rho() -> impl Strategy<Value = Rational> {
 }
 
 /// A frame compatible with `left`: `∇b0ʳ = c0 ∇b0ˡ`, `∇b1ʳ = c1 ∇b1ˡ`, `c0 c1 > 0`.
-pub fn compatible_right(left: &LnFrame<Rational>, b0: V2<Rational>, c0: Rational, c1: Rational) -> LnFrame<Rational> {
+pub fn compatible_right(
+    left: &LnFrame<Rational>,
+    b0: V2<Rational>,
+    c0: Rational,
+    c1: Rational,
+) -> LnFrame<Rational> {
     let bm = b0.add(&left.d0().scale(&c0));
     let b3 = bm.add(&left.d1().scale(&c1));
     LnFrame::new(b0, bm, b3).expect("scaled frame stays non-collinear")
@@ -79,13 +91,16 @@ pub fn end_ratios() -> impl Strategy<Value = (Rational, Rational)> {
 
 /// End ratios c0, c1 of one sign with 1/4 < c1/c0 < 4 (Prop 4.2 holds).
 pub fn end_ratios_admissible() -> impl Strategy<Value = (Rational, Rational)> {
-    ((1i64..=30, 1i64..=6), (1i64..=15, 1i64..=15), any::<bool>()).prop_filter_map("q in (1/4, 4)", |((a, b), (kn, kd), neg)| {
-        let k = q(kn, kd);
-        if k <= q(1, 4) || k >= q(4, 1) {
-            return None;
-        }
-        let c0 = q(a, b);
-        let c1 = &c0 * &k;
-        Some(if neg { (-c0, -c1) } else { (c0, c1) })
-    })
+    ((1i64..=30, 1i64..=6), (1i64..=15, 1i64..=15), any::<bool>()).prop_filter_map(
+        "q in (1/4, 4)",
+        |((a, b), (kn, kd), neg)| {
+            let k = q(kn, kd);
+            if k <= q(1, 4) || k >= q(4, 1) {
+                return None;
+            }
+            let c0 = q(a, b);
+            let c1 = &c0 * &k;
+            Some(if neg { (-c0, -c1) } else { (c0, c1) })
+        },
+    )
 }
