@@ -18,10 +18,12 @@ use crate::scalar::Rational;
 /// use lncert::poly::Span;
 /// use lncert::scalar::{frac, Rational};
 /// let p = |x: i64, y: i64| V2::<Rational>::new(frac(x, 1), frac(y, 1));
-/// // A cusp: control polygon crossing itself symmetrically.
-/// let c = Bezier::new(vec![p(0, 0), p(2, 2), p(-1, 2), p(1, 0)]);
+/// // Seed 000 eq. (1) with τ = 1/2 on the frame (0,0), (1,1), (2,0): δ0 = δ1 = 2.
+/// let c = Bezier::new(vec![p(0, 0), p(2, 2), p(0, 2), p(2, 0)]);
 /// let roots = singular_points(&c, &Span::unit_closed()).unwrap();
 /// assert_eq!(roots.len(), 1);
+/// let half: Rational = frac(1, 2);
+/// assert!(roots[0].lo <= half && half <= roots[0].hi);
 /// ```
 pub fn singular_points(curve: &Bezier<Rational>, span: &Span) -> Option<Vec<RealRoot>> {
     let (x, y) = curve.hodograph().power_coords();

@@ -182,6 +182,13 @@ fn quartic_check(
     r.exact("a3", "a3 = -(2a2u² + 3ux1 + 4y1)/u³", &a3);
     r.exact("a4", "a4 = (a2u² + 2ux1 + 3y1)/u⁴", &a4);
     r.verdict(label, v, "nonsingular on [0, u]", "singular on [0, u]");
+    r.decision(
+        "engine",
+        "engine (Prop 3.2 corrected: intervals mirrored for x1 < 0)",
+        data.nonsingular_a2_contains(a2),
+        "nonsingular on [0, u]",
+        "singular on [0, u]",
+    );
     let d = normal_form_regular(&data.quartic_f(a2), &data.u);
     r.direct(
         "f'' has no root on [0, u]",
