@@ -252,3 +252,73 @@ fn f64_path_matches_exact_on_fig5a() {
             && (pf.deltas_left.1 - 8.0 / 9.0).abs() < 1e-15
     );
 }
+
+/// Bad input is a typed error naming the field, in every arithmetic; never a panic.
+#[test]
+fn bad_input_is_a_typed_error() {
+    use lncert::curve::V2;
+    use lncert::ln::circle::ArcApprox;
+    use lncert::ln::hermite::{cubic_nonsingular_u_range, HermiteData};
+    let field = |e: LnError| match e {
+        LnError::InvalidParameter { field, .. }
+        | LnError::Collinear { field }
+        | LnError::Undecided { field }
+        | LnError::NotCompatible { field, .. } => field,
+    };
+    let p = |x: f64, y: f64| V2::new(x, y);
+    assert_eq!(
+        field(LnFrame::new(p(f64::NAN, 0.0), p(1.0, 1.0), p(2.0, 0.0)).unwrap_err()),
+        "b0"
+    );
+    assert_eq!(
+        field(LnFrame::new(p(0.0, 0.0), p(f64::INFINITY, 1.0), p(2.0, 0.0)).unwrap_err()),
+        "bm"
+    );
+    assert_eq!(
+        field(LnFrame::new(p(0.0, 0.0), p(1.0, 1.0), p(2.0, 2.0)).unwrap_err()),
+        "b0,bm,b3"
+    );
+    assert_eq!(
+        field(LnFrame::new(p(1.0, 1.0), p(1.0, 1.0), p(2.0, 0.0)).unwrap_err()),
+        "b0,bm,b3"
+    );
+    assert_eq!(
+        field(deltas_from_tau(&Tau::Finite(f64::NAN)).unwrap_err()),
+        "tau"
+    );
+    assert_eq!(field(deltas_from_rho(&0.0f64).unwrap_err()), "rho");
+    assert_eq!(
+        field(HermiteData::new(1.0, f64::NAN, 1.0).unwrap_err()),
+        "y1"
+    );
+    assert_eq!(
+        field(cubic_nonsingular_u_range(&f64::NEG_INFINITY, &1.0).unwrap_err()),
+        "x1"
+    );
+    assert_eq!(
+        field(ArcApprox::new(0.5, 0.5, f64::NAN).unwrap_err()),
+        "kappa"
+    );
+    assert_eq!(
+        field(ArcApprox::new(-0.5, 0.5, 1.0).unwrap_err()),
+        "cos_alpha"
+    );
+    // Huge and tiny coordinates stay exact on the rational path.
+    let big = q(10, 1).pow(300);
+    let tiny = q(1, 1) / &big;
+    let f = LnFrame::new(
+        lncert::curve::V2::new(tiny.clone(), q(0, 1)),
+        lncert::curve::V2::new(big.clone(), big.clone()),
+        lncert::curve::V2::new(q(2, 1) * &big, tiny),
+    )
+    .unwrap();
+    let (d0, d1) = deltas_from_tau(&Tau::Finite(q(-1, 1))).unwrap();
+    assert!(is_regular_on(&f.cubic(&d0, &d1), &Span::unit_closed()));
+    // Incompatible pairs are rejected with the reason.
+    let l = LnFrame::new(p(0.0, 0.0), p(1.0, 0.0), p(1.0, 1.0)).unwrap();
+    let r = LnFrame::new(p(0.0, 0.0), p(0.0, 1.0), p(1.0, 1.0)).unwrap();
+    assert!(matches!(
+        CompatiblePair::new(l, r),
+        Err(LnError::NotCompatible { .. })
+    ));
+}

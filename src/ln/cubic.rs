@@ -11,7 +11,7 @@
 //! rational `ρ` every curve here is exact. `λ = |bm - b3| / |b0 - bm|` itself is
 //! irrational in general: exact code compares `λ²` (see [`LnFrame::lambda2`]).
 
-use super::{checked_div, LnError};
+use super::{checked_div, finite, LnError};
 use crate::curve::{Bezier, V2};
 use crate::scalar::{frac, Scalar, ScalarSqrt, Sign};
 
@@ -44,6 +44,9 @@ pub enum Tau<S> {
 impl<S: Scalar> LnFrame<S> {
     /// Checks that `b0, bm, b3` are not collinear (which also excludes coincident points).
     pub fn new(b0: V2<S>, bm: V2<S>, b3: V2<S>) -> Result<Self, LnError> {
+        finite(&[&b0.x, &b0.y], "b0")?;
+        finite(&[&bm.x, &bm.y], "bm")?;
+        finite(&[&b3.x, &b3.y], "b3")?;
         let f = LnFrame { b0, bm, b3 };
         match f.d0().cross(&f.d1()).sign() {
             Sign::Zero => Err(LnError::Collinear { field: "b0,bm,b3" }),
@@ -109,6 +112,9 @@ impl<S: Scalar> LnFrame<S> {
 /// assert_eq!((d0, d1), (frac(1, 2), frac(4, 5)));
 /// ```
 pub fn deltas_from_tau<S: Scalar>(tau: &Tau<S>) -> Result<(S, S), LnError> {
+    if let Tau::Finite(t) = tau {
+        finite(&[t], "tau")?;
+    }
     match tau {
         Tau::Infinite => Ok((frac(2, 3), frac(2, 3))),
         Tau::Finite(t) => {
@@ -155,6 +161,7 @@ pub fn prop_3_1_regular<S: Scalar>(tau: &Tau<S>) -> Option<bool> {
 /// assert_eq!((d0, d1), (frac(-2, 3), frac(10, 9)));
 /// ```
 pub fn deltas_from_rho<S: Scalar>(rho: &S) -> Result<(S, S), LnError> {
+    finite(&[rho], "rho")?;
     let inv = checked_div(
         S::one(),
         rho,

@@ -18,7 +18,7 @@
 //! [`sign_a_plus_b_sqrt_c`] (squares and signs only) and enclosed with intervals
 //! for display ([`QuarticHermite::alphas`]).
 
-use super::{nonzero, LnError, OpenRange};
+use super::{finite, nonzero, LnError, OpenRange};
 use crate::poly::Poly;
 use crate::scalar::{frac, sign_a_plus_b_sqrt_c, Scalar, ScalarSqrt, Sign};
 
@@ -70,6 +70,8 @@ pub enum A2Case {
 /// assert_eq!((r.lo, r.hi), (frac(1, 2), frac(1, 1)));
 /// ```
 pub fn cubic_nonsingular_u_range<S: Scalar>(x1: &S, y1: &S) -> Result<OpenRange<S>, LnError> {
+    finite(&[x1], "x1")?;
+    finite(&[y1], "y1")?;
     nonzero(
         x1.sign(),
         "x1",
@@ -85,6 +87,9 @@ pub fn cubic_nonsingular_u_range<S: Scalar>(x1: &S, y1: &S) -> Result<OpenRange<
 impl<S: Scalar> HermiteData<S> {
     /// Validates `x1 ≠ 0` and `u > 0`.
     pub fn new(x1: S, y1: S, u: S) -> Result<Self, LnError> {
+        finite(&[&x1], "x1")?;
+        finite(&[&y1], "y1")?;
+        finite(&[&u], "u")?;
         nonzero(x1.sign(), "x1", "x1 = 0: s = -y1/x1 undefined")?;
         match u.sign() {
             Sign::Positive => Ok(HermiteData { x1, y1, u }),

@@ -52,6 +52,21 @@ pub(crate) fn nonzero(s: Sign, field: &'static str, reason: &'static str) -> Res
     }
 }
 
+/// Fails with `InvalidParameter` naming `field` if a value is not a finite number.
+pub(crate) fn finite<S: crate::scalar::Scalar>(
+    values: &[&S],
+    field: &'static str,
+) -> Result<(), LnError> {
+    if values.iter().all(|v| v.is_finite()) {
+        Ok(())
+    } else {
+        Err(LnError::InvalidParameter {
+            field,
+            reason: "not a finite number (NaN or infinite)",
+        })
+    }
+}
+
 /// `num / den`, or `InvalidParameter` if `den` is zero, `Undecided` if it may
 /// be zero. Symbolic scalars divide whenever `den` is not the zero function.
 pub(crate) fn checked_div<S: crate::scalar::Scalar>(

@@ -49,6 +49,9 @@ impl Scalar for f64 {
     fn approx(&self) -> f64 {
         *self
     }
+    fn is_finite(&self) -> bool {
+        f64::is_finite(*self)
+    }
 }
 
 impl ScalarSqrt for f64 {

@@ -58,6 +58,9 @@ impl Scalar for Interval {
     fn approx(&self) -> f64 {
         self.mid()
     }
+    fn is_finite(&self) -> bool {
+        !self.is_empty() && self.inf().is_finite() && self.sup().is_finite()
+    }
     fn sqr(&self) -> Self {
         Interval::sqr(*self)
     }

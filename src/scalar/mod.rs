@@ -130,6 +130,11 @@ pub trait Scalar:
     /// A float approximation, for display and for the fast path.
     fn approx(&self) -> f64;
 
+    /// False for values that are not finite numbers (NaN, ±inf for `f64`;
+    /// unbounded or empty enclosures). Exact arithmetics are always finite.
+    fn is_finite(&self) -> bool {
+        true
+    }
     /// `self * self`.
     fn sqr(&self) -> Self {
         self.clone() * self.clone()
