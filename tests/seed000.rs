@@ -322,3 +322,21 @@ fn bad_input_is_a_typed_error() {
         Err(LnError::NotCompatible { .. })
     ));
 }
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// Prop 4.2 + 4.4 decisions: the interval path never contradicts the exact
+    /// one, the filtered decision always equals it, and planted boundary cases
+    /// (q = 4, q = 1/4 exactly) are decided.
+    #[test]
+    fn pair_decision_paths_agree((c0, c1) in end_ratios(), rn in 1i64..=300) {
+        use lncert::ln::pair::PairDecision;
+        use lncert::scalar::{filtered, Predicate};
+        let d = PairDecision { c0, c1, rho_left: q(rn, 100) };
+        let exact = d.decide::<Rational>();
+        prop_assert!(exact.is_some());
+        if let Some(v) = d.decide::<Interval>() { prop_assert_eq!(Some(v), exact.clone()); }
+        prop_assert_eq!(filtered(&d), exact);
+    }
+}

@@ -177,3 +177,26 @@ fn prop_2_1_example_and_bad_input() {
     ));
     assert!(HermiteData::new(f64::NAN, 1.0, 1.0).is_err());
 }
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// The interval path never contradicts the exact path (it may say undecided),
+    /// for Props 2.1, 3.2 and 3.3.
+    #[test]
+    fn interval_path_never_contradicts_exact(h in prop_oneof![hermite(), hermite_interesting()], a2 in rat(), mt in 1i64..=99, b in rat()) {
+        let iv = |r: &Rational| Interval::from_rational(r);
+        let hi = HermiteData::new(iv(&h.x1), iv(&h.y1), iv(&h.u)).unwrap();
+        let m = h.u.clone() * q(mt, 100);
+        let pairs = [
+            (hi.prop_2_1(), h.prop_2_1()),
+            (hi.prop_3_2_exists(), h.prop_3_2_exists()),
+            (hi.nonsingular_a2_contains(&iv(&a2)), h.nonsingular_a2_contains(&a2)),
+            (hi.valid_intercept(&iv(&m), &iv(&b)), h.valid_intercept(&m, &b)),
+        ];
+        for (i, (got, exact)) in pairs.into_iter().enumerate() {
+            prop_assert!(exact.is_some(), "exact path undecided ({i})");
+            if let Some(g) = got { prop_assert_eq!(Some(g), exact, "check {}", i); }
+        }
+    }
+}

@@ -309,6 +309,10 @@ impl fmt::Display for Surd {
     }
 }
 
+fn q0() -> Rational {
+    <Rational as Zero>::zero()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -351,8 +355,4 @@ mod tests {
         );
         assert_eq!((frac::<Surd>(141, 100) - r2).sign(), Sign::Negative);
     }
-}
-
-fn q0() -> Rational {
-    <Rational as Zero>::zero()
 }
