@@ -146,6 +146,11 @@ proptest! {
             let boundary = |d: &Rational| *d == zero() || *d == one();
             prop_assert!(boundary(&conv.deltas.0) || boundary(&conv.deltas.1));
         }
+        // Parallel pairs (c0, c1 > 0) never have a cusp: δ0, δ1 of the sum are
+        // convex combinations of the parts' δ's, which lie in (0, 1).
+        if pair.c0 > zero() {
+            prop_assert!(!direct, "a parallel pair with a cusp");
+        }
         if direct {
             let Some(Tau::Finite(tau)) = cusp_parameter(&conv.deltas) else { return Err(TestCaseError::fail("no τ")) };
             prop_assert!(roots[0].lo <= tau && tau <= roots[0].hi);

@@ -132,8 +132,8 @@ proptest! {
 }
 
 /// Erratum (Prop 3.2): the printed table assumes x1 > 0. For x1 = -1, y1 = 2/3,
-/// u = 11/4 the quartic with a2 = 4/7 is nonsingular, but the printed interval
-/// (α0, α2) is empty because α0 > α2 when x1 < 0.
+/// u = 11/4 (u/s = 33/8 > 4) the quartic with a2 = 4/7 is nonsingular, but the
+/// printed interval (α0, α1) is empty because α0 ≈ 0.727 > α1 ≈ 0.563 when x1 < 0.
 #[test]
 fn erratum_prop_3_2_negative_x1() {
     let h = HermiteData::new(q(-1, 1), q(2, 3), q(11, 4)).unwrap();
@@ -141,6 +141,20 @@ fn erratum_prop_3_2_negative_x1() {
     assert!(normal_form_regular(&h.quartic_f(&a2), &h.u));
     assert_eq!(h.prop_3_2_contains(&a2), Some(false));
     assert_eq!(h.nonsingular_a2_contains(&a2), Some(true));
+}
+
+/// Erratum (Prop 3.3, inherited from Prop 3.2): with the same data and the
+/// tangent slope m = 1, the intercept b = f(1) of the nonsingular quartic with
+/// a2 = 4/7 is valid, but the printed b-interval rejects it.
+#[test]
+fn erratum_prop_3_3_negative_x1() {
+    let h = HermiteData::new(q(-1, 1), q(2, 3), q(11, 4)).unwrap();
+    let (m, a2) = (q(1, 1), q(4, 7));
+    let b = h.b_from_a2(&m, &a2);
+    assert_eq!(h.a2_from_b(&m, &b), Some(a2.clone()));
+    assert!(normal_form_regular(&h.quartic_f(&a2), &h.u));
+    assert_eq!(h.prop_3_3_contains(&m, &b), Some(false));
+    assert_eq!(h.valid_intercept(&m, &b), Some(true));
 }
 
 /// Erratum (Prop 7.1): τ = -1/2 lies outside the recommended range but the

@@ -73,6 +73,17 @@ impl Claim {
     }
 }
 
+/// An exact number from the built-in JSON: a string (`"5/2"`, `"-1"`) or a
+/// JSON number read from its printed digits (`0.17346`), never through f64.
+pub(crate) fn json_rational(v: &serde_json::Value) -> Result<crate::scalar::Rational, String> {
+    let text = match v {
+        serde_json::Value::String(s) => s.clone(),
+        serde_json::Value::Number(n) => n.to_string(),
+        _ => return Err(format!("{v} is not a number")),
+    };
+    crate::scalar::parse_rational(&text).map_err(|e| e.to_string())
+}
+
 /// Built-in data (copies of `../shared/data` plus values transcribed from the seed texts).
 pub mod data {
     pub const FIG5: &str = include_str!("../../data/seed000_fig5_examples.json");

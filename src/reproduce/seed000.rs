@@ -20,12 +20,7 @@ use serde_json::Value;
 type R<T> = Result<T, String>;
 
 fn q(v: &Value) -> R<Rational> {
-    let s = v
-        .as_str()
-        .map(str::to_string)
-        .or_else(|| v.as_f64().map(|f| f.to_string()))
-        .ok_or("not a number")?;
-    parse_rational(&s).map_err(|e| e.to_string())
+    super::json_rational(v)
 }
 fn pt(v: &Value) -> R<V2<Surd>> {
     Ok(V2::new(

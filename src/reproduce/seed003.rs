@@ -10,18 +10,13 @@ use crate::ln::hermite::{
     cubic_nonsingular_u_range, normal_form, prop_7_1_recommended, HermiteData,
 };
 use crate::poly::{Poly, Span};
-use crate::scalar::{frac, parse_rational, Rational, Scalar, Sign, Surd};
+use crate::scalar::{frac, Rational, Scalar, Sign, Surd};
 use serde_json::Value;
 
 type R<T> = Result<T, String>;
 
 fn num(v: &Value) -> R<Rational> {
-    let s = v
-        .as_str()
-        .map(str::to_string)
-        .or_else(|| v.as_f64().map(|f| f.to_string()))
-        .ok_or("not a number")?;
-    parse_rational(&s).map_err(|e| e.to_string())
+    super::json_rational(v)
 }
 fn printed_digits(v: &Value) -> String {
     // serde_json prints the shortest round-trip form, which is the printed text.

@@ -61,14 +61,7 @@ pub fn tau_construction(
         "regular on [0, 1]",
         "singular on [0, 1]",
     );
-    let d = is_regular_on(&curve, &Span::unit_closed());
-    r.direct(
-        "hodograph has no zero on [0, 1]",
-        Some(d),
-        "regular on [0, 1]",
-        "singular on [0, 1]",
-        v,
-    );
+    let d = direct_regularity(r, &curve, v);
     Ok(d)
 }
 
@@ -114,14 +107,7 @@ pub fn lemma_4_1(a: &PropArgs, id: &'static str) -> Result<Report, CliError> {
         "regular on [0, 1]",
         "singular on [0, 1]",
     );
-    let d = is_regular_on(&curve, &Span::unit_closed());
-    r.direct(
-        "hodograph has no zero on [0, 1]",
-        Some(d),
-        "regular on [0, 1]",
-        "singular on [0, 1]",
-        v,
-    );
+    direct_regularity(&mut r, &curve, v);
     Ok(r)
 }
 
@@ -390,4 +376,22 @@ fn interior_singularities(r: &mut Report, c: &Bezier<Rational>) -> bool {
             !roots.is_empty()
         }
     }
+}
+
+/// The direct check of regularity on [0, 1] (Sturm root isolation of the
+/// hodograph), reported against the proposition's verdict `v`.
+fn direct_regularity(
+    r: &mut Report,
+    curve: &lncert::curve::Bezier<Rational>,
+    v: Option<bool>,
+) -> bool {
+    let d = is_regular_on(curve, &Span::unit_closed());
+    r.direct(
+        "hodograph has no zero on [0, 1]",
+        Some(d),
+        "regular on [0, 1]",
+        "singular on [0, 1]",
+        v,
+    );
+    d
 }
