@@ -5,7 +5,11 @@
 //! arithmetics: exact rationals, certified intervals and `f64`. See the
 //! [`scalar`] module for the design and [`ln`] for the propositions.
 
+#[cfg(feature = "arbitrary")]
+pub mod audit;
 pub mod curve;
+#[cfg(feature = "arbitrary")]
+pub mod gen;
 pub mod ln;
 pub mod poly;
 pub mod reproduce;

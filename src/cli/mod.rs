@@ -1,7 +1,8 @@
 //! The `lncert` command line (the contract is in `DESIGN.md`, "The CLI contract").
 //!
 //! * `lncert reproduce [--json] [--out DIR]` — every claim of [`lncert::reproduce`];
-//! * `lncert prop ID [ARGS] [--json]` — one proposition on user data.
+//! * `lncert prop ID [ARGS] [--json]` — one proposition on user data;
+//! * `lncert audit [--cases N] [--seed S] [--json]` — the float path audited.
 //!
 //! Exit codes: 0 = certified / the proposition agrees with the direct check,
 //! 1 = refuted / erratum / undecided, 2 = bad input (message on stderr naming
@@ -14,8 +15,10 @@
 //! | [`reproduce`] | `lncert reproduce` |
 //! | [`svg`] | the Fig. 5 pictures of `reproduce --out` |
 //! | [`prop`] | `lncert prop`: ID resolution and one module per seed |
+//! | [`audit`] | `lncert audit` |
 
 pub mod args;
+pub mod audit;
 pub mod prop;
 pub mod report;
 pub mod reproduce;
@@ -41,6 +44,8 @@ pub enum Command {
     Reproduce(reproduce::ReproduceArgs),
     /// Check one proposition on given data (numbers are read exactly: 0.95 is 19/20).
     Prop(Box<prop::PropArgs>),
+    /// Audit the f64 and interval paths against the exact path on generated cases.
+    Audit(audit::AuditArgs),
 }
 
 /// A bad-input error: the message names the field and the reason (exit code 2).
@@ -66,6 +71,7 @@ pub fn run(cli: Cli) -> i32 {
     let result = match cli.command {
         Command::Reproduce(a) => reproduce::run(&a),
         Command::Prop(a) => prop::run(&a),
+        Command::Audit(a) => audit::run(&a),
     };
     match result {
         Ok(code) => code,

@@ -14,7 +14,7 @@
 use super::cubic::{deltas_from_rho, LnFrame};
 use super::LnError;
 use crate::curve::{Bezier, V2};
-use crate::scalar::{Scalar, ScalarSqrt, Sign};
+use crate::scalar::{sign_a_plus_b_sqrt_c, Scalar, ScalarSqrt, Sign};
 
 /// A unit arc of half-angle `α` and the parameter `κ` of its LN approximation.
 ///
@@ -108,6 +108,50 @@ impl<S: Scalar> ArcApprox<S> {
     /// Squared distance from the origin minus one, `‖ca(s)‖² - 1` (exact for rationals).
     pub fn radial_defect2(&self, s: &S) -> Result<S, LnError> {
         Ok(self.cubic()?.eval(s).norm2() - S::one())
+    }
+    /// Whether `s1` and `s2` of eq. (9) lie in `(0, 1)`, decided **without square
+    /// roots** (signs of `a + b√D` from squares), so exactly with rationals.
+    /// For `κ = 1` (`A = 0`) the quadratic is linear: `s1` has gone to infinity
+    /// and `s2 = -C/B`. `None` if undecided.
+    ///
+    /// # Examples
+    /// ```
+    /// use lncert::ln::circle::ArcApprox;
+    /// use lncert::scalar::{frac, Rational};
+    /// // cos α = 3/5, sin α = 4/5, κ = 3/2: only s2 lies in (0, 1).
+    /// let arc = ArcApprox::<Rational>::new(frac(3, 5), frac(4, 5), frac(3, 2)).unwrap();
+    /// assert_eq!(arc.critical_params_in_unit(), Some((false, true)));
+    /// ```
+    pub fn critical_params_in_unit(&self) -> Option<(bool, bool)> {
+        let (a, b, c) = self.abc();
+        let inside_linear =
+            |s: &S| Some(s.sign().is_positive()? && S::one().cmp_sign(s).is_positive()?);
+        match a.sign() {
+            Sign::Unknown => return None,
+            Sign::Zero => {
+                let s2 = (-c).div(&b)?;
+                return Some((false, inside_linear(&s2)?));
+            }
+            _ => {}
+        }
+        let d = b.sqr() - (a.clone() * c).scale(4);
+        match d.sign() {
+            Sign::Negative => return Some((false, false)),
+            Sign::Unknown => return None,
+            _ => {}
+        }
+        let sa = a.sign();
+        // s = (-B + e√D)/(2A): s > 0 iff sign(-B + e√D) = sign(A);
+        // s < 1 iff sign(-B - 2A + e√D) = -sign(A).
+        let inside = |e: i64| -> Option<bool> {
+            let pos = sign_a_plus_b_sqrt_c(&-b.clone(), &S::from_i64(e), &d);
+            let below = sign_a_plus_b_sqrt_c(&(-b.clone() - a.scale(2)), &S::from_i64(e), &d);
+            if pos == Sign::Unknown || below == Sign::Unknown {
+                return None;
+            }
+            Some(pos == sa && below == sa.neg())
+        };
+        Some((inside(1)?, inside(-1)?))
     }
     /// Which case of Prop 6.1 the printed κ-ranges select.
     pub fn prop_6_1_case(&self) -> Option<Prop61Case> {

@@ -23,7 +23,7 @@ use crate::scalar::{frac, Scalar, ScalarSqrt, Sign};
 /// use lncert::curve::V2;
 /// use lncert::ln::cubic::LnFrame;
 /// let f = LnFrame::new(V2::new(2.5, -1.0), V2::new(0.5, 1.0), V2::new(3.5, 5.0)).unwrap();
-/// assert_eq!(f.lambda2(), 25.0 / 8.0); // λ = 5√2/4
+/// assert_eq!(f.lambda2(), Some(25.0 / 8.0)); // λ = 5√2/4
 /// assert!(LnFrame::new(V2::new(0.0, 0.0), V2::new(1.0, 1.0), V2::new(2.0, 2.0)).is_err());
 /// ```
 #[derive(Clone, Debug, PartialEq)]
@@ -67,19 +67,17 @@ impl<S: Scalar> LnFrame<S> {
     pub fn d1(&self) -> V2<S> {
         self.b3.sub(&self.bm)
     }
-    /// `λ² = |∇b1|² / |∇b0|²` (exact for rational data).
-    pub fn lambda2(&self) -> S {
-        self.d1()
-            .norm2()
-            .div(&self.d0().norm2())
-            .expect("non-collinear frame has ∇b0 ≠ 0")
+    /// `λ² = |∇b1|² / |∇b0|²` (exact for rational data). `None` only when
+    /// `|∇b0|²` is not representable as nonzero (f64 underflow, e.g. `∇b0 ~ 1e-200`).
+    pub fn lambda2(&self) -> Option<S> {
+        self.d1().norm2().div(&self.d0().norm2())
     }
     /// `λ = |∇b1| / |∇b0|` (needs square roots).
     pub fn lambda(&self) -> Option<S>
     where
         S: ScalarSqrt,
     {
-        self.lambda2().sqrt()
+        self.lambda2()?.sqrt()
     }
     /// The cubic with control points `[b0, (1-δ0)b0 + δ0 bm, (1-δ1)b3 + δ1 bm, b3]`.
     pub fn cubic(&self, delta0: &S, delta1: &S) -> Bezier<S> {

@@ -18,7 +18,7 @@
 //! [`sign_a_plus_b_sqrt_c`] (squares and signs only) and enclosed with intervals
 //! for display ([`QuarticHermite::alphas`]).
 
-use super::{finite, nonzero, LnError, OpenRange};
+use super::{checked_div, finite, nonzero, LnError, OpenRange};
 use crate::poly::Poly;
 use crate::scalar::{frac, sign_a_plus_b_sqrt_c, Scalar, ScalarSqrt, Sign};
 
@@ -92,7 +92,19 @@ impl<S: Scalar> HermiteData<S> {
         finite(&[&u], "u")?;
         nonzero(x1.sign(), "x1", "x1 = 0: s = -y1/x1 undefined")?;
         match u.sign() {
-            Sign::Positive => Ok(HermiteData { x1, y1, u }),
+            Sign::Positive => {
+                let h = HermiteData { x1, y1, u };
+                // Every formula divides by u, ..., u⁴ and by x1: they must be
+                // representable as nonzero (f64 underflow, e.g. u = 1e-100).
+                checked_div(
+                    S::one(),
+                    &h.upow(4),
+                    "u",
+                    "u⁴ underflows to 0 (u too small for this arithmetic)",
+                )?;
+                checked_div(S::one(), &h.x1, "x1", "x1 is too small for this arithmetic")?;
+                Ok(h)
+            }
             Sign::Unknown => Err(LnError::Undecided { field: "u" }),
             _ => Err(LnError::InvalidParameter {
                 field: "u",
@@ -323,14 +335,15 @@ impl<S: Scalar> HermiteData<S> {
         if !(m.sign().is_positive()? && self.u.cmp_sign(m).is_positive()?) {
             return None;
         }
-        Some(self.a2_from_b_symbolic(m, b))
+        self.a2_from_b_symbolic(m, b)
     }
-    /// [`Self::a2_from_b`] without the `0 < m < u` check (for symbolic scalars).
-    pub fn a2_from_b_symbolic(&self, m: &S, b: &S) -> S {
+    /// [`Self::a2_from_b`] without the `0 < m < u` check (for symbolic scalars);
+    /// `None` if the denominator `m²u²(u-m)²` is (or may be) zero.
+    pub fn a2_from_b_symbolic(&self, m: &S, b: &S) -> Option<S> {
         let m3 = m.sqr() * m.clone();
         let num = self.upow(4) * b.clone() - m3 * self.x1.clone() * self.beta(m);
         let den = m.sqr() * self.upow(2) * (self.u.clone() - m.clone()).sqr();
-        num.div(&den).expect("m ≠ 0, u ≠ m")
+        num.div(&den)
     }
     /// The printed `β = -(m(3s - 2u) + u(3u - 4s))`.
     pub fn beta(&self, m: &S) -> S {

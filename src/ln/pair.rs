@@ -153,7 +153,12 @@ impl<S: Scalar> CompatiblePair<S> {
     }
     /// Builds the two curves for `ρl`, without checking regularity.
     pub fn curves_for_rho(&self, rho_left: &S) -> Result<LnPair<S>, LnError> {
-        let rho_right = rho_left.div(&self.ratio()).expect("q ≠ 0");
+        let rho_right = checked_div(
+            rho_left.clone(),
+            &self.ratio(),
+            "lambda_r/lambda_l",
+            "q = c1/c0 underflows to 0",
+        )?;
         let dl = deltas_from_rho(rho_left)?;
         let dr = deltas_from_rho(&rho_right)?;
         Ok(LnPair {

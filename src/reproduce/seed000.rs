@@ -231,7 +231,9 @@ fn fig5(out: &mut Vec<Claim>, case: &str) -> R<()> {
         ));
     }
     // κ = sqrt(λl λr) = sqrt(λl² q), exact.
-    let kappa2 = (l.lambda2() * qr.clone()).as_rational().ok_or("κ²")?;
+    let kappa2 = (l.lambda2().ok_or("λ²")? * qr.clone())
+        .as_rational()
+        .ok_or("κ²")?;
     let kappa = Surd::sqrt_of(&kappa2).ok_or("κ")?;
     let p = d["kappa_printed"].as_str().unwrap_or_default();
     let (v, det) = judge(p, &kappa);

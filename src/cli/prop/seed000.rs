@@ -86,7 +86,11 @@ pub fn lemma_4_1(a: &PropArgs, id: &'static str) -> Result<Report, CliError> {
     let rho = required_number("--rho", &a.rho, USAGE_4_1)?;
     r.input("frame", show_frame(&f));
     r.input("rho", q(&rho));
-    r.exact("lambda2", "λ² = |b3 - bm|²/|bm - b0|²", &f.lambda2());
+    r.exact(
+        "lambda2",
+        "λ² = |b3 - bm|²/|bm - b0|²",
+        &f.lambda2().expect("exact: ∇b0 ≠ 0 in a valid frame"),
+    );
     let (d0, d1) = deltas_from_rho(&rho).map_err(|e| ln_error("--rho", e))?;
     r.exact("delta0", "δ0 = 2/3 (2 - 1/ρ)", &d0);
     r.exact("delta1", "δ1 = 2/3 (2 - ρ)", &d1);
@@ -120,8 +124,16 @@ fn pair(a: &PropArgs, r: &mut Report) -> Result<CompatiblePair<Rational>, CliErr
     let p = CompatiblePair::new(left, right).map_err(|e| ln_error("--right", e))?;
     r.exact("c0", "c0 (∇b0ʳ = c0 ∇b0ˡ)", &p.c0);
     r.exact("c1", "c1 (∇b1ʳ = c1 ∇b1ˡ)", &p.c1);
-    r.exact("lambda_l2", "λl²", &p.left.lambda2());
-    r.exact("lambda_r2", "λr²", &p.right.lambda2());
+    r.exact(
+        "lambda_l2",
+        "λl²",
+        &p.left.lambda2().expect("exact: ∇b0 ≠ 0 in a valid frame"),
+    );
+    r.exact(
+        "lambda_r2",
+        "λr²",
+        &p.right.lambda2().expect("exact: ∇b0 ≠ 0 in a valid frame"),
+    );
     r.exact("q", "q = λr/λl = c1/c0", &p.ratio());
     r.decision(
         "prop_4_2",
