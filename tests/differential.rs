@@ -9,9 +9,10 @@
 //! Cases per property: `LNCERT_PROPTEST_CASES` (default 2000).
 
 use lncert::audit::{
-    check_arc, check_frame, check_hermite, check_pair, check_tau, KernelStats, F64_DECISION_BAND,
+    check_arc, check_bezier, check_frame, check_hermite, check_pair, check_tau, KernelStats,
+    F64_DECISION_BAND,
 };
-use lncert::gen::{strategy, ArcCase, FrameCase, HermiteCase, PairCase, TauCase};
+use lncert::gen::{strategy, ArcCase, BezierCase, FrameCase, HermiteCase, PairCase, TauCase};
 use proptest::prelude::*;
 
 fn config() -> ProptestConfig {
@@ -42,6 +43,13 @@ fn verdict(st: &KernelStats) -> Result<(), TestCaseError> {
 
 proptest! {
     #![proptest_config(config())]
+
+    #[test]
+    fn bezier(c in strategy::<BezierCase>()) {
+        let mut st = KernelStats::new("bezier");
+        check_bezier(&c, &mut st);
+        verdict(&st)?;
+    }
 
     #[test]
     fn frame(c in strategy::<FrameCase>()) {

@@ -376,6 +376,62 @@ pub fn check_arc(c: &ArcCase, st: &mut KernelStats) {
     }
 }
 
+/// Bézier curves of any degree: evaluation, subdivision and the hodograph
+/// cross product (values, f64 inside the enclosure, error vs exact), and
+/// regularity on [0, 1]: the interval path (Bernstein exclusion of
+/// `x'² + y'²`) against the exact path (Sturm isolation of `gcd(x', y')`).
+pub fn check_bezier(c: &crate::gen::BezierCase, st: &mut KernelStats) {
+    use crate::poly::{enclose_roots, Poly};
+    let Some(ce) = c.exact() else {
+        st.rejected += 1;
+        return;
+    };
+    st.cases += 1;
+    let cf = c.float();
+    let ci = cf.map(|x: &f64| iv(*x));
+    let ts = [0.0, 0.125, 0.3, 0.5, 0.875, 1.0];
+    for t in ts {
+        let te = rational_from_f64(t).unwrap_or_default();
+        let (e, i, f) = (ce.eval(&te), ci.eval(&iv(t)), cf.eval(&t));
+        st.value("bezier: x(t)", Some(&e.x), Some(i.x), f.x);
+        st.value("bezier: y(t)", Some(&e.y), Some(i.y), f.y);
+    }
+    let (le, _) = ce.split(&rational_from_f64(0.3).unwrap_or_default());
+    let (li, _) = ci.split(&iv(0.3));
+    let (lf, _) = cf.split(&0.3);
+    for ((e, i), f) in le.points().iter().zip(li.points()).zip(lf.points()) {
+        st.value("bezier: split point", Some(&e.x), Some(i.x), f.x);
+    }
+    if ce.degree() >= 2 {
+        let (e, i, f) = (
+            ce.cross_hodograph(),
+            ci.cross_hodograph(),
+            cf.cross_hodograph(),
+        );
+        for k in 0..e.len() {
+            st.value("bezier: x'y'' - y'x''", Some(&e[k]), Some(i[k]), f[k]);
+        }
+    }
+    let regular = is_regular_on(&ce, &Span::unit_closed());
+    let (hx, hy) = ci.hodograph().power_coords();
+    let speed2: Poly<Interval> = hx.mul(&hx).add(&hy.mul(&hy));
+    // A small subdivision budget: the audit measures agreement, not reach.
+    let e = enclose_roots(&speed2, 0.0, 1.0, 1.0 / 16.0, 32);
+    let interval = if e.excluded_everywhere {
+        Some(true)
+    } else {
+        None
+    };
+    // The f64 path has no regularity decider of its own: not compared.
+    st.decision(
+        "bezier: regular on [0,1]",
+        Some(regular),
+        interval,
+        Some(regular),
+        f64::INFINITY,
+    );
+}
+
 #[cfg(test)]
 mod tests {
     use super::super::run_kernel;

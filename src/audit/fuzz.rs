@@ -12,7 +12,9 @@
 //!
 //! A panic inside the engine is itself a failure the fuzzer reports.
 
-use super::{check_arc, check_frame, check_hermite, check_pair, check_tau, KernelStats};
+use super::{
+    check_arc, check_bezier, check_frame, check_hermite, check_pair, check_tau, KernelStats,
+};
 use arbitrary::{Arbitrary, Unstructured};
 
 /// What one fuzz input did.
@@ -44,6 +46,10 @@ fn run<T: for<'a> Arbitrary<'a>>(
     }
 }
 
+/// Bézier curves of any degree: evaluation, split, hodograph products, regularity.
+pub fn fuzz_bezier(data: &[u8]) -> Result<Outcome, String> {
+    run("bezier", data, check_bezier)
+}
 /// Seed 000 frames: collinearity decision and `λ²`.
 pub fn fuzz_frame(data: &[u8]) -> Result<Outcome, String> {
     run("frame", data, check_frame)

@@ -35,7 +35,7 @@ pub const F64_DECISION_BAND: f64 = 1e-6;
 mod checks;
 pub mod fuzz;
 
-pub use checks::{check_arc, check_frame, check_hermite, check_pair, check_tau};
+pub use checks::{check_arc, check_bezier, check_frame, check_hermite, check_pair, check_tau};
 
 use crate::scalar::{rational_from_f64, Interval, IntervalExt, Rational};
 use serde::Serialize;
@@ -204,7 +204,7 @@ pub fn ulps_between(x: &Rational, f: &Rational) -> f64 {
 }
 
 /// The kernel families audited, in report order.
-pub const KERNELS: [&str; 5] = ["frame", "cubic", "pair", "hermite", "arc"];
+pub const KERNELS: [&str; 6] = ["bezier", "frame", "cubic", "pair", "hermite", "arc"];
 
 /// Runs `cases` generated cases (seeded, reproducible) through one kernel family.
 pub fn run_kernel(name: &str, cases: usize, seed: u64) -> KernelStats {
@@ -217,6 +217,9 @@ pub fn run_kernel(name: &str, cases: usize, seed: u64) -> KernelStats {
             .unwrap_or("unknown"),
     );
     match name {
+        "bezier" => cases_from_seed(seed, cases)
+            .iter()
+            .for_each(|c| check_bezier(c, &mut st)),
         "frame" => cases_from_seed(seed, cases)
             .iter()
             .for_each(|c| check_frame(c, &mut st)),

@@ -15,6 +15,33 @@
 //! and 4, nearly collinear control points, `u` near every case boundary of seed
 //! 003 Props 2.1–3.2, `κ` near the case boundaries of seed 000 Prop 6.1.
 //!
+//! # Check your float geometry against lncert in your CI
+//!
+//! With the `proptest` feature, [`strategy`] turns any case type into a proptest
+//! strategy. Compare your own float code with lncert's exact answer:
+//!
+//! ```
+//! # #[cfg(feature = "proptest")] {
+//! use lncert::gen::{strategy, PairCase};
+//! use lncert::ln::pair::pair_decision;
+//! use lncert::scalar::{rational_from_f64, Rational};
+//! use proptest::prelude::*;
+//!
+//! /// Your float code: does the pair admit one linear normal map (seed 000 Prop 4.2)?
+//! fn my_pair_test(c0: f64, c1: f64) -> bool { let q = c1 / c0; 0.25 < q && q < 4.0 }
+//!
+//! proptest!(|(c in strategy::<PairCase>())| {
+//!     let ex = |x: f64| rational_from_f64(x).unwrap();
+//!     let exact = pair_decision::<Rational>(&ex(c.c0), &ex(c.c1), &ex(c.rho)).unwrap().0;
+//!     // Allow disagreement only within a band around the boundaries 1/4 and 4.
+//!     let q = c.c1 / c.c0;
+//!     if (q - 4.0).abs() > 1e-9 * 4.0 && (q - 0.25).abs() > 1e-9 * 0.25 {
+//!         prop_assert_eq!(my_pair_test(c.c0, c.c1), exact);
+//!     }
+//! });
+//! # }
+//! ```
+//!
 //! # Examples
 //! ```
 //! use lncert::gen::{cases_from_seed, PairCase};
@@ -243,6 +270,78 @@ impl<'a> Arbitrary<'a> for ArcCase {
             sin_a: s,
             kappa: kappa.clamp(0.5, 2.0),
         })
+    }
+}
+
+/// A planar Bézier curve of degree 1 to 9 as float control points, sometimes
+/// with planted degeneracies: coincident consecutive points, all points on a
+/// line, or points a few ulps apart.
+///
+/// # Examples
+/// ```
+/// use lncert::gen::{cases_from_seed, BezierCase};
+/// let c: Vec<BezierCase> = cases_from_seed(3, 20);
+/// assert!(c.iter().all(|b| (2..=10).contains(&b.points.len())));
+/// let exact = c[0].exact().unwrap(); // the same curve with exact rational coordinates
+/// assert_eq!(exact.points().len(), c[0].points.len());
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct BezierCase {
+    pub points: Vec<[f64; 2]>,
+}
+
+impl<'a> Arbitrary<'a> for BezierCase {
+    fn arbitrary(u: &mut Unstructured<'a>) -> Result<Self> {
+        let n = usize::from(u.int_in_range(2u8..=10)?);
+        let mut points = Vec::with_capacity(n);
+        let kind = u.int_in_range(0u8..=5)?;
+        let (o, d) = (point(u)?, point(u)?);
+        for i in 0..n {
+            let p = match kind {
+                // All on one line.
+                0 => {
+                    let t = coord(u)?;
+                    [o[0] + t * d[0], o[1] + t * d[1]]
+                }
+                // A repeated point.
+                1 if i > 0 && bool::arbitrary(u)? => points[i - 1],
+                // A few ulps from the previous point.
+                2 if i > 0 => {
+                    let q: [f64; 2] = points[i - 1];
+                    [near(u, q[0])?, near(u, q[1])?]
+                }
+                _ => point(u)?,
+            };
+            points.push(p);
+        }
+        Ok(BezierCase { points })
+    }
+}
+
+impl BezierCase {
+    /// The curve with exact coordinates (`None` if a coordinate is not finite).
+    pub fn exact(&self) -> Option<crate::curve::Bezier<crate::scalar::Rational>> {
+        use crate::scalar::rational_from_f64;
+        let pts = self
+            .points
+            .iter()
+            .map(|p| {
+                Some(crate::curve::V2::new(
+                    rational_from_f64(p[0])?,
+                    rational_from_f64(p[1])?,
+                ))
+            })
+            .collect::<Option<Vec<_>>>()?;
+        (!pts.is_empty()).then(|| crate::curve::Bezier::new(pts))
+    }
+    /// The curve in `f64`.
+    pub fn float(&self) -> crate::curve::Bezier<f64> {
+        crate::curve::Bezier::new(
+            self.points
+                .iter()
+                .map(|p| crate::curve::V2::new(p[0], p[1]))
+                .collect(),
+        )
     }
 }
 
