@@ -64,7 +64,8 @@ pub struct KernelStats {
     pub f64_error_band: f64,
     /// Values compared (f64 vs enclosure, and vs exact when rational).
     pub values: u64,
-    /// Largest |f64 - exact| in ulps of the exact value.
+    /// Largest |f64 - exact| in ulps of the exact value (nonzero exact values;
+    /// large numbers mean cancellation: a tiny exact value computed from large terms).
     pub max_f64_error_ulps: f64,
     /// Exact (engine) decision vs the direct check by root isolation, where a
     /// kernel has one. Must be 0.
@@ -153,7 +154,9 @@ impl KernelStats {
                 }
             }
         }
-        if let (Some(x), Some(f)) = (exact, rational_from_f64(float)) {
+        // Exact zeros are skipped: an error "in ulps of 0" is meaningless (the
+        // enclosure check above still applies to them).
+        if let (Some(x), Some(f)) = (exact.filter(|x| **x != Rational::default()), rational_from_f64(float)) {
             let ulps = ulps_between(x, &f);
             if ulps > self.max_f64_error_ulps {
                 self.max_f64_error_ulps = ulps;
