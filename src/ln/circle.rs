@@ -183,7 +183,7 @@ impl<S: ScalarSqrt> ArcApprox<S> {
     /// `|‖ca(s)‖ - 1|`.
     pub fn radial_error(&self, s: &S) -> Option<S> {
         let d = self.cubic().ok()?.eval(s).norm2().sqrt()? - S::one();
-        Some(if d.sign() == Sign::Negative { -d } else { d })
+        Some(d.abs_val())
     }
     /// Prop 6.1's closed form, following the printed case split. `None` if undecided.
     pub fn prop_6_1_distance(&self) -> Option<S> {

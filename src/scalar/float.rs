@@ -52,6 +52,9 @@ impl Scalar for f64 {
     fn is_finite(&self) -> bool {
         f64::is_finite(*self)
     }
+    fn abs_val(&self) -> Self {
+        f64::abs(*self)
+    }
 }
 
 impl ScalarSqrt for f64 {

@@ -64,6 +64,9 @@ impl Scalar for Interval {
     fn sqr(&self) -> Self {
         Interval::sqr(*self)
     }
+    fn abs_val(&self) -> Self {
+        Interval::abs(*self)
+    }
 }
 
 impl ScalarSqrt for Interval {

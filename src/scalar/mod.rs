@@ -135,6 +135,16 @@ pub trait Scalar:
     fn is_finite(&self) -> bool {
         true
     }
+    /// `|self|`. Enclosures override this with the enclosure of the absolute
+    /// value (an interval straddling 0 maps to `[0, max |end|]`): branching on
+    /// an unknown sign would break "f64 result ∈ interval result".
+    fn abs_val(&self) -> Self {
+        if self.sign() == Sign::Negative {
+            -self.clone()
+        } else {
+            self.clone()
+        }
+    }
     /// `self * self`.
     fn sqr(&self) -> Self {
         self.clone() * self.clone()
