@@ -10,14 +10,15 @@
 #![cfg(feature = "arbitrary")]
 
 use lncert::audit::fuzz::{
-    fuzz_arc, fuzz_cubic, fuzz_frame, fuzz_hermite, fuzz_pair, fuzz_parse, Outcome,
+    fuzz_arc, fuzz_bezier, fuzz_cubic, fuzz_frame, fuzz_hermite, fuzz_pair, fuzz_parse, Outcome,
 };
 use std::path::{Path, PathBuf};
 
 type Entry = fn(&[u8]) -> Result<Outcome, String>;
 
 /// Target name (= `fuzz/fuzz_targets/<name>.rs`) and its entry point.
-const TARGETS: [(&str, Entry); 6] = [
+const TARGETS: [(&str, Entry); 7] = [
+    ("bezier", fuzz_bezier),
     ("frame", fuzz_frame),
     ("cubic", fuzz_cubic),
     ("pair", fuzz_pair),
@@ -52,36 +53,40 @@ fn inputs(dir: &Path) -> Vec<PathBuf> {
     files
 }
 
-fn replay(target: &str, f: Entry, path: &Path) -> Outcome {
-    let data = std::fs::read(path).unwrap_or_else(|e| panic!("reading {}: {e}", path.display()));
+/// Runs one committed input; `Err` names the file, the target and the failure.
+fn replay(target: &str, f: Entry, path: &Path) -> Result<Outcome, String> {
+    let data = std::fs::read(path).map_err(|e| format!("reading {}: {e}", path.display()))?;
+    let failed = |what: String| {
+        format!(
+            "fuzz regression {} (target {target}) {what}\n  input bytes: {data:?}",
+            path.display()
+        )
+    };
     match std::panic::catch_unwind(|| f(&data)) {
-        Ok(Ok(outcome)) => outcome,
-        Ok(Err(msg)) => panic!(
-            "fuzz regression {} (target {target}) fails the certified path: {msg}\ninput bytes: {data:?}",
-            path.display()
-        ),
-        Err(_) => panic!(
-            "fuzz regression {} (target {target}) panics in the engine\ninput bytes: {data:?}",
-            path.display()
-        ),
+        Ok(Ok(outcome)) => Ok(outcome),
+        Ok(Err(msg)) => Err(failed(format!("fails the certified path: {msg}"))),
+        Err(payload) => {
+            let msg = payload
+                .downcast_ref::<String>()
+                .cloned()
+                .or_else(|| payload.downcast_ref::<&str>().map(|s| s.to_string()))
+                .unwrap_or_default();
+            Err(failed(format!("panics in the engine: {msg}")))
+        }
     }
 }
 
 #[test]
 fn every_committed_fuzz_input_passes() {
-    let mut failures = Vec::new();
-    for (target, f) in TARGETS {
-        for path in inputs(&regressions_dir(target)) {
-            // Collect every failure (each names its file) before failing.
-            if let Err(e) = std::panic::catch_unwind(|| replay(target, f, &path)) {
-                let msg = e
-                    .downcast_ref::<String>()
-                    .cloned()
-                    .unwrap_or_else(|| format!("{}: panic", path.display()));
-                failures.push(msg);
-            }
-        }
-    }
+    // Every input is replayed and every failure reported, each naming its file.
+    let failures: Vec<String> = TARGETS
+        .iter()
+        .flat_map(|&(target, f)| {
+            inputs(&regressions_dir(target))
+                .into_iter()
+                .filter_map(move |path| replay(target, f, &path).err())
+        })
+        .collect();
     assert!(
         failures.is_empty(),
         "{} fuzz regression(s) failed:\n{}",
@@ -102,7 +107,7 @@ fn every_target_has_a_checked_seed() {
         let seed = dir.join(SEED);
         assert!(seed.is_file(), "missing {}", seed.display());
         assert_eq!(
-            replay(target, f, &seed),
+            replay(target, f, &seed).unwrap_or_else(|e| panic!("{e}")),
             Outcome::Checked,
             "{} (target {target}) no longer reaches Outcome::Checked",
             seed.display()

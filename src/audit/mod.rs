@@ -156,7 +156,10 @@ impl KernelStats {
         }
         // Exact zeros are skipped: an error "in ulps of 0" is meaningless (the
         // enclosure check above still applies to them).
-        if let (Some(x), Some(f)) = (exact.filter(|x| **x != Rational::default()), rational_from_f64(float)) {
+        if let (Some(x), Some(f)) = (
+            exact.filter(|x| **x != Rational::default()),
+            rational_from_f64(float),
+        ) {
             let ulps = ulps_between(x, &f);
             if ulps > self.max_f64_error_ulps {
                 self.max_f64_error_ulps = ulps;
