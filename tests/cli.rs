@@ -298,3 +298,37 @@ fn seed_000_prop_6_1_closed_form_matches_the_direct_enclosure() {
         "unit vector",
     );
 }
+
+/// `lncert audit --json`: one document, every kernel family, certified path clean.
+#[test]
+fn audit_json_reports_every_kernel_and_no_certified_failure() {
+    let out = lncert(&["audit", "--cases", "60", "--json"]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "stderr: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let doc: serde_json::Value = serde_json::from_slice(&out.stdout).expect("one JSON document");
+    let kernels = doc["kernels"].as_array().expect("kernels array");
+    let names: Vec<&str> = kernels.iter().filter_map(|k| k["name"].as_str()).collect();
+    assert_eq!(
+        names,
+        ["bezier", "frame", "cubic", "pair", "hermite", "arc"]
+    );
+    for k in kernels {
+        assert!(k["cases"].as_u64().unwrap() > 0, "{k}");
+        assert_eq!(k["disagreements_certified"].as_u64(), Some(0), "{k}");
+        for field in ["f64_decision_errors", "max_f64_error_ulps", "fallback_rate"] {
+            assert!(k.get(field).is_some(), "missing {field}");
+        }
+    }
+}
+
+/// Bad `--cases` is a bad-input error (exit 2) naming the flag.
+#[test]
+fn audit_rejects_zero_cases() {
+    let out = lncert(&["audit", "--cases", "0"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--cases"));
+}
