@@ -2,7 +2,7 @@
 //! degree elevation, and products of Bernstein polynomials.
 
 use super::V2;
-use crate::poly::{binomial, Poly};
+use crate::poly::{binomial_big, ratio_scalar, Poly};
 use crate::scalar::{Rational, Scalar};
 
 /// A planar Bézier curve `b(t) = sum_i p_i B^n_i(t)`, `t in [0, 1]`.
@@ -225,11 +225,11 @@ pub fn bernstein_product<S: Scalar>(a: &[S], b: &[S]) -> Vec<S> {
             let mut s = S::zero();
             for i in k.saturating_sub(n)..=k.min(m) {
                 let j = k - i;
-                let w = Rational::new(
-                    (binomial(m, i) * binomial(n, j)).into(),
-                    binomial(m + n, k).into(),
+                let w: S = ratio_scalar(
+                    binomial_big(m, i) * binomial_big(n, j),
+                    binomial_big(m + n, k),
                 );
-                s = s + S::from_rational(&w) * a[i].clone() * b[j].clone();
+                s = s + w * a[i].clone() * b[j].clone();
             }
             s
         })

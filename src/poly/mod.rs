@@ -4,7 +4,8 @@
 
 mod univariate;
 
-pub use univariate::{binomial, Poly};
+pub(crate) use univariate::ratio_scalar;
+pub use univariate::{binomial, binomial_big, Poly};
 mod enclose;
 mod multi;
 mod roots;

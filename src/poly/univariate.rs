@@ -126,9 +126,7 @@ impl<S: Scalar> Poly<S> {
         let mut acc = Poly::zero();
         for (i, bi) in b.iter().enumerate() {
             // B^n_i(t) = C(n,i) t^i (1-t)^(n-i)
-            let mut term = Poly::constant(S::from_rational(&Rational::from_integer(
-                binomial(n, i).into(),
-            )));
+            let mut term = Poly::constant(ratio_scalar(binomial_big(n, i), 1.into()));
             for _ in 0..i {
                 term = term.mul(&Poly::t());
             }
@@ -151,8 +149,8 @@ impl<S: Scalar> Poly<S> {
                 .map(|i| {
                     let mut s = S::zero();
                     for (k, a) in self.c.iter().enumerate().take(i + 1) {
-                        let w = Rational::new(binomial(i, k).into(), binomial(n, k).into());
-                        s = s + a.clone() * S::from_rational(&w);
+                        let w: S = ratio_scalar(binomial_big(i, k), binomial_big(n, k));
+                        s = s + a.clone() * w;
                     }
                     s
                 })
@@ -189,6 +187,29 @@ impl Poly<Rational> {
     pub fn degree(&self) -> Option<usize> {
         let t = self.clone().trimmed();
         t.c.len().checked_sub(1)
+    }
+}
+
+/// The exact binomial coefficient `C(n, k)` (any size).
+pub fn binomial_big(n: usize, k: usize) -> num_bigint::BigInt {
+    if k > n {
+        return 0.into();
+    }
+    let k = k.min(n - k);
+    let mut r = num_bigint::BigInt::from(1);
+    for i in 0..k {
+        r = r * (n - i) / (i + 1);
+    }
+    r
+}
+
+/// `num / den` as a scalar: through the fast `from_frac` path when both fit
+/// in `i64` (exact for rationals, correctly rounded for f64, enclosed for
+/// intervals), else through the exact rational.
+pub(crate) fn ratio_scalar<S: Scalar>(num: num_bigint::BigInt, den: num_bigint::BigInt) -> S {
+    match (i64::try_from(&num), i64::try_from(&den)) {
+        (Ok(p), Ok(q)) if q != 0 => S::from_frac(p, q),
+        _ => S::from_rational(&Rational::new(num, den)),
     }
 }
 
