@@ -20,7 +20,11 @@ pub struct Bezier<S> {
 }
 
 impl<S: Scalar> Bezier<S> {
-    /// From control points (at least one).
+    /// From control points.
+    ///
+    /// # Panics
+    /// If `pts` is empty. Parsed input never reaches this (the parsers in
+    /// [`crate::curve::parse_curve`] reject curves with fewer than 2 points).
     pub fn new(pts: Vec<V2<S>>) -> Self {
         assert!(
             !pts.is_empty(),

@@ -4,7 +4,7 @@
 //!
 //! Every case is built from raw bytes through [`arbitrary::Unstructured`]
 //! (feature `arbitrary`), so a fuzzer, a property test (feature `proptest`:
-//! [`strategy`]) and a seeded audit ([`cases_from_seed`]) all draw from the same
+//! `strategy`) and a seeded audit ([`cases_from_seed`]) all draw from the same
 //! distribution. All inputs are **finite `f64` values**: the exact path reads
 //! them exactly ([`crate::scalar::rational_from_f64`]), so the f64 path and the
 //! exact path see identical data and every difference is computation, not input.
@@ -17,7 +17,7 @@
 //!
 //! # Check your float geometry against lncert in your CI
 //!
-//! With the `proptest` feature, [`strategy`] turns any case type into a proptest
+//! With the `proptest` feature, `strategy` turns any case type into a proptest
 //! strategy. Compare your own float code with lncert's exact answer:
 //!
 //! ```

@@ -16,7 +16,7 @@
 //!
 //! Irrational bounds (`√3`, `√D1`) are decided exactly with
 //! [`sign_a_plus_b_sqrt_c`] (squares and signs only) and enclosed with intervals
-//! for display ([`QuarticHermite::alphas`]).
+//! for display ([`HermiteData::alphas`]).
 
 use super::{checked_div, finite, nonzero, LnError, OpenRange};
 use crate::poly::Poly;

@@ -303,7 +303,7 @@ pub fn convolution_deltas<S: Scalar>(
 }
 
 /// The decisions of Prop 4.2 and Prop 4.4 for a compatible pair given by its
-/// end ratios `c0, c1` (exact) and a choice `ρl = κ/λl`, as a [`Predicate`]:
+/// end ratios `c0, c1` (exact) and a choice `ρl = κ/λl`, as a [`crate::scalar::Predicate`]:
 /// evaluate it in any arithmetic, or [`crate::scalar::filtered`] (intervals
 /// first, rationals when they cannot decide).
 ///
