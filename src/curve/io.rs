@@ -149,7 +149,7 @@ fn exact_number(text: &str) -> Result<Rational, String> {
                 .skip_while(|&&c| c == b'0')
                 .count();
             if significant > 6 {
-                return Err(err("exponent out of range (|e| > 4000)"));
+                return Err(err("exponent out of range (|e| > 400)"));
             }
         }
     }

@@ -48,8 +48,10 @@ pub struct ParseNumberError {
     pub reason: &'static str,
 }
 
-/// Largest decimal exponent accepted (`1e100000` would allocate a huge integer).
-const MAX_EXPONENT: i64 = 4000;
+/// Largest decimal scale accepted, `|e| <= 400` after the decimal point is
+/// accounted for: beyond the f64 range (1e±308) with room to spare, and small
+/// enough that hostile input (thousands of `1e-4000` literals) stays cheap.
+pub const MAX_EXPONENT: i64 = 400;
 
 /// Reads a decimal (`-0.95`, `1.5e-3`) or fraction (`1/3`, `-7/6`) literal
 /// *exactly*: `0.95` is `19/20`, never the nearest float.
@@ -109,10 +111,11 @@ fn parse_decimal(s: &str) -> Result<Rational, &'static str> {
         return Err("not a finite decimal or fraction (digits, '.', 'e', '/' only)");
     }
     let digits = format!("{int_part}{frac_part}");
-    let scale = exp - frac_part.len() as i64;
-    if scale.abs() > MAX_EXPONENT {
-        return Err("exponent out of range (|e| > 4000)");
-    }
+    let scale = i64::try_from(frac_part.len())
+        .ok()
+        .and_then(|f| exp.checked_sub(f))
+        .filter(|s| s.abs() <= MAX_EXPONENT)
+        .ok_or("exponent out of range (|e| > 400)")?;
     let mut value = Rational::from_integer(digits.parse::<BigInt>().map_err(|_| "no digits")?);
     let ten = BigInt::from(10u32);
     let pow = num_traits::pow(ten, scale.unsigned_abs() as usize);
