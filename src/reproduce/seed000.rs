@@ -538,7 +538,8 @@ fn fig10(out: &mut Vec<Claim>) -> R<()> {
         let eval = |alpha: Interval, kappa: Interval| -> Option<(Vec<&'static str>, bool)> {
             let (s, c) = sin_cos_enclosure(alpha);
             let valid = alpha.inf() > 0.0
-                && alpha.sup() * 2.0 < std::f64::consts::PI
+                // 2α < π, proven with an enclosure of π (not f64's π, which is below it).
+                && (alpha + alpha).sup() < Interval::PI.inf()
                 && kappa.inf() >= 0.5
                 && kappa.sup() <= 2.0;
             let arc = ArcApprox::new(c, s, kappa).ok()?;

@@ -104,26 +104,18 @@ impl Surd {
     /// square-free and `b, e ≠ 0` is impossible (1, √d1, √d2 are linearly
     /// independent over Q). `None` only for [`Surd::Mixed`].
     pub fn exact_eq(&self, o: &Surd) -> Option<bool> {
-        match (self, o) {
-            (
-                Surd::Num {
-                    a: a1,
-                    b: b1,
-                    d: d1,
-                },
-                Surd::Num {
-                    a: a2,
-                    b: b2,
-                    d: d2,
-                },
-            ) => {
-                if b1.is_zero() || b2.is_zero() || d1 == d2 {
-                    Some(a1 == a2 && b1 == b2 && (b1.is_zero() || d1 == d2))
-                } else {
-                    Some(false)
-                }
-            }
-            _ => None,
+        let ((a1, b1, d1), (a2, b2, d2)) = (self.triple()?, o.triple()?);
+        if b1.is_zero() || b2.is_zero() || d1 == d2 {
+            Some(a1 == a2 && b1 == b2 && (b1.is_zero() || d1 == d2))
+        } else {
+            Some(false)
+        }
+    }
+    /// `(a, b, d)` of `a + b√d`; `None` for [`Surd::Mixed`].
+    fn triple(&self) -> Option<(&Rational, &Rational, &BigInt)> {
+        match self {
+            Surd::Num { a, b, d } => Some((a, b, d)),
+            Surd::Mixed => None,
         }
     }
     /// The conjugate `a - b√d`.
@@ -208,19 +200,7 @@ impl Mul for Surd {
     type Output = Surd;
     fn mul(self, o: Surd) -> Surd {
         // Two pure surds of different fields multiply into a third field.
-        if let (
-            Surd::Num {
-                a: a1,
-                b: b1,
-                d: d1,
-            },
-            Surd::Num {
-                a: a2,
-                b: b2,
-                d: d2,
-            },
-        ) = (&self, &o)
-        {
+        if let (Some((a1, b1, d1)), Some((a2, b2, d2))) = (self.triple(), o.triple()) {
             if a1.is_zero() && a2.is_zero() && !b1.is_zero() && !b2.is_zero() && d1 != d2 {
                 let g = d1.gcd(d2);
                 let d = (d1 / &g) * (d2 / &g);
