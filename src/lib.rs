@@ -7,6 +7,7 @@
 
 #[cfg(feature = "arbitrary")]
 pub mod audit;
+pub mod certify;
 pub mod curve;
 #[cfg(feature = "arbitrary")]
 pub mod gen;

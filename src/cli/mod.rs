@@ -2,7 +2,10 @@
 //!
 //! * `lncert reproduce [--json] [--out DIR]` — every claim of [`lncert::reproduce`];
 //! * `lncert prop ID [ARGS] [--json]` — one proposition on user data;
-//! * `lncert audit [--cases N] [--seed S] [--json]` — the float path audited.
+//! * `lncert audit [--cases N] [--seed S] [--json]` — the float path audited;
+//! * `lncert hausdorff A B [--rel R] [--tol T] [--certificate OUT] [--json]` — certified
+//!   Hausdorff bounds and tolerance certificates;
+//! * `lncert verify CERT [--json]` — the independent certificate check.
 //!
 //! Exit codes: 0 = certified / the proposition agrees with the direct check,
 //! 1 = refuted / erratum / undecided, 2 = bad input (message on stderr naming
@@ -19,10 +22,12 @@
 
 pub mod args;
 pub mod audit;
+pub mod hausdorff;
 pub mod prop;
 pub mod report;
 pub mod reproduce;
 pub mod svg;
+pub mod verify;
 
 use clap::{Parser, Subcommand};
 
@@ -46,6 +51,10 @@ pub enum Command {
     Prop(Box<prop::PropArgs>),
     /// Audit the f64 and interval paths against the exact path on generated cases.
     Audit(audit::AuditArgs),
+    /// Certified bounds [lo, hi] on the Hausdorff distance of two shapes; with --tol a verdict and a certificate.
+    Hausdorff(Box<hausdorff::HausdorffArgs>),
+    /// Re-check a Hausdorff tolerance certificate without searching.
+    Verify(verify::VerifyArgs),
 }
 
 /// A bad-input error: the message names the field and the reason (exit code 2).
@@ -72,6 +81,8 @@ pub fn run(cli: Cli) -> i32 {
         Command::Reproduce(a) => reproduce::run(&a),
         Command::Prop(a) => prop::run(&a),
         Command::Audit(a) => audit::run(&a),
+        Command::Hausdorff(a) => hausdorff::run(&a),
+        Command::Verify(a) => verify::run(&a),
     };
     match result {
         Ok(code) => code,

@@ -160,14 +160,14 @@ fn exact_number(text: &str) -> Result<Rational, String> {
 // JSON
 // ---------------------------------------------------------------------------
 
-fn field_err(field: &str, reason: impl Into<String>) -> CurveParseError {
+pub(crate) fn field_err(field: &str, reason: impl Into<String>) -> CurveParseError {
     CurveParseError::Field {
         field: field.to_string(),
         reason: reason.into(),
     }
 }
 
-fn describe(v: &Value) -> String {
+pub(crate) fn describe(v: &Value) -> String {
     match v {
         Value::Null => "null".to_string(),
         Value::Bool(_) => "a boolean".to_string(),
@@ -178,7 +178,7 @@ fn describe(v: &Value) -> String {
     }
 }
 
-fn json_coordinate(v: &Value, field: &str) -> Result<Rational, CurveParseError> {
+pub(crate) fn json_coordinate(v: &Value, field: &str) -> Result<Rational, CurveParseError> {
     let text = match v {
         Value::String(s) => s.clone(),
         // With serde_json's `arbitrary_precision`, this is the number's digits
@@ -197,7 +197,7 @@ fn json_coordinate(v: &Value, field: &str) -> Result<Rational, CurveParseError> 
     exact_number(&text).map_err(|reason| field_err(field, reason))
 }
 
-fn json_point(v: &Value, field: &str) -> Result<V2<Rational>, CurveParseError> {
+pub(crate) fn json_point(v: &Value, field: &str) -> Result<V2<Rational>, CurveParseError> {
     match v.as_array().map(Vec::as_slice) {
         Some([x, y]) => Ok(V2::new(
             json_coordinate(x, &format!("{field}[0]"))?,

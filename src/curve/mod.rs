@@ -5,7 +5,7 @@ mod vec2;
 
 pub use bezier::{bernstein_product, Bezier};
 pub use vec2::V2;
-mod io;
+pub(crate) mod io;
 pub use io::{
     parse_curve, parse_json_curve, parse_svg_path, CurveParseError, MAX_CONTROL_POINTS,
     MAX_NUMBER_CHARS, MAX_SEGMENTS, MAX_SVG_BYTES,

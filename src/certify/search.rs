@@ -1,0 +1,504 @@
+//! Certified bounds on one-sided Hausdorff distances by interval branch and bound.
+//!
+//! For shapes `A`, `B` with parametrised pieces, `h(A, B) = sup_{a∈A} dist(a, B)`.
+//!
+//! **Upper bound over a parameter box `S` of a piece of `A`.** Any function `τ`
+//! from `S` into (true) parameters of a piece of `B` gives
+//! `dist(A(s), B) ≤ |A(s) − B(τ(s))|`. The search takes `τ(s) = t* + k (s − s_c)`,
+//! `s_c` the centre of `S`, `t*` a float foot point of `A(s_c)` on `B` and `k` the
+//! float slope of the foot point (implicit function theorem); `t*`, `k` are just
+//! numbers, their quality affects tightness, never soundness. With
+//! `g(s) = |A(s) − B(τ(s))|²` and Taylor's theorem,
+//! `sup_S g ≤ g(s_c) + |g′(s_c)| w/2 + max(0, sup_S g″) w²/8` (`w` the width of `S`),
+//! where `g(s_c), g′(s_c)` are enclosed by a point [`Jet`] and `sup_S g″` by a jet over
+//! the box, all in outward-rounded interval arithmetic; the naive enclosure
+//! `sup g(S)` is used when smaller. The bound is second order in `w` where the
+//! distance function is flat, i.e. near its maximum, which is where refinement
+//! happens.
+//!
+//! **Lower bound.** `h(A, B) ≥ dist(a, B)` for every `a ∈ A`. The witness `a = A(s)`
+//! (at a dyadic `s` of the inner domain, so a true point of `A`) is enclosed by a
+//! box `P`; `dist(P, B)` is bounded below by branch and bound over the outer
+//! parameter domains of `B`: each parameter box `T` maps into `B(t_c) + B′(T)(T − t_c)`
+//! (mean value form) intersected with the natural enclosure `B(T)`, boxes farther than
+//! the best true distance found are pruned.
+//!
+//! **Search.** Boxes of `A` sit in a max-heap by upper bound; the top box is split
+//! (and its centre tried as a witness) until `hi − lo ≤ max(rel · hi, abs)`, a
+//! tolerance is decided, or the budget runs out. The final boxes cover every
+//! outer domain of `A`: they are the proof data of a certificate.
+
+use super::jet::{dist2, Jet, JetPoint};
+use super::shape::Piece;
+use crate::scalar::{Interval, Scalar};
+use std::cmp::Ordering;
+use std::collections::BinaryHeap;
+
+/// Search settings.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Config {
+    /// Stop when `hi − lo ≤ rel · hi` (default `1e-3`).
+    pub rel: f64,
+    /// Absolute gap that also stops the search (default `0`: automatic, `1e-14`
+    /// times the coordinate scale, so that coinciding shapes terminate).
+    pub abs: f64,
+    /// Maximum number of parameter boxes per direction (default 200 000).
+    pub max_boxes: usize,
+    /// A claimed tolerance: the search then runs until it is decided (`hi ≤ tol`
+    /// or `lo > tol`), down to a relative gap of `1e-12`, instead of stopping at `rel`.
+    pub tol: Option<f64>,
+}
+
+impl Default for Config {
+    fn default() -> Self {
+        Config {
+            rel: 1e-3,
+            abs: 0.0,
+            max_boxes: 200_000,
+            tol: None,
+        }
+    }
+}
+
+/// One box of the final cover of a piece of `A`, with the proof data of its bound.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CoverBox {
+    /// Index of the piece of `A`.
+    pub piece: usize,
+    /// The parameter box `[s0, s1]` (dyadic floats, exact).
+    pub s: (f64, f64),
+    /// Index of the piece of `B` the foot map goes to.
+    pub target: usize,
+    /// Foot map `τ(s) = t + k (s − s_c)`, `s_c = (s0 + s1)/2` (computed in f64, exact for dyadics).
+    pub t: f64,
+    pub k: f64,
+    /// Certified `sup_{s ∈ [s0, s1]} dist(A(s), B)` upper bound.
+    pub bound: f64,
+}
+
+/// Certified bounds on one one-sided distance `h(A, B)`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OneSided {
+    /// `lo ≤ h(A, B) ≤ hi`.
+    pub lo: f64,
+    pub hi: f64,
+    /// The witness of `lo`: piece and parameter of `A`.
+    pub witness: Option<(usize, f64)>,
+    /// The final cover, sorted by piece and parameter.
+    pub boxes: Vec<CoverBox>,
+    /// Boxes evaluated in all.
+    pub evaluated: usize,
+    /// True if the budget or the float resolution stopped the search before its
+    /// goal; the bounds are still sound.
+    pub incomplete: bool,
+}
+
+#[derive(Clone, Debug)]
+struct HeapBox {
+    b: CoverBox,
+    splittable: bool,
+}
+
+impl PartialEq for HeapBox {
+    fn eq(&self, o: &Self) -> bool {
+        self.b.bound.total_cmp(&o.b.bound) == Ordering::Equal
+    }
+}
+impl Eq for HeapBox {}
+impl PartialOrd for HeapBox {
+    fn partial_cmp(&self, o: &Self) -> Option<Ordering> {
+        Some(self.cmp(o))
+    }
+}
+impl Ord for HeapBox {
+    fn cmp(&self, o: &Self) -> Ordering {
+        self.b.bound.total_cmp(&o.b.bound)
+    }
+}
+
+fn point_iv(x: f64) -> Interval {
+    Interval::try_from((x, x)).unwrap_or(Interval::ENTIRE)
+}
+
+fn jet_f64(p: &Piece, t: f64) -> Option<JetPoint<f64>> {
+    p.fl.eval(Jet::variable(t))
+}
+
+/// Float foot point of `q` on one piece: best of a sample, then Newton on
+/// `φ(t) = |q − B(t)|²`, kept in the inner domain. Returns `(t, distance)`.
+pub(crate) fn foot_f64(piece: &Piece, q: (f64, f64), samples: usize) -> Option<(f64, f64)> {
+    let (lo, hi) = piece.inner;
+    let d2 = |t: f64| jet_f64(piece, t).map(|(x, y)| (x.v - q.0).powi(2) + (y.v - q.1).powi(2));
+    let mut best: Option<(f64, f64)> = None;
+    for i in 0..=samples {
+        let t = lo + (hi - lo) * (i as f64 / samples as f64);
+        if let Some(v) = d2(t) {
+            if v.is_finite() && best.is_none_or(|b| v < b.1) {
+                best = Some((t, v));
+            }
+        }
+    }
+    let (mut t, mut v) = best?;
+    for _ in 0..12 {
+        let Some((x, y)) = jet_f64(piece, t) else {
+            break;
+        };
+        let (ex, ey) = (x.v - q.0, y.v - q.1);
+        let g = ex * x.d + ey * y.d;
+        let h = x.d * x.d + y.d * y.d + ex * x.dd + ey * y.dd;
+        if !(h > 0.0) {
+            break;
+        }
+        let tn = (t - g / h).clamp(lo, hi);
+        match d2(tn) {
+            Some(vn) if vn <= v => {
+                let done = (tn - t).abs() <= 1e-16 * (1.0 + t.abs());
+                t = tn;
+                v = vn;
+                if done {
+                    break;
+                }
+            }
+            _ => break,
+        }
+    }
+    Some((t, v.sqrt()))
+}
+
+/// The foot map `(target, t, k)` for the box centred at `s_c` of piece `a`.
+fn foot_map(a: &Piece, s_c: f64, b: &[Piece], s_half: f64) -> Option<(usize, f64, f64)> {
+    let (ax, ay) = jet_f64(a, s_c)?;
+    let q = (ax.v, ay.v);
+    let samples = 32;
+    let (j, t, _) = b
+        .iter()
+        .enumerate()
+        .filter_map(|(j, p)| foot_f64(p, q, samples).map(|(t, d)| (j, t, d)))
+        .min_by(|x, y| x.2.total_cmp(&y.2))?;
+    let piece = &b[j];
+    let (bx, by) = jet_f64(piece, t)?;
+    // F(s, t) = (A(s) − B(t))·B′(t) = 0 ⇒ k = −F_s/F_t.
+    let (ex, ey) = (ax.v - bx.v, ay.v - by.v);
+    let fs = ax.d * bx.d + ay.d * by.d;
+    let ft = -(bx.d * bx.d + by.d * by.d) + ex * bx.dd + ey * by.dd;
+    let mut k = if ft < 0.0 { -fs / ft } else { 0.0 };
+    let (lo, hi) = piece.inner;
+    if !k.is_finite() || t - k.abs() * s_half < lo || t + k.abs() * s_half > hi {
+        k = 0.0;
+    }
+    Some((j, t, k))
+}
+
+/// Certified upper bound on `sup_{s∈[s0,s1]} dist(A(s), B(τ(s)))` with `τ(s) = t + k(s − s_c)`.
+/// `None` if `τ` leaves the inner domain of the target or an evaluation is undefined.
+pub(crate) fn box_bound(a: &Piece, s: (f64, f64), b: &Piece, t: f64, k: f64) -> Option<f64> {
+    let s_c = 0.5 * (s.0 + s.1);
+    let sb = Interval::try_from((s.0, s.1)).ok()?;
+    let sc = point_iv(s_c);
+    let (ti, ki) = (point_iv(t), point_iv(k));
+    let tau_box = ti + ki * (sb - sc);
+    if !(tau_box.inf() >= b.inner.0 && tau_box.sup() <= b.inner.1) {
+        return None;
+    }
+    // Over the box.
+    let pa = a.iv.eval(Jet::variable(sb))?;
+    let pb = b.iv.eval(Jet::affine(tau_box, ki))?;
+    let g_box = dist2(&pa, &pb);
+    // At the centre.
+    let pa_c = a.iv.eval(Jet::variable(sc))?;
+    let pb_c = b.iv.eval(Jet::affine(ti, ki))?;
+    let g_c = dist2(&pa_c, &pb_c);
+    let w = sb - sc; // ⊆ [−w/2, w/2]
+    let half_w = w.mag();
+    let hw = point_iv(half_w);
+    let dd_pos = Interval::try_from((0.0, g_box.dd.sup().max(0.0))).ok()?;
+    let taylor = g_c.v + g_c.d.abs() * hw + dd_pos * hw * hw * Interval::from_frac(1, 2);
+    let g_sup = taylor.sup().min(g_box.v.sup());
+    if !g_sup.is_finite() {
+        return None;
+    }
+    let g = Interval::try_from((0.0, g_sup.max(0.0))).ok()?;
+    Some(g.sqrt().sup())
+}
+
+fn make_box(a: &[Piece], i: usize, s: (f64, f64), b: &[Piece]) -> HeapBox {
+    let s_c = 0.5 * (s.0 + s.1);
+    let splittable = s_c > s.0 && s_c < s.1;
+    let mut cb = CoverBox {
+        piece: i,
+        s,
+        target: 0,
+        t: b[0].inner.0,
+        k: 0.0,
+        bound: f64::INFINITY,
+    };
+    if let Some((j, t, k)) = foot_map(&a[i], s_c, b, 0.5 * (s.1 - s.0)) {
+        let with_k = box_bound(&a[i], s, &b[j], t, k);
+        let without = if k != 0.0 {
+            box_bound(&a[i], s, &b[j], t, 0.0)
+        } else {
+            None
+        };
+        let (bound, kk) = match (with_k, without) {
+            (Some(x), Some(y)) if y < x => (y, 0.0),
+            (Some(x), _) => (x, k),
+            (None, Some(y)) => (y, 0.0),
+            (None, None) => (f64::INFINITY, k),
+        };
+        cb = CoverBox {
+            piece: i,
+            s,
+            target: j,
+            t,
+            k: kk,
+            bound,
+        };
+    }
+    HeapBox { b: cb, splittable }
+}
+
+/// A certified lower bound on `dist(P, B)` for the box `P` (`|P − B| ≥` result),
+/// refined until within the relative gap `rel` or the budget.
+pub(crate) fn lower_distance(p: (Interval, Interval), b: &[Piece], rel: f64, budget: usize) -> f64 {
+    #[derive(PartialEq)]
+    struct TBox {
+        lower: f64,
+        j: usize,
+        t: (f64, f64),
+    }
+    impl Eq for TBox {}
+    impl PartialOrd for TBox {
+        fn partial_cmp(&self, o: &Self) -> Option<Ordering> {
+            Some(self.cmp(o))
+        }
+    }
+    impl Ord for TBox {
+        fn cmp(&self, o: &Self) -> Ordering {
+            o.lower.total_cmp(&self.lower) // min-heap
+        }
+    }
+    let q = (p.0.mid(), p.1.mid());
+    // Upper bound from true points (inner domain).
+    let point_dist = |j: usize, t: f64| -> Option<f64> {
+        let (x, y) = b[j].iv.eval(Jet::constant(point_iv(t)))?;
+        let (dx, dy) = (x.v - p.0, y.v - p.1);
+        Some((dx * dx + dy * dy).sqrt().sup())
+    };
+    let mut best = f64::INFINITY;
+    for (j, piece) in b.iter().enumerate() {
+        if let Some((t, _)) = foot_f64(piece, q, 32) {
+            if let Some(d) = point_dist(j, t) {
+                best = best.min(d);
+            }
+        }
+    }
+    let box_lower = |j: usize, t: (f64, f64)| -> f64 {
+        let Ok(tb) = Interval::try_from((t.0, t.1)) else {
+            return 0.0;
+        };
+        let tc = point_iv(0.5 * (t.0 + t.1));
+        let (Some(over), Some(at_c)) = (
+            b[j].iv.eval(Jet::variable(tb)),
+            b[j].iv.eval(Jet::variable(tc)),
+        ) else {
+            return 0.0;
+        };
+        let mv_x = at_c.0.v + over.0.d * (tb - tc);
+        let mv_y = at_c.1.v + over.1.d * (tb - tc);
+        let bx = over.0.v.intersection(mv_x);
+        let by = over.1.v.intersection(mv_y);
+        let gap = |a: Interval, c: Interval| -> f64 {
+            if a.is_empty() || c.is_empty() {
+                return 0.0;
+            }
+            // the separation of two intervals, rounded down
+            let g1 = (Interval::try_from((a.inf(), a.inf())).unwrap_or(Interval::ENTIRE)
+                - Interval::try_from((c.sup(), c.sup())).unwrap_or(Interval::ENTIRE))
+            .inf();
+            let g2 = (Interval::try_from((c.inf(), c.inf())).unwrap_or(Interval::ENTIRE)
+                - Interval::try_from((a.sup(), a.sup())).unwrap_or(Interval::ENTIRE))
+            .inf();
+            g1.max(g2).max(0.0)
+        };
+        let (gx, gy) = (point_iv(gap(p.0, bx)), point_iv(gap(p.1, by)));
+        let mut d2 = (gx * gx + gy * gy).inf();
+        // Second-order Taylor lower bound of φ(t) = |P − B(t)|² over T:
+        // φ(t) ≥ φ(t_c) − |φ′(t_c)| w/2 − max(0, −inf φ″(T)) w²/8. Tight where the
+        // distance is flat (near the foot point, or along a concentric arc).
+        let pj = (Jet::constant(p.0), Jet::constant(p.1));
+        let phi_box = dist2(&pj, &over);
+        let phi_c = dist2(&pj, &at_c);
+        let hw = point_iv((tb - tc).mag());
+        let neg_dd =
+            Interval::try_from((0.0, (-phi_box.dd.inf()).max(0.0))).unwrap_or(Interval::ENTIRE);
+        let taylor =
+            (phi_c.v - phi_c.d.abs() * hw - neg_dd * hw * hw * Interval::from_frac(1, 2)).inf();
+        if taylor > d2 {
+            d2 = taylor;
+        }
+        if d2.is_nan() {
+            return 0.0;
+        }
+        d2.max(0.0).sqrt() * (1.0 - 4.0 * f64::EPSILON) // sqrt rounded: step down
+    };
+    let mut heap = BinaryHeap::new();
+    for (j, piece) in b.iter().enumerate() {
+        let (lo, hi) = piece.outer;
+        let n = 4;
+        for k in 0..n {
+            let t0 = if k == 0 {
+                lo
+            } else {
+                lo + (hi - lo) * (k as f64 / n as f64)
+            };
+            let t1 = if k + 1 == n {
+                hi
+            } else {
+                lo + (hi - lo) * ((k + 1) as f64 / n as f64)
+            };
+            heap.push(TBox {
+                lower: box_lower(j, (t0, t1)),
+                j,
+                t: (t0, t1),
+            });
+        }
+    }
+    let mut count = 0;
+    while let Some(top) = heap.pop() {
+        if top.lower >= best * (1.0 - rel) || count >= budget {
+            return top.lower.min(best);
+        }
+        count += 1;
+        let tm = 0.5 * (top.t.0 + top.t.1);
+        if !(tm > top.t.0 && tm < top.t.1) {
+            return top.lower.min(best);
+        }
+        let inner = b[top.j].inner;
+        if tm >= inner.0 && tm <= inner.1 {
+            if let Some(d) = point_dist(top.j, tm) {
+                best = best.min(d);
+            }
+        }
+        for half in [(top.t.0, tm), (tm, top.t.1)] {
+            let l = box_lower(top.j, half);
+            if l <= best {
+                heap.push(TBox {
+                    lower: l,
+                    j: top.j,
+                    t: half,
+                });
+            }
+        }
+    }
+    // Unreachable in exact arithmetic (the box holding the nearest point is never
+    // pruned); 0 is always a sound lower bound.
+    0.0
+}
+
+/// `h(A, B)` bounded by branch and bound. `other` is the `(lo, hi)` of the
+/// opposite direction, used only to stop early when this one no longer matters.
+pub(crate) fn one_sided(
+    a: &[Piece],
+    b: &[Piece],
+    cfg: &Config,
+    abs: f64,
+    other: (f64, f64),
+) -> OneSided {
+    let mut heap = BinaryHeap::new();
+    let mut evaluated = 0usize;
+    for (i, piece) in a.iter().enumerate() {
+        let (lo, hi) = piece.outer;
+        let n = 4;
+        for k in 0..n {
+            let s0 = if k == 0 {
+                lo
+            } else {
+                lo + (hi - lo) * (k as f64 / n as f64)
+            };
+            let s1 = if k + 1 == n {
+                hi
+            } else {
+                lo + (hi - lo) * ((k + 1) as f64 / n as f64)
+            };
+            heap.push(make_box(a, i, (s0, s1), b));
+            evaluated += 1;
+        }
+    }
+    let mut lo = 0.0f64;
+    let mut witness = None;
+    let mut incomplete = false;
+    let try_witness =
+        |i: usize, s: f64, lo: &mut f64, witness: &mut Option<(usize, f64)>, gap_rel: f64| {
+            let inner = a[i].inner;
+            let s = s.clamp(inner.0, inner.1);
+            let Some((x, y)) = a[i].iv.eval(Jet::constant(point_iv(s))) else {
+                return;
+            };
+            // float estimate first: a witness below the current lo cannot help
+            let q = (x.v.mid(), y.v.mid());
+            let est = b
+                .iter()
+                .filter_map(|p| foot_f64(p, q, 32).map(|r| r.1))
+                .fold(f64::INFINITY, f64::min);
+            if est <= *lo {
+                return;
+            }
+            let l = lower_distance((x.v, y.v), b, gap_rel, 4_000);
+            if l > *lo {
+                *lo = l;
+                *witness = Some((i, s));
+            }
+        };
+    // initial witnesses: the ends and centres of the pieces
+    for (i, piece) in a.iter().enumerate() {
+        for s in [
+            piece.inner.0,
+            0.5 * (piece.inner.0 + piece.inner.1),
+            piece.inner.1,
+        ] {
+            try_witness(i, s, &mut lo, &mut witness, cfg.rel * 0.25);
+        }
+    }
+    loop {
+        let Some(top) = heap.peek() else { break };
+        let hi = top.b.bound;
+        let (olo, ohi) = (lo.max(other.0), hi.max(other.1));
+        // Without a tolerance the goal is the relative gap; with one, it is the
+        // verdict (refined down to a 1e-12 relative gap if need be).
+        let rel = if cfg.tol.is_some() { 1e-12 } else { cfg.rel };
+        if ohi - olo <= (rel * ohi).max(abs) {
+            break;
+        }
+        if let Some(tol) = cfg.tol {
+            if hi <= tol || lo > tol {
+                break;
+            }
+        }
+        if hi <= other.0 {
+            break; // this direction cannot raise the Hausdorff distance above the other's lower bound
+        }
+        if !top.splittable || evaluated >= cfg.max_boxes {
+            incomplete = true;
+            break;
+        }
+        let top = heap.pop().expect("peeked");
+        let (s0, s1) = top.b.s;
+        let sm = 0.5 * (s0 + s1);
+        try_witness(top.b.piece, sm, &mut lo, &mut witness, cfg.rel * 0.25);
+        for half in [(s0, sm), (sm, s1)] {
+            heap.push(make_box(a, top.b.piece, half, b));
+            evaluated += 1;
+        }
+    }
+    let mut boxes: Vec<CoverBox> = heap.into_iter().map(|h| h.b).collect();
+    boxes.sort_by(|x, y| x.piece.cmp(&y.piece).then(x.s.0.total_cmp(&y.s.0)));
+    let hi = boxes.iter().map(|b| b.bound).fold(0.0, f64::max);
+    OneSided {
+        lo: lo.min(hi),
+        hi,
+        witness,
+        boxes,
+        evaluated,
+        incomplete,
+    }
+}

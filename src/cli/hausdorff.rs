@@ -1,0 +1,187 @@
+//! `lncert hausdorff A B [--rel R] [--tol T] [--certificate OUT] [--json]`:
+//! certified bounds on the Hausdorff distance of two shapes (see
+//! [`lncert::certify`]), a verdict on a claimed tolerance, and its certificate.
+//!
+//! Shapes are files holding a curve (`{"bezier": [[x, y], ...]}`,
+//! `{"beziers": [...]}` or SVG path data), an arc
+//! (`{"arc": {"center": [x, y], "radius": r, "from": [dx, dy], "to": [dx, dy]}}`,
+//! counter-clockwise), an offset (`{"offset": {"curve": CURVE, "distance": r}}`)
+//! or a convolution with an ellipse
+//! (`{"convolution": {"curve": CURVE, "ellipse": [[m11, m12], [m21, m22]], "side": 1}}`).
+//!
+//! Exit codes: 0 = bounds computed (with `--tol`: certified), 1 = with `--tol`:
+//! refuted or undecided, 2 = bad input.
+
+use super::args::{bad, number};
+use super::{print_out, CliError};
+use lncert::certify::{hausdorff, Certificate, Config, OneSided, ShapeDesc};
+use lncert::scalar::interval_from_rational;
+use serde_json::json;
+use std::path::PathBuf;
+
+/// Largest shape file read.
+pub const MAX_FILE_BYTES: u64 = 16 << 20;
+
+/// Arguments of `lncert hausdorff`.
+#[derive(clap::Args, Debug)]
+pub struct HausdorffArgs {
+    /// First shape (JSON or SVG path data file).
+    pub a: PathBuf,
+    /// Second shape.
+    pub b: PathBuf,
+    /// Stop when hi − lo ≤ rel·hi (1e-12 to 0.5).
+    #[arg(long, default_value = "1e-3")]
+    pub rel: String,
+    /// A claimed tolerance: certify d_H ≤ TOL (exit 0) or refute it (exit 1). Read exactly.
+    #[arg(long)]
+    pub tol: Option<String>,
+    /// Write the certificate of d_H ≤ TOL here (needs --tol).
+    #[arg(long)]
+    pub certificate: Option<PathBuf>,
+    /// Box budget per direction.
+    #[arg(long, default_value_t = 200_000)]
+    pub max_boxes: usize,
+    /// Print one JSON document.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// Reads a shape file; errors name the argument.
+pub fn read_shape(flag: &str, path: &PathBuf) -> Result<ShapeDesc, CliError> {
+    let meta =
+        std::fs::metadata(path).map_err(|e| bad(flag, format!("{}: {e}", path.display())))?;
+    if meta.len() > MAX_FILE_BYTES {
+        return Err(bad(
+            flag,
+            format!("{}: larger than {MAX_FILE_BYTES} bytes", path.display()),
+        ));
+    }
+    let text =
+        std::fs::read_to_string(path).map_err(|e| bad(flag, format!("{}: {e}", path.display())))?;
+    ShapeDesc::parse(&text).map_err(|e| bad(flag, format!("{}: {e}", path.display())))
+}
+
+fn one_json(d: &OneSided) -> serde_json::Value {
+    json!({
+        "lo": d.lo, "hi": d.hi,
+        "boxes": d.boxes.len(), "evaluated": d.evaluated,
+        "witness": d.witness.map(|(p, s)| json!({"piece": p, "s": s})),
+        "incomplete": d.incomplete,
+    })
+}
+
+/// Runs the command; returns the exit code.
+pub fn run(a: &HausdorffArgs) -> Result<i32, CliError> {
+    let rel = number("--rel", &a.rel)?;
+    let rel_f = interval_from_rational(&rel).sup();
+    if !(1e-12..=0.5).contains(&rel_f) {
+        return Err(bad("--rel", "must be between 1e-12 and 0.5"));
+    }
+    let tol = a.tol.as_deref().map(|t| number("--tol", t)).transpose()?;
+    if let Some(t) = &tol {
+        if num_traits::Signed::is_negative(t) {
+            return Err(bad("--tol", "must be ≥ 0"));
+        }
+        if interval_from_rational(t).sup() > lncert::certify::shape::MAX_COORDINATE {
+            return Err(bad("--tol", "absurdly large"));
+        }
+    }
+    if a.certificate.is_some() && tol.is_none() {
+        return Err(bad(
+            "--certificate",
+            "needs --tol (a certificate proves a claimed tolerance)",
+        ));
+    }
+    if a.max_boxes == 0 || a.max_boxes > 50_000_000 {
+        return Err(bad("--max-boxes", "out of range (1 to 50000000)"));
+    }
+    let sa = read_shape("A", &a.a)?;
+    let sb = read_shape("B", &a.b)?;
+    // The search compares f64 bounds with the largest f64 ≤ tol (sound).
+    let tol_f = tol.as_ref().map(|t| interval_from_rational(t).inf());
+    let cfg = Config {
+        rel: rel_f,
+        max_boxes: a.max_boxes,
+        tol: tol_f,
+        ..Config::default()
+    };
+    let start = std::time::Instant::now();
+    let r = hausdorff(&sa, &sb, &cfg).map_err(|e| CliError(e.to_string()))?;
+    let elapsed = start.elapsed();
+    let verdict = tol_f.map(|t| {
+        if r.hi <= t {
+            "certified"
+        } else if r.lo > t {
+            "refuted"
+        } else {
+            "undecided"
+        }
+    });
+    let mut cert_note = None;
+    if let (Some(path), Some(t)) = (&a.certificate, &tol) {
+        match Certificate::new(&sa, &sb, t, &r) {
+            Some(c) => {
+                std::fs::write(path, c.to_json_string())
+                    .map_err(|e| bad("--certificate", format!("{}: {e}", path.display())))?;
+                cert_note = Some(format!(
+                    "written to {} ({} boxes)",
+                    path.display(),
+                    c.box_count()
+                ));
+            }
+            None => cert_note = Some("not written: the tolerance is not certified".to_string()),
+        }
+    }
+    if a.json {
+        let doc = json!({
+            "lo": r.lo, "hi": r.hi,
+            "a_to_b": one_json(&r.a_to_b), "b_to_a": one_json(&r.b_to_a),
+            "rel": rel_f,
+            "tol": tol.as_ref().map(|t| t.to_string()),
+            "verdict": verdict,
+            "incomplete": r.incomplete(),
+            "certificate": cert_note,
+            "seconds": elapsed.as_secs_f64(),
+        });
+        print_out(&format!(
+            "{}\n",
+            serde_json::to_string_pretty(&doc).unwrap_or_default()
+        ));
+    } else {
+        let mut out = String::new();
+        out += &format!("A: {}\nB: {}\n", sa.summary(), sb.summary());
+        out += &format!(
+            "d_H(A, B) ∈ [{:e}, {:e}]  (certified bounds, gap {:.2e})\n",
+            r.lo,
+            r.hi,
+            r.hi - r.lo
+        );
+        for (name, d) in [("h(A→B)", &r.a_to_b), ("h(B→A)", &r.b_to_a)] {
+            out += &format!(
+                "  {name} ∈ [{:e}, {:e}]  {} boxes",
+                d.lo,
+                d.hi,
+                d.boxes.len()
+            );
+            if let Some((p, s)) = d.witness {
+                out += &format!(", witness piece {p} at s = {s}");
+            }
+            out += "\n";
+        }
+        if r.incomplete() {
+            out += "note: the box budget or the float resolution stopped the search; the bounds are sound but wider than asked\n";
+        }
+        if let (Some(v), Some(t)) = (verdict, &tol) {
+            out += &format!("verdict: {v} (d_H ≤ {t}?)\n");
+        }
+        if let Some(n) = &cert_note {
+            out += &format!("certificate: {n}\n");
+        }
+        out += &format!("time: {:.3} ms\n", elapsed.as_secs_f64() * 1e3);
+        print_out(&out);
+    }
+    Ok(match verdict {
+        None | Some("certified") => 0,
+        _ => 1,
+    })
+}
