@@ -27,16 +27,31 @@
 //!
 //! [`raster_cpu`] runs on the CPU (rayon over rows, `f64`); [`raster_gpu`] runs the same
 //! computation as a wgpu compute shader (`raster.wgsl`, feature `gpu`). Both evaluate every
-//! node exactly as [`DensePoly2::eval`]: nested Horner with a fused multiply-add for every step,
-//! node coordinates `fma(step, i, lo)` as in [`Grid::x`]. A fused multiply-add is one correctly
-//! rounded IEEE operation, so a device with `f64` shaders (`wgpu::Features::SHADER_F64`, result
-//! tagged [`Precision::F64`]) computes the same bits as the CPU, hence the same sign codes and the
-//! same cell list — the shader spells out every `fma` rather than writing `a * b + c`, because a
-//! shader compiler is free to contract or not contract the latter. (Bit-identity still assumes
-//! the driver implements `fma` fused and keeps `f64` subnormals; the tests check it on the
-//! machine at hand.) Without `f64` shaders the GPU evaluates in `f32` ([`Precision::F32`]):
-//! coefficients and nodes are rounded to `f32`, and the output is only an approximation of the
-//! `f64` raster (cells near a sign boundary can come and go; huge coefficients overflow).
+//! node as [`DensePoly2::eval`] does: nested Horner with a fused multiply-add (`f64::mul_add`,
+//! WGSL `fma()`) for every step, at the node coordinates of [`Grid::x`] / [`Grid::y`] (computed
+//! once on the CPU and uploaded, so both backends use the same bits). A fused multiply-add is
+//! one correctly rounded IEEE operation, so a device that really fuses computes the same bits
+//! as the CPU; the shader spells out every `fma` rather than `a * b + c`, which a shader
+//! compiler may contract or not at will.
+//!
+//! Fusing alone does not make the GPU output identical, though: Vulkan allows a driver to
+//! evaluate `fma()` as a multiply and an add, and Mesa's llvmpipe does so for `f64` (observed
+//! in `tests/raster.rs`, `fused_and_unfused_signs_differ`). So the `f64` shader also evaluates
+//! the a-priori error bound of Horner's scheme, `|v̂ − p(x, y)| ≤ γ_{2K} Σ |a_ij| |x|^i |y|^j`
+//! with `K = deg_x + deg_y`, `γ_k = k u / (1 − k u)`, `u = 2^-53` (Higham, *Accuracy and
+//! Stability of Numerical Algorithms*, §5.1; it holds for fused and unfused steps alike), with a
+//! factor 2 margin and a padding of the coefficients for underflow. A node whose GPU value is
+//! not larger in magnitude than the bound could have the other sign (or be 0) on the CPU, so
+//! every cell touching such a node is re-decided on the CPU with [`DensePoly2::eval`]; every
+//! other node has the same sign bit on both backends. The [`Precision::F64`] output of
+//! [`raster_gpu`] therefore equals that of [`raster_cpu`] cell for cell, assuming only that the
+//! device's `f64` add and multiply are correctly (or at least faithfully) rounded. Inputs
+//! whose values could approach the `f64` overflow threshold are rastered on the CPU inside
+//! [`raster_gpu`] (reported as [`BackendUsed::Cpu`]), so the shader never sees `inf` or NaN.
+//!
+//! Without `f64` shaders the GPU evaluates in `f32` ([`Precision::F32`]): coefficients and
+//! nodes are rounded to `f32`, and the output is only an approximation of the `f64` raster
+//! (cells near a sign boundary can come and go).
 //!
 //! # A heuristic, not a proof
 //!
@@ -333,11 +348,13 @@ pub fn raster_cpu(
     Ok(cpu::raster(p, q, grid))
 }
 
-/// The raster on the GPU (wgpu compute shader `raster.wgsl`): pass 1 writes the sign code of
-/// every node of a band of rows, pass 2 applies the 2 × 2 mask and packs one candidate bit per
-/// cell; the bits are read back and listed on the CPU. Uses `f64` when the adapter offers
-/// `SHADER_F64` (output identical to [`raster_cpu`]), else `f32` (approximate, see the module
-/// docs). The device and pipelines are created once per process and cached; calls are
+/// The raster on the GPU (wgpu compute shader `raster.wgsl`): for a band of node rows, pass 0
+/// evaluates the inner Horner values (one per power of `x`, they depend on `y` only), pass 1
+/// the sign code of every node, pass 2 applies the 2 × 2 mask and packs one candidate bit per
+/// cell plus one "uncertain" bit per cell with a corner value within the Horner error bound of
+/// 0; the bits are read back and listed on the CPU, which re-decides the uncertain cells with
+/// [`DensePoly2::eval`]. Uses `f64` when the adapter offers `SHADER_F64` (output identical to
+/// [`raster_cpu`], see the module docs), else `f32` (approximate). The device and pipelines are created once per process and cached; calls are
 /// serialized. Errors: invalid input as in [`raster_cpu`]; [`RasterError::NoAdapter`] without
 /// a usable adapter or without the `gpu` feature; [`RasterError::Gpu`] for device failures.
 pub fn raster_gpu(
@@ -356,28 +373,4 @@ pub fn raster_gpu(
             "built without the `gpu` feature".to_string(),
         ))
     }
-}
-
-/// Lists the set bits of packed candidate words (`words_per_row` words per cell row, bit `b` of
-/// word `w` is cell `i = 32 w + b`) as cells sorted by `(j, i)`.
-#[cfg_attr(not(feature = "gpu"), allow(dead_code))]
-fn unpack_cells(bits: &[u32], words_per_row: usize, cells_per_row: u32) -> Vec<Cell> {
-    let mut cells = Vec::new();
-    if words_per_row == 0 {
-        return cells;
-    }
-    for (j, row) in bits.chunks_exact(words_per_row).enumerate() {
-        for (w, &word) in row.iter().enumerate() {
-            let mut word = word;
-            while word != 0 {
-                let b = word.trailing_zeros();
-                word &= word - 1;
-                let i = (w as u32) * 32 + b;
-                if i < cells_per_row {
-                    cells.push(Cell { i, j: j as u32 });
-                }
-            }
-        }
-    }
-    cells
 }

@@ -1,8 +1,10 @@
 // Raster of two bivariate polynomials (seed 003 §4.2), lncert::tangency::raster.
 //
 // `REAL` is replaced by `f64` (devices with SHADER_F64) or `f32` before compilation.
-// Every multiply-add is an explicit fma(): it must round exactly like f64::mul_add on the CPU,
-// and a compiler may contract or not contract a plain `a * b + c`.
+// Values are computed as DensePoly2::eval does (inner Horner in y per power of x, outer Horner
+// in x, one fma() per step). Vulkan allows fma() to be evaluated unfused (Mesa's llvmpipe does),
+// so the shader also evaluates the a-priori Horner error bound and flags every node whose value
+// is not clearly away from zero; the CPU re-evaluates the cells touching such nodes.
 
 alias real = REAL;
 
@@ -17,17 +19,24 @@ struct Params {
     q_dx: u32,
     q_dy: u32,
     q_off: u32,
+    pa_off: u32,        // offset of |p| coefficients (padded, see gpu.rs)
+    qa_off: u32,        // offset of |q| coefficients (padded)
+    ys_off: u32,        // offset of the node ordinates (abscissae start at 0)
+    c_off: u32,         // offset of the error-bound factor
     pad0: u32,
     pad1: u32,
 }
 
 @group(0) @binding(0) var<uniform> params: Params;
-// [x_lo, step_x, y_lo, step_y, p coefficients..., q coefficients...]
+// [x_0..x_{n-1}, y_0..y_{n-1}, p, q, |p|, |q|, error factor]
 @group(0) @binding(1) var<storage, read> data: array<real>;
-// Sign code per node of the band: bit 0 = p > 0, bit 1 = q > 0.
+// Node code of the band: bit 0 = p > 0, bit 1 = q > 0, bit 2 = p uncertain, bit 3 = q uncertain.
 @group(0) @binding(2) var<storage, read_write> codes: array<u32>;
-// One candidate bit per cell of the whole grid, row-major.
+// Per cell row and word: [candidate bits, uncertain bits], row-major over the whole grid.
 @group(0) @binding(3) var<storage, read_write> bits: array<u32>;
+// Inner Horner values per node row of the band (pass 0), `inner_stride()` per row:
+// [p_0..p_dx, q_0..q_dx, |p|_0..|p|_dx, |q|_0..|q|_dx].
+@group(0) @binding(4) var<storage, read_write> inner_vals: array<real>;
 
 // Inner Horner in y of the coefficient row starting at `base` (dy + 1 coefficients).
 fn inner(base: u32, dy: u32, y: real) -> real {
@@ -43,22 +52,60 @@ fn inner(base: u32, dy: u32, y: real) -> real {
     return c;
 }
 
-// p(x, y) exactly as DensePoly2::eval: inner Horner over y per power of x, outer Horner over x.
-fn eval_poly(off: u32, dx: u32, dy: u32, x: real, y: real) -> real {
-    let stride = dy + 1u;
-    var r: real = inner(off + dx * stride, dy, y);
+fn inner_count() -> u32 {
+    return params.p_dx + params.q_dx + 2u;
+}
+
+fn inner_stride() -> u32 {
+    return 2u * inner_count();
+}
+
+// Pass 0: the inner Horner values of every node row of the band (they depend on y only).
+@compute @workgroup_size(64, 1, 1)
+fn row_inner(@builtin(global_invocation_id) gid: vec3<u32>) {
+    let k = gid.x;
+    let r = gid.y;
+    if k >= inner_stride() || r >= params.rows {
+        return;
+    }
+    let y = data[params.ys_off + params.row0 + r];
+    let half = inner_count();
+    let abs_part = k >= half;
+    var kk = k;
+    var yy = y;
+    var p_base = params.p_off;
+    var q_base = params.q_off;
+    if abs_part {
+        kk = k - half;
+        yy = abs(y);
+        p_base = params.pa_off;
+        q_base = params.qa_off;
+    }
+    var c: real;
+    if kk <= params.p_dx {
+        c = inner(p_base + kk * (params.p_dy + 1u), params.p_dy, yy);
+    } else {
+        let i = kk - params.p_dx - 1u;
+        c = inner(q_base + i * (params.q_dy + 1u), params.q_dy, yy);
+    }
+    inner_vals[r * inner_stride() + k] = c;
+}
+
+// Outer Horner over inner_vals[base ..= base + dx].
+fn outer(base: u32, dx: u32, x: real) -> real {
+    var r: real = inner_vals[base + dx];
     var i: u32 = dx;
     loop {
         if i == 0u {
             break;
         }
         i = i - 1u;
-        r = fma(r, x, inner(off + i * stride, dy, y));
+        r = fma(r, x, inner_vals[base + i]);
     }
     return r;
 }
 
-// Pass 1: sign codes of the nodes (i, row0 + r), r < rows.
+// Pass 1: sign codes of the nodes (i, row0 + r), r < rows, with uncertainty flags.
 @compute @workgroup_size(64, 1, 1)
 fn node_codes(@builtin(global_invocation_id) gid: vec3<u32>) {
     let i = gid.x;
@@ -66,15 +113,28 @@ fn node_codes(@builtin(global_invocation_id) gid: vec3<u32>) {
     if i >= params.n || r >= params.rows {
         return;
     }
-    let j = params.row0 + r;
-    let x = fma(data[1], real(i), data[0]);
-    let y = fma(data[3], real(j), data[2]);
-    let pv = eval_poly(params.p_off, params.p_dx, params.p_dy, x, y);
-    let qv = eval_poly(params.q_off, params.q_dx, params.q_dy, x, y);
-    codes[r * params.n + i] = select(0u, 1u, pv > real(0.0)) | select(0u, 2u, qv > real(0.0));
+    let x = data[i];
+    let ax = abs(x);
+    let half = inner_count();
+    let pb = r * inner_stride();
+    let qb = pb + params.p_dx + 1u;
+    let pv = outer(pb, params.p_dx, x);
+    let qv = outer(qb, params.q_dx, x);
+    let ps = outer(pb + half, params.p_dx, ax);
+    let qs = outer(qb + half, params.q_dx, ax);
+    let c = data[params.c_off];
+    var code: u32 = select(0u, 1u, pv > real(0.0)) | select(0u, 2u, qv > real(0.0));
+    if !(abs(pv) > c * ps) {
+        code = code | 4u;
+    }
+    if !(abs(qv) > c * qs) {
+        code = code | 8u;
+    }
+    codes[r * params.n + i] = code;
 }
 
-// Pass 2: the 2 x 2 mask. One invocation packs 32 cells of cell row row0 + r.
+// Pass 2: the 2 x 2 mask. One invocation packs 32 cells of cell row row0 + r: a candidate bit
+// when both sign bits change over the corners, an uncertain bit when a corner is uncertain.
 @compute @workgroup_size(64, 1, 1)
 fn cell_mask(@builtin(global_invocation_id) gid: vec3<u32>) {
     let w = gid.x;
@@ -85,7 +145,8 @@ fn cell_mask(@builtin(global_invocation_id) gid: vec3<u32>) {
     let n = params.n;
     let lower = r * n;
     let upper = lower + n;
-    var word: u32 = 0u;
+    var cand: u32 = 0u;
+    var unsure: u32 = 0u;
     for (var b: u32 = 0u; b < 32u; b = b + 1u) {
         let i = w * 32u + b;
         if i + 1u >= n {
@@ -98,8 +159,13 @@ fn cell_mask(@builtin(global_invocation_id) gid: vec3<u32>) {
         let all = a & c & d & e;
         let any = a | c | d | e;
         if ((all ^ any) & 3u) == 3u {
-            word = word | (1u << b);
+            cand = cand | (1u << b);
+        }
+        if (any & 12u) != 0u {
+            unsure = unsure | (1u << b);
         }
     }
-    bits[(params.row0 + r) * params.words_per_row + w] = word;
+    let at = 2u * ((params.row0 + r) * params.words_per_row + w);
+    bits[at] = cand;
+    bits[at + 1u] = unsure;
 }
