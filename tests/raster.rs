@@ -37,11 +37,7 @@ fn gpu_required() -> bool {
 fn gpu_f64(p: &DensePoly2, q: &DensePoly2, grid: &Grid) -> Option<RasterOutput> {
     match raster_gpu(p, q, grid) {
         Ok(out) => {
-            assert!(
-                matches!(out.backend, BackendUsed::Gpu { .. }),
-                "{:?}",
-                out.backend
-            );
+            // Inputs that might overflow the shader are rastered on the CPU (reported as such).
             if out.precision == Precision::F64 {
                 Some(out)
             } else {
@@ -193,6 +189,11 @@ fn gpu_matches_cpu_1024() {
     let cpu = raster_cpu(&p, &q, &g).expect("valid input");
     assert!(!cpu.cells.is_empty(), "test pair should have candidates");
     if let Some(gpu) = gpu_f64(&p, &q, &g) {
+        assert!(
+            matches!(gpu.backend, BackendUsed::Gpu { .. }),
+            "{:?}",
+            gpu.backend
+        );
         assert_eq!(gpu.cells, cpu.cells);
     }
 }
@@ -280,6 +281,11 @@ fn circle_line_cpu() {
 fn circle_line_gpu() {
     let (p, q) = circle_line();
     if let Some(out) = gpu_f64(&p, &q, &circle_grid()) {
+        assert!(
+            matches!(out.backend, BackendUsed::Gpu { .. }),
+            "{:?}",
+            out.backend
+        );
         check_circle_line(&out);
     }
 }
@@ -446,4 +452,148 @@ fn zero_is_not_positive() {
     if let Some(out) = gpu_f64(&p, &q, &g) {
         assert_eq!(out.cells, want);
     }
+}
+
+/// The sign of the last rounding decides the cells: p = x^2 - c with c = fl(t^2) at a node
+/// t = x_i vanishes in unfused arithmetic (fl(t·t) - c = 0) but equals the correctly rounded
+/// t^2 - c ≠ 0 with a fused multiply-add. p > 0 at x_i moves the p sign change from cell i to
+/// cell i - 1. The expected cell comes from the exact sign of t^2 - c over the rationals; both
+/// backends must agree with it, so an unfused shader (or CPU) fails here. The same with y^2 - c
+/// exercises the inner Horner in y.
+#[test]
+fn last_rounding_decides_cells() {
+    use lncert::scalar::rational_from_f64;
+    use num_traits::Signed;
+    let mut s: u64 = 7;
+    let mut unit = || {
+        s = s
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (s >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut positive = 0;
+    let mut not_positive = 0;
+    for case in 0..60 {
+        let lo = 0.1 + 0.4 * unit();
+        let g = Grid {
+            n: 33,
+            x_lo: lo,
+            x_hi: lo + 0.3 + unit(),
+            y_lo: lo,
+            y_hi: lo + 0.3 + unit(),
+        };
+        let k = 1 + (unit() * 30.0) as u32; // node 1..=30
+        let along_y = case % 2 == 1;
+        let t = if along_y { g.y(k) } else { g.x(k) };
+        let c = t * t;
+        let exact = {
+            let tr = rational_from_f64(t).expect("finite");
+            tr.clone() * tr - rational_from_f64(c).expect("finite")
+        };
+        let t_positive = exact.is_positive();
+        if t_positive {
+            positive += 1;
+        } else {
+            not_positive += 1;
+        }
+        // The other polynomial changes sign between nodes 10 and 11 of the other axis.
+        let (p, q, want) = if along_y {
+            let mid = 0.5 * (g.x(10) + g.x(11));
+            let p = DensePoly2::new(0, 2, vec![-c, 0.0, 1.0]).expect("valid");
+            let q = DensePoly2::new(1, 0, vec![-mid, 1.0]).expect("valid");
+            let j = if t_positive { k - 1 } else { k };
+            (p, q, vec![Cell { i: 10, j }])
+        } else {
+            let mid = 0.5 * (g.y(10) + g.y(11));
+            let p = DensePoly2::new(2, 0, vec![-c, 0.0, 1.0]).expect("valid");
+            let q = DensePoly2::new(0, 1, vec![-mid, 1.0]).expect("valid");
+            let i = if t_positive { k - 1 } else { k };
+            (p, q, vec![Cell { i, j: 10 }])
+        };
+        let cpu = raster_cpu(&p, &q, &g).expect("valid input");
+        assert_eq!(cpu.cells, want, "CPU, case {case}, t = {t:e}");
+        if let Some(gpu) = gpu_f64(&p, &q, &g) {
+            assert_eq!(gpu.cells, want, "GPU, case {case}, t = {t:e}");
+        }
+    }
+    // Both outcomes occur, so the test tells fused from unfused arithmetic.
+    assert!(
+        positive >= 5 && not_positive >= 5,
+        "{positive} / {not_positive}"
+    );
+}
+
+/// Huge coefficients: near the overflow guard (1e300, still on the GPU) and beyond it (1e305,
+/// rastered on the CPU inside `raster_gpu`), the cells equal the CPU raster.
+#[test]
+fn huge_coefficients_agree() {
+    for scale in [1e300, 1e305] {
+        let p = DensePoly2::new(1, 1, vec![-scale, scale, scale, 0.0]).expect("valid");
+        let q = DensePoly2::new(1, 1, vec![0.5 * scale, -scale, scale, 0.0]).expect("valid");
+        let g = Grid {
+            n: 40,
+            x_lo: -2.0,
+            x_hi: 2.0,
+            y_lo: -2.0,
+            y_hi: 2.0,
+        };
+        let cpu = raster_cpu(&p, &q, &g).expect("valid input");
+        assert!(!cpu.cells.is_empty());
+        if let Some(gpu) = gpu_f64(&p, &q, &g) {
+            assert_eq!(gpu.cells, cpu.cells, "scale {scale:e}");
+        }
+    }
+}
+
+/// Where fused and unfused Horner steps give values of opposite signs (two steps and a
+/// cancellation: p = a2 x^2 + a1 x + a0 with a0 = -fl(r1·t), r1 = fl(a2 t + a1)), the GPU must
+/// still give the CPU's (fused) cells. Vulkan lets a driver evaluate fma() unfused, and Mesa's
+/// llvmpipe does; only the error-bound fallback to the CPU makes these cases agree there.
+#[test]
+fn fused_and_unfused_signs_differ() {
+    let mut s: u64 = 11;
+    let mut unit = || {
+        s = s
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (s >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut found = 0;
+    let mut tries = 0;
+    while found < 24 && tries < 100_000 {
+        tries += 1;
+        let lo = 0.1 + unit();
+        let g = Grid {
+            n: 33,
+            x_lo: lo,
+            x_hi: lo + 0.5 + unit(),
+            y_lo: -1.0,
+            y_hi: 1.0,
+        };
+        let k = 2 + (unit() * 28.0) as u32;
+        let t = g.x(k);
+        let (a2, a1) = (unit() * 2.0 - 1.0, unit() * 2.0 - 1.0);
+        let r1_fused = a2.mul_add(t, a1);
+        let r1_unfused = a2 * t + a1;
+        let a0 = -(r1_fused * t);
+        let fused = r1_fused.mul_add(t, a0);
+        let unfused = r1_unfused * t + a0;
+        if (fused > 0.0) == (unfused > 0.0) {
+            continue;
+        }
+        found += 1;
+        let p = DensePoly2::new(2, 0, vec![a0, a1, a2]).expect("valid");
+        let q = DensePoly2::new(0, 1, vec![-0.5 * (g.y(10) + g.y(11)), 1.0]).expect("valid");
+        assert_eq!(p.eval(t, 0.0).to_bits(), fused.to_bits());
+        let cpu = raster_cpu(&p, &q, &g).expect("valid input");
+        // p's sign at node k decides which cells next to column k are listed.
+        assert!(!cpu.cells.is_empty(), "case {found}");
+        if let Some(gpu) = gpu_f64(&p, &q, &g) {
+            assert_eq!(
+                gpu.cells, cpu.cells,
+                "case {found}: t = {t:e}, a2 = {a2:e}, a1 = {a1:e}"
+            );
+        }
+    }
+    assert_eq!(found, 24, "only {found} sign-flip cases in {tries} tries");
 }
