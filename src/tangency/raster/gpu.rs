@@ -209,20 +209,11 @@ impl Context {
         })
     }
 
-    /// Unit roundoff and padding `δ` of the error bound for this precision (see [`bound_parts`]).
-    fn bound_constants(&self) -> (f64, f64) {
-        match self.precision {
-            Precision::F64 => (2f64.powi(-53), 2f64.powi(-968)),
-            Precision::F32 => (2f64.powi(-24), 2f64.powi(-96)),
-        }
-    }
-
     /// The shader's `data` array: `[x_0.., y_0.., p, q, |p| + δ, |q| + δ, c]` as bytes of `f64`
     /// or `f32`, and the offsets `(p, q, |p|, |q|, y, c)`.
     fn data_bytes(&self, p: &DensePoly2, q: &DensePoly2, grid: &Grid) -> (Vec<u8>, [u32; 6]) {
-        let (unit, delta) = self.bound_constants();
-        let k = (p.deg_x + p.deg_y).max(q.deg_x + q.deg_y) as f64;
-        let factor = (8.0 * k + 16.0) * unit;
+        let (_, delta) = bound_constants(self.precision);
+        let factor = error_factor(p, q, self.precision);
         let n = grid.n;
         let mut values: Vec<f64> = (0..n).map(|i| grid.x(i)).collect();
         values.extend((0..n).map(|j| grid.y(j)));
@@ -253,7 +244,7 @@ impl Context {
     /// is at most about this sum, so below it no `inf`/NaN can arise and the shader's
     /// comparisons mean what they say even under a compiler's finite-math assumptions.
     fn may_overflow(&self, p: &DensePoly2, q: &DensePoly2, grid: &Grid) -> bool {
-        let (_, delta) = self.bound_constants();
+        let (_, delta) = bound_constants(self.precision);
         let limit = match self.precision {
             Precision::F64 => 2f64.powi(1000),
             Precision::F32 => 2f64.powi(100),
@@ -520,6 +511,26 @@ fn unpack_cells(
     (cells, resolved)
 }
 
+/// Unit roundoff `u` and coefficient padding `δ` of the shader's error bound. A node value `v`
+/// counts as certain when `|v| > c · Σ (|a_ij| + δ) |x|^i |y|^j` (the sum evaluated by the same
+/// Horner scheme, `c` from [`error_factor`]): `c = (8K + 16) u` is twice `4K u ≥ 2 γ_{2K}` (the
+/// worst-case distance between a fused CPU value and an unfused GPU value, Horner error bound),
+/// the padding `δ` (times `c`, ≥ 2^-1021 (8K + 16) per term in `f64`) covers underflow, even
+/// with subnormals flushed to zero (≤ 2^-1022 per operation).
+fn bound_constants(precision: Precision) -> (f64, f64) {
+    match precision {
+        Precision::F64 => (2f64.powi(-53), 2f64.powi(-968)),
+        Precision::F32 => (2f64.powi(-24), 2f64.powi(-96)),
+    }
+}
+
+/// The factor `c = (8K + 16) u`, `K` the larger total degree `deg_x + deg_y` of `p` and `q`.
+fn error_factor(p: &DensePoly2, q: &DensePoly2, precision: Precision) -> f64 {
+    let (unit, _) = bound_constants(precision);
+    let k = (p.deg_x + p.deg_y).max(q.deg_x + q.deg_y) as f64;
+    (8.0 * k + 16.0) * unit
+}
+
 /// The cached context, created on first use (a failure is cached too: no retry per call).
 fn context() -> Result<&'static Context, RasterError> {
     CONTEXT
@@ -685,5 +696,88 @@ mod tests {
             assert_eq!(out.backend, BackendUsed::Cpu);
             assert_eq!(out.cells, cpu.cells);
         }
+    }
+
+    /// Horner as in the shader, each step fused or not by `fuse(step)`.
+    fn horner_mixed(
+        coeffs: &[f64],
+        dx: usize,
+        dy: usize,
+        x: f64,
+        y: f64,
+        fuse: &mut dyn FnMut() -> bool,
+    ) -> f64 {
+        let mut step = |a: f64, b: f64, c: f64| if fuse() { a.mul_add(b, c) } else { a * b + c };
+        let w = dy + 1;
+        let mut r = 0.0;
+        for i in (0..=dx).rev() {
+            let mut c = coeffs[i * w + dy];
+            for j in (0..dy).rev() {
+                c = step(c, y, coeffs[i * w + j]);
+            }
+            r = if i == dx { c } else { step(r, x, c) };
+        }
+        r
+    }
+
+    /// Soundness of the uncertainty test, independent of any GPU: on values pushed next to 0
+    /// (the constant term adjusted so that p(x, y) nearly cancels), a value that any mix of
+    /// fused and unfused steps computes and that passes the test `|v| > c · S` has the sign
+    /// of the fused (CPU) value, where S is itself computed with a mix of steps.
+    #[test]
+    fn uncertainty_test_is_sound() {
+        let mut s: u64 = 5;
+        let mut next = move || {
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            s >> 11
+        };
+        let mut certain_near_zero = 0;
+        for case in 0..20_000 {
+            let (dx, dy) = ((next() % 11) as usize, (next() % 11) as usize);
+            let unit = |v: u64| (v as f64 / (1u64 << 53) as f64) * 2.0 - 1.0;
+            let mut coeffs: Vec<f64> = (0..(dx + 1) * (dy + 1))
+                .map(|_| unit(next()) * 2f64.powi((next() % 7) as i32 - 3))
+                .collect();
+            let (x, y) = (unit(next()) * 2.0, unit(next()) * 2.0);
+            let p0 = DensePoly2::new(dx, dy, coeffs.clone()).expect("finite");
+            coeffs[0] -= p0.eval(x, y);
+            if case % 3 == 0 {
+                coeffs[0] -= p0.eval(x, y) * 2f64.powi(-50);
+            }
+            let p = DensePoly2::new(dx, dy, coeffs.clone()).expect("finite");
+            let cpu = p.eval(x, y);
+            let (_, delta) = bound_constants(Precision::F64);
+            let c = error_factor(&p, &p, Precision::F64);
+            let abs: Vec<f64> = coeffs.iter().map(|a| a.abs() + delta).collect();
+            for mode in 0..3u64 {
+                let mut bits = next();
+                let mut fuse = || match mode {
+                    0 => true,
+                    1 => false,
+                    _ => {
+                        bits = bits.rotate_left(1);
+                        bits & 1 == 1
+                    }
+                };
+                let v = horner_mixed(&coeffs, dx, dy, x, y, &mut fuse);
+                let sum = horner_mixed(&abs, dx, dy, x.abs(), y.abs(), &mut fuse);
+                if v.abs() > c * sum {
+                    assert_eq!(
+                        v > 0.0,
+                        cpu > 0.0,
+                        "case {case} mode {mode}: v = {v:e}, cpu = {cpu:e}, bound {:e}",
+                        c * sum
+                    );
+                    assert!(cpu != 0.0);
+                    if v.abs() < 1e-12 {
+                        certain_near_zero += 1;
+                    }
+                }
+            }
+        }
+        // The test is not vacuous: many tiny values are still decided on the device.
+        assert!(certain_near_zero > 200, "{certain_near_zero}");
     }
 }
