@@ -41,12 +41,14 @@ fn gpu_f64(p: &DensePoly2, q: &DensePoly2, grid: &Grid) -> Option<RasterOutput> 
             if out.precision == Precision::F64 {
                 Some(out)
             } else {
-                eprintln!("note: GPU adapter has no f64 shaders; bit-identity not checked");
+                static NOTE: std::sync::Once = std::sync::Once::new();
+                NOTE.call_once(|| eprintln!("note: GPU adapter has no f64 shaders; not compared"));
                 None
             }
         }
         Err(RasterError::NoAdapter(msg)) if !gpu_required() => {
-            eprintln!("note: skipping GPU check, no adapter: {msg}");
+            static NOTE: std::sync::Once = std::sync::Once::new();
+            NOTE.call_once(|| eprintln!("note: skipping GPU checks, no adapter: {msg}"));
             None
         }
         Err(e) => panic!("GPU raster failed: {e}"),
