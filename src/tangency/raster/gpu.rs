@@ -14,7 +14,7 @@ use wgpu::util::DeviceExt;
 /// (1024 rows at `n = 16384`, the whole grid at `n = 1024`).
 pub(super) const BAND_BYTES: u64 = 64 << 20;
 
-/// Workgroup width of both entry points in `raster.wgsl`.
+/// Workgroup width of the three entry points in `raster.wgsl`.
 const WORKGROUP: u32 = 64;
 
 /// The WGSL template; `REAL` becomes `f64` or `f32`.
