@@ -14,3 +14,4 @@ pub mod ln;
 pub mod poly;
 pub mod reproduce;
 pub mod scalar;
+pub mod tangency;
