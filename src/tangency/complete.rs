@@ -216,6 +216,10 @@ pub fn solve(sys: &System2, domain: &RationalBox, opts: &SolveOptions) -> Soluti
             break;
         }
         sol.boxes += 1;
+        // All zeros of b lie in the contracted box (equations linear in one variable).
+        let Some(b) = sys.contract_linear(&b) else {
+            continue;
+        };
         let e = sys.enclose(&b);
         if e.excludes_zero() {
             continue;
@@ -319,6 +323,16 @@ fn merge_records(
         for i in 0..out.len() {
             if !intersects(&out[i].enclosure, &r.enclosure) {
                 continue;
+            }
+            // A zero enclosed in the other record's region is that region's
+            // unique zero.
+            let within = |a: &IBox, b: &IBox| a[0].subset(b[0]) && a[1].subset(b[1]);
+            if within(&r.enclosure, &out[i].region) {
+                continue 'next;
+            }
+            if within(&out[i].enclosure, &r.region) {
+                out[i] = r;
+                continue 'next;
             }
             let h = hull(&out[i].enclosure, &r.enclosure);
             let (o, n) = sys.inflate_and_prove(&h, max_iter);

@@ -195,16 +195,63 @@ pub struct System2 {
     p: IPoly2,
     q: IPoly2,
     exact: [Poly2<Rational>; 2],
+    /// Equations linear in one variable: `(v, A, B)` with `A(w) x_v + B(w) = 0`,
+    /// `w` the other variable (coefficients enclosed, constant term first).
+    linear: Vec<(usize, Vec<Interval>, Vec<Interval>)>,
+}
+
+fn horner(c: &[Interval], t: Interval) -> Interval {
+    c.iter().rev().fold(pt(0.0), |acc, a| acc.mul_add(t, *a))
+}
+
+/// `(v, A, B)` for each variable `v` in which `e` has degree exactly 1.
+fn linear_parts(e: &Poly2<Rational>) -> Vec<(usize, Vec<Interval>, Vec<Interval>)> {
+    let e = e.trimmed();
+    let enc = |v: Vec<Rational>| v.iter().map(interval_from_rational).collect::<Vec<_>>();
+    let mut out = Vec::new();
+    if e.deg_y() == 1 {
+        let a = (0..=e.deg_x()).map(|i| e.coeff(i, 1)).collect();
+        let b = (0..=e.deg_x()).map(|i| e.coeff(i, 0)).collect();
+        out.push((1, enc(a), enc(b)));
+    }
+    if e.deg_x() == 1 {
+        let a = (0..=e.deg_y()).map(|j| e.coeff(1, j)).collect();
+        let b = (0..=e.deg_y()).map(|j| e.coeff(0, j)).collect();
+        out.push((0, enc(a), enc(b)));
+    }
+    out
 }
 
 impl System2 {
     /// The system `p = q = 0`.
     pub fn new(p: &Poly2<Rational>, q: &Poly2<Rational>) -> Self {
+        let mut linear = linear_parts(p);
+        linear.extend(linear_parts(q));
         System2 {
             p: IPoly2::new(p),
             q: IPoly2::new(q),
             exact: [p.clone(), q.clone()],
+            linear,
         }
+    }
+    /// Contracts `x` with the equations that are linear in one variable:
+    /// every zero in `x` has `x_v = -B(x_w)/A(x_w)`, so `x_v` may be intersected
+    /// with the interval quotient when `0 ∉ A(x_w)`. `None`: no zero in `x`.
+    pub fn contract_linear(&self, x: &IBox) -> Option<IBox> {
+        let mut b = *x;
+        for (v, a, c) in &self.linear {
+            let w = 1 - v;
+            let av = horner(a, b[w]);
+            if av.contains(0.0) {
+                continue;
+            }
+            let val = -horner(c, b[w]) / av;
+            b[*v] = b[*v].intersection(val);
+            if b[*v].is_empty() {
+                return None;
+            }
+        }
+        Some(b)
     }
     /// The exact equations.
     pub fn exact(&self) -> &[Poly2<Rational>; 2] {
@@ -343,9 +390,10 @@ impl System2 {
                     // Recompute the full K(X) (not cut by X) for the next iterate.
                     let k = self.raw_k(&cur, &e).unwrap_or(cur);
                     let next = inflate(&hull(x0, &k), 0.1);
-                    if next[0].wid() > 4.0 * cur[0].wid().max(x0[0].wid())
-                        || next[1].wid() > 4.0 * cur[1].wid().max(x0[1].wid())
-                    {
+                    // Give up when the iterate keeps growing beyond the
+                    // start box (plus numerical slack at f64 accuracy).
+                    let limit = |i: usize| (4.0 * x0[i].wid()).max(1e-9 * (1.0 + x0[i].mag()));
+                    if next[0].wid() > limit(0) || next[1].wid() > limit(1) {
                         return (KOutcome::Undecided { last: cur }, iters);
                     }
                     cur = next;
