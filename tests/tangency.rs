@@ -264,7 +264,8 @@ proptest! {
             let (a3, a4) = p.sys.hermite.quartic_coefficients(&a2);
             prop_assert!(root.a3.inf() - 1e-6 * (1.0 + root.a3.mag()) <= lncert::scalar::Scalar::approx(&a3));
             prop_assert!(lncert::scalar::Scalar::approx(&a4) <= root.a4.sup() + 1e-6 * (1.0 + root.a4.mag()));
-            prop_assert!(root.side != Side::Undecided);
+            prop_assert!(root.side != Side::Undecided, "{:?} window {:?} data {} {} {} O=({}, {}) r={}", root, (p.window.0.to_string(), p.window.1.to_string()),
+                p.sys.hermite.x1, p.sys.hermite.y1, p.sys.hermite.u, p.sys.ox, p.sys.oy, p.sys.r); let _ = &p.window;
         }
         // The planted root's side: (O - K)·(m0, 1) = t (1 + m0²) has the sign of t,
         // and r = ±t c: requested iff r has the sign of t.
@@ -274,6 +275,45 @@ proptest! {
         });
         prop_assert!(planted_root.is_some());
     }
+}
+
+/// Two tangent nonsingular quartics, like the paper's Fig. 4: data
+/// `[3, -1]`, `u = 1`, centre `(15/16, -319/128)`, `r = -5/2` (planted at
+/// `m0 = 3/4`, `a2 = -5`).
+fn fig4_like() -> TangencySystem {
+    system((3, 1), (-1, 1), (1, 1), [(15, 16), (-319, 128)], (-5, 2))
+}
+
+#[test]
+fn fig4_like_two_nonsingular_solutions() {
+    let s = fig4_like();
+    let prob = TangencyProblem::new(s.clone(), None).unwrap();
+    let rep = solve_complete(&prob, &SolveOptions::default());
+    let orc = exact_solutions(&s, &prob.a2_window);
+    assert_same_roots(&rep, &orc);
+    assert_eq!(rep.roots.len(), 2);
+    // The planted root (3/4, -5) is one of them.
+    assert!(rep
+        .roots
+        .iter()
+        .any(|r| r.m.contains(0.75) && r.a2.contains(-5.0)));
+    for r in &rep.roots {
+        assert_eq!(r.nonsingular, Some(true));
+        assert_eq!(r.side, Side::Requested);
+        // Independent: f'' has no root on [0, u] at both ends of the a2 enclosure.
+        for v in [r.a2.inf(), r.a2.sup()] {
+            let f = s.hermite.quartic_f(&rational_from_f64(v).unwrap());
+            assert!(direct::normal_form_regular(&f, s.u()));
+        }
+    }
+    // The opposite radius has the same solutions of eq. (6), (7) on the other side.
+    let s2 = system((3, 1), (-1, 1), (1, 1), [(15, 16), (-319, 128)], (5, 2));
+    let rep2 = solve_complete(
+        &TangencyProblem::new(s2, None).unwrap(),
+        &SolveOptions::default(),
+    );
+    assert_eq!(rep2.roots.len(), 2);
+    assert!(rep2.roots.iter().all(|r| r.side == Side::Opposite));
 }
 
 #[test]
@@ -289,7 +329,7 @@ fn zero_root_case_is_complete_and_empty() {
 
 #[test]
 fn candidates_from_cells_are_certified_and_merged() {
-    let s = system((3, 1), (-1, 1), (1, 1), [(1, 1), (1, 1)], (1, 2));
+    let s = fig4_like();
     let prob = TangencyProblem::new(s.clone(), None).unwrap();
     let rep = solve_complete(&prob, &SolveOptions::default());
     assert!(rep.complete);
@@ -302,8 +342,9 @@ fn candidates_from_cells_are_certified_and_merged() {
         cells.push([(m - dm, m + dm / 3.0), (a - da, a + da / 2.0)]);
         cells.push([(m - dm / 2.0, m + dm), (a - da / 3.0, a + da)]);
     }
-    cells.push([(0.0, 1e-3), (1e6, 1e6 + 1.0)]);
+    cells.push([(0.5, 0.501), (100.0, 100.5)]);
     let res = certify_candidates(&sys2, &cells);
+    assert_eq!(rep.roots.len(), 2);
     assert_eq!(res.roots.len(), rep.roots.len());
     assert_eq!(res.rejected, vec![cells.len() - 1]);
     assert!(res.undecided.is_empty());

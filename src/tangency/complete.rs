@@ -228,13 +228,9 @@ pub fn solve(sys: &System2, domain: &RationalBox, opts: &SolveOptions) -> Soluti
         match sys.step(&b, &e) {
             KStep::NoRoot => continue,
             KStep::Unique(k) => {
-                let (o, n) = sys.krawczyk(&k, opts.max_iter);
+                // k ⊂ int b holds the unique zero of b; contract it.
+                let (tight, n) = sys.contract(k, opts.max_iter);
                 sol.krawczyk_iterations += n;
-                // k ⊂ int b holds the unique zero of b; refine it.
-                let tight = match o {
-                    KOutcome::Unique { tight, .. } => tight,
-                    _ => k,
-                };
                 records.push(CertifiedRoot {
                     enclosure: tight,
                     region: b,

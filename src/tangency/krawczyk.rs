@@ -348,7 +348,40 @@ impl System2 {
     }
     /// Contracts a box `k` known to hold exactly one zero: `k ← K(k) ∩ k`
     /// (the zero stays inside) while the width keeps shrinking.
-    fn contract(&self, mut k: IBox, max_iter: usize) -> (IBox, usize) {
+    pub fn contract(&self, k: IBox, max_iter: usize) -> (IBox, usize) {
+        let (k, mut iters) = self.contract_steps(k, max_iter);
+        let loose = |i: usize| k[i].wid() > 1e-9 * (1.0 + k[i].mag());
+        if !(loose(0) || loose(1)) {
+            return (k, iters);
+        }
+        // Stuck: f64 Newton from the midpoint, then a proof on a tiny box
+        // around the approximation. Accepted only if the proven region lies
+        // in k: its zero is then k's unique zero.
+        let mut z = [k[0].mid(), k[1].mid()];
+        for _ in 0..8 {
+            let e = self.enclose(&[pt(z[0]), pt(z[1])]);
+            let j = e.jac.map(|r| r.map(|v| v.mid()));
+            let f = e.fc.map(|v| v.mid());
+            let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+            let dz = [
+                (j[1][1] * f[0] - j[0][1] * f[1]) / det,
+                (-j[1][0] * f[0] + j[0][0] * f[1]) / det,
+            ];
+            if !(dz[0].is_finite() && dz[1].is_finite()) {
+                return (k, iters);
+            }
+            z = [z[0] - dz[0], z[1] - dz[1]];
+        }
+        let (o, n) = self.inflate_and_prove(&[pt(z[0]), pt(z[1])], max_iter);
+        iters += n;
+        if let KOutcome::Unique { region, tight } = o {
+            if region[0].subset(k[0]) && region[1].subset(k[1]) {
+                return (tight, iters);
+            }
+        }
+        (k, iters)
+    }
+    fn contract_steps(&self, mut k: IBox, max_iter: usize) -> (IBox, usize) {
         let mut iters = 0;
         while iters < max_iter {
             let e = self.enclose(&k);
@@ -362,7 +395,7 @@ impl System2 {
             if next[0].is_empty() || next[1].is_empty() {
                 break;
             }
-            let progress = next[0].wid() < 0.5 * k[0].wid() || next[1].wid() < 0.5 * k[1].wid();
+            let progress = next[0].wid() < 0.9 * k[0].wid() || next[1].wid() < 0.9 * k[1].wid();
             k = next;
             if !progress {
                 break;
@@ -383,7 +416,7 @@ impl System2 {
             match self.step(&cur, &e) {
                 KStep::NoRoot => return (KOutcome::NoRoot, iters),
                 KStep::Unique(k) => {
-                    let (tight, more) = self.contract(k, max_iter);
+                    let (tight, more) = self.contract_steps(k, max_iter);
                     return (KOutcome::Unique { region: cur, tight }, iters + more);
                 }
                 KStep::Contracted(_) => {
