@@ -7,8 +7,11 @@
 //! enclosed by the f64 box `D'` (ends rounded outward). A work list starts with
 //! `D'`; each box `X` taken from it is, in this order,
 //!
-//! 1. **excluded** if `0 ∉ p(X)` or `0 ∉ q(X)` (centred-form enclosure
-//!    intersected with naive Horner, [`System2::enclose`]);
+//! 0. **contracted** with the equations linear in one variable
+//!    ([`System2::contract_linear`]: the removed part provably holds no zero),
+//!    or excluded when nothing is left;
+//! 1. **excluded** if `0 ∉ p(X)` or `0 ∉ q(X)` (centred Taylor-form
+//!    enclosure, [`System2::enclose`]);
 //! 2. **excluded** if a Krawczyk step gives `K(X) ∩ X = ∅`, or **settled** if
 //!    (possibly after contractions `X ← K(X) ∩ X`) `K(X) ⊂ int X`: one zero in
 //!    `X`, recorded with its region and a contracted enclosure;

@@ -45,6 +45,8 @@ pub enum A2WindowSource {
 #[derive(Clone, Debug)]
 pub struct TangencyProblem {
     pub system: TangencySystem,
+    /// Eq. (6), (7) with enclosed coefficients (built once).
+    pub interval_system: System2,
     pub a2_window: (Rational, Rational),
     pub a2_source: A2WindowSource,
 }
@@ -164,6 +166,7 @@ impl TangencyProblem {
             None => default_a2_window(&system.hermite),
         };
         Ok(TangencyProblem {
+            interval_system: System2::new(&system.eq6, &system.eq7),
             system,
             a2_window,
             a2_source,
@@ -273,8 +276,7 @@ pub fn root_report(sys: &TangencySystem, m: Interval, a2: Interval, certified: b
 /// ```
 pub fn solve_complete(p: &TangencyProblem, opts: &SolveOptions) -> TangencyReport {
     let sys = &p.system;
-    let s2 = System2::new(&sys.eq6, &sys.eq7);
-    let sol = solve(&s2, &p.domain(), opts);
+    let sol = solve(&p.interval_system, &p.domain(), opts);
     let roots = sol
         .roots
         .iter()
