@@ -358,3 +358,105 @@ fn candidates_from_cells_are_certified_and_merged() {
         );
     }
 }
+
+/// Planted data whose planted quartic is nonsingular: `u = m0 + du`,
+/// `s = u/k` with `k` inside `(3 - √3, 3 + √3)` (Prop 3.2: a nonsingular quartic
+/// exists), `y1 = -s x1`, and `a2_0` a rational point of the nonsingular interval.
+fn planted_nonsingular() -> impl Strategy<Value = (TangencySystem, Rational, Rational)> {
+    (
+        common::rat_nonzero(),
+        pythagorean(),
+        (1i64..=40, 1i64..=8),
+        prop::sample::select(vec![
+            q(3, 2),
+            q(2, 1),
+            q(5, 2),
+            q(3, 1),
+            q(7, 2),
+            q(4, 1),
+            q(9, 2),
+        ]),
+        1i64..=9,
+        (-20i64..=20, 1i64..=8).prop_filter("t != 0", |t| t.0 != 0),
+    )
+        .prop_filter_map("nonsingular a2", |(x1, (m0, c), du, k, frac10, t)| {
+            let u = &m0 + q(du.0, du.1);
+            let s = &u / &k;
+            let y1 = -(&s * &x1);
+            let h = HermiteData::new(x1.clone(), y1.clone(), u.clone()).ok()?;
+            let (lo, hi) = lncert::tangency::solve::nonsingular_a2_ends(&h)?;
+            let v = lo.sup() + (hi.inf() - lo.sup()) * frac10 as f64 / 10.0;
+            let a20 = rational_from_f64(v)?;
+            (h.nonsingular_a2_contains(&a20) == Some(true)).then_some(())?;
+            let (xp, yp) = curve_polys(&h);
+            let (kx, ky) = (xp.eval(&m0, &a20), yp.eval(&m0, &a20));
+            let t = q(t.0, t.1);
+            let sys = TangencySystem::new(x1, y1, u, &kx + &t * &m0, &ky + &t, &t * &c).ok()?;
+            Some((sys, m0, a20))
+        })
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// The planted signed radius `ρ(m0) = t√(1 + m0²)` (positive iff the centre
+    /// is on the side of the normal) lies in the outer enclosure of the
+    /// radius set; the planted quartic is nonsingular (exact check).
+    #[test]
+    fn radii_outer_contains_planted_radius((sys, m0, a20) in planted_nonsingular()) {
+        let set = lncert::tangency::radii::valid_radii(&sys.hermite, &sys.ox, &sys.oy).unwrap();
+        let side = sys.side_value::<Rational>(&m0, &a20);
+        prop_assert_eq!(side > q(0, 1), sys.r > q(0, 1));
+        let rho = lncert::scalar::Scalar::approx(&sys.r);
+        let tol = 1e-9 * (1.0 + rho.abs());
+        prop_assert!(set.outer().iter().any(|o| o.inf() - tol <= rho && rho <= o.sup() + tol),
+            "rho {} not in {:?}", rho, set.outer());
+    }
+}
+
+#[test]
+fn radii_inner_points_are_valid_and_far_points_are_not() {
+    let h = HermiteData::new(q(3, 1), q(-1, 1), q(1, 1)).unwrap();
+    let (ox, oy) = (q(15, 16), q(-319, 128));
+    let set = lncert::tangency::radii::valid_radii(&h, &ox, &oy).unwrap();
+    assert!(set.complete);
+    assert!(!set.inner().is_empty());
+    let valid = |r: Rational| -> bool {
+        let s = TangencySystem::new(
+            h.x1.clone(),
+            h.y1.clone(),
+            h.u.clone(),
+            ox.clone(),
+            oy.clone(),
+            r,
+        )
+        .unwrap();
+        let prob = TangencyProblem::new(s, None).unwrap();
+        let rep = solve_complete(&prob, &SolveOptions::default());
+        assert!(rep.complete);
+        rep.roots
+            .iter()
+            .any(|x| x.nonsingular == Some(true) && x.side == Side::Requested)
+    };
+    for i in set.inner() {
+        if i.wid() > 0.0 {
+            let r = rational_from_f64(i.mid()).unwrap();
+            assert!(valid(r), "inner {i:?}");
+        }
+    }
+    let top = set
+        .outer()
+        .iter()
+        .map(|o| o.sup())
+        .fold(f64::NEG_INFINITY, f64::max);
+    let bottom = set
+        .outer()
+        .iter()
+        .map(|o| o.inf())
+        .fold(f64::INFINITY, f64::min);
+    assert!(top.is_finite() && bottom.is_finite());
+    assert!(!valid(rational_from_f64(top + 0.5).unwrap()));
+    assert!(!valid(rational_from_f64(bottom - 0.5).unwrap()));
+    // -5/2 (two nonsingular solutions) is inside.
+    assert!(set.outer().iter().any(|o| o.contains(-2.5)));
+}
