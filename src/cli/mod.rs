@@ -2,7 +2,9 @@
 //!
 //! * `lncert reproduce [--json] [--out DIR]` — every claim of [`lncert::reproduce`];
 //! * `lncert prop ID [ARGS] [--json]` — one proposition on user data;
-//! * `lncert audit [--cases N] [--seed S] [--json]` — the float path audited.
+//! * `lncert audit [--cases N] [--seed S] [--json]` — the float path audited;
+//! * `lncert tangency --x1 X --y1 Y --u U --center OX,OY --radius R [...]` —
+//!   quartic LN curves tangent to a circle (seed 003 §4).
 //!
 //! Exit codes: 0 = certified / the proposition agrees with the direct check,
 //! 1 = refuted / erratum / undecided, 2 = bad input (message on stderr naming
@@ -16,6 +18,7 @@
 //! | [`svg`] | the Fig. 5 pictures of `reproduce --out` |
 //! | [`prop`] | `lncert prop`: ID resolution and one module per seed |
 //! | [`audit`] | `lncert audit` |
+//! | [`tangency`] | `lncert tangency` |
 
 pub mod args;
 pub mod audit;
@@ -23,6 +26,7 @@ pub mod prop;
 pub mod report;
 pub mod reproduce;
 pub mod svg;
+pub mod tangency;
 
 use clap::{Parser, Subcommand};
 
@@ -46,6 +50,8 @@ pub enum Command {
     Prop(Box<prop::PropArgs>),
     /// Audit the f64 and interval paths against the exact path on generated cases.
     Audit(audit::AuditArgs),
+    /// Quartic LN curves tangent to a circle (seed 003 §4): all solutions, proven.
+    Tangency(Box<tangency::TangencyArgs>),
 }
 
 /// A bad-input error: the message names the field and the reason (exit code 2).
@@ -72,6 +78,7 @@ pub fn run(cli: Cli) -> i32 {
         Command::Reproduce(a) => reproduce::run(&a),
         Command::Prop(a) => prop::run(&a),
         Command::Audit(a) => audit::run(&a),
+        Command::Tangency(a) => tangency::run(&a),
     };
     match result {
         Ok(code) => code,
