@@ -223,10 +223,9 @@ pub fn solve(sys: &System2, domain: &RationalBox, opts: &SolveOptions) -> Soluti
         let Some(b) = sys.contract_linear(&b) else {
             continue;
         };
-        let e = sys.enclose(&b);
-        if e.excludes_zero() {
+        let Some(e) = sys.enclose_or_exclude(&b) else {
             continue;
-        }
+        };
         sol.krawczyk_iterations += 1;
         match sys.step(&b, &e) {
             KStep::NoRoot => continue,

@@ -330,6 +330,40 @@ impl System2 {
             jac: [[a[2], a[3]], [b[2], b[3]]],
         }
     }
+    /// [`System2::enclose`], or `None` as soon as the enclosure of the cheaper
+    /// equation (fewer coefficients, evaluated first) excludes 0 over `x`.
+    pub fn enclose_or_exclude(&self, x: &IBox) -> Option<BoxEnclosure> {
+        if self.form == EnclosureForm::MeanValue {
+            let e = self.enclose_mean_value(x);
+            return (!e.excludes_zero()).then_some(e);
+        }
+        let c = [x[0].mid(), x[1].mid()];
+        let (h, k) = (x[0] - pt(c[0]), x[1] - pt(c[1]));
+        let (first, second) = if self.q.c.len() <= self.p.c.len() {
+            (&self.q, &self.p)
+        } else {
+            (&self.p, &self.q)
+        };
+        let a = first.centred(c[0], c[1], h, k);
+        if !a[1].contains(0.0) {
+            return None;
+        }
+        let b = second.centred(c[0], c[1], h, k);
+        if !b[1].contains(0.0) {
+            return None;
+        }
+        let (pa, qa) = if std::ptr::eq(first, &self.q) {
+            (b, a)
+        } else {
+            (a, b)
+        };
+        Some(BoxEnclosure {
+            c,
+            fc: [pa[0], qa[0]],
+            fx: [pa[1], qa[1]],
+            jac: [[pa[2], pa[3]], [qa[2], qa[3]]],
+        })
+    }
     /// One Krawczyk step on `x` given its enclosure.
     pub fn step(&self, x: &IBox, e: &BoxEnclosure) -> KStep {
         if e.excludes_zero() {
