@@ -62,6 +62,31 @@ fn degrees_10_and_6_bezout_60() {
     }
 }
 
+/// The elimination: `R` has formal degree 18 but degree 14 (the top
+/// coefficients cancel) and the factor `m²(u - m)²`; the part prime to `A`
+/// has degree 10 for generic data — at most 10 solutions with `A(m) ≠ 0`
+/// (real or complex), far below the Bézout bound 60.
+#[test]
+fn eliminant_degrees() {
+    use lncert::tangency::eliminate::{eliminant, eliminant_prime_part};
+    let cases = [
+        system((3, 1), (-1, 1), (1, 1), [(15, 16), (-319, 128)], (-5, 2)),
+        system((-2, 3), (5, 7), (9, 4), [(-1, 3), (2, 1)], (-3, 2)),
+        system((1, 1), (1, 1), (1, 10), [(1, 7), (3, 1)], (1, 1)),
+    ];
+    for s in &cases {
+        let r = eliminant(s);
+        assert_eq!(r.clone().trimmed().degree(), Some(14));
+        // m²(u - m)² divides R: R(0) = R'(0) = 0 and the same at u.
+        let d = r.derivative();
+        for m in [q(0, 1), s.u().clone()] {
+            assert_eq!(r.eval(&m), q(0, 1));
+            assert_eq!(d.eval(&m), q(0, 1));
+        }
+        assert_eq!(eliminant_prime_part(s).trimmed().degree(), Some(10));
+    }
+}
+
 #[test]
 fn bad_input_names_the_field() {
     let e = TangencySystem::new(q(1, 1), q(0, 1), q(1, 1), q(0, 1), q(0, 1), q(0, 1)).unwrap_err();

@@ -108,7 +108,9 @@ pub enum UndecidedReason {
 /// A box that may hold zeros that are not reported as roots.
 #[derive(Clone, Copy, Debug)]
 pub struct UndecidedBox {
+    /// The box `[x] × [y]` (`x = m`, `y = a2` for the tangency system).
     pub bx: IBox,
+    /// Why it is undecided.
     pub reason: UndecidedReason,
 }
 
@@ -130,7 +132,9 @@ pub struct Solution {
 /// An exact rational box `[x_lo, x_hi] × [y_lo, y_hi]` (the search domain).
 #[derive(Clone, Debug, PartialEq)]
 pub struct RationalBox {
+    /// `[x_lo, x_hi]`.
     pub x: (Rational, Rational),
+    /// `[y_lo, y_hi]`.
     pub y: (Rational, Rational),
 }
 

@@ -44,10 +44,13 @@ pub enum A2WindowSource {
 /// `m ∈ [0, u]`, `a2 ∈ [a2_lo, a2_hi]`.
 #[derive(Clone, Debug)]
 pub struct TangencyProblem {
+    /// Eq. (6), (7) over Q.
     pub system: TangencySystem,
     /// Eq. (6), (7) with enclosed coefficients (built once).
     pub interval_system: System2,
+    /// The `a2` search window `[lo, hi]` (exact).
     pub a2_window: (Rational, Rational),
+    /// Where the window came from.
     pub a2_source: A2WindowSource,
 }
 
@@ -210,7 +213,9 @@ pub struct RootReport {
     pub m: Interval,
     /// Enclosure of `a2`, and of `a3`, `a4` by eq. (3).
     pub a2: Interval,
+    /// Enclosure of `a3` (eq. (3)).
     pub a3: Interval,
+    /// Enclosure of `a4` (eq. (3)).
     pub a4: Interval,
     /// Proven to hold exactly one solution (complete solver) or exact (oracle).
     pub certified: bool,
@@ -224,6 +229,7 @@ pub struct RootReport {
 /// The result of a tangency solve.
 #[derive(Clone, Debug)]
 pub struct TangencyReport {
+    /// The solutions (pairwise distinct).
     pub roots: Vec<RootReport>,
     /// Lines of solutions `m = 0` or `m = u` (not isolated, never certified).
     pub lines: Vec<SolutionLine>,
@@ -231,10 +237,15 @@ pub struct TangencyReport {
     pub complete: bool,
     /// `"complete"` or `"exact"`.
     pub backend: &'static str,
+    /// Boxes of the domain that may hold unreported solutions.
     pub undecided: Vec<UndecidedBox>,
+    /// Krawczyk steps (complete solver; 0 for the oracle).
     pub krawczyk_iterations: usize,
+    /// Boxes processed (complete solver; 0 for the oracle).
     pub boxes: usize,
+    /// The `a2` search window.
     pub a2_window: (Rational, Rational),
+    /// Where the window came from.
     pub a2_source: A2WindowSource,
 }
 
