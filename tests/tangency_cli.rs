@@ -168,6 +168,7 @@ fn bad_input_names_the_flag() {
     assert_bad(&with(&["1", "--a2-range", "2,1"]), "--a2-range");
     assert_bad(&with(&["1", "--a2-range", "1,1"]), "--a2-range");
     assert_bad(&with(&["1", "--a2-range", "inf,1"]), "--a2-range");
+    assert_bad(&with(&["1", "--a2-range", "-1e400,1"]), "--a2-range");
     assert_bad(
         &with(&["1", "--backend", "gpu", "--resolution", "0"]),
         "--resolution",

@@ -54,7 +54,7 @@ pub struct TangencyProblem {
     pub a2_source: A2WindowSource,
 }
 
-/// Checks an `a2` window: `lo < hi` (field `a2_range`).
+/// Checks an `a2` window: `lo < hi`, both within the f64 range (field `a2_range`).
 pub fn check_a2_window(lo: &Rational, hi: &Rational) -> Result<(), TangencyError> {
     if lo > hi {
         return Err(TangencyError::invalid(
@@ -66,6 +66,16 @@ pub fn check_a2_window(lo: &Rational, hi: &Rational) -> Result<(), TangencyError
         return Err(TangencyError::invalid(
             "a2_range",
             "empty (lo = hi); give LO,HI with LO < HI",
+        ));
+    }
+    let finite = |v: &Rational| {
+        let i = interval_from_rational(v);
+        i.inf().is_finite() && i.sup().is_finite()
+    };
+    if !(finite(lo) && finite(hi)) {
+        return Err(TangencyError::invalid(
+            "a2_range",
+            "not finite in f64 (|value| beyond 1.8e308)",
         ));
     }
     Ok(())
@@ -330,6 +340,62 @@ pub fn solve_exact(p: &TangencyProblem) -> TangencyReport {
         undecided: Vec::new(),
         krawczyk_iterations: 0,
         boxes: 0,
+        a2_window: p.a2_window.clone(),
+        a2_source: p.a2_source,
+    }
+}
+
+/// Certifies raster candidate cells (`[(m_lo, m_hi), (a2_lo, a2_hi)]`, e.g. the
+/// cells of the raster module's output) with Krawczyk and ε-inflation
+/// ([`super::complete::certify_candidates`]) and reports them like the other
+/// backends: proven roots inside the domain, unresolved cells (and proven
+/// roots straddling the domain boundary) as undecided boxes.
+///
+/// A raster samples the domain and may miss roots, so `complete` is always
+/// `false` here: only the `complete` and `exact` backends can prove that no
+/// solution is missing. `boxes` counts the candidate cells.
+///
+/// # Examples
+/// ```
+/// use lncert::tangency::{solve::{solve_candidates, TangencyProblem}, system::TangencySystem};
+/// use lncert::scalar::frac;
+/// let s = TangencySystem::new(frac(3, 1), frac(-1, 1), frac(1, 1), frac(15, 16), frac(-319, 128), frac(-5, 2)).unwrap();
+/// let p = TangencyProblem::new(s, None).unwrap();
+/// let cell = [(0.7499, 0.7501), (-5.0001, -4.9999)]; // around the root (3/4, -5)
+/// let rep = solve_candidates(&p, &[cell], "cpu");
+/// assert_eq!(rep.roots.len(), 1);
+/// assert!(!rep.complete);
+/// ```
+pub fn solve_candidates(
+    p: &TangencyProblem,
+    cells: &[[(f64, f64); 2]],
+    backend: &'static str,
+) -> TangencyReport {
+    use super::complete::{certify_candidates, UndecidedReason};
+    let sys = &p.system;
+    let res = certify_candidates(&p.interval_system, cells);
+    let dom = p.domain();
+    let mut undecided = res.undecided;
+    let mut roots = Vec::new();
+    for r in &res.roots {
+        match dom.contains_box(&r.enclosure) {
+            Some(true) => roots.push(root_report(sys, r.enclosure[0], r.enclosure[1], true)),
+            Some(false) => {}
+            None => undecided.push(UndecidedBox {
+                bx: r.enclosure,
+                reason: UndecidedReason::DomainBoundary,
+            }),
+        }
+    }
+    roots.sort_by(|a, b| a.m.inf().total_cmp(&b.m.inf()));
+    TangencyReport {
+        roots,
+        lines: sys.solution_lines(),
+        complete: false,
+        backend,
+        undecided,
+        krawczyk_iterations: res.krawczyk_iterations,
+        boxes: cells.len(),
         a2_window: p.a2_window.clone(),
         a2_source: p.a2_source,
     }
