@@ -20,16 +20,21 @@
 //!    or excluded if the inflated box provably holds no zero;
 //! 4. reported **undecided** if its relative width is below `min_width`, or if
 //!    the box budget is exhausted (every box left in the work list is reported);
-//! 5. otherwise bisected (at the f64 midpoint, along the relatively wider side).
+//! 5. otherwise the Krawczyk-contracted box `K(X) ∩ X` (which holds every
+//!    zero of `X`) is bisected (at the f64 midpoint, along the relatively
+//!    wider side).
 //!
 //! # Soundness
 //!
-//! The boxes taken from the work list cover `D'` (bisection splits a box into two
-//! closed halves whose union is the box), so every point of `D` lies in some
-//! processed box that was excluded (no zero there: steps 1–3 are Krawczyk's
-//! theorem or an enclosure not containing 0), settled, or reported undecided.
-//! A settled box `X` holds at most one zero, namely the unique zero of its
-//! recorded region `R ⊇ X`; so every zero of `D` outside the undecided boxes is
+//! The boxes taken from the work list cover the zeros of `D'` (bisection
+//! splits a box into two closed halves whose union is the box; contractions —
+//! by linear equations or `X ← K(X) ∩ X` — drop only points that are not
+//! zeros), so every zero in `D` lies in some processed box, and that box was
+//! not excluded (exclusion is proof of no zero: steps 1–3 are Krawczyk's
+//! theorem or an enclosure not containing 0): it was settled or reported
+//! undecided. A settled box `X` holds at most one zero, namely the unique zero
+//! of its recorded region `R ⊇ X` (for step 2 after contractions: all zeros of
+//! `X` lie in the contracted box, which holds exactly one); so every zero of `D` outside the undecided boxes is
 //! the recorded zero of some settled box — *no zero is lost*, also when it lies
 //! on the common edge of two boxes: a zero on the boundary of `X` can never be
 //! proven by `K(X) ⊂ int X` (the zero lies in `K(X)`), and such boxes are then
@@ -245,6 +250,8 @@ pub fn solve(sys: &System2, domain: &RationalBox, opts: &SolveOptions) -> Soluti
             }
             KStep::Contracted(c) => {
                 let rw = rel_width(&b, &dom);
+                // Every zero of b lies in `keep` (Krawczyk contractions).
+                let mut keep = c;
                 if rel_width(&c, &dom) < 0.5 * rw {
                     // Good contraction: all zeros of b lie in c, iterate there.
                     let (o, n) = sys.krawczyk(&c, opts.max_iter);
@@ -258,7 +265,7 @@ pub fn solve(sys: &System2, domain: &RationalBox, opts: &SolveOptions) -> Soluti
                             });
                             continue;
                         }
-                        KOutcome::Undecided { .. } => {}
+                        KOutcome::Undecided { last } => keep = last,
                     }
                 }
                 if rw < opts.inflate_below {
@@ -285,7 +292,7 @@ pub fn solve(sys: &System2, domain: &RationalBox, opts: &SolveOptions) -> Soluti
                     });
                     continue;
                 }
-                let (lo, hi) = bisect(&b, &dom);
+                let (lo, hi) = bisect(&keep, &dom);
                 work.push(hi);
                 work.push(lo);
             }
