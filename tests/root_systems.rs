@@ -189,3 +189,35 @@ fn tiny_budget_is_reported_not_looped() {
         .iter()
         .any(|u| u.reason == lncert::tangency::complete::UndecidedReason::Budget));
 }
+
+/// A tangential (double) zero cannot be proven by Krawczyk (singular
+/// Jacobian): it must be reported undecided, flagged as near a double root,
+/// never as a certified root; the simple zero of the system is certified.
+#[test]
+fn tangential_double_root_is_flagged_not_certified() {
+    // y = x² touches y = 0 at the origin (a double zero); the factor x - 3/4 of
+    // the second equation gives the simple zero (3/4, 9/16).
+    let p = parse_poly2("y - x^2").unwrap();
+    let q = parse_poly2("y*(x - 3/4)").unwrap();
+    let domain = RationalBox {
+        x: (parse_rational("-1").unwrap(), parse_rational("1").unwrap()),
+        y: (parse_rational("-1").unwrap(), parse_rational("1").unwrap()),
+    };
+    let sol = solve(&System2::new(&p, &q), &domain, &SolveOptions::default());
+    assert!(!sol.complete);
+    assert_eq!(sol.roots.len(), 1, "{:?}", sol.roots);
+    assert!(sol.roots[0].enclosure[0].contains(0.75) && sol.roots[0].enclosure[1].contains(0.5625));
+    assert!(!sol.undecided.is_empty());
+    for u in &sol.undecided {
+        assert!(u.bx[0].contains(0.0) || u.bx[0].mag() < 1e-3, "{u:?}");
+        assert!(
+            matches!(
+                u.reason,
+                lncert::tangency::complete::UndecidedReason::MinWidth {
+                    near_double_root: true
+                }
+            ),
+            "{u:?}"
+        );
+    }
+}
