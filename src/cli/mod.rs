@@ -6,6 +6,8 @@
 //! * `lncert hausdorff A B [--rel R] [--tol T] [--certificate OUT] [--json]` — certified
 //!   Hausdorff bounds and tolerance certificates;
 //! * `lncert verify CERT [--json]` — the independent certificate check.
+//! * `lncert tangency --x1 X --y1 Y --u U --center OX,OY --radius R [...]` —
+//!   quartic LN curves tangent to a circle (seed 003 §4).
 //!
 //! Exit codes: 0 = certified / the proposition agrees with the direct check,
 //! 1 = refuted / erratum / undecided, 2 = bad input (message on stderr naming
@@ -19,6 +21,7 @@
 //! | [`svg`] | the Fig. 5 pictures of `reproduce --out` |
 //! | [`prop`] | `lncert prop`: ID resolution and one module per seed |
 //! | [`audit`] | `lncert audit` |
+//! | [`tangency`] | `lncert tangency` |
 
 pub mod args;
 pub mod audit;
@@ -27,6 +30,7 @@ pub mod prop;
 pub mod report;
 pub mod reproduce;
 pub mod svg;
+pub mod tangency;
 pub mod verify;
 
 use clap::{Parser, Subcommand};
@@ -55,6 +59,8 @@ pub enum Command {
     Hausdorff(Box<hausdorff::HausdorffArgs>),
     /// Re-check a Hausdorff tolerance certificate without searching.
     Verify(verify::VerifyArgs),
+    /// Quartic LN curves tangent to a circle (seed 003 §4): all solutions, proven.
+    Tangency(Box<tangency::TangencyArgs>),
 }
 
 /// A bad-input error: the message names the field and the reason (exit code 2).
@@ -83,6 +89,7 @@ pub fn run(cli: Cli) -> i32 {
         Command::Audit(a) => audit::run(&a),
         Command::Hausdorff(a) => hausdorff::run(&a),
         Command::Verify(a) => verify::run(&a),
+        Command::Tangency(a) => tangency::run(&a),
     };
     match result {
         Ok(code) => code,

@@ -11,6 +11,7 @@ mod multi;
 mod roots;
 pub use enclose::{certify_no_root, enclose_roots, RootEnclosure};
 pub use multi::{identity_holds, poly_in, univariate_coeffs, MPoly, RatFunc};
+pub(crate) use roots::div_rem;
 pub use roots::{
     count_distinct_roots, has_common_root_in, has_root_in, isolate_roots, isolate_roots_all,
     poly_gcd, refine_root, root_bound, square_free, sturm_sequence, RealRoot, RootCount, Span,

@@ -41,7 +41,10 @@ fn monic(p: Poly<Rational>) -> Poly<Rational> {
 }
 
 /// Euclidean division `a = q b + r` with `deg r < deg b`; `None` if `b` is zero.
-fn div_rem(a: &Poly<Rational>, b: &Poly<Rational>) -> Option<(Poly<Rational>, Poly<Rational>)> {
+pub(crate) fn div_rem(
+    a: &Poly<Rational>,
+    b: &Poly<Rational>,
+) -> Option<(Poly<Rational>, Poly<Rational>)> {
     let b = b.clone().trimmed();
     let lb = leading(&b)?.clone();
     let db = b.coeffs().len() - 1;
