@@ -1,12 +1,26 @@
 //! Certified Hausdorff bounds (issue 4): soundness against independent exact
-//! computations, certificates and their mutation tests.
+//! computations (Sturm isolation of foot points), Prop 6.1's closed form,
+//! certificates and their mutation tests.
 
+mod common;
+
+use common::q;
+use lncert::certify::cert::digest_of;
 use lncert::certify::verify::verify;
-use lncert::certify::{hausdorff, Certificate, Config, ShapeDesc};
-use lncert::scalar::parse_rational;
+use lncert::certify::{hausdorff, ArcDesc, Certificate, Config, ShapeDesc};
+use lncert::curve::{Bezier, V2};
+use lncert::ln::circle::ArcApprox;
+use lncert::poly::{isolate_roots, refine_root, Poly, Span};
+use lncert::scalar::{interval_from_rational, parse_rational, Interval, Rational, Scalar};
+use proptest::prelude::*;
+use serde_json::Value;
 
 fn shape(s: &str) -> ShapeDesc {
     ShapeDesc::parse(s).unwrap()
+}
+
+fn cfg(rel: f64) -> Config {
+    Config { rel, ..Config::default() }
 }
 
 #[test]
@@ -14,20 +28,343 @@ fn quadratic_against_segment_is_a_quarter() {
     let a = shape("M 0 0 Q 0.5 0.5 1 0");
     let b = shape("M 0 0 L 1 0");
     for rel in [1e-3, 1e-6, 1e-9] {
-        let r = hausdorff(
-            &a,
-            &b,
-            &Config {
-                rel,
-                ..Config::default()
-            },
-        )
-        .unwrap();
-        eprintln!(
-            "rel {rel}: [{}, {}] boxes {} + {}",
-            r.lo, r.hi, r.a_to_b.evaluated, r.b_to_a.evaluated
-        );
+        let r = hausdorff(&a, &b, &cfg(rel)).unwrap();
         assert!(r.lo <= 0.25 && 0.25 <= r.hi, "{r:?}");
         assert!(r.hi - r.lo <= rel * r.hi);
     }
+}
+
+#[test]
+fn arc_and_chord() {
+    // Arc of the unit circle from (4/5, −3/5) to (4/5, 3/5) against the segment from the
+    // centre to (1, 0): h(arc → seg) = 3/5 (the arc's ends), h(seg → arc) = 1 (the centre).
+    let a = shape(r#"{"arc": {"center": [0, 0], "radius": 1, "from": ["4/5", "-3/5"], "to": ["4/5", "3/5"]}}"#);
+    let b = shape("M 0 0 L 1 0");
+    let r = hausdorff(&a, &b, &cfg(1e-6)).unwrap();
+    assert!(r.a_to_b.lo <= 0.6 && 0.6 <= r.a_to_b.hi, "{:?}", r.a_to_b);
+    assert!(r.b_to_a.lo <= 1.0 && 1.0 <= r.b_to_a.hi);
+    assert!(r.hi - r.lo <= 1e-6 * r.hi);
+}
+
+#[test]
+fn offset_of_a_segment_is_a_parallel_segment() {
+    // The offset at distance 1/2 (left) of (0,0)-(2,0) is (0,1/2)-(2,1/2) exactly.
+    let off = shape(r#"{"offset": {"curve": {"bezier": [[0, 0], [2, 0]]}, "distance": "1/2"}}"#);
+    let par = shape("M 0 0.5 L 2 0.5");
+    let r = hausdorff(&off, &par, &cfg(1e-3)).unwrap();
+    assert!(r.hi < 1e-12, "{r:?}");
+    // and the segment is 1/2 away from its offset
+    let r = hausdorff(&off, &shape("M 0 0 L 2 0"), &cfg(1e-6)).unwrap();
+    assert!(r.lo <= 0.5 && 0.5 <= r.hi && r.hi - r.lo <= 1e-6);
+}
+
+#[test]
+fn offset_of_a_quarter_circle_curve_matches_arc_radius() {
+    // Offset of the arc-like quadratic at distance −1 vs the same quadratic: every
+    // point is exactly 1 away along the normal, so d_H ≤ 1, and the end points give ≥ 1
+    // unless the curve bends back; the bounds must contain a value in [0, 1].
+    let c = r#"{"bezier": [[0, 0], [1, 1], [2, 0]]}"#;
+    let off = shape(&format!(r#"{{"offset": {{"curve": {c}, "distance": -1}}}}"#));
+    let r = hausdorff(&off, &shape(c), &cfg(1e-4)).unwrap();
+    assert!(r.lo <= 1.0 + 1e-12 && r.hi >= r.lo && r.hi <= 1.0 + 1e-3, "{r:?}");
+}
+
+#[test]
+fn ellipse_convolution_of_a_segment() {
+    // Convolution of the horizontal segment with the ellipse diag(3, 1/2): the point
+    // with outer normal (0, 1) is (0, 1/2), so the convolution is the segment raised by 1/2.
+    let conv = shape(r#"{"convolution": {"curve": {"bezier": [[0, 0], [2, 0]]}, "ellipse": [[3, 0], [0, "1/2"]], "side": 1}}"#);
+    let r = hausdorff(&conv, &shape("M 0 0.5 L 2 0.5"), &cfg(1e-3)).unwrap();
+    assert!(r.hi < 1e-12, "{r:?}");
+}
+
+#[test]
+fn bad_input_is_a_typed_error() {
+    for (text, field) in [
+        (r#"{"arc": {"center": [0, 0], "radius": 0, "from": [1, 0], "to": [0, 1]}}"#, "arc.radius"),
+        (r#"{"arc": {"center": [0, 0], "radius": 1, "from": [0, 0], "to": [0, 1]}}"#, "arc.from"),
+        (r#"{"arc": {"center": [0, 0], "radius": 1, "from": [1, 0], "to": [2, 0]}}"#, "arc.to"),
+        (r#"{"offset": {"curve": {"bezier": [[0, 0], [0, 0]]}, "distance": 1}}"#, "offset.curve[0]"),
+        (r#"{"offset": {"curve": {"bezier": [[0, 0], [1, 0], [0, 0]]}, "distance": 1}}"#, "offset.curve[0]"),
+        (r#"{"offset": {"curve": {"bezier": [[0, 0], [1, 0]]}, "distance": 0}}"#, "offset.distance"),
+        (r#"{"convolution": {"curve": {"bezier": [[0, 0], [1, 0]]}, "ellipse": [[1, 2], [2, 4]]}}"#, "convolution.ellipse"),
+        (r#"{"bezier": [[1e200, 0], [1, 0]]}"#, "curve[0][0][0]"),
+        (r#"{"bezier": [[0, 0], [1, 0]], "x": 1}"#, "curve"),
+        (r#"{"arc": [1]}"#, "arc"),
+        ("{", "(json)"),
+        ("M 0 0 L", "path"),
+    ] {
+        let e = ShapeDesc::parse(text).unwrap_err().to_string();
+        assert!(e.contains(field), "{text}: {e}");
+    }
+    let a = shape("M 0 0 L 1 0");
+    for c in [
+        Config { rel: 0.0, ..Config::default() },
+        Config { rel: f64::NAN, ..Config::default() },
+        Config { max_boxes: 0, ..Config::default() },
+        Config { tol: Some(-1.0), ..Config::default() },
+    ] {
+        assert!(hausdorff(&a, &a, &c).is_err());
+    }
+}
+
+#[test]
+fn identical_shapes_terminate_at_zero() {
+    let a = shape("M 0 0 C 1 2 3 -1 4 0");
+    // The distance is 0 everywhere: upper bounds shrink like w², so the relative goal
+    // is out of reach; the search must stop on its budget, say so, and stay sound.
+    let r = hausdorff(&a, &a, &Config { max_boxes: 20_000, ..cfg(1e-3) }).unwrap();
+    assert!(r.lo == 0.0 && r.hi < 1e-6, "{}", r.hi);
+    assert!(r.incomplete() || r.hi <= 1e-10 * 5.0);
+}
+
+// ----- independent exact distances ------------------------------------------------
+
+/// Encloses `dist(p, B)²` for a rational point `p` and a polynomial Bézier `B`:
+/// the minimum of `|p − B(t)|²` over the end points and the real roots in `(0, 1)`
+/// of `(B(t) − p)·B′(t)`, isolated exactly by Sturm sequences and refined.
+fn exact_dist2(p: &V2<Rational>, b: &Bezier<Rational>) -> Interval {
+    let (x, y) = b.power_coords();
+    let fx = x.sub(&Poly::new(vec![p.x.clone()]));
+    let fy = y.sub(&Poly::new(vec![p.y.clone()]));
+    let foot = fx.mul(&x.derivative()).add(&fy.mul(&y.derivative()));
+    let d2 = fx.mul(&fx).add(&fy.mul(&fy));
+    let d2i = d2.map(interval_from_rational);
+    let mut best = interval_from_rational(&d2.eval(&q(0, 1))).min(interval_from_rational(&d2.eval(&q(1, 1))));
+    let zero_poly = foot.coeffs().iter().all(|c| *c == Rational::default());
+    if !zero_poly {
+        for r in isolate_roots(&foot, &Span::unit_open()) {
+            let r = refine_root(&foot, &r, &parse_rational("1e-12").unwrap());
+            let t = interval_from_rational(&r.lo).convex_hull(interval_from_rational(&r.hi));
+            best = best.min(d2i.eval(&t));
+        }
+    }
+    best
+}
+
+fn small_bezier(deg: usize) -> impl Strategy<Value = Bezier<Rational>> {
+    prop::collection::vec((-8i64..=8, -8i64..=8), deg + 1)
+        .prop_map(|pts| Bezier::new(pts.into_iter().map(|(x, y)| V2::new(q(x, 4), q(y, 4))).collect()))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: (common::cases() / 40).max(16), ..ProptestConfig::default() })]
+
+    /// No exactly computed distance of a dense rational sample exceeds `hi`, and the
+    /// witness's exact distance is at least `lo`.
+    #[test]
+    fn bounds_contain_dense_exact_samples(a in small_bezier(3), b in small_bezier(2)) {
+        let (sa, sb) = (ShapeDesc::curve(vec![a.clone()]).unwrap(), ShapeDesc::curve(vec![b.clone()]).unwrap());
+        let r = hausdorff(&sa, &sb, &cfg(1e-3)).unwrap();
+        prop_assert!(r.lo <= r.hi);
+        for (from, to, side) in [(&a, &b, &r.a_to_b), (&b, &a, &r.b_to_a)] {
+            for k in 0..=64 {
+                let d2 = exact_dist2(&from.eval(&q(k, 64)), to);
+                prop_assert!(d2.inf().sqrt() <= side.hi * (1.0 + 1e-15), "sample {k}/64 at {} > hi {}", d2.inf().sqrt(), side.hi);
+            }
+            if let Some((_, s)) = side.witness {
+                let d2 = exact_dist2(&from.eval(&lncert::scalar::rational_from_f64(s).unwrap()), to);
+                prop_assert!(d2.sup().sqrt() >= side.lo * (1.0 - 1e-15), "witness {} < lo {}", d2.sup().sqrt(), side.lo);
+            }
+        }
+    }
+}
+
+// ----- seed 000 Prop 6.1 -------------------------------------------------------------
+
+/// The closed form of Prop 6.1 lies in the certified bounds of `d_H(arc, ca)`, for
+/// rational points `(cos α, sin α) = ((1−m²)/(1+m²), 2m/(1+m²))` and κ ∈ [1/2, 2].
+#[test]
+fn prop_6_1_closed_form_within_certified_bounds() {
+    let mut checked = 0;
+    for (mn, md) in [(1, 8), (1, 5), (1, 3), (2, 5), (1, 2), (3, 5)] {
+        for kappa in [(1, 2), (3, 5), (4, 5), (19, 20), (21, 20), (5, 4), (3, 2), (9, 5), (2, 1)] {
+            let m = q(mn, md);
+            let one = q(1, 1);
+            let den = &one + &m * &m;
+            let (c, s) = ((&one - &m * &m) / &den, q(2, 1) * &m / &den);
+            let k = q(kappa.0, kappa.1);
+            let ex = ArcApprox::new(c.clone(), s.clone(), k.clone()).unwrap();
+            let cubic = ex.cubic().unwrap();
+            let iv = ArcApprox::new(interval_from_rational(&c), interval_from_rational(&s), interval_from_rational(&k)).unwrap();
+            let Some(closed) = iv.prop_6_1_distance() else { continue };
+            let arc = ShapeDesc::arc(ArcDesc {
+                center: V2::new(q(0, 1), q(0, 1)),
+                radius: q(1, 1),
+                from: V2::new(c.clone(), -s.clone()),
+                to: V2::new(c.clone(), s.clone()),
+            })
+            .unwrap();
+            let ca = ShapeDesc::curve(vec![cubic]).unwrap();
+            let r = hausdorff(&arc, &ca, &cfg(1e-7)).unwrap();
+            assert!(!r.incomplete());
+            assert!(
+                closed.inf() <= r.hi && closed.sup() >= r.lo,
+                "α: m = {mn}/{md}, κ = {kappa:?}: closed form {closed:?} outside [{}, {}]",
+                r.lo,
+                r.hi
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked >= 40, "{checked}");
+}
+
+// ----- certificates ------------------------------------------------------------------
+
+fn certified(a: &ShapeDesc, b: &ShapeDesc, tol: &str) -> Certificate {
+    let t = parse_rational(tol).unwrap();
+    let r = hausdorff(a, b, &Config { tol: Some(interval_from_rational(&t).inf()), ..Config::default() }).unwrap();
+    Certificate::new(a, b, &t, &r).expect("certified")
+}
+
+fn redigest(doc: &mut Value) {
+    let d = digest_of(doc);
+    doc["digest"] = Value::String(d);
+}
+
+/// Every string leaf that is a number, with its JSON pointer.
+fn number_leaves(v: &Value, path: String, out: &mut Vec<String>) {
+    match v {
+        Value::Object(m) => m.iter().for_each(|(k, x)| number_leaves(x, format!("{path}/{k}"), out)),
+        Value::Array(a) => a.iter().enumerate().for_each(|(i, x)| number_leaves(x, format!("{path}/{i}"), out)),
+        Value::String(s) if parse_rational(s).is_ok() => out.push(path),
+        Value::Number(_) => out.push(path),
+        _ => {}
+    }
+}
+
+fn bumped(v: &Value) -> Value {
+    match v {
+        Value::String(s) => {
+            let r = parse_rational(s).unwrap() + q(1, 1000);
+            Value::String(r.to_string())
+        }
+        Value::Number(n) => Value::from(n.as_i64().unwrap_or(0) + 1),
+        other => other.clone(),
+    }
+}
+
+fn approximant_pair() -> (ShapeDesc, ShapeDesc) {
+    let a = shape("M 0 0 C 1 1 2 1 3 0");
+    let b = shape("M 0 0 C 1.01 1.02 1.98 0.99 3 0.01");
+    (a, b)
+}
+
+#[test]
+fn certificate_round_trip_and_every_number_is_bound() {
+    let (a, b) = approximant_pair();
+    let cert = certified(&a, &b, "0.02");
+    let valid = verify(&cert.doc).expect("valid");
+    assert!(valid.max_bound <= 0.02 && valid.boxes == cert.box_count());
+    let mut leaves = Vec::new();
+    number_leaves(&cert.doc, String::new(), &mut leaves);
+    assert!(leaves.len() > 50);
+    for p in &leaves {
+        let mut doc = cert.doc.clone();
+        *doc.pointer_mut(p).unwrap() = bumped(doc.pointer(p).unwrap());
+        let e = verify(&doc).expect_err(p);
+        // the version is checked before the digest
+        assert!(e.at == "digest" || (p == "/version" && e.at == "version"), "{p}: {e}");
+    }
+}
+
+#[test]
+fn semantic_checks_reject_forged_certificates_with_a_valid_digest() {
+    let (a, b) = approximant_pair();
+    let cert = certified(&a, &b, "0.02");
+    let hi = verify(&cert.doc).unwrap().max_bound;
+    let forge = |f: &dyn Fn(&mut Value)| {
+        let mut d = cert.doc.clone();
+        f(&mut d);
+        redigest(&mut d);
+        verify(&d)
+    };
+    // a tolerance below the proven bound
+    let below = Rational::from_float(hi * 0.999).unwrap();
+    let e = forge(&|d| d["tol"] = Value::String(below.to_string())).unwrap_err();
+    assert!(e.reason.contains("exceeds the tolerance"), "{e}");
+    // a box removed: the cover has a gap
+    let e = forge(&|d| {
+        d["directions"][0]["boxes"].as_array_mut().unwrap().remove(1);
+    })
+    .unwrap_err();
+    assert!(e.reason.contains("gap"), "{e}");
+    // the last box cut short: the domain is not covered to its end
+    let e = forge(&|d| {
+        let bx = d["directions"][1]["boxes"].as_array_mut().unwrap();
+        let last = bx.len() - 1;
+        bx[last]["s"][1] = Value::String("999/1000".into());
+    })
+    .unwrap_err();
+    assert!(e.reason.contains("not covered") || e.reason.contains("gap"), "{e}");
+    // a foot map sent outside the target's parameter domain
+    let e = forge(&|d| d["directions"][0]["boxes"][0]["t"] = Value::String("2".into())).unwrap_err();
+    assert!(e.reason.contains("domain"), "{e}");
+    // indices out of range, wrong direction labels, wrong version
+    assert!(forge(&|d| d["directions"][0]["boxes"][0]["target"] = Value::from(7)).is_err());
+    assert!(forge(&|d| d["directions"][0]["from"] = Value::from("b")).is_err());
+    assert!(forge(&|d| d["version"] = Value::from(2)).is_err());
+}
+
+/// Moving a control point of the certified approximant by more than the slack
+/// (tol − hi): the verifier never accepts a claim that an independent search refutes,
+/// and it rejects the large moves.
+#[test]
+fn moved_control_points_fail_verification() {
+    let (a, b) = approximant_pair();
+    let tol = "0.03";
+    let cert = certified(&a, &b, tol);
+    let hi = verify(&cert.doc).unwrap().max_bound;
+    let slack = 0.03 - hi;
+    assert!(slack > 0.0);
+    let ShapeDesc::Curve(pieces) = &b else { unreachable!() };
+    let mut rejected = 0;
+    let mut tried = 0;
+    for k in 0..4 {
+        for (dx, dy) in [(1, 0), (-1, 0), (0, 1), (0, -1)] {
+            for factor in [3.0, 10.0] {
+                let delta = Rational::from_float(factor * slack.max(0.01)).unwrap();
+                let mut pts = pieces[0].points().to_vec();
+                pts[k] = V2::new(&pts[k].x + &delta * q(dx, 1), &pts[k].y + &delta * q(dy, 1));
+                let moved = ShapeDesc::curve(vec![Bezier::new(pts)]).unwrap();
+                let mut doc = cert.doc.clone();
+                doc["b"] = moved.to_json();
+                redigest(&mut doc);
+                let accepted = verify(&doc).is_ok();
+                let truth = hausdorff(&a, &moved, &Config { tol: Some(0.03), ..Config::default() }).unwrap();
+                assert!(!(accepted && truth.lo > 0.03), "accepted a refuted claim: point {k}, {dx},{dy} × {factor}");
+                tried += 1;
+                if !accepted {
+                    rejected += 1;
+                }
+                if factor == 10.0 && (k == 0 || k == 3) {
+                    // an end point moved 10× the slack (≥ 0.1) away from a curve that ends there
+                    assert!(truth.lo > 0.03 && !accepted, "end point {k} moved: {}", truth.lo);
+                }
+            }
+        }
+    }
+    assert!(rejected * 2 >= tried, "{rejected} of {tried}");
+}
+
+#[test]
+fn certificate_for_arc_and_offset_shapes() {
+    let arc = shape(r#"{"arc": {"center": [0, 0], "radius": 1, "from": [1, 0], "to": [0, 1]}}"#);
+    // the standard cubic approximation of the quarter circle (k = 0.5523)
+    let cubic = shape("M 1 0 C 1 0.5523 0.5523 1 0 1");
+    let cert = certified(&arc, &cubic, "0.0003");
+    assert!(verify(&cert.doc).is_ok());
+    let off = shape(r#"{"offset": {"curve": {"bezier": [[0, 0], [1, 1], [2, 0]]}, "distance": "1/10"}}"#);
+    let r = hausdorff(&off, &shape("M -0.0707 0.0707 Q 1 1.2 2.0707 0.0707"), &cfg(1e-3)).unwrap();
+    let tol = Rational::from_float(r.hi * 1.01).unwrap();
+    let r = hausdorff(
+        &off,
+        &shape("M -0.0707 0.0707 Q 1 1.2 2.0707 0.0707"),
+        &Config { tol: Some(interval_from_rational(&tol).inf()), ..Config::default() },
+    )
+    .unwrap();
+    let cert = Certificate::new(&off, &shape("M -0.0707 0.0707 Q 1 1.2 2.0707 0.0707"), &tol, &r).unwrap();
+    assert!(verify(&cert.doc).is_ok());
+    let _ = Scalar::approx(&tol);
 }

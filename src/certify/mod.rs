@@ -115,7 +115,7 @@ pub fn hausdorff(
     let abs = if cfg.abs > 0.0 {
         cfg.abs
     } else {
-        1e-14 * (1.0 + a.scale().max(b.scale()))
+        1e-10 * (1.0 + a.scale().max(b.scale()))
     };
     let ab = search::one_sided(&pa, &pb, cfg, abs, (0.0, 0.0));
     let ba = if cfg.tol.is_some_and(|t| ab.lo > t) {

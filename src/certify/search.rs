@@ -39,8 +39,9 @@ use std::collections::BinaryHeap;
 pub struct Config {
     /// Stop when `hi − lo ≤ rel · hi` (default `1e-3`).
     pub rel: f64,
-    /// Absolute gap that also stops the search (default `0`: automatic, `1e-14`
-    /// times the coordinate scale, so that coinciding shapes terminate).
+    /// Absolute gap that also stops the search (default `0`: automatic,
+    /// `1e-10 · (1 + coordinate scale)`, so that coinciding shapes terminate: where
+    /// the distance is 0 everywhere the upper bounds shrink only like `w²`).
     pub abs: f64,
     /// Maximum number of parameter boxes per direction (default 200 000).
     pub max_boxes: usize,
