@@ -177,6 +177,7 @@ proptest! {
 #[test]
 fn prop_6_1_closed_form_within_certified_bounds() {
     let mut checked = 0;
+    let mut in_sector = 0;
     for (mn, md) in [(1, 8), (1, 5), (1, 3), (2, 5), (1, 2), (3, 5)] {
         for kappa in [(1, 2), (3, 5), (4, 5), (19, 20), (21, 20), (5, 4), (3, 2), (9, 5), (2, 1)] {
             let m = q(mn, md);
@@ -198,6 +199,9 @@ fn prop_6_1_closed_form_within_certified_bounds() {
             let ca = ShapeDesc::curve(vec![cubic]).unwrap();
             let r = hausdorff(&arc, &ca, &cfg(1e-7)).unwrap();
             assert!(!r.incomplete());
+            if sector_holds(&c, &s, ex.cubic().as_ref().unwrap()) {
+                in_sector += 1;
+            }
             assert!(
                 closed.inf() <= r.hi && closed.sup() >= r.lo,
                 "α: m = {mn}/{md}, κ = {kappa:?}: closed form {closed:?} outside [{}, {}]",
@@ -208,6 +212,25 @@ fn prop_6_1_closed_form_within_certified_bounds() {
         }
     }
     assert!(checked >= 40, "{checked}");
+    // proofs/000-prop-6.1.md: the closed form is d_H whenever `ca` stays in the arc's
+    // sector; the exact check holds on every tested case.
+    assert_eq!(in_sector, checked, "sector condition failed on some case");
+}
+
+/// Exactly: `cross(e0, ca(s)) > 0` and `cross(ca(s), e1) > 0` on `(0, 1)` for the arc's
+/// end directions `e0 = (cos α, −sin α)`, `e1 = (cos α, sin α)` (no root in `(0, 1)` by
+/// Sturm, positive at `1/2`): every point of `ca` lies in the sector of the arc.
+fn sector_holds(c: &Rational, s: &Rational, ca: &Bezier<Rational>) -> bool {
+    use lncert::poly::has_root_in;
+    let (x, y) = ca.power_coords();
+    let cs = |k: &Rational| Poly::new(vec![k.clone()]);
+    // cross(e0, p) = cos α · y + sin α · x ; cross(p, e1) = x sin α − y cos α
+    let p1 = cs(c).mul(&y).add(&cs(s).mul(&x));
+    let p2 = cs(s).mul(&x).sub(&cs(c).mul(&y));
+    let half = q(1, 2);
+    [p1, p2].iter().all(|p| {
+        !has_root_in(p, &Span::unit_open()) && p.eval(&half) > Rational::default()
+    })
 }
 
 // ----- certificates ------------------------------------------------------------------
