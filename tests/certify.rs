@@ -20,7 +20,10 @@ fn shape(s: &str) -> ShapeDesc {
 }
 
 fn cfg(rel: f64) -> Config {
-    Config { rel, ..Config::default() }
+    Config {
+        rel,
+        ..Config::default()
+    }
 }
 
 #[test]
@@ -38,7 +41,9 @@ fn quadratic_against_segment_is_a_quarter() {
 fn arc_and_chord() {
     // Arc of the unit circle from (4/5, −3/5) to (4/5, 3/5) against the segment from the
     // centre to (1, 0): h(arc → seg) = 3/5 (the arc's ends), h(seg → arc) = 1 (the centre).
-    let a = shape(r#"{"arc": {"center": [0, 0], "radius": 1, "from": ["4/5", "-3/5"], "to": ["4/5", "3/5"]}}"#);
+    let a = shape(
+        r#"{"arc": {"center": [0, 0], "radius": 1, "from": ["4/5", "-3/5"], "to": ["4/5", "3/5"]}}"#,
+    );
     let b = shape("M 0 0 L 1 0");
     let r = hausdorff(&a, &b, &cfg(1e-6)).unwrap();
     assert!(r.a_to_b.lo <= 0.6 && 0.6 <= r.a_to_b.hi, "{:?}", r.a_to_b);
@@ -64,16 +69,23 @@ fn offset_of_a_quarter_circle_curve_matches_arc_radius() {
     // point is exactly 1 away along the normal, so d_H ≤ 1, and the end points give ≥ 1
     // unless the curve bends back; the bounds must contain a value in [0, 1].
     let c = r#"{"bezier": [[0, 0], [1, 1], [2, 0]]}"#;
-    let off = shape(&format!(r#"{{"offset": {{"curve": {c}, "distance": -1}}}}"#));
+    let off = shape(&format!(
+        r#"{{"offset": {{"curve": {c}, "distance": -1}}}}"#
+    ));
     let r = hausdorff(&off, &shape(c), &cfg(1e-4)).unwrap();
-    assert!(r.lo <= 1.0 + 1e-12 && r.hi >= r.lo && r.hi <= 1.0 + 1e-3, "{r:?}");
+    assert!(
+        r.lo <= 1.0 + 1e-12 && r.hi >= r.lo && r.hi <= 1.0 + 1e-3,
+        "{r:?}"
+    );
 }
 
 #[test]
 fn ellipse_convolution_of_a_segment() {
     // Convolution of the horizontal segment with the ellipse diag(3, 1/2): the point
     // with outer normal (0, 1) is (0, 1/2), so the convolution is the segment raised by 1/2.
-    let conv = shape(r#"{"convolution": {"curve": {"bezier": [[0, 0], [2, 0]]}, "ellipse": [[3, 0], [0, "1/2"]], "side": 1}}"#);
+    let conv = shape(
+        r#"{"convolution": {"curve": {"bezier": [[0, 0], [2, 0]]}, "ellipse": [[3, 0], [0, "1/2"]], "side": 1}}"#,
+    );
     let r = hausdorff(&conv, &shape("M 0 0.5 L 2 0.5"), &cfg(1e-3)).unwrap();
     assert!(r.hi < 1e-12, "{r:?}");
 }
@@ -81,13 +93,34 @@ fn ellipse_convolution_of_a_segment() {
 #[test]
 fn bad_input_is_a_typed_error() {
     for (text, field) in [
-        (r#"{"arc": {"center": [0, 0], "radius": 0, "from": [1, 0], "to": [0, 1]}}"#, "arc.radius"),
-        (r#"{"arc": {"center": [0, 0], "radius": 1, "from": [0, 0], "to": [0, 1]}}"#, "arc.from"),
-        (r#"{"arc": {"center": [0, 0], "radius": 1, "from": [1, 0], "to": [2, 0]}}"#, "arc.to"),
-        (r#"{"offset": {"curve": {"bezier": [[0, 0], [0, 0]]}, "distance": 1}}"#, "offset.curve[0]"),
-        (r#"{"offset": {"curve": {"bezier": [[0, 0], [1, 0], [0, 0]]}, "distance": 1}}"#, "offset.curve[0]"),
-        (r#"{"offset": {"curve": {"bezier": [[0, 0], [1, 0]]}, "distance": 0}}"#, "offset.distance"),
-        (r#"{"convolution": {"curve": {"bezier": [[0, 0], [1, 0]]}, "ellipse": [[1, 2], [2, 4]]}}"#, "convolution.ellipse"),
+        (
+            r#"{"arc": {"center": [0, 0], "radius": 0, "from": [1, 0], "to": [0, 1]}}"#,
+            "arc.radius",
+        ),
+        (
+            r#"{"arc": {"center": [0, 0], "radius": 1, "from": [0, 0], "to": [0, 1]}}"#,
+            "arc.from",
+        ),
+        (
+            r#"{"arc": {"center": [0, 0], "radius": 1, "from": [1, 0], "to": [2, 0]}}"#,
+            "arc.to",
+        ),
+        (
+            r#"{"offset": {"curve": {"bezier": [[0, 0], [0, 0]]}, "distance": 1}}"#,
+            "offset.curve[0]",
+        ),
+        (
+            r#"{"offset": {"curve": {"bezier": [[0, 0], [1, 0], [0, 0]]}, "distance": 1}}"#,
+            "offset.curve[0]",
+        ),
+        (
+            r#"{"offset": {"curve": {"bezier": [[0, 0], [1, 0]]}, "distance": 0}}"#,
+            "offset.distance",
+        ),
+        (
+            r#"{"convolution": {"curve": {"bezier": [[0, 0], [1, 0]]}, "ellipse": [[1, 2], [2, 4]]}}"#,
+            "convolution.ellipse",
+        ),
         (r#"{"bezier": [[1e200, 0], [1, 0]]}"#, "curve[0][0][0]"),
         (r#"{"bezier": [[0, 0], [1, 0]], "x": 1}"#, "curve"),
         (r#"{"arc": [1]}"#, "arc"),
@@ -99,10 +132,22 @@ fn bad_input_is_a_typed_error() {
     }
     let a = shape("M 0 0 L 1 0");
     for c in [
-        Config { rel: 0.0, ..Config::default() },
-        Config { rel: f64::NAN, ..Config::default() },
-        Config { max_boxes: 0, ..Config::default() },
-        Config { tol: Some(-1.0), ..Config::default() },
+        Config {
+            rel: 0.0,
+            ..Config::default()
+        },
+        Config {
+            rel: f64::NAN,
+            ..Config::default()
+        },
+        Config {
+            max_boxes: 0,
+            ..Config::default()
+        },
+        Config {
+            tol: Some(-1.0),
+            ..Config::default()
+        },
     ] {
         assert!(hausdorff(&a, &a, &c).is_err());
     }
@@ -113,7 +158,15 @@ fn identical_shapes_terminate_at_zero() {
     let a = shape("M 0 0 C 1 2 3 -1 4 0");
     // The distance is 0 everywhere: upper bounds shrink like w², so the relative goal
     // is out of reach; the search must stop on its budget, say so, and stay sound.
-    let r = hausdorff(&a, &a, &Config { max_boxes: 20_000, ..cfg(1e-3) }).unwrap();
+    let r = hausdorff(
+        &a,
+        &a,
+        &Config {
+            max_boxes: 20_000,
+            ..cfg(1e-3)
+        },
+    )
+    .unwrap();
     assert!(r.lo == 0.0 && r.hi < 1e-6, "{}", r.hi);
     assert!(r.incomplete() || r.hi <= 1e-10 * 5.0);
 }
@@ -130,7 +183,8 @@ fn exact_dist2(p: &V2<Rational>, b: &Bezier<Rational>) -> Interval {
     let foot = fx.mul(&x.derivative()).add(&fy.mul(&y.derivative()));
     let d2 = fx.mul(&fx).add(&fy.mul(&fy));
     let d2i = d2.map(interval_from_rational);
-    let mut best = interval_from_rational(&d2.eval(&q(0, 1))).min(interval_from_rational(&d2.eval(&q(1, 1))));
+    let mut best =
+        interval_from_rational(&d2.eval(&q(0, 1))).min(interval_from_rational(&d2.eval(&q(1, 1))));
     let zero_poly = foot.coeffs().iter().all(|c| *c == Rational::default());
     if !zero_poly {
         for r in isolate_roots(&foot, &Span::unit_open()) {
@@ -143,8 +197,13 @@ fn exact_dist2(p: &V2<Rational>, b: &Bezier<Rational>) -> Interval {
 }
 
 fn small_bezier(deg: usize) -> impl Strategy<Value = Bezier<Rational>> {
-    prop::collection::vec((-8i64..=8, -8i64..=8), deg + 1)
-        .prop_map(|pts| Bezier::new(pts.into_iter().map(|(x, y)| V2::new(q(x, 4), q(y, 4))).collect()))
+    prop::collection::vec((-8i64..=8, -8i64..=8), deg + 1).prop_map(|pts| {
+        Bezier::new(
+            pts.into_iter()
+                .map(|(x, y)| V2::new(q(x, 4), q(y, 4)))
+                .collect(),
+        )
+    })
 }
 
 proptest! {
@@ -179,7 +238,17 @@ fn prop_6_1_closed_form_within_certified_bounds() {
     let mut checked = 0;
     let mut in_sector = 0;
     for (mn, md) in [(1, 8), (1, 5), (1, 3), (2, 5), (1, 2), (3, 5)] {
-        for kappa in [(1, 2), (3, 5), (4, 5), (19, 20), (21, 20), (5, 4), (3, 2), (9, 5), (2, 1)] {
+        for kappa in [
+            (1, 2),
+            (3, 5),
+            (4, 5),
+            (19, 20),
+            (21, 20),
+            (5, 4),
+            (3, 2),
+            (9, 5),
+            (2, 1),
+        ] {
             let m = q(mn, md);
             let one = q(1, 1);
             let den = &one + &m * &m;
@@ -187,8 +256,15 @@ fn prop_6_1_closed_form_within_certified_bounds() {
             let k = q(kappa.0, kappa.1);
             let ex = ArcApprox::new(c.clone(), s.clone(), k.clone()).unwrap();
             let cubic = ex.cubic().unwrap();
-            let iv = ArcApprox::new(interval_from_rational(&c), interval_from_rational(&s), interval_from_rational(&k)).unwrap();
-            let Some(closed) = iv.prop_6_1_distance() else { continue };
+            let iv = ArcApprox::new(
+                interval_from_rational(&c),
+                interval_from_rational(&s),
+                interval_from_rational(&k),
+            )
+            .unwrap();
+            let Some(closed) = iv.prop_6_1_distance() else {
+                continue;
+            };
             let arc = ShapeDesc::arc(ArcDesc {
                 center: V2::new(q(0, 1), q(0, 1)),
                 radius: q(1, 1),
@@ -228,16 +304,24 @@ fn sector_holds(c: &Rational, s: &Rational, ca: &Bezier<Rational>) -> bool {
     let p1 = cs(c).mul(&y).add(&cs(s).mul(&x));
     let p2 = cs(s).mul(&x).sub(&cs(c).mul(&y));
     let half = q(1, 2);
-    [p1, p2].iter().all(|p| {
-        !has_root_in(p, &Span::unit_open()) && p.eval(&half) > Rational::default()
-    })
+    [p1, p2]
+        .iter()
+        .all(|p| !has_root_in(p, &Span::unit_open()) && p.eval(&half) > Rational::default())
 }
 
 // ----- certificates ------------------------------------------------------------------
 
 fn certified(a: &ShapeDesc, b: &ShapeDesc, tol: &str) -> Certificate {
     let t = parse_rational(tol).unwrap();
-    let r = hausdorff(a, b, &Config { tol: Some(interval_from_rational(&t).inf()), ..Config::default() }).unwrap();
+    let r = hausdorff(
+        a,
+        b,
+        &Config {
+            tol: Some(interval_from_rational(&t).inf()),
+            ..Config::default()
+        },
+    )
+    .unwrap();
     Certificate::new(a, b, &t, &r).expect("certified")
 }
 
@@ -249,8 +333,13 @@ fn redigest(doc: &mut Value) {
 /// Every string leaf that is a number, with its JSON pointer.
 fn number_leaves(v: &Value, path: String, out: &mut Vec<String>) {
     match v {
-        Value::Object(m) => m.iter().for_each(|(k, x)| number_leaves(x, format!("{path}/{k}"), out)),
-        Value::Array(a) => a.iter().enumerate().for_each(|(i, x)| number_leaves(x, format!("{path}/{i}"), out)),
+        Value::Object(m) => m
+            .iter()
+            .for_each(|(k, x)| number_leaves(x, format!("{path}/{k}"), out)),
+        Value::Array(a) => a
+            .iter()
+            .enumerate()
+            .for_each(|(i, x)| number_leaves(x, format!("{path}/{i}"), out)),
         Value::String(s) if parse_rational(s).is_ok() => out.push(path),
         Value::Number(_) => out.push(path),
         _ => {}
@@ -288,7 +377,10 @@ fn certificate_round_trip_and_every_number_is_bound() {
         *doc.pointer_mut(p).unwrap() = bumped(doc.pointer(p).unwrap());
         let e = verify(&doc).expect_err(p);
         // the version is checked before the digest
-        assert!(e.at == "digest" || (p == "/version" && e.at == "version"), "{p}: {e}");
+        assert!(
+            e.at == "digest" || (p == "/version" && e.at == "version"),
+            "{p}: {e}"
+        );
     }
 }
 
@@ -309,7 +401,10 @@ fn semantic_checks_reject_forged_certificates_with_a_valid_digest() {
     assert!(e.reason.contains("exceeds the tolerance"), "{e}");
     // a box removed: the cover has a gap
     let e = forge(&|d| {
-        d["directions"][0]["boxes"].as_array_mut().unwrap().remove(1);
+        d["directions"][0]["boxes"]
+            .as_array_mut()
+            .unwrap()
+            .remove(1);
     })
     .unwrap_err();
     assert!(e.reason.contains("gap"), "{e}");
@@ -320,9 +415,13 @@ fn semantic_checks_reject_forged_certificates_with_a_valid_digest() {
         bx[last]["s"][1] = Value::String("999/1000".into());
     })
     .unwrap_err();
-    assert!(e.reason.contains("not covered") || e.reason.contains("gap"), "{e}");
+    assert!(
+        e.reason.contains("not covered") || e.reason.contains("gap"),
+        "{e}"
+    );
     // a foot map sent outside the target's parameter domain
-    let e = forge(&|d| d["directions"][0]["boxes"][0]["t"] = Value::String("2".into())).unwrap_err();
+    let e =
+        forge(&|d| d["directions"][0]["boxes"][0]["t"] = Value::String("2".into())).unwrap_err();
     assert!(e.reason.contains("domain"), "{e}");
     // indices out of range, wrong direction labels, wrong version
     assert!(forge(&|d| d["directions"][0]["boxes"][0]["target"] = Value::from(7)).is_err());
@@ -341,7 +440,9 @@ fn moved_control_points_fail_verification() {
     let hi = verify(&cert.doc).unwrap().max_bound;
     let slack = 0.03 - hi;
     assert!(slack > 0.0);
-    let ShapeDesc::Curve(pieces) = &b else { unreachable!() };
+    let ShapeDesc::Curve(pieces) = &b else {
+        unreachable!()
+    };
     let mut rejected = 0;
     let mut tried = 0;
     for k in 0..4 {
@@ -355,15 +456,30 @@ fn moved_control_points_fail_verification() {
                 doc["b"] = moved.to_json();
                 redigest(&mut doc);
                 let accepted = verify(&doc).is_ok();
-                let truth = hausdorff(&a, &moved, &Config { tol: Some(0.03), ..Config::default() }).unwrap();
-                assert!(!(accepted && truth.lo > 0.03), "accepted a refuted claim: point {k}, {dx},{dy} × {factor}");
+                let truth = hausdorff(
+                    &a,
+                    &moved,
+                    &Config {
+                        tol: Some(0.03),
+                        ..Config::default()
+                    },
+                )
+                .unwrap();
+                assert!(
+                    !(accepted && truth.lo > 0.03),
+                    "accepted a refuted claim: point {k}, {dx},{dy} × {factor}"
+                );
                 tried += 1;
                 if !accepted {
                     rejected += 1;
                 }
                 if factor == 10.0 && (k == 0 || k == 3) {
                     // an end point moved 10× the slack (≥ 0.1) away from a curve that ends there
-                    assert!(truth.lo > 0.03 && !accepted, "end point {k} moved: {}", truth.lo);
+                    assert!(
+                        truth.lo > 0.03 && !accepted,
+                        "end point {k} moved: {}",
+                        truth.lo
+                    );
                 }
             }
         }
@@ -378,16 +494,31 @@ fn certificate_for_arc_and_offset_shapes() {
     let cubic = shape("M 1 0 C 1 0.5523 0.5523 1 0 1");
     let cert = certified(&arc, &cubic, "0.0003");
     assert!(verify(&cert.doc).is_ok());
-    let off = shape(r#"{"offset": {"curve": {"bezier": [[0, 0], [1, 1], [2, 0]]}, "distance": "1/10"}}"#);
-    let r = hausdorff(&off, &shape("M -0.0707 0.0707 Q 1 1.2 2.0707 0.0707"), &cfg(1e-3)).unwrap();
+    let off =
+        shape(r#"{"offset": {"curve": {"bezier": [[0, 0], [1, 1], [2, 0]]}, "distance": "1/10"}}"#);
+    let r = hausdorff(
+        &off,
+        &shape("M -0.0707 0.0707 Q 1 1.2 2.0707 0.0707"),
+        &cfg(1e-3),
+    )
+    .unwrap();
     let tol = Rational::from_float(r.hi * 1.01).unwrap();
     let r = hausdorff(
         &off,
         &shape("M -0.0707 0.0707 Q 1 1.2 2.0707 0.0707"),
-        &Config { tol: Some(interval_from_rational(&tol).inf()), ..Config::default() },
+        &Config {
+            tol: Some(interval_from_rational(&tol).inf()),
+            ..Config::default()
+        },
     )
     .unwrap();
-    let cert = Certificate::new(&off, &shape("M -0.0707 0.0707 Q 1 1.2 2.0707 0.0707"), &tol, &r).unwrap();
+    let cert = Certificate::new(
+        &off,
+        &shape("M -0.0707 0.0707 Q 1 1.2 2.0707 0.0707"),
+        &tol,
+        &r,
+    )
+    .unwrap();
     assert!(verify(&cert.doc).is_ok());
     let _ = Scalar::approx(&tol);
 }

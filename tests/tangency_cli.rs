@@ -177,10 +177,6 @@ fn bad_input_names_the_flag() {
         &with(&["1", "--backend", "cpu", "--resolution", "16385"]),
         "--resolution",
     );
-    assert_bad(
-        &with(&["1", "--backend", "cpu"]),
-        "raster backends not merged yet",
-    );
     assert_bad(&with(&["1", "--backend", "quantum"]), "--backend");
     let base = |x1: &str, u: &str| -> Vec<String> {
         [
@@ -194,4 +190,28 @@ fn bad_input_names_the_flag() {
     assert_bad(&base("1", "-2"), "--u");
     assert_bad(&["tangency", "--x1", "1"].map(String::from), "--y1");
     assert_bad(&with(&["1", "--center", "1"]), "--center");
+}
+
+/// The raster backends (the paper's scheme): candidates certified by Krawczyk and
+/// compared with the complete solver; CPU and GPU (or its CPU fallback) agree.
+#[test]
+fn raster_backends_find_the_two_roots_and_report_misses() {
+    let mut cells = Vec::new();
+    for backend in ["cpu", "gpu"] {
+        let (doc, code) = json(&with(&["-5/2", "--backend", backend, "--resolution", "256"]));
+        assert_eq!(code, 0, "{doc}");
+        assert_eq!(doc["complete"], false, "a raster alone is never complete");
+        let r = &doc["raster"];
+        assert_eq!(r["resolution"], 256);
+        assert_eq!(r["complete_roots"], 2);
+        assert_eq!(r["missed"], 0);
+        assert_eq!(r["checked_complete"], true);
+        assert_eq!(doc["roots"].as_array().unwrap().len(), 2);
+        cells.push(r["candidates"].clone());
+    }
+    assert_eq!(cells[0], cells[1], "CPU and GPU rasters disagree");
+    // A coarse raster misses roots; the comparison says so and the exit code is 1.
+    let (doc, code) = json(&with(&["-5/2", "--backend", "cpu", "--resolution", "2"]));
+    let missed = doc["raster"]["missed"].as_u64().unwrap();
+    assert_eq!(code, if missed == 0 { 0 } else { 1 }, "{doc}");
 }

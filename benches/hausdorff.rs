@@ -1,0 +1,98 @@
+//! Certified Hausdorff bounds (issue 4): time per segment pair at rel = 1e-3 and
+//! 1e-6 (search), the tightness of the bounds, and the time to verify the
+//! certificate of `d_H ≤ 1.01 · hi` compared with the search that produced it.
+//!
+//! Run: `cargo bench --bench hausdorff`.
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use lncert::certify::verify::verify;
+use lncert::certify::{hausdorff, Certificate, Config, ShapeDesc};
+use lncert::scalar::{interval_from_rational, Rational};
+use std::hint::black_box;
+
+fn pairs() -> Vec<(&'static str, ShapeDesc, ShapeDesc)> {
+    let s = |t: &str| ShapeDesc::parse(t).unwrap();
+    vec![
+        (
+            "arc_vs_cubic",
+            s(r#"{"arc": {"center": [0, 0], "radius": 1, "from": [1, 0], "to": [0, 1]}}"#),
+            s("M 1 0 C 1 0.5523 0.5523 1 0 1"),
+        ),
+        (
+            "cubic_vs_cubic",
+            s("M 0 0 C 1 1 2 1 3 0"),
+            s("M 0 0 C 1.01 1.02 1.98 0.99 3 0.01"),
+        ),
+        (
+            "offset_vs_quadratic",
+            s(r#"{"offset": {"curve": {"bezier": [[0, 0], [1, 1], [2, 0]]}, "distance": "1/10"}}"#),
+            s("M -0.0707 0.0707 Q 1 1.2 2.0707 0.0707"),
+        ),
+        (
+            "ellipse_conv_vs_cubic",
+            s(
+                r#"{"convolution": {"curve": {"bezier": [[0, 0], [1, 1], [2, 1], [3, 0]]}, "ellipse": [["1/5", 0], [0, "1/10"]], "side": 1}}"#,
+            ),
+            s("M -0.07 0.07 C 0.95 1.15 2.05 1.15 3.07 0.07"),
+        ),
+    ]
+}
+
+fn bench(c: &mut Criterion) {
+    let mut g = c.benchmark_group("hausdorff");
+    g.sample_size(20);
+    for (name, a, b) in pairs() {
+        for rel in [1e-3, 1e-6] {
+            let cfg = Config {
+                rel,
+                ..Config::default()
+            };
+            let r = hausdorff(&a, &b, &cfg).unwrap();
+            println!(
+                "{name} rel {rel:e}: [{:.9e}, {:.9e}], gap/hi {:.1e}, boxes {} + {} (evaluated {} + {}){}",
+                r.lo,
+                r.hi,
+                (r.hi - r.lo) / r.hi,
+                r.a_to_b.boxes.len(),
+                r.b_to_a.boxes.len(),
+                r.a_to_b.evaluated,
+                r.b_to_a.evaluated,
+                if r.incomplete() { " INCOMPLETE" } else { "" }
+            );
+            g.bench_function(format!("search/{name}/rel={rel:e}"), |bch| {
+                bch.iter(|| hausdorff(black_box(&a), black_box(&b), &cfg).unwrap())
+            });
+        }
+        // certificate of d_H ≤ 1.01 hi, searched with that tolerance
+        let r = hausdorff(
+            &a,
+            &b,
+            &Config {
+                rel: 1e-3,
+                ..Config::default()
+            },
+        )
+        .unwrap();
+        let tol = Rational::from_float(r.hi * 1.01).unwrap();
+        let cfg = Config {
+            tol: Some(interval_from_rational(&tol).inf()),
+            ..Config::default()
+        };
+        let rt = hausdorff(&a, &b, &cfg).unwrap();
+        let cert = Certificate::new(&a, &b, &tol, &rt).expect("certified");
+        println!(
+            "{name}: certificate of d_H ≤ 1.01·hi with {} boxes",
+            cert.box_count()
+        );
+        g.bench_function(format!("certify_tol/{name}"), |bch| {
+            bch.iter(|| hausdorff(black_box(&a), black_box(&b), &cfg).unwrap())
+        });
+        g.bench_function(format!("verify/{name}"), |bch| {
+            bch.iter(|| verify(black_box(&cert.doc)).unwrap())
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);
