@@ -444,7 +444,7 @@ pub(crate) fn one_sided(
             if est <= *lo {
                 return;
             }
-            let l = lower_distance((x.v, y.v), b, gap_rel, 4_000);
+            let l = lower_distance((x.v, y.v), b, gap_rel, cfg.max_boxes.clamp(16, 4_000));
             if l > *lo {
                 *lo = l;
                 *witness = Some((i, s));
@@ -467,7 +467,9 @@ pub(crate) fn one_sided(
         // Without a tolerance the goal is the relative gap; with one, it is the
         // verdict (refined down to a 1e-12 relative gap if need be).
         let rel = if cfg.tol.is_some() { 1e-12 } else { cfg.rel };
-        if ohi - olo <= (rel * ohi).max(abs) {
+        // An infinite upper bound (a box whose normal could not be bounded yet) is
+        // never convergence: keep splitting.
+        if ohi.is_finite() && ohi - olo <= (rel * ohi).max(abs) {
             break;
         }
         if let Some(tol) = cfg.tol {

@@ -559,7 +559,7 @@ impl Piece {
     fn arc(a: &ArcDesc) -> Result<Piece, CertifyError> {
         let unit = |v: &V2<Rational>| -> Option<(Interval, Interval)> {
             let (x, y) = (iv(&v.x), iv(&v.y));
-            let n = ScalarSqrt::sqrt(&(x * x + y * y))?;
+            let n = ScalarSqrt::sqrt(&(x.sqr() + y.sqr()))?;
             Some((x.div(&n)?, y.div(&n)?))
         };
         let bad = || {
@@ -603,7 +603,8 @@ pub(crate) fn arc_end_parameter(
     e1: (Interval, Interval),
 ) -> Option<Interval> {
     let half = Interval::from_frac(1, 2);
-    let norm = |x: Interval, y: Interval| ScalarSqrt::sqrt(&(x * x + y * y));
+    // `sqr` (not `x * x`): an interval around 0 must square to a nonnegative one.
+    let norm = |x: Interval, y: Interval| ScalarSqrt::sqrt(&(x.sqr() + y.sqr()));
     let sin_h = norm(e1.0 - e0.0, e1.1 - e0.1)? * half;
     let cos_abs = norm(e1.0 + e0.0, e1.1 + e0.1)? * half;
     let cross = from.cross(to);

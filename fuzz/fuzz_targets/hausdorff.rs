@@ -1,0 +1,179 @@
+#![no_main]
+//! Fuzz target `hausdorff`: two small shapes built from the input ->
+//! `lncert::certify::hausdorff` with a small box budget.
+//!
+//! Shapes: a curve of 1-2 Bézier pieces of degree 0-4 (coordinates `k/16`,
+//! `k` an `i8`), an arc (integer centre, radius 1..=8, integer direction
+//! vectors) or the offset of one Bézier piece at a small nonzero rational
+//! distance. Constructor errors are fine (the input is rejected).
+//!
+//! Budget: `max_boxes: 16` keeps the mean cost near 5 ms per input. It does
+//! not bound all work: every witness runs `lower_distance` with its own fixed
+//! budget of 4000 boxes (src/certify/search.rs), which dominates for offsets.
+//!
+//! Checks (all exact consequences of soundness, no sampling):
+//! * no panic; `0 <= lo <= hi`, none NaN, for `d_H` and both one-sided bounds;
+//! * a result not flagged `incomplete` has a finite `hi` (it met the gap);
+//! * swapping the arguments bounds the same numbers: the intervals for
+//!   `h(A, B)` from `hausdorff(A, B)` and from `hausdorff(B, A)` intersect;
+//! * for two curves, `h(A, B) <= max_i |A_i - B(0)|` (every point of A is in
+//!   the convex hull of A's control points and `B(0)` is a point of B), so the
+//!   certified lower bound of `h(A, B)` cannot exceed it.
+
+use libfuzzer_sys::arbitrary::{Result, Unstructured};
+use libfuzzer_sys::{fuzz_target, Corpus};
+use lncert::certify::{hausdorff, ArcDesc, Config, HausdorffBounds, OneSided, ShapeDesc};
+use lncert::curve::{Bezier, V2};
+use lncert::scalar::{frac, rational_from_f64, Rational};
+
+fn q(p: i64, den: i64) -> Rational {
+    frac::<Rational>(p, den)
+}
+
+fn bezier(u: &mut Unstructured, min_degree: u8) -> Result<Bezier<Rational>> {
+    let degree = u.int_in_range(min_degree..=4)?;
+    let mut pts = Vec::new();
+    for _ in 0..=degree {
+        let x: i8 = u.arbitrary()?;
+        let y: i8 = u.arbitrary()?;
+        pts.push(V2::new(q(x.into(), 16), q(y.into(), 16)));
+    }
+    Ok(Bezier::new(pts))
+}
+
+/// `Ok(None)`: the constructor rejected the data.
+fn shape(u: &mut Unstructured) -> Result<Option<ShapeDesc>> {
+    let kind: u8 = u.int_in_range(0..=2)?;
+    let desc = match kind {
+        0 => {
+            let pieces = u.int_in_range(1..=2u8)?;
+            let mut c = Vec::new();
+            for _ in 0..pieces {
+                c.push(bezier(u, 0)?);
+            }
+            ShapeDesc::curve(c)
+        }
+        1 => {
+            let mut int =
+                |lo: i64, hi: i64| -> Result<Rational> { Ok(q(u.int_in_range(lo..=hi)?, 1)) };
+            let arc = ArcDesc {
+                center: V2::new(int(-8, 8)?, int(-8, 8)?),
+                radius: int(1, 8)?,
+                from: V2::new(int(-4, 4)?, int(-4, 4)?),
+                to: V2::new(int(-4, 4)?, int(-4, 4)?),
+            };
+            ShapeDesc::arc(arc)
+        }
+        _ => {
+            let b = bezier(u, 1)?;
+            let num: i8 = u.int_in_range(-16..=16)?;
+            let den: u8 = u.int_in_range(1..=16)?;
+            ShapeDesc::offset(vec![b], q(num.into(), den.into()))
+        }
+    };
+    Ok(desc.ok())
+}
+
+fn check_one_sided(s: &OneSided, what: &str) {
+    assert!(
+        !s.lo.is_nan() && !s.hi.is_nan() && s.lo >= 0.0 && s.lo <= s.hi,
+        "{what}: bad bounds [{}, {}]",
+        s.lo,
+        s.hi
+    );
+}
+
+fn check(r: &HausdorffBounds, a: &ShapeDesc, b: &ShapeDesc) {
+    assert!(
+        !r.lo.is_nan() && !r.hi.is_nan() && r.lo >= 0.0 && r.lo <= r.hi,
+        "bad bounds [{}, {}]",
+        r.lo,
+        r.hi
+    );
+    check_one_sided(&r.a_to_b, "h(A, B)");
+    check_one_sided(&r.b_to_a, "h(B, A)");
+    // Without `tol` the search stops at `hi - lo <= max(rel hi, abs)` or on its
+    // budget (then `incomplete`): an infinite `hi` is never converged.
+    assert!(
+        r.incomplete() || r.hi.is_finite(),
+        "search reported complete with an infinite upper bound [{}, {}] ({} + {} boxes evaluated); A = {}, B = {}",
+        r.lo,
+        r.hi,
+        r.a_to_b.evaluated,
+        r.b_to_a.evaluated,
+        a.to_json(),
+        b.to_json()
+    );
+}
+
+/// The exact square of an upper bound on `h(A, B)` for two curves:
+/// `max_i |A_i - B(0)|^2`.
+fn hull_bound_sq(a: &[Bezier<Rational>], b: &[Bezier<Rational>]) -> Rational {
+    let b0 = &b[0].points()[0];
+    let mut best = q(0, 1);
+    for p in a.iter().flat_map(|c| c.points().iter()) {
+        let (dx, dy) = (p.x.clone() - b0.x.clone(), p.y.clone() - b0.y.clone());
+        let d2 = dx.clone() * dx + dy.clone() * dy;
+        if d2 > best {
+            best = d2;
+        }
+    }
+    best
+}
+
+/// `lo <= sqrt(bound_sq)`, exactly.
+fn lower_ok(lo: f64, bound_sq: &Rational) -> bool {
+    match rational_from_f64(lo) {
+        Some(l) => lo <= 0.0 || &(l.clone() * l) <= bound_sq,
+        None => false,
+    }
+}
+
+fuzz_target!(|data: &[u8]| -> Corpus {
+    let mut u = Unstructured::new(data);
+    let (Ok(Some(a)), Ok(Some(b))) = (shape(&mut u), shape(&mut u)) else {
+        return Corpus::Reject;
+    };
+    let cfg = Config {
+        rel: 1e-2,
+        max_boxes: 16,
+        ..Default::default()
+    };
+    // A typed error is allowed (e.g. an arc whose end parameter cannot be
+    // enclosed); only Ok results are checked.
+    let Ok(r) = hausdorff(&a, &b, &cfg) else {
+        return Corpus::Reject;
+    };
+    check(&r, &a, &b);
+    let Ok(s) = hausdorff(&b, &a, &cfg) else {
+        panic!("hausdorff(A, B) is Ok but hausdorff(B, A) is an error");
+    };
+    check(&s, &b, &a);
+    for (x, y, what) in [
+        (&r.a_to_b, &s.b_to_a, "h(A, B)"),
+        (&r.b_to_a, &s.a_to_b, "h(B, A)"),
+    ] {
+        assert!(
+            x.lo <= y.hi && y.lo <= x.hi,
+            "{what}: disjoint certified bounds [{}, {}] and [{}, {}] (A = {}, B = {})",
+            x.lo,
+            x.hi,
+            y.lo,
+            y.hi,
+            a.summary(),
+            b.summary()
+        );
+    }
+    if let (ShapeDesc::Curve(ca), ShapeDesc::Curve(cb)) = (&a, &b) {
+        for (lo, bound_sq, what) in [
+            (r.a_to_b.lo, hull_bound_sq(ca, cb), "h(A, B)"),
+            (r.b_to_a.lo, hull_bound_sq(cb, ca), "h(B, A)"),
+        ] {
+            assert!(
+                lower_ok(lo, &bound_sq),
+                "certified lower bound {lo} of {what} exceeds the exact upper bound sqrt({bound_sq})"
+            );
+        }
+    }
+    Corpus::Keep
+});
