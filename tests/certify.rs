@@ -532,10 +532,23 @@ fn infinite_first_bounds_are_refined_not_accepted() {
     let a = shape(r#"{"offset":{"curve":"M 0 0 C 3 3 -2 3 1 0","distance":"1/4"}}"#);
     let b = shape("M 0 0 L 1 0");
     let r = hausdorff(&a, &b, &cfg(1e-3)).unwrap();
-    assert!(r.hi.is_finite() && !r.incomplete(), "{} {}", r.hi, r.incomplete());
+    assert!(
+        r.hi.is_finite() && !r.incomplete(),
+        "{} {}",
+        r.hi,
+        r.incomplete()
+    );
     assert!(r.hi - r.lo <= 1e-3 * r.hi);
     // with a small budget the answer may stay unbounded, but then it says so
-    let r = hausdorff(&a, &b, &Config { max_boxes: 4, ..cfg(1e-3) }).unwrap();
+    let r = hausdorff(
+        &a,
+        &b,
+        &Config {
+            max_boxes: 4,
+            ..cfg(1e-3)
+        },
+    )
+    .unwrap();
     assert!(r.hi.is_finite() || r.incomplete());
 }
 
@@ -543,13 +556,21 @@ fn infinite_first_bounds_are_refined_not_accepted() {
 /// was squared with `x * x` (negative lower end), rejecting a valid arc.
 #[test]
 fn half_circle_arcs_with_inexact_directions() {
-    for (from, to) in [("[1, 1]", "[-1, -1]"), ("[1, 2]", "[-1, -2]"), ("[-4, 4]", "[3, -3]")] {
+    for (from, to) in [
+        ("[1, 1]", "[-1, -1]"),
+        ("[1, 2]", "[-1, -2]"),
+        ("[-4, 4]", "[3, -3]"),
+    ] {
         let arc = shape(&format!(
             r#"{{"arc": {{"center": [0, 0], "radius": 2, "from": {from}, "to": {to}}}}}"#
         ));
         // the centre is at distance exactly 2 from every arc point
         let centre = shape("M 0 0 L 0 0");
         let r = hausdorff(&centre, &arc, &cfg(1e-6)).unwrap();
-        assert!(r.a_to_b.lo <= 2.0 && 2.0 <= r.a_to_b.hi, "{from} {to}: {:?}", (r.a_to_b.lo, r.a_to_b.hi));
+        assert!(
+            r.a_to_b.lo <= 2.0 && 2.0 <= r.a_to_b.hi,
+            "{from} {to}: {:?}",
+            (r.a_to_b.lo, r.a_to_b.hi)
+        );
     }
 }

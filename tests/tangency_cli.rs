@@ -198,7 +198,13 @@ fn bad_input_names_the_flag() {
 fn raster_backends_find_the_two_roots_and_report_misses() {
     let mut cells = Vec::new();
     for backend in ["cpu", "gpu"] {
-        let (doc, code) = json(&with(&["-5/2", "--backend", backend, "--resolution", "256"]));
+        let (doc, code) = json(&with(&[
+            "-5/2",
+            "--backend",
+            backend,
+            "--resolution",
+            "256",
+        ]));
         assert_eq!(code, 0, "{doc}");
         assert_eq!(doc["complete"], false, "a raster alone is never complete");
         let r = &doc["raster"];

@@ -117,6 +117,16 @@ impl Ord for HeapBox {
     }
 }
 
+/// `n` consecutive boxes covering `[lo, hi]` exactly (the ends are the domain's own).
+fn split_domain((lo, hi): (f64, f64), n: usize) -> Vec<(f64, f64)> {
+    let at = |k: usize| match k {
+        0 => lo,
+        k if k == n => hi,
+        k => lo + (hi - lo) * (k as f64 / n as f64),
+    };
+    (0..n).map(|k| (at(k), at(k + 1))).collect()
+}
+
 fn point_iv(x: f64) -> Interval {
     Interval::try_from((x, x)).unwrap_or(Interval::ENTIRE)
 }
@@ -344,19 +354,7 @@ pub(crate) fn lower_distance(p: (Interval, Interval), b: &[Piece], rel: f64, bud
     };
     let mut heap = BinaryHeap::new();
     for (j, piece) in b.iter().enumerate() {
-        let (lo, hi) = piece.outer;
-        let n = 4;
-        for k in 0..n {
-            let t0 = if k == 0 {
-                lo
-            } else {
-                lo + (hi - lo) * (k as f64 / n as f64)
-            };
-            let t1 = if k + 1 == n {
-                hi
-            } else {
-                lo + (hi - lo) * ((k + 1) as f64 / n as f64)
-            };
+        for (t0, t1) in split_domain(piece.outer, 4) {
             heap.push(TBox {
                 lower: box_lower(j, (t0, t1)),
                 j,
@@ -408,19 +406,7 @@ pub(crate) fn one_sided(
     let mut heap = BinaryHeap::new();
     let mut evaluated = 0usize;
     for (i, piece) in a.iter().enumerate() {
-        let (lo, hi) = piece.outer;
-        let n = 4;
-        for k in 0..n {
-            let s0 = if k == 0 {
-                lo
-            } else {
-                lo + (hi - lo) * (k as f64 / n as f64)
-            };
-            let s1 = if k + 1 == n {
-                hi
-            } else {
-                lo + (hi - lo) * ((k + 1) as f64 / n as f64)
-            };
+        for (s0, s1) in split_domain(piece.outer, 4) {
             heap.push(make_box(a, i, (s0, s1), b));
             evaluated += 1;
         }

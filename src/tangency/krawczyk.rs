@@ -369,35 +369,9 @@ impl System2 {
         if e.excludes_zero() {
             return KStep::NoRoot;
         }
-        let j = &e.jac;
-        let m = [
-            [j[0][0].mid(), j[0][1].mid()],
-            [j[1][0].mid(), j[1][1].mid()],
-        ];
-        let det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
-        let inv = [
-            [m[1][1] / det, -m[0][1] / det],
-            [-m[1][0] / det, m[0][0] / det],
-        ];
-        if !inv.iter().flatten().all(|v| v.is_finite()) {
+        let Some(k) = self.raw_k(x, e) else {
             return KStep::Contracted(*x);
-        }
-        let y = [
-            [pt(inv[0][0]), pt(inv[0][1])],
-            [pt(inv[1][0]), pt(inv[1][1])],
-        ];
-        let h = [x[0] - pt(e.c[0]), x[1] - pt(e.c[1])];
-        let mut k = [pt(0.0); 2];
-        for r in 0..2 {
-            let yf = y[r][0] * e.fc[0] + y[r][1] * e.fc[1];
-            let mut acc = pt(e.c[r]) - yf;
-            for s in 0..2 {
-                let ident = pt(if r == s { 1.0 } else { 0.0 });
-                let mrs = ident - (y[r][0] * j[0][s] + y[r][1] * j[1][s]);
-                acc = mrs.mul_add(h[s], acc);
-            }
-            k[r] = acc;
-        }
+        };
         if k[0].interior(x[0]) && k[1].interior(x[1]) {
             return KStep::Unique(k);
         }
