@@ -5,6 +5,7 @@
 //! arithmetics: exact rationals, certified intervals and `f64`. See the
 //! [`scalar`] module for the design and [`ln`] for the propositions.
 
+pub mod approx;
 #[cfg(feature = "arbitrary")]
 pub mod audit;
 pub mod certify;

@@ -1,0 +1,207 @@
+//! Seed 000 §6: offsets from pairs of cubic LN curves with one normal map.
+//!
+//! A convex segment `p` (no inflection, turning less than π) is replaced by the
+//! cubic LN curve `pa` of its frame `b0 = p(0)`, `bm` = the intersection of the
+//! end tangents, `b3 = p(1)` (Prop 3.1), and the circular arc `c_r = r N` of
+//! the same normals by its cubic LN approximation `ca_r` (frame `r N0`,
+//! `r (N0 + N1)/(1 + N0·N1)`, `r N1`, so `λ_c = 1`). Both take the common `κ`
+//! of eq. (5) with the paper's choice `κ = √(λ_p λ_c) = √λ_p` (the geometric
+//! mean, §4), which exists iff `1/4 ≤ λ_p ≤ 4` (eq. (7), Remark 4.3). By
+//! Prop 4.2 the two have parallel hodographs, so the offset approximant is the
+//! cubic `pa + ca_r` (Prop 4.4).
+//!
+//! The paper measures the error by eq. (8), `d_H(p, pa) + |r| d_H(c, ca)`, with
+//! `d_H(c, ca)` from the closed form of Prop 6.1 ([`paper_error`]); lncert also
+//! certifies the Hausdorff distance of the final offset itself (the driver in
+//! [`crate::approx`]).
+
+use crate::curve::{Bezier, V2};
+use crate::ln::circle::ArcApprox;
+use crate::scalar::{Interval, ScalarSqrt};
+
+/// One LN-pair approximation of an offset segment (floats; checked afterwards).
+#[derive(Clone, Debug, PartialEq)]
+pub struct LnPairPiece {
+    /// The cubic LN approximation of the curve segment.
+    pub pa: Bezier<f64>,
+    /// The cubic LN approximation of the arc `r N(t)`.
+    pub ca: Bezier<f64>,
+    /// `pa + ca`: the offset approximant (a cubic).
+    pub offset: Bezier<f64>,
+    /// `λ_p = |b3 − bm| / |bm − b0|` (1 for a straight segment).
+    pub lambda: f64,
+    /// The common `κ = √λ_p`.
+    pub kappa: f64,
+}
+
+/// Why a segment has no LN pair (the driver then subdivides it).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum NoPair {
+    /// The end tangents do not meet ahead of both ends (an inflection or a turn ≥ π).
+    TangentsDoNotMeet,
+    /// `λ_p ∉ [1/4, 4]`: eq. (7) fails, no common `κ` exists.
+    LambdaOutOfRange,
+    /// A value was not finite.
+    NotFinite,
+}
+
+fn frame_cubic(b0: &V2<f64>, bm: &V2<f64>, b3: &V2<f64>, d0: f64, d1: f64) -> Bezier<f64> {
+    Bezier::new(vec![
+        b0.clone(),
+        b0.lerp(bm, &d0),
+        b3.lerp(bm, &d1),
+        b3.clone(),
+    ])
+}
+
+/// The LN pair of a segment `x` for the signed distance `d` (`d > 0` to the
+/// left). `n0`, `n1` are the unit **left** normals at the ends (passed in, so
+/// that neighbouring segments share them bit for bit and the spline is exactly
+/// connected).
+///
+/// # Examples
+/// ```
+/// use lncert::approx::lnpair::ln_pair;
+/// use lncert::curve::{Bezier, V2};
+/// // A quarter of the unit circle, roughly, offset by 1/2 outwards (to the right).
+/// let k = 0.5523;
+/// let x = Bezier::new(vec![V2::new(1.0, 0.0), V2::new(1.0, k), V2::new(k, 1.0), V2::new(0.0, 1.0)]);
+/// let p = ln_pair(&x, &V2::new(-1.0, 0.0), &V2::new(0.0, -1.0), -0.5).unwrap();
+/// assert!((p.lambda - 1.0).abs() < 1e-12 && (p.kappa - 1.0).abs() < 1e-12);
+/// assert_eq!(p.offset.points()[0], V2::new(1.5, 0.0));
+/// ```
+pub fn ln_pair(x: &Bezier<f64>, n0: &V2<f64>, n1: &V2<f64>, d: f64) -> Result<LnPairPiece, NoPair> {
+    let pts = x.points();
+    let (b0, b3) = (pts[0].clone(), pts[pts.len() - 1].clone());
+    // unit tangents from the left normals: T = −rot90(N_L) = (N.y, −N.x)
+    let t0 = V2::new(n0.y, -n0.x);
+    let t1 = V2::new(n1.y, -n1.x);
+    let c = b3.sub(&b0);
+    let den = t0.cross(&t1);
+    let c0 = n0.scale(&d);
+    let c3 = n1.scale(&d);
+    let scale = c.norm2().sqrt();
+    let piece = if den.abs() <= 1e-12 && t0.dot(&t1) > 0.0 && c.cross(&t0).abs() <= 1e-12 * scale
+    {
+        // straight: the segment and a constant normal
+        let third = 1.0 / 3.0;
+        let pa = frame_cubic(&b0, &b0.lerp(&b3, &0.5), &b3, 2.0 * third, 2.0 * third);
+        let ca = frame_cubic(&c0, &c0.lerp(&c3, &0.5), &c3, 2.0 * third, 2.0 * third);
+        (pa, ca, 1.0, 1.0)
+    } else {
+        if den == 0.0 {
+            return Err(NoPair::TangentsDoNotMeet);
+        }
+        let s = c.cross(&t1) / den;
+        let u = t0.cross(&c) / den;
+        if !(s > 0.0 && u > 0.0) || t0.dot(&t1) <= -1.0 + 1e-12 {
+            return Err(NoPair::TangentsDoNotMeet);
+        }
+        let bm = b0.add(&t0.scale(&s));
+        let lambda = u / s;
+        if !(0.25..=4.0).contains(&lambda) {
+            return Err(NoPair::LambdaOutOfRange);
+        }
+        let kappa = lambda.sqrt();
+        let (pd0, pd1) = (
+            2.0 / 3.0 * (2.0 - lambda / kappa),
+            2.0 / 3.0 * (2.0 - kappa / lambda),
+        );
+        let pa = frame_cubic(&b0, &bm, &b3, pd0, pd1);
+        let cm = n0.add(n1).scale(&(d / (1.0 + n0.dot(n1))));
+        let (cd0, cd1) = (2.0 / 3.0 * (2.0 - 1.0 / kappa), 2.0 / 3.0 * (2.0 - kappa));
+        let ca = frame_cubic(&c0, &cm, &c3, cd0, cd1);
+        (pa, ca, lambda, kappa)
+    };
+    let (pa, ca, lambda, kappa) = piece;
+    let offset = Bezier::new(
+        pa.points()
+            .iter()
+            .zip(ca.points())
+            .map(|(p, q)| p.add(q))
+            .collect(),
+    );
+    let finite = offset
+        .points()
+        .iter()
+        .all(|p| p.x.is_finite() && p.y.is_finite());
+    if !finite {
+        return Err(NoPair::NotFinite);
+    }
+    Ok(LnPairPiece {
+        pa,
+        ca,
+        offset,
+        lambda,
+        kappa,
+    })
+}
+
+/// `r · d_H(c, ca)` of eq. (8) by Prop 6.1, in interval arithmetic: the unit
+/// arc between the normals `n0`, `n1` (enclosures of the true unit normals),
+/// half-angle `α` with `cos α = √((1 + n0·n1)/2)`, `sin α = √((1 − n0·n1)/2)`,
+/// and the pair's `κ`. An upper end of the closed form; `None` when `κ` or the
+/// angle is outside Prop 6.1's range (`κ ∈ [1/2, 2]`, `0 < 2α < π`) or a sign
+/// is undecided. For a straight segment (`n0 = n1`) the arc is a point: 0.
+///
+/// Prop 6.1 equals the Hausdorff distance under the sector condition decided
+/// per instance in `proofs/000-prop-6.1.md`; the driver also certifies the
+/// offset itself, so nothing rests on this figure.
+pub fn arc_term(n0: &V2<Interval>, n1: &V2<Interval>, kappa: f64, r: f64) -> Option<f64> {
+    let c = n0.dot(n1);
+    if c.inf() >= 1.0 {
+        return Some(0.0);
+    }
+    let one = Interval::try_from((1.0, 1.0)).ok()?;
+    let half = Interval::try_from((0.5, 0.5)).ok()?;
+    let cos_a = ScalarSqrt::sqrt(&((one + c) * half))?;
+    let sin_a = ScalarSqrt::sqrt(&((one - c) * half))?;
+    let k = Interval::try_from((kappa, kappa)).ok()?;
+    let arc = ArcApprox::new(cos_a, sin_a, k).ok()?;
+    let dist = arc.prop_6_1_distance()?;
+    let rr = Interval::try_from((r.abs(), r.abs())).ok()?;
+    let v = (dist * rr).sup();
+    v.is_finite().then_some(v)
+}
+
+/// Seed 000 eq. (8): `d_H(p, pa) + |r| d_H(c, ca)` from a certified upper bound of
+/// `d_H(p, pa)` and [`arc_term`].
+pub fn paper_error(dh_p_pa: f64, arc: f64) -> f64 {
+    let s = Interval::try_from((dh_p_pa, dh_p_pa)).ok();
+    let a = Interval::try_from((arc, arc)).ok();
+    match (s, a) {
+        (Some(s), Some(a)) => (s + a).sup(),
+        _ => f64::INFINITY,
+    }
+}
+
+/// Subdivision point (a) of seed 000 §5: the parameter where the tangent
+/// direction bisects the end directions, `arg p′(t) = (arg p′(0) + arg p′(1))/2`,
+/// found by bisection on `p′(t) × d` (float; any split is sound). Falls back to
+/// `1/2` when the sign does not change. Rounded to a multiple of `2⁻²⁰` in
+/// `[1/8, 7/8]` so that the exact pieces stay small.
+pub fn mid_angle_param(x: &Bezier<f64>) -> f64 {
+    let h = x.hodograph();
+    let hp = h.points();
+    let unit = |v: &V2<f64>| {
+        let l = v.norm2().sqrt();
+        V2::new(v.x / l, v.y / l)
+    };
+    let dir = unit(&unit(&hp[0]).add(&unit(&hp[hp.len() - 1])));
+    let f = |t: f64| h.eval(&t).cross(&dir);
+    let (mut a, mut b) = (0.0, 1.0);
+    let (fa, fb) = (f(a), f(b));
+    if !(fa.is_finite() && fb.is_finite()) || fa * fb >= 0.0 {
+        return 0.5;
+    }
+    for _ in 0..60 {
+        let m = 0.5 * (a + b);
+        if f(m) * fa > 0.0 {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    let t = (0.5 * (a + b)).clamp(0.125, 0.875);
+    (t * 1048576.0).round() / 1048576.0
+}

@@ -1,0 +1,639 @@
+//! Offset approximation with a proven tolerance.
+//!
+//! [`offset`] approximates the offset `x + d N` (`N` the unit **left** normal,
+//! `d > 0` to the left) of a piecewise polynomial curve by a polynomial spline
+//! and proves the result: every output segment carries a certified Hausdorff
+//! bound against the exact offset of its input span ([`crate::certify`]), and
+//! the divide-and-conquer loop only accepts a segment whose certified bound is
+//! `≤ tol`. Since `d_H(∪Aᵢ, ∪Bᵢ) ≤ maxᵢ d_H(Aᵢ, Bᵢ)`, the spline is within `tol`
+//! of the whole offset; [`certify_result`] re-proves that globally and writes a
+//! certificate that `lncert verify` re-checks.
+//!
+//! Two constructions, both from the seeds:
+//!
+//! | [`OffsetMethod`] | seed | segment | continuity |
+//! |---|---|---|---|
+//! | `G2` | 004 | degree `n + 3` from the approximated normal field ([`g2`]) | G², C¹ at the joints |
+//! | `LnPair` | 000 §6 | a cubic `pa + ca` from a pair of LN cubics ([`lnpair`]) | G¹ |
+//!
+//! The constructions run in `f64` and are heuristics; only the certification
+//! decides. Preprocessing ([`prep`]) splits the input at inflections and
+//! where its Gauss map turns by 0.9π or more, reports the cusps of the exact offset (where
+//! the radius of curvature equals `d`; the approximation continues through
+//! them) and the G⁰ corners (a join arc, or an overlap to trim).
+//!
+//! # Examples
+//! ```
+//! use lncert::approx::{offset, OffsetMethod, OffsetOptions};
+//! use lncert::curve::parse_curve;
+//! use lncert::scalar::parse_rational;
+//! let c = parse_curve("M 0 0 C 1 1 2 1 3 0").unwrap();
+//! let opts = OffsetOptions::new(parse_rational("0.25").unwrap(), 1e-3);
+//! let r = offset(&c, &opts).unwrap();
+//! assert!(r.reached());
+//! assert!(r.certified_hi <= 1e-3);
+//! assert_eq!(r.degree(), 6);
+//! assert_eq!(r.control_points(), 6 * r.segments.len() + 1);
+//! ```
+
+pub mod arc;
+pub mod g2;
+pub mod lnpair;
+pub mod prep;
+
+use crate::certify::{hausdorff, Certificate, Config, HausdorffBounds, ShapeDesc};
+use crate::curve::{Bezier, V2};
+use crate::scalar::{interval_from_rational, rational_from_f64, Interval, Rational, Scalar};
+use num_traits::Zero;
+use prep::{Junction, OffsetCusp};
+use rayon::prelude::*;
+
+/// Which construction builds the segments.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum OffsetMethod {
+    /// Seed 004: G²/C¹ normal-field approximant of degree `n + 3`.
+    #[default]
+    G2,
+    /// Seed 000 §6: cubic LN pair `pa + ca`.
+    LnPair,
+}
+
+impl OffsetMethod {
+    /// The CLI name: `g2` or `ln-pair`.
+    pub fn name(self) -> &'static str {
+        match self {
+            OffsetMethod::G2 => "g2",
+            OffsetMethod::LnPair => "ln-pair",
+        }
+    }
+    /// Parses a CLI name.
+    pub fn parse(s: &str) -> Option<Self> {
+        match s {
+            "g2" => Some(OffsetMethod::G2),
+            "ln-pair" | "lnpair" => Some(OffsetMethod::LnPair),
+            _ => None,
+        }
+    }
+}
+
+/// Settings of [`offset`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct OffsetOptions {
+    /// Signed offset distance (`> 0` to the left), exact.
+    pub distance: Rational,
+    /// The tolerance to prove: `d_H(offset, approximant) ≤ tol`.
+    pub tol: f64,
+    pub method: OffsetMethod,
+    /// Subdivision depth limit per input piece (default 24: segments of
+    /// parameter length ≥ 2⁻²⁴).
+    pub max_depth: u32,
+    /// Most output segments (default 20 000).
+    pub max_segments: usize,
+    /// Box budget of each segment's certification (default 50 000).
+    pub max_boxes: usize,
+    /// Also evaluate seed 000's error measure (8) per LN-pair segment (one more
+    /// certified bound per segment; default false).
+    pub paper_error: bool,
+}
+
+impl OffsetOptions {
+    /// Defaults for a distance and a tolerance (method G2).
+    pub fn new(distance: Rational, tol: f64) -> Self {
+        OffsetOptions {
+            distance,
+            tol,
+            method: OffsetMethod::G2,
+            max_depth: 24,
+            max_segments: 20_000,
+            max_boxes: 50_000,
+            paper_error: false,
+        }
+    }
+}
+
+/// Why an offset could not be computed; names the field.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum OffsetError {
+    #[error("invalid `{field}`: {reason}")]
+    Input { field: String, reason: String },
+}
+
+fn bad(field: impl Into<String>, reason: impl Into<String>) -> OffsetError {
+    OffsetError::Input {
+        field: field.into(),
+        reason: reason.into(),
+    }
+}
+
+/// One certified output segment.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OffsetSegment {
+    /// The input piece it approximates the offset of.
+    pub piece: usize,
+    /// Its parameter span `[t0, t1]` on that piece (dyadic floats, exact).
+    pub t: (f64, f64),
+    /// The approximant (its control points are exact dyadic rationals).
+    pub bezier: Bezier<f64>,
+    /// Certified `lo ≤ d_H(exact offset of the span, bezier) ≤ hi`.
+    pub error: (f64, f64),
+    /// Seed 000 eq. (8) for LN-pair segments when requested (an upper bound of
+    /// the paper's error measure).
+    pub paper_error: Option<f64>,
+}
+
+/// A junction of two input pieces that needs attention.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Corner {
+    /// The junction is between piece `after` and the next piece (cyclically for a closed curve).
+    pub after: usize,
+    pub kind: Junction,
+}
+
+/// The result of [`offset`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct OffsetResult {
+    pub method: OffsetMethod,
+    pub distance: Rational,
+    pub tol: f64,
+    /// Segments in input order.
+    pub segments: Vec<OffsetSegment>,
+    /// Indices of segments whose certified bound stayed above `tol` (depth or
+    /// segment limit reached); empty when the tolerance is proven.
+    pub unreached: Vec<usize>,
+    /// `max` of the segments' certified upper bounds: `d_H ≤ certified_hi`.
+    pub certified_hi: f64,
+    /// Cusps of the exact offset (radius of curvature = distance).
+    pub cusps: Vec<OffsetCusp>,
+    /// G⁰ corners: join arcs to add, or overlaps to trim.
+    pub corners: Vec<Corner>,
+    /// Certified Hausdorff searches run (accepted and rejected segments).
+    pub certifications: usize,
+}
+
+impl OffsetResult {
+    /// True when every segment is certified within `tol`.
+    pub fn reached(&self) -> bool {
+        self.unreached.is_empty()
+    }
+    /// The largest segment degree.
+    pub fn degree(&self) -> usize {
+        self.segments
+            .iter()
+            .map(|s| s.bezier.degree())
+            .max()
+            .unwrap_or(0)
+    }
+    /// Control points as the papers count them: `degree · segments + 1` per
+    /// connected run (consecutive segments sharing an end point).
+    pub fn control_points(&self) -> usize {
+        let mut n = 0;
+        for (i, s) in self.segments.iter().enumerate() {
+            n += s.bezier.degree();
+            let starts_run = i == 0 || {
+                let prev = self.segments[i - 1].bezier.points();
+                prev[prev.len() - 1] != s.bezier.points()[0]
+            };
+            if starts_run {
+                n += 1;
+            }
+        }
+        n
+    }
+    /// The approximant as an exact shape (every float control point is an exact
+    /// dyadic rational).
+    pub fn approximant_shape(&self) -> Result<ShapeDesc, OffsetError> {
+        let pieces = self
+            .segments
+            .iter()
+            .map(|s| exact_bezier(&s.bezier))
+            .collect::<Option<Vec<_>>>()
+            .ok_or_else(|| bad("approximant", "a control point is not finite"))?;
+        ShapeDesc::curve(pieces).map_err(|e| bad("approximant", e.to_string()))
+    }
+}
+
+/// The exact rational curve of float control points.
+pub fn exact_bezier(b: &Bezier<f64>) -> Option<Bezier<Rational>> {
+    let pts = b
+        .points()
+        .iter()
+        .map(|p| Some(V2::new(rational_from_f64(p.x)?, rational_from_f64(p.y)?)))
+        .collect::<Option<Vec<_>>>()?;
+    Some(Bezier::new(pts))
+}
+
+/// Smallest tolerance accepted, relative to `1 + coordinate scale`: below it
+/// the float control points of the approximant cannot resolve the offset.
+pub const MIN_REL_TOL: f64 = 1e-11;
+
+#[derive(Clone, Debug)]
+struct Task {
+    piece: usize,
+    t: (f64, f64),
+    depth: u32,
+}
+
+struct Outcome {
+    task: Task,
+    segment: Option<OffsetSegment>,
+    /// Where to split when not accepted.
+    split: f64,
+}
+
+fn check_options(
+    curve: &[Bezier<Rational>],
+    opts: &OffsetOptions,
+) -> Result<ShapeDesc, OffsetError> {
+    if curve.is_empty() {
+        return Err(bad("curve", "no pieces"));
+    }
+    let shape = ShapeDesc::offset(curve.to_vec(), opts.distance.clone()).map_err(|e| match e {
+        crate::certify::CertifyError::Input { field, reason } => OffsetError::Input {
+            field: field
+                .replace("offset.curve", "curve")
+                .replace("offset.distance", "distance"),
+            reason,
+        },
+    })?;
+    let scale = shape.scale();
+    if !(opts.tol.is_finite() && opts.tol > 0.0) {
+        return Err(bad("tol", "must be a finite number > 0"));
+    }
+    let min = MIN_REL_TOL * (1.0 + scale);
+    if opts.tol < min {
+        return Err(bad(
+            "tol",
+            format!(
+                "{:e} is below {:e} = 1e-11 × (1 + coordinate scale): float control points cannot resolve it",
+                opts.tol, min
+            ),
+        ));
+    }
+    if opts.max_depth > 40 {
+        return Err(bad("max_depth", "must be ≤ 40"));
+    }
+    if opts.max_segments == 0 || opts.max_boxes == 0 {
+        return Err(bad("max_segments", "limits must be ≥ 1"));
+    }
+    Ok(shape)
+}
+
+/// Initial spans of one piece: split at inflections, then halve until the
+/// Gauss map of each span turns by less than 0.9π ([`prep::MAX_TURN`]).
+fn initial_spans(x: &Bezier<Rational>) -> Vec<(f64, f64)> {
+    let mut cuts = vec![0.0];
+    cuts.extend(prep::inflections(x));
+    cuts.push(1.0);
+    let mut out = Vec::new();
+    for w in cuts.windows(2) {
+        let mut stack = vec![(w[0], w[1], 0u32)];
+        while let Some((a, b, depth)) = stack.pop() {
+            let sub = sub_f64(x, (a, b));
+            if depth >= 8 || sub.as_ref().is_some_and(prep::gauss_map_short) {
+                out.push((a, b));
+            } else {
+                let m = 0.5 * (a + b);
+                stack.push((m, b, depth + 1));
+                stack.push((a, m, depth + 1));
+            }
+        }
+    }
+    out.sort_by(|p, q| p.0.total_cmp(&q.0));
+    out
+}
+
+fn sub_exact(x: &Bezier<Rational>, t: (f64, f64)) -> Option<Bezier<Rational>> {
+    Some(x.restrict(&rational_from_f64(t.0)?, &rational_from_f64(t.1)?))
+}
+
+fn sub_f64(x: &Bezier<Rational>, t: (f64, f64)) -> Option<Bezier<f64>> {
+    sub_exact(x, t).map(|b| b.map(|v| v.approx()))
+}
+
+/// Builds the approximant of one span: the construction with canonical end
+/// normals (so neighbours share end points exactly).
+fn construct(
+    method: OffsetMethod,
+    x: &Bezier<Rational>,
+    t: (f64, f64),
+    d: f64,
+) -> Option<(Bezier<f64>, Option<lnpair::LnPairPiece>)> {
+    let sub = sub_f64(x, t)?;
+    let n0 = prep::unit_left_normal(x, t.0)?;
+    let n1 = prep::unit_left_normal(x, t.1)?;
+    match method {
+        OffsetMethod::G2 => {
+            let (mut o, _) = g2::offset_approximant_f64(&sub, d)?;
+            // pin the ends to x(tᵢ) + d Nᵢ with the canonical normals
+            let p = sub.points();
+            let last = o.points().len() - 1;
+            let e0 = p[0].add(&n0.scale(&d));
+            let e1 = p[p.len() - 1].add(&n1.scale(&d));
+            let mut pts = o.points().to_vec();
+            pts[0] = e0;
+            pts[last] = e1;
+            o = Bezier::new(pts);
+            Some((o, None))
+        }
+        OffsetMethod::LnPair => {
+            let pair = lnpair::ln_pair(&sub, &n0, &n1, d).ok()?;
+            Some((pair.offset.clone(), Some(pair)))
+        }
+    }
+}
+
+fn certify_segment(
+    x: &Bezier<Rational>,
+    task: &Task,
+    opts: &OffsetOptions,
+    d: f64,
+) -> (Option<OffsetSegment>, f64) {
+    let split = 0.5;
+    let Some(exact) = sub_exact(x, task.t) else {
+        return (None, split);
+    };
+    let Some((bez, pair)) = construct(opts.method, x, task.t, d) else {
+        return (None, split_point(opts.method, x, task.t));
+    };
+    let Some(appr) = exact_bezier(&bez) else {
+        return (None, split);
+    };
+    let a = ShapeDesc::Offset {
+        curve: vec![exact.clone()],
+        distance: opts.distance.clone(),
+    };
+    let b = ShapeDesc::Curve(vec![appr]);
+    let cfg = Config {
+        tol: Some(opts.tol),
+        max_boxes: opts.max_boxes,
+        ..Config::default()
+    };
+    let Ok(r) = hausdorff(&a, &b, &cfg) else {
+        return (None, split);
+    };
+    let paper_error = match (&pair, opts.paper_error) {
+        (Some(p), true) => paper_error_of(x, task.t, &exact, p, d),
+        _ => None,
+    };
+    let seg = OffsetSegment {
+        piece: task.piece,
+        t: task.t,
+        bezier: bez,
+        error: (r.lo, r.hi),
+        paper_error,
+    };
+    (Some(seg), split_point(opts.method, x, task.t))
+}
+
+fn split_point(method: OffsetMethod, x: &Bezier<Rational>, t: (f64, f64)) -> f64 {
+    match method {
+        OffsetMethod::G2 => 0.5,
+        OffsetMethod::LnPair => sub_f64(x, t).map_or(0.5, |s| lnpair::mid_angle_param(&s)),
+    }
+}
+
+/// Interval enclosure of the unit left normal of `x` at `t`.
+fn normal_enclosure(x: &Bezier<Rational>, t: f64) -> Option<V2<Interval>> {
+    let d = x.hodograph().eval(&rational_from_f64(t)?);
+    let v = V2::new(interval_from_rational(&d.x), interval_from_rational(&d.y));
+    let l = crate::scalar::ScalarSqrt::sqrt(&v.norm2())?;
+    let inv = Scalar::recip(&l)?;
+    Some(V2::new(-v.y * inv, v.x * inv))
+}
+
+fn paper_error_of(
+    x: &Bezier<Rational>,
+    t: (f64, f64),
+    exact: &Bezier<Rational>,
+    p: &lnpair::LnPairPiece,
+    d: f64,
+) -> Option<f64> {
+    let pa = exact_bezier(&p.pa)?;
+    let r = hausdorff(
+        &ShapeDesc::Curve(vec![exact.clone()]),
+        &ShapeDesc::Curve(vec![pa]),
+        &Config {
+            rel: 1e-2,
+            ..Config::default()
+        },
+    )
+    .ok()?;
+    let arc = lnpair::arc_term(
+        &normal_enclosure(x, t.0)?,
+        &normal_enclosure(x, t.1)?,
+        p.kappa,
+        d,
+    )?;
+    Some(lnpair::paper_error(r.hi, arc))
+}
+
+/// Approximates the offset at `opts.distance` of a piecewise polynomial curve
+/// within `opts.tol`, proving every segment (see the module docs).
+///
+/// Errors: a typed [`OffsetError`] naming the field for a singular or cusped
+/// input piece (its normal is undefined), a zero distance, a tolerance that is
+/// not a positive number or is below [`MIN_REL_TOL`] × (1 + scale), or
+/// coordinates beyond `1e100`. A tolerance that cannot be reached within the
+/// depth and segment limits is not an error: the result lists the segments in
+/// [`OffsetResult::unreached`] with their certified bounds.
+pub fn offset(curve: &[Bezier<Rational>], opts: &OffsetOptions) -> Result<OffsetResult, OffsetError> {
+    check_options(curve, opts)?;
+    let d = opts.distance.approx();
+    let mut tasks: Vec<Task> = Vec::new();
+    for (i, x) in curve.iter().enumerate() {
+        for t in initial_spans(x) {
+            tasks.push(Task {
+                piece: i,
+                t,
+                depth: 0,
+            });
+        }
+    }
+    let mut done: Vec<OffsetSegment> = Vec::new();
+    let mut unreached_segs: Vec<OffsetSegment> = Vec::new();
+    let mut certifications = 0;
+    while !tasks.is_empty() {
+        let outcomes: Vec<Outcome> = tasks
+            .par_iter()
+            .map(|task| {
+                let (segment, s) = certify_segment(&curve[task.piece], task, opts, d);
+                Outcome {
+                    task: task.clone(),
+                    segment,
+                    split: s,
+                }
+            })
+            .collect();
+        certifications += outcomes.len();
+        let mut next = Vec::new();
+        for o in outcomes {
+            let accepted = o.segment.as_ref().is_some_and(|s| s.error.1 <= opts.tol);
+            if accepted {
+                done.extend(o.segment);
+                continue;
+            }
+            let (a, b) = o.task.t;
+            let m = a + (b - a) * o.split;
+            let room = done.len() + unreached_segs.len() + next.len() + 2 <= opts.max_segments;
+            if o.task.depth < opts.max_depth && m > a && m < b && room {
+                next.push(Task {
+                    piece: o.task.piece,
+                    t: (a, m),
+                    depth: o.task.depth + 1,
+                });
+                next.push(Task {
+                    piece: o.task.piece,
+                    t: (m, b),
+                    depth: o.task.depth + 1,
+                });
+            } else if let Some(s) = o.segment {
+                unreached_segs.push(s);
+            } else {
+                // no construction at all: keep the exact span's chord offset? No —
+                // report an unreached segment with an infinite bound.
+                let x = &curve[o.task.piece];
+                if let Some(sub) = sub_f64(x, o.task.t) {
+                    let p = sub.points();
+                    unreached_segs.push(OffsetSegment {
+                        piece: o.task.piece,
+                        t: o.task.t,
+                        bezier: Bezier::new(vec![p[0].clone(), p[p.len() - 1].clone()]),
+                        error: (0.0, f64::INFINITY),
+                        paper_error: None,
+                    });
+                }
+            }
+        }
+        tasks = next;
+    }
+    let mut segments: Vec<(OffsetSegment, bool)> = done
+        .into_iter()
+        .map(|s| (s, false))
+        .chain(unreached_segs.into_iter().map(|s| (s, true)))
+        .collect();
+    segments.sort_by(|a, b| (a.0.piece, a.0.t.0).partial_cmp(&(b.0.piece, b.0.t.0)).unwrap_or(std::cmp::Ordering::Equal));
+    let unreached = segments
+        .iter()
+        .enumerate()
+        .filter(|(_, s)| s.1)
+        .map(|(i, _)| i)
+        .collect();
+    let segments: Vec<OffsetSegment> = segments.into_iter().map(|s| s.0).collect();
+    let certified_hi = segments.iter().map(|s| s.error.1).fold(0.0, f64::max);
+    let cusps = curve
+        .iter()
+        .enumerate()
+        .flat_map(|(i, x)| prep::offset_cusps(i, x, &opts.distance))
+        .collect();
+    Ok(OffsetResult {
+        method: opts.method,
+        distance: opts.distance.clone(),
+        tol: opts.tol,
+        segments,
+        unreached,
+        certified_hi,
+        cusps,
+        corners: corners(curve, &opts.distance),
+        certifications,
+    })
+}
+
+/// The junctions of consecutive pieces that need a join arc or trimming, and the
+/// closing junction when the curve is closed.
+pub fn corners(curve: &[Bezier<Rational>], d: &Rational) -> Vec<Corner> {
+    let n = curve.len();
+    let mut out = Vec::new();
+    for i in 0..n {
+        let j = i + 1;
+        if j == n {
+            // closed curve: last end = first start
+            let last = curve[n - 1].points();
+            if n == 1 || last[last.len() - 1] != curve[0].points()[0] {
+                continue;
+            }
+        }
+        let kind = prep::junction(&curve[i], &curve[j % n], d);
+        if matches!(kind, Junction::Join { .. } | Junction::Overlap { .. }) {
+            out.push(Corner { after: i, kind });
+        }
+    }
+    out
+}
+
+/// Global certification of a result: certified bounds `lo ≤ d_H ≤ hi` between
+/// the exact offset of the whole input and the whole approximant (relative gap
+/// `rel`), and, when the tolerance holds, a certificate of
+/// `d_H ≤ tol` that [`crate::certify::verify::verify`] re-checks.
+///
+/// The certificate's shapes are the input curve's exact offset
+/// (`{"offset": {"curve": INPUT, "distance": d}}`) and the approximant.
+pub fn certify_result(
+    curve: &[Bezier<Rational>],
+    res: &OffsetResult,
+    rel: f64,
+    want_certificate: bool,
+) -> Result<(HausdorffBounds, Option<Certificate>), OffsetError> {
+    let a = ShapeDesc::offset(curve.to_vec(), res.distance.clone())
+        .map_err(|e| bad("curve", e.to_string()))?;
+    let b = res.approximant_shape()?;
+    let bounds = hausdorff(
+        &a,
+        &b,
+        &Config {
+            rel,
+            ..Config::default()
+        },
+    )
+    .map_err(|e| bad("certify", e.to_string()))?;
+    let cert = if want_certificate && res.reached() {
+        let tol = rational_from_f64(res.tol).ok_or_else(|| bad("tol", "not finite"))?;
+        let r = hausdorff(
+            &a,
+            &b,
+            &Config {
+                tol: Some(res.tol),
+                ..Config::default()
+            },
+        )
+        .map_err(|e| bad("certify", e.to_string()))?;
+        Certificate::new(&a, &b, &tol, &r)
+    } else {
+        None
+    };
+    Ok((bounds, cert))
+}
+
+/// The join arcs of a result as exact arcs (radius `|d|`), for output.
+pub fn join_arcs(res: &OffsetResult) -> Vec<crate::certify::ArcDesc> {
+    let r = if res.distance < <Rational as Zero>::zero() {
+        -res.distance.clone()
+    } else {
+        res.distance.clone()
+    };
+    res.corners
+        .iter()
+        .filter_map(|c| match &c.kind {
+            Junction::Join {
+                center,
+                from,
+                to,
+                clockwise,
+            } => Some(if *clockwise {
+                crate::certify::ArcDesc {
+                    center: center.clone(),
+                    radius: r.clone(),
+                    from: to.clone(),
+                    to: from.clone(),
+                }
+            } else {
+                crate::certify::ArcDesc {
+                    center: center.clone(),
+                    radius: r.clone(),
+                    from: from.clone(),
+                    to: to.clone(),
+                }
+            }),
+            _ => None,
+        })
+        .collect()
+}

@@ -1,0 +1,236 @@
+//! Preprocessing and exact facts about the input: split parameters
+//! (inflections, Gauss map), canonical unit normals at split points, the cusps
+//! of the exact offset, and the corners of a piecewise curve.
+
+use crate::curve::{Bezier, V2};
+use crate::poly::{isolate_roots, refine_root, Poly, Span};
+use crate::scalar::{rational_from_f64, Rational};
+use num_traits::{Signed, Zero};
+
+/// `x′ × x″` of a Bézier piece as an exact power-basis polynomial.
+pub fn curvature_numerator(x: &Bezier<Rational>) -> Poly<Rational> {
+    let (dx, dy) = x.hodograph().power_coords();
+    let (ddx, ddy) = (dx.derivative(), dy.derivative());
+    dx.mul(&ddy).sub(&dy.mul(&ddx)).trimmed()
+}
+
+fn is_zero_poly(p: &Poly<Rational>) -> bool {
+    p.coeffs().iter().all(Zero::is_zero)
+}
+
+/// Float enclosure midpoints of the roots of `p` in `(0, 1)`, refined to width
+/// `2⁻³⁰` (exact isolation; the float split point is a heuristic choice).
+fn roots_in_unit(p: &Poly<Rational>) -> Vec<f64> {
+    if is_zero_poly(p) {
+        return Vec::new();
+    }
+    let w = Rational::new(1.into(), (1i64 << 30).into());
+    isolate_roots(p, &Span::open(Rational::zero(), Rational::from_integer(1.into())))
+        .iter()
+        .map(|r| refine_root(p, r, &w).midpoint().approx_f64())
+        .filter(|t| *t > 0.0 && *t < 1.0)
+        .collect()
+}
+
+trait ApproxF64 {
+    fn approx_f64(&self) -> f64;
+}
+impl ApproxF64 for Rational {
+    fn approx_f64(&self) -> f64 {
+        crate::scalar::Scalar::approx(self)
+    }
+}
+
+/// The inflection parameters of a piece in `(0, 1)` (sign changes of `x′ × x″`),
+/// rounded to multiples of `2⁻²⁴`.
+pub fn inflections(x: &Bezier<Rational>) -> Vec<f64> {
+    let mut v: Vec<f64> = roots_in_unit(&curvature_numerator(x))
+        .into_iter()
+        .map(|t| (t * 16777216.0).round() / 16777216.0)
+        .filter(|t| *t > 0.0 && *t < 1.0)
+        .collect();
+    v.dedup();
+    v
+}
+
+/// Largest spread of the hodograph's control points (an enclosure of the
+/// tangent directions) accepted for one span: `0.9 π`. Seed 004 Prop 3.1 needs
+/// the Gauss map shorter than π; the margin keeps eq. (3.4) well conditioned.
+pub const MAX_TURN: f64 = 0.9 * std::f64::consts::PI;
+
+/// True when the hodograph's control points lie in a cone of opening below
+/// [`MAX_TURN`] (so the span's tangent turns by less than that).
+pub fn gauss_map_short(x: &Bezier<f64>) -> bool {
+    let h = x.hodograph();
+    let p = h.points();
+    let Some(first) = p.iter().find(|v| v.norm2() > 0.0) else {
+        return false;
+    };
+    let (mut lo, mut hi) = (0.0f64, 0.0f64);
+    for v in p {
+        if v.norm2() == 0.0 {
+            continue;
+        }
+        let a = first.cross(v).atan2(first.dot(v));
+        lo = lo.min(a);
+        hi = hi.max(a);
+    }
+    hi - lo < MAX_TURN
+}
+
+/// The exact point of piece `x` at the float parameter `t`.
+pub fn point_at(x: &Bezier<Rational>, t: f64) -> V2<Rational> {
+    x.eval(&rational_from_f64(t).unwrap_or_else(Rational::zero))
+}
+
+/// The canonical unit **left** normal of piece `x` at `t`: the exact derivative,
+/// rounded to floats, normalised in floats. Neighbouring segments call this
+/// with the same arguments, so they share the normal bit for bit.
+pub fn unit_left_normal(x: &Bezier<Rational>, t: f64) -> Option<V2<f64>> {
+    let d = x
+        .hodograph()
+        .eval(&rational_from_f64(t)?)
+        .map(crate::scalar::Scalar::approx);
+    let l = d.norm2().sqrt();
+    if !(l > 0.0 && l.is_finite()) {
+        // rescale huge or tiny derivatives before normalising
+        let m = d.x.abs().max(d.y.abs());
+        if !(m > 0.0 && m.is_finite()) {
+            return None;
+        }
+        let (x, y) = (d.x / m, d.y / m);
+        let l = (x * x + y * y).sqrt();
+        return Some(V2::new(-y / l, x / l));
+    }
+    Some(V2::new(-d.y / l, d.x / l))
+}
+
+/// A cusp of the exact offset `x + d N` (left normal): a parameter where the
+/// signed curvature is `κ = 1/d`, i.e. `d (x′ × x″) = |x′|³`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OffsetCusp {
+    /// Index of the input piece.
+    pub piece: usize,
+    /// An exact isolating interval of the cusp parameter (width ≤ 2⁻⁴⁰).
+    pub t: (Rational, Rational),
+    /// Float approximation of the parameter.
+    pub t_approx: f64,
+    /// The cusp point of the exact offset, approximately.
+    pub point: (f64, f64),
+}
+
+/// The cusps of the exact offset at signed distance `d` (left normal) of piece
+/// `x`, decided exactly: the roots in `[0, 1]` of `d²(x′×x″)² − (x′·x′)³` at
+/// which `d (x′ × x″) > 0` (Sturm isolation; the sign is decided on an
+/// isolating interval on which `x′ × x″` has no root).
+pub fn offset_cusps(piece: usize, x: &Bezier<Rational>, d: &Rational) -> Vec<OffsetCusp> {
+    let k = curvature_numerator(x);
+    if is_zero_poly(&k) {
+        return Vec::new();
+    }
+    let (dx, dy) = x.hodograph().power_coords();
+    let speed2 = dx.mul(&dx).add(&dy.mul(&dy));
+    let dd = Poly::constant(d * d);
+    let p = dd.mul(&k).mul(&k).sub(&speed2.mul(&speed2).mul(&speed2)).trimmed();
+    if is_zero_poly(&p) {
+        return Vec::new();
+    }
+    let w = Rational::new(1.into(), (1i64 << 40).into());
+    let span = Span::closed(Rational::zero(), Rational::from_integer(1.into()));
+    let mut out = Vec::new();
+    for r in isolate_roots(&p, &span) {
+        let r = refine_root(&p, &r, &w);
+        // the sign of d·κ-numerator at the root: k has no root at a cusp
+        // (|x′|³ > 0 on a regular curve), and the isolating interval is narrow.
+        let m = r.midpoint();
+        let s = d * k.eval(&m);
+        if !s.is_positive() {
+            continue;
+        }
+        let ta = crate::scalar::Scalar::approx(&m);
+        let pt = x.eval(&m);
+        let n = unit_left_normal(x, ta).unwrap_or(V2::new(0.0, 0.0));
+        let df = crate::scalar::Scalar::approx(d);
+        out.push(OffsetCusp {
+            piece,
+            t: (r.lo.clone(), r.hi.clone()),
+            t_approx: ta,
+            point: (
+                crate::scalar::Scalar::approx(&pt.x) + df * n.x,
+                crate::scalar::Scalar::approx(&pt.y) + df * n.y,
+            ),
+        });
+    }
+    out
+}
+
+/// What happens at the junction of two consecutive input pieces.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Junction {
+    /// The pieces do not meet (`end ≠ start`): separate components.
+    Gap,
+    /// Tangent-continuous (G¹): the offsets meet.
+    Smooth,
+    /// A G⁰ corner whose offset leaves a gap: closed by a join arc of radius
+    /// `|d|` about the corner, from the end normal of the first piece to the start
+    /// normal of the second (directions exact, not normalised).
+    Join {
+        center: V2<Rational>,
+        from: V2<Rational>,
+        to: V2<Rational>,
+        /// The arc turns clockwise from `from` to `to`.
+        clockwise: bool,
+    },
+    /// A G⁰ corner on the inner side: the two offsets cross and must be trimmed.
+    Overlap { center: V2<Rational> },
+}
+
+/// Classifies the junction between `a` (its end) and `b` (its start) for the
+/// signed distance `d`, exactly.
+pub fn junction(a: &Bezier<Rational>, b: &Bezier<Rational>, d: &Rational) -> Junction {
+    let pa = a.points();
+    let end = pa[pa.len() - 1].clone();
+    if end != b.points()[0] {
+        return Junction::Gap;
+    }
+    let ha = a.hodograph();
+    let ta = ha.points()[ha.points().len() - 1].clone();
+    let tb = b.hodograph().points()[0].clone();
+    let cross = ta.cross(&tb);
+    let dot = ta.dot(&tb);
+    if cross.is_zero() && dot.is_positive() {
+        return Junction::Smooth;
+    }
+    // Normals sweep by the turn of the tangent; the offset side gets a gap when
+    // the curve turns away from it: d > 0 (left) and a right turn, or d < 0 and
+    // a left turn. A reversal (cross = 0, dot < 0) opens a half circle.
+    let left_turn = cross.is_positive();
+    let gap = if cross.is_zero() {
+        true
+    } else {
+        d.is_positive() != left_turn
+    };
+    if !gap {
+        return Junction::Overlap { center: end };
+    }
+    let sgn = if d.is_positive() {
+        Rational::from_integer(1.into())
+    } else {
+        Rational::from_integer((-1).into())
+    };
+    let from = ta.rot90().scale(&sgn);
+    let to = tb.rot90().scale(&sgn);
+    // the normals turn like the tangents: clockwise when the curve turns right;
+    // a reversal: the arc goes round the far side of the offset.
+    let clockwise = if cross.is_zero() {
+        d.is_positive()
+    } else {
+        !left_turn
+    };
+    Junction::Join {
+        center: end,
+        from,
+        to,
+        clockwise,
+    }
+}
