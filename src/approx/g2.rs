@@ -158,9 +158,13 @@ pub fn system<S: Scalar>(e: &G2Ends<S>, m: &[V2<S>; 4]) -> (V2<S>, V2<S>, V2<S>)
 pub fn solve_alpha<S: Scalar>(e: &G2Ends<S>, m: &[V2<S>; 4]) -> Option<[S; 4]> {
     let (v1, v2, v) = system(e, m);
     let det = v1.cross(&v2);
+    // Zero: singular. Unknown: an enclosure that may be zero — undecided; a
+    // symbolic (exact) nonconstant function is not the zero function, and
+    // `div` rejects a zero divisor in every arithmetic.
     match det.sign() {
-        Sign::Positive | Sign::Negative => {}
-        _ => return None,
+        Sign::Zero => return None,
+        Sign::Unknown if !S::EXACT => return None,
+        _ => {}
     }
     let a1 = v.cross(&v2).div(&det)?;
     let a2 = v1.cross(&v).div(&det)?;

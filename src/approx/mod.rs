@@ -565,16 +565,16 @@ pub fn corners(curve: &[Bezier<Rational>], d: &Rational) -> Vec<Corner> {
 /// `rel`), and, when the tolerance holds, a certificate of
 /// `d_H ≤ tol` that [`crate::certify::verify::verify`] re-checks.
 ///
-/// The certificate's shapes are the input curve's exact offset
-/// (`{"offset": {"curve": INPUT, "distance": d}}`) and the approximant.
+/// The certificate's shapes are the exact offset of the input curve split
+/// exactly at the segments' parameters ([`exact_offset_shape`]) and the
+/// approximant.
 pub fn certify_result(
     curve: &[Bezier<Rational>],
     res: &OffsetResult,
     rel: f64,
     want_certificate: bool,
 ) -> Result<(HausdorffBounds, Option<Certificate>), OffsetError> {
-    let a = ShapeDesc::offset(curve.to_vec(), res.distance.clone())
-        .map_err(|e| bad("curve", e.to_string()))?;
+    let a = exact_offset_shape(curve, res)?;
     let b = res.approximant_shape()?;
     let bounds = hausdorff(
         &a,
@@ -601,6 +601,28 @@ pub fn certify_result(
         None
     };
     Ok((bounds, cert))
+}
+
+/// The exact offset of the input, as the union of the exact offsets of the
+/// spans of the result's segments (each span an exact restriction of its input
+/// piece at dyadic parameters, so the union is the same point set as the offset
+/// of the input). Splitting keeps the pieces short, which the foot-point search
+/// of the certification needs where the offset folds over itself near cusps.
+pub fn exact_offset_shape(
+    curve: &[Bezier<Rational>],
+    res: &OffsetResult,
+) -> Result<ShapeDesc, OffsetError> {
+    let pieces = res
+        .segments
+        .iter()
+        .map(|s| {
+            curve
+                .get(s.piece)
+                .and_then(|x| sub_exact(x, s.t))
+                .ok_or_else(|| bad("segments", "a segment does not name an input span"))
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    ShapeDesc::offset(pieces, res.distance.clone()).map_err(|e| bad("curve", e.to_string()))
 }
 
 /// The join arcs of a result as exact arcs (radius `|d|`), for output.

@@ -135,21 +135,61 @@ fn jet_f64(p: &Piece, t: f64) -> Option<JetPoint<f64>> {
     p.fl.eval(Jet::variable(t))
 }
 
-/// Float foot point of `q` on one piece: best of a sample, then Newton on
-/// `φ(t) = |q − B(t)|²`, kept in the inner domain. Returns `(t, distance)`.
+/// Float foot point of `q` on one piece: every local minimum of a sample
+/// (at most [`FOOT_CANDIDATES`], lowest first) refined by Newton on
+/// `φ(t) = |q − B(t)|²`, kept in the inner domain; the best wins. Several
+/// candidates matter where the piece passes close to `q` twice (an offset's
+/// swallowtail): Newton from the best sample alone can settle on the wrong
+/// branch, and no box bound around a wrong foot point converges.
+/// Returns `(t, distance)`.
 pub(crate) fn foot_f64(piece: &Piece, q: (f64, f64), samples: usize) -> Option<(f64, f64)> {
     let (lo, hi) = piece.inner;
     let d2 = |t: f64| jet_f64(piece, t).map(|(x, y)| (x.v - q.0).powi(2) + (y.v - q.1).powi(2));
-    let mut best: Option<(f64, f64)> = None;
-    for i in 0..=samples {
-        let t = lo + (hi - lo) * (i as f64 / samples as f64);
-        if let Some(v) = d2(t) {
-            if v.is_finite() && best.is_none_or(|b| v < b.1) {
-                best = Some((t, v));
-            }
-        }
-    }
-    let (mut t, mut v) = best?;
+    let vals: Vec<(f64, f64)> = (0..=samples)
+        .filter_map(|i| {
+            let t = lo + (hi - lo) * (i as f64 / samples as f64);
+            d2(t).filter(|v| v.is_finite()).map(|v| (t, v))
+        })
+        .collect();
+    let mut cands: Vec<(f64, f64)> = vals
+        .iter()
+        .enumerate()
+        .filter(|(i, (_, v))| {
+            (*i == 0 || vals[i - 1].1 >= *v) && (*i + 1 == vals.len() || vals[i + 1].1 >= *v)
+        })
+        .map(|(_, c)| *c)
+        .collect();
+    cands.sort_by(|a, b| a.1.total_cmp(&b.1));
+    cands.truncate(FOOT_CANDIDATES);
+    // Re-sample the bracket of each candidate finely before Newton: near a cusp
+    // of the piece (an offset's swallowtail) φ is not convex between samples.
+    let h = (hi - lo) / samples as f64;
+    cands
+        .into_iter()
+        .map(|c| {
+            let start = (1..FOOT_REFINE)
+                .map(|k| c.0 - h + 2.0 * h * (k as f64 / FOOT_REFINE as f64))
+                .filter(|t| *t >= lo && *t <= hi)
+                .filter_map(|t| d2(t).filter(|v| v.is_finite()).map(|v| (t, v)))
+                .fold(c, |a, b| if b.1 < a.1 { b } else { a });
+            newton_foot(piece, q, start, &d2)
+        })
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .map(|(t, v)| (t, v.sqrt()))
+}
+
+/// Local minima of the sample refined by [`foot_f64`].
+const FOOT_CANDIDATES: usize = 4;
+/// Sub-samples of each candidate's bracket `[t − h, t + h]`.
+const FOOT_REFINE: usize = 8;
+
+fn newton_foot(
+    piece: &Piece,
+    q: (f64, f64),
+    (mut t, mut v): (f64, f64),
+    d2: &dyn Fn(f64) -> Option<f64>,
+) -> (f64, f64) {
+    let (lo, hi) = piece.inner;
     for _ in 0..12 {
         let Some((x, y)) = jet_f64(piece, t) else {
             break;
@@ -160,20 +200,25 @@ pub(crate) fn foot_f64(piece: &Piece, q: (f64, f64), samples: usize) -> Option<(
         if !(h > 0.0) {
             break;
         }
-        let tn = (t - g / h).clamp(lo, hi);
-        match d2(tn) {
-            Some(vn) if vn <= v => {
+        // Newton with backtracking: halve the step until φ does not grow.
+        let mut step = g / h;
+        let mut moved = false;
+        for _ in 0..8 {
+            let tn = (t - step).clamp(lo, hi);
+            if let Some(vn) = d2(tn).filter(|vn| *vn <= v) {
                 let done = (tn - t).abs() <= 1e-16 * (1.0 + t.abs());
                 t = tn;
                 v = vn;
-                if done {
-                    break;
-                }
+                moved = !done;
+                break;
             }
-            _ => break,
+            step *= 0.5;
+        }
+        if !moved {
+            break;
         }
     }
-    Some((t, v.sqrt()))
+    (t, v)
 }
 
 /// The foot map `(target, t, k)` for the box centred at `s_c` of piece `a`.

@@ -5,6 +5,8 @@
 //! * `lncert audit [--cases N] [--seed S] [--json]` — the float path audited;
 //! * `lncert hausdorff A B [--rel R] [--tol T] [--certificate OUT] [--json]` — certified
 //!   Hausdorff bounds and tolerance certificates;
+//! * `lncert offset CURVE --distance R --tol T [--method g2|ln-pair] [--certificate OUT] [--svg OUT] [--json]`
+//!   — an offset approximant proven within a tolerance;
 //! * `lncert verify CERT [--json]` — the independent certificate check.
 //! * `lncert tangency --x1 X --y1 Y --u U --center OX,OY --radius R [...]` —
 //!   quartic LN curves tangent to a circle (seed 003 §4).
@@ -22,10 +24,13 @@
 //! | [`prop`] | `lncert prop`: ID resolution and one module per seed |
 //! | [`audit`] | `lncert audit` |
 //! | [`tangency`] | `lncert tangency` |
+//! | [`offset`], [`offset_svg`] | `lncert offset` and its picture |
 
 pub mod args;
 pub mod audit;
 pub mod hausdorff;
+pub mod offset;
+pub mod offset_svg;
 pub mod prop;
 pub mod report;
 pub mod reproduce;
@@ -57,6 +62,8 @@ pub enum Command {
     Audit(audit::AuditArgs),
     /// Certified bounds [lo, hi] on the Hausdorff distance of two shapes; with --tol a verdict and a certificate.
     Hausdorff(Box<hausdorff::HausdorffArgs>),
+    /// An offset approximant proven within a tolerance (seed 004 G2 or seed 000 LN pairs).
+    Offset(Box<offset::OffsetArgs>),
     /// Re-check a Hausdorff tolerance certificate without searching.
     Verify(verify::VerifyArgs),
     /// Quartic LN curves tangent to a circle (seed 003 §4): all solutions, proven.
@@ -88,6 +95,7 @@ pub fn run(cli: Cli) -> i32 {
         Command::Prop(a) => prop::run(&a),
         Command::Audit(a) => audit::run(&a),
         Command::Hausdorff(a) => hausdorff::run(&a),
+        Command::Offset(a) => offset::run(&a),
         Command::Verify(a) => verify::run(&a),
         Command::Tangency(a) => tangency::run(&a),
     };
