@@ -87,7 +87,10 @@ pub struct OffsetOptions {
     /// Subdivision depth limit per input piece (default 24: segments of
     /// parameter length ≥ 2⁻²⁴).
     pub max_depth: u32,
-    /// Most output segments (default 20 000).
+    /// Most output segments (default 20 000): no span is split once the split
+    /// would exceed it, so a result has at most `max(max_segments, initial spans)`
+    /// segments (the initial spans: one per input piece, more at inflections
+    /// and turns of 0.9π).
     pub max_segments: usize,
     /// Box budget of each segment's certification (default 50 000).
     pub max_boxes: usize,
@@ -466,7 +469,9 @@ pub fn offset(curve: &[Bezier<Rational>], opts: &OffsetOptions) -> Result<Offset
             .collect();
         certifications += outcomes.len();
         let mut next = Vec::new();
+        let mut pending = outcomes.len();
         for o in outcomes {
+            pending -= 1;
             let accepted = o.segment.as_ref().is_some_and(|s| s.error.1 <= opts.tol);
             if accepted {
                 done.extend(o.segment);
@@ -474,7 +479,9 @@ pub fn offset(curve: &[Bezier<Rational>], opts: &OffsetOptions) -> Result<Offset
             }
             let (a, b) = o.task.t;
             let m = a + (b - a) * o.split;
-            let room = done.len() + unreached_segs.len() + next.len() + 2 <= opts.max_segments;
+            // every outcome still to be looked at ends as at least one segment
+            let room =
+                done.len() + unreached_segs.len() + next.len() + pending + 2 <= opts.max_segments;
             if o.task.depth < opts.max_depth && m > a && m < b && room {
                 next.push(Task {
                     piece: o.task.piece,
@@ -576,6 +583,23 @@ pub fn certify_result(
 ) -> Result<(HausdorffBounds, Option<Certificate>), OffsetError> {
     let a = exact_offset_shape(curve, res)?;
     let b = res.approximant_shape()?;
+    if want_certificate && res.reached() {
+        // one search serves both: it runs until `hi ≤ tol` is proven (its `lo`
+        // comes from the same witnesses as a relative search's)
+        let tol = rational_from_f64(res.tol).ok_or_else(|| bad("tol", "not finite"))?;
+        let r = hausdorff(
+            &a,
+            &b,
+            &Config {
+                tol: Some(res.tol),
+                rel,
+                ..Config::default()
+            },
+        )
+        .map_err(|e| bad("certify", e.to_string()))?;
+        let cert = Certificate::new(&a, &b, &tol, &r);
+        return Ok((r, cert));
+    }
     let bounds = hausdorff(
         &a,
         &b,
@@ -585,22 +609,7 @@ pub fn certify_result(
         },
     )
     .map_err(|e| bad("certify", e.to_string()))?;
-    let cert = if want_certificate && res.reached() {
-        let tol = rational_from_f64(res.tol).ok_or_else(|| bad("tol", "not finite"))?;
-        let r = hausdorff(
-            &a,
-            &b,
-            &Config {
-                tol: Some(res.tol),
-                ..Config::default()
-            },
-        )
-        .map_err(|e| bad("certify", e.to_string()))?;
-        Certificate::new(&a, &b, &tol, &r)
-    } else {
-        None
-    };
-    Ok((bounds, cert))
+    Ok((bounds, None))
 }
 
 /// The exact offset of the input, as the union of the exact offsets of the

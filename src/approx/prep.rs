@@ -3,7 +3,7 @@
 //! of the exact offset, and the corners of a piecewise curve.
 
 use crate::curve::{Bezier, V2};
-use crate::poly::{isolate_roots, refine_root, Poly, Span};
+use crate::poly::{isolate_roots, square_free, Poly, RealRoot, Span};
 use crate::scalar::{rational_from_f64, Rational};
 use num_traits::{Signed, Zero};
 
@@ -18,16 +18,60 @@ fn is_zero_poly(p: &Poly<Rational>) -> bool {
     p.coeffs().iter().all(Zero::is_zero)
 }
 
-/// Float enclosure midpoints of the roots of `p` in `(0, 1)`, refined to width
-/// `2⁻³⁰` (exact isolation; the float split point is a heuristic choice).
-fn roots_in_unit(p: &Poly<Rational>) -> Vec<f64> {
+/// Bisects an isolating interval of a simple root of the square-free `sf` down to
+/// width `2^-bits` (exact sign evaluations at dyadic midpoints). `refine_root`
+/// recomputes the square-free part on every call; here it is computed once.
+fn bisect(sf: &Poly<Rational>, r: &RealRoot, bits: u32) -> RealRoot {
+    let w = Rational::new(1.into(), num_bigint::BigInt::from(1u8) << bits);
+    let (mut l, mut h) = (r.lo.clone(), r.hi.clone());
+    let sign = |x: &Rational| {
+        let v = sf.eval(x);
+        if v.is_zero() {
+            0
+        } else if v.is_positive() {
+            1
+        } else {
+            -1
+        }
+    };
+    let sl = sign(&l);
+    if sl == 0 || sign(&h) == sl {
+        return r.clone();
+    }
+    while &h - &l > w {
+        let m = (&l + &h) / Rational::from_integer(2.into());
+        let sm = sign(&m);
+        if sm == 0 {
+            return RealRoot { lo: m.clone(), hi: m };
+        }
+        if sm == sl {
+            l = m;
+        } else {
+            h = m;
+        }
+    }
+    RealRoot { lo: l, hi: h }
+}
+
+/// The roots of `p` in `span`, exactly isolated, refined to width `2^-bits`.
+fn roots_refined(p: &Poly<Rational>, span: &Span, bits: u32) -> Vec<RealRoot> {
     if is_zero_poly(p) {
         return Vec::new();
     }
-    let w = Rational::new(1.into(), (1i64 << 30).into());
-    isolate_roots(p, &Span::open(Rational::zero(), Rational::from_integer(1.into())))
+    let sf = square_free(p);
+    isolate_roots(&sf, span)
         .iter()
-        .map(|r| refine_root(p, r, &w).midpoint().approx_f64())
+        .map(|r| if r.is_exact() { r.clone() } else { bisect(&sf, r, bits) })
+        .collect()
+}
+
+/// Float midpoints of the roots of `p` in `(0, 1)`, refined to width `2⁻³⁰`
+/// (exact isolation; the float split point is a heuristic choice).
+fn roots_in_unit(p: &Poly<Rational>) -> Vec<f64> {
+    let span = Span::open(Rational::zero(), Rational::from_integer(1.into()));
+    roots_refined(p, &span, 30)
+        .iter()
+        .map(|r| r.midpoint().approx_f64())
         .filter(|t| *t > 0.0 && *t < 1.0)
         .collect()
 }
@@ -135,11 +179,9 @@ pub fn offset_cusps(piece: usize, x: &Bezier<Rational>, d: &Rational) -> Vec<Off
     if is_zero_poly(&p) {
         return Vec::new();
     }
-    let w = Rational::new(1.into(), (1i64 << 40).into());
     let span = Span::closed(Rational::zero(), Rational::from_integer(1.into()));
     let mut out = Vec::new();
-    for r in isolate_roots(&p, &span) {
-        let r = refine_root(&p, &r, &w);
+    for r in roots_refined(&p, &span, 40) {
         // the sign of d·κ-numerator at the root: k has no root at a cusp
         // (|x′|³ > 0 on a regular curve), and the isolating interval is narrow.
         let m = r.midpoint();

@@ -221,16 +221,54 @@ fn newton_foot(
     (t, v)
 }
 
+/// A rough lower estimate of `dist(q, piece)`: distance to the centre of nine
+/// samples minus twice their radius (0 when a sample fails).
+fn coarse_lower(p: &Piece, q: (f64, f64)) -> f64 {
+    let (lo, hi) = p.inner;
+    let mut pts = [(0.0, 0.0); 9];
+    for (k, slot) in pts.iter_mut().enumerate() {
+        match jet_f64(p, lo + (hi - lo) * (k as f64 / 8.0)) {
+            Some((x, y)) if x.v.is_finite() && y.v.is_finite() => *slot = (x.v, y.v),
+            _ => return 0.0,
+        }
+    }
+    let c = (
+        pts.iter().map(|p| p.0).sum::<f64>() / 9.0,
+        pts.iter().map(|p| p.1).sum::<f64>() / 9.0,
+    );
+    let r = pts
+        .iter()
+        .map(|p| ((p.0 - c.0).powi(2) + (p.1 - c.1).powi(2)).sqrt())
+        .fold(0.0, f64::max);
+    (((q.0 - c.0).powi(2) + (q.1 - c.1).powi(2)).sqrt() - 2.0 * r).max(0.0)
+}
+
 /// The foot map `(target, t, k)` for the box centred at `s_c` of piece `a`.
 fn foot_map(a: &Piece, s_c: f64, b: &[Piece], s_half: f64) -> Option<(usize, f64, f64)> {
     let (ax, ay) = jet_f64(a, s_c)?;
     let q = (ax.v, ay.v);
     let samples = 32;
-    let (j, t, _) = b
+    // Visit the target pieces nearest first and skip those that a coarse sample
+    // places (with a margin of twice their sampled radius) beyond the best foot
+    // found so far. Only tightness depends on the foot point, never soundness.
+    let mut order: Vec<(usize, f64)> = b
         .iter()
         .enumerate()
-        .filter_map(|(j, p)| foot_f64(p, q, samples).map(|(t, d)| (j, t, d)))
-        .min_by(|x, y| x.2.total_cmp(&y.2))?;
+        .map(|(j, p)| (j, if b.len() > 2 { coarse_lower(p, q) } else { 0.0 }))
+        .collect();
+    order.sort_by(|x, y| x.1.total_cmp(&y.1));
+    let mut found: Option<(usize, f64, f64)> = None;
+    for (j, est) in order {
+        if found.is_some_and(|f| est >= f.2) {
+            break;
+        }
+        if let Some((t, d)) = foot_f64(&b[j], q, samples) {
+            if found.is_none_or(|f| d < f.2) {
+                found = Some((j, t, d));
+            }
+        }
+    }
+    let (j, t, _) = found?;
     let piece = &b[j];
     let (bx, by) = jet_f64(piece, t)?;
     // F(s, t) = (A(s) − B(t))·B′(t) = 0 ⇒ k = −F_s/F_t.

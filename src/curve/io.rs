@@ -16,10 +16,27 @@
 //! {"beziers": [[[0, 0], [1, 1]], [[1, 1], [2, 0], [3, 1]]]}
 //! ```
 //!
-//! Each coordinate is a JSON number or a JSON string holding a decimal
-//! (`"-1.5e-3"`) or fraction (`"-7/6"`) literal. JSON numbers are read from
-//! their digits as written (`0.1` is exactly `1/10`). No other top-level field
-//! is accepted, so a misspelt key is reported instead of ignored.
+//! or a B-spline curve of degree 1 to 63 (at most 100 000 control points),
+//! read as its polynomial pieces (one Bézier curve of the spline's degree per
+//! non-empty knot span, computed exactly; see [`crate::curve::BSpline`]):
+//!
+//! ```json
+//! {"bspline": {"degree": 3, "knots": "clamped", "control_points": [[0, 0], [1, 2], [3, 2], [4, 0]]}}
+//! ```
+//!
+//! `"knots"` is `"clamped"` (open uniform: `degree + 1` zeros, `1, 2, ...`,
+//! `degree + 1` equal end knots; the curve runs from the first control point
+//! to the last), `"periodic"` (closed uniform: the first `degree` control
+//! points are wrapped around, one piece per given control point) or an
+//! explicit non-decreasing list of `control points + degree + 1` numbers.
+//! No other key is accepted inside `"bspline"`.
+//!
+//! Each coordinate (and each knot, and the degree) is a JSON number or a JSON
+//! string holding a decimal (`"-1.5e-3"`) or fraction (`"-7/6"`) literal. JSON
+//! numbers are read from their digits as written (`0.1` is exactly `1/10`).
+//! Exactly one of `"bezier"`, `"beziers"` and `"bspline"` is given, and no
+//! other top-level field is accepted, so a misspelt key is reported instead of
+//! ignored.
 //!
 //! # SVG path data
 //!
@@ -36,14 +53,15 @@
 //!
 //! # Errors and limits
 //!
-//! Every error names *where* (a JSON field path such as `bezier[2][1]`, or a
-//! byte offset in the path data) and *why*; see [`CurveParseError`]. The
-//! parsers never panic and do bounded work: at most 64 control points per
-//! segment, 100 000 segments, 1 000 000 bytes of SVG path data, 4 096
+//! Every error names *where* (a JSON field path such as `bezier[2][1]` or
+//! `bspline.knots[3]`, or a byte offset in the path data) and *why*; see
+//! [`CurveParseError`]. The parsers never panic and do bounded work: at most 64
+//! control points per segment, 100 000 segments, 100 000 B-spline control
+//! points of degree at most 63, 1 000 000 bytes of SVG path data, 4 096
 //! characters per number literal (whose decimal exponent `parse_rational`
 //! bounds further).
 
-use super::{Bezier, V2};
+use super::{BSpline, Bezier, V2};
 use crate::scalar::{parse_rational, ParseNumberError, Rational};
 use serde_json::Value;
 
@@ -53,6 +71,8 @@ pub const MAX_CONTROL_POINTS: usize = 64;
 pub const MAX_SEGMENTS: usize = 100_000;
 /// Largest SVG path data accepted, in bytes.
 pub const MAX_SVG_BYTES: usize = 1_000_000;
+/// Largest `control points × degree³` of a B-spline (the exact conversion's work).
+pub const MAX_BSPLINE_WORK: u128 = 50_000_000;
 /// Longest number literal accepted, in characters.
 pub const MAX_NUMBER_CHARS: usize = 4096;
 
@@ -246,9 +266,140 @@ fn json_bezier(v: &Value, field: &str) -> Result<Bezier<Rational>, CurveParseErr
     Ok(Bezier::new(pts))
 }
 
-/// Reads `{"bezier": [[x, y], ...]}` (one Bézier curve of degree ≥ 1) or
-/// `{"beziers": [[[x, y], ...], ...]}` (a piecewise curve), every coordinate a
-/// JSON number or a numeric string, read exactly.
+/// The keys of the `"bspline"` object.
+const BSPLINE_KEYS: [&str; 3] = ["degree", "knots", "control_points"];
+
+/// Reads the `"bspline"` object `{"degree": p, "knots": "clamped" |
+/// "periodic" | [k0, ...], "control_points": [[x, y], ...]}` into its Bézier
+/// pieces.
+fn json_bspline(v: &Value) -> Result<Vec<Bezier<Rational>>, CurveParseError> {
+    let Value::Object(obj) = v else {
+        return Err(field_err(
+            "bspline",
+            format!(
+                "expected an object {{\"degree\": ..., \"knots\": ..., \"control_points\": ...}}, found {}",
+                describe(v)
+            ),
+        ));
+    };
+    if let Some(key) = obj.keys().find(|k| !BSPLINE_KEYS.contains(&k.as_str())) {
+        return Err(field_err(
+            &format!("bspline.{key}"),
+            "unknown field; expected \"degree\", \"knots\" and \"control_points\"",
+        ));
+    }
+    let get = |key: &str| {
+        obj.get(key)
+            .ok_or_else(|| field_err(&format!("bspline.{key}"), "missing"))
+    };
+
+    // Degree: an exact integer in 1..=63 (checked before any conversion, so
+    // `1e400` or `-3` is an error, not an overflow).
+    let degree_value = json_coordinate(get("degree")?, "bspline.degree")?;
+    let degree = if degree_value.is_integer()
+        && degree_value >= Rational::from_integer(1.into())
+        && degree_value <= Rational::from_integer((MAX_CONTROL_POINTS - 1).into())
+    {
+        usize::try_from(degree_value.to_integer()).unwrap_or(usize::MAX)
+    } else {
+        return Err(field_err(
+            "bspline.degree",
+            format!(
+                "expected an integer from 1 to {}, found {}",
+                MAX_CONTROL_POINTS - 1,
+                match crate::scalar::rational_to_string(&degree_value) {
+                    text if text.len() <= 40 => text,
+                    _ => "a number far out of that range".to_string(),
+                }
+            ),
+        ));
+    };
+
+    let cps = get("control_points")?;
+    let Some(items) = cps.as_array() else {
+        return Err(field_err(
+            "bspline.control_points",
+            format!(
+                "expected a list of control points [[x, y], ...], found {}",
+                describe(cps)
+            ),
+        ));
+    };
+    if items.len() > MAX_SEGMENTS {
+        return Err(CurveParseError::TooLarge {
+            what: format!(
+                "the number of control points ({}) in field `bspline.control_points`",
+                items.len()
+            ),
+            limit: MAX_SEGMENTS,
+        });
+    }
+    // Exact knot insertion costs about degree³ big-number operations per piece
+    // (with numbers of up to ~40·degree bits): bound the work (a few seconds).
+    let work = (items.len() as u128) * (degree as u128).pow(3);
+    if work > MAX_BSPLINE_WORK {
+        return Err(CurveParseError::TooLarge {
+            what: format!(
+                "control points × degree³ ({} × {degree}³) in field `bspline`",
+                items.len()
+            ),
+            limit: MAX_BSPLINE_WORK as usize,
+        });
+    }
+    let pts = items
+        .iter()
+        .enumerate()
+        .map(|(i, p)| json_point(p, &format!("bspline.control_points[{i}]")))
+        .collect::<Result<Vec<_>, _>>()?;
+
+    let knots = get("knots")?;
+    let spline = match knots {
+        Value::String(s) if s == "clamped" => BSpline::clamped_uniform(degree, pts)?,
+        Value::String(s) if s == "periodic" => BSpline::periodic_uniform(degree, pts)?,
+        Value::Array(list) => {
+            // The count first, so that no knot is read in vain.
+            let expected = pts.len() + degree + 1;
+            if list.len() != expected {
+                return Err(field_err(
+                    "bspline.knots",
+                    format!(
+                        "expected {expected} knots (control points + degree + 1 = {} + {degree} + 1), found {}",
+                        pts.len(),
+                        list.len()
+                    ),
+                ));
+            }
+            let ks = list
+                .iter()
+                .enumerate()
+                .map(|(i, k)| json_coordinate(k, &format!("bspline.knots[{i}]")))
+                .collect::<Result<Vec<_>, _>>()?;
+            BSpline::new(degree, ks, pts)?
+        }
+        other => {
+            return Err(field_err(
+                "bspline.knots",
+                format!(
+                    "expected \"clamped\", \"periodic\" or a list of numbers, found {}",
+                    match other {
+                        Value::String(s) => format!("the string {s:?}"),
+                        _ => describe(other),
+                    }
+                ),
+            ))
+        }
+    };
+    Ok(spline.to_beziers())
+}
+
+/// The top-level curve fields of the JSON form; exactly one is given.
+const CURVE_KEYS: [&str; 3] = ["bezier", "beziers", "bspline"];
+
+/// Reads `{"bezier": [[x, y], ...]}` (one Bézier curve of degree ≥ 1),
+/// `{"beziers": [[[x, y], ...], ...]}` (a piecewise curve) or
+/// `{"bspline": {"degree": p, "knots": "clamped" | "periodic" | [k0, ...],
+/// "control_points": [[x, y], ...]}}` (a B-spline, returned as its Bézier
+/// pieces), every number a JSON number or a numeric string, read exactly.
 ///
 /// # Examples
 /// ```
@@ -263,6 +414,12 @@ fn json_bezier(v: &Value, field: &str) -> Result<Bezier<Rational>, CurveParseErr
 /// let pieces = parse_json_curve(r#"{"beziers": [[[0, 0], [1, 1]], [[1, 1], [2, 0], [3, 1]]]}"#);
 /// assert_eq!(pieces.unwrap().len(), 2);
 ///
+/// let spline = r#"{"bspline": {"degree": 2, "knots": "clamped",
+///                  "control_points": [[0, 0], [1, 2], [2, 0], [3, 2]]}}"#;
+/// let pieces = parse_json_curve(spline).unwrap();
+/// assert_eq!(pieces.len(), 2);
+/// assert_eq!(pieces[0].points()[2].x, parse_rational("3/2").unwrap());
+///
 /// assert!(parse_json_curve(r#"{"bezier": [[1, 2]]}"#).is_err()); // too few points
 /// ```
 pub fn parse_json_curve(text: &str) -> Result<Vec<Bezier<Rational>>, CurveParseError> {
@@ -273,24 +430,37 @@ pub fn parse_json_curve(text: &str) -> Result<Vec<Bezier<Rational>>, CurveParseE
         return Err(field_err(
             "(top level)",
             format!(
-                "expected an object {{\"bezier\": ...}} or {{\"beziers\": ...}}, found {}",
+                "expected an object {{\"bezier\": ...}}, {{\"beziers\": ...}} or {{\"bspline\": ...}}, found {}",
                 describe(&doc)
             ),
         ));
     };
-    if let Some(key) = map.keys().find(|k| *k != "bezier" && *k != "beziers") {
+    if let Some(key) = map.keys().find(|k| !CURVE_KEYS.contains(&k.as_str())) {
         return Err(field_err(
             key,
-            "unknown field; expected \"bezier\" (one curve) or \"beziers\" (a list of curves)",
+            "unknown field; expected \"bezier\" (one curve), \"beziers\" (a list of curves) or \"bspline\" (a B-spline)",
         ));
     }
-    match (map.get("bezier"), map.get("beziers")) {
-        (Some(_), Some(_)) => Err(field_err(
-            "beziers",
-            "give either \"bezier\" or \"beziers\", not both",
+    let given: Vec<&str> = CURVE_KEYS
+        .into_iter()
+        .filter(|k| map.contains_key(*k))
+        .collect();
+    match given.as_slice() {
+        [] => Err(field_err(
+            "bezier",
+            "missing; expected \"bezier\" (one curve), \"beziers\" (a list of curves) or \"bspline\" (a B-spline)",
         )),
-        (Some(b), None) => Ok(vec![json_bezier(b, "bezier")?]),
-        (None, Some(list)) => {
+        [first, second, ..] => Err(field_err(
+            second,
+            format!(
+                "give exactly one of \"bezier\", \"beziers\" and \"bspline\", not both \"{first}\" and \"{second}\""
+            ),
+        )),
+        ["bspline"] => json_bspline(&map["bspline"]),
+        ["bezier"] => Ok(vec![json_bezier(&map["bezier"], "bezier")?]),
+        // The one remaining key, "beziers".
+        [_] => {
+            let list = &map["beziers"];
             let Some(items) = list.as_array() else {
                 return Err(field_err(
                     "beziers",
@@ -320,10 +490,6 @@ pub fn parse_json_curve(text: &str) -> Result<Vec<Bezier<Rational>>, CurveParseE
                 .map(|(i, b)| json_bezier(b, &format!("beziers[{i}]")))
                 .collect()
         }
-        (None, None) => Err(field_err(
-            "bezier",
-            "missing; expected \"bezier\" (one curve) or \"beziers\" (a list of curves)",
-        )),
     }
 }
 

@@ -12,6 +12,7 @@
 //! value is compared with the engine's exact result; nothing is hard-coded as
 //! "known wrong".
 
+pub mod offsets;
 pub mod printed;
 mod scans;
 mod seed000;
@@ -105,5 +106,6 @@ pub fn run_all() -> Vec<Claim> {
     seed000::claims(&mut out);
     seed003::claims(&mut out);
     scans::claims(&mut out);
+    offsets::claims(&mut out);
     out
 }

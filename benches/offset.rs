@@ -1,0 +1,68 @@
+//! Offsets with a proven tolerance (issue 5): the whole certified offset of the
+//! test cubic (`data/offset_test_curves.json`, d = 0.5) per method at TOL = 1e-2
+//! and 1e-3 (criterion), the float construction alone per segment (what the
+//! certification costs on top), and one-shot figures printed first: the
+//! certified offset at TOL = 1e-5 with its time per certified search.
+//!
+//! Run: `cargo bench --bench offset`. The peer comparison with kurbo is
+//! `cargo run --release --example offset_compare`.
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use lncert::approx::{g2, lnpair, offset, OffsetMethod, OffsetOptions};
+use lncert::curve::{parse_curve, Bezier, V2};
+use lncert::scalar::{parse_rational, Scalar};
+use std::hint::black_box;
+
+const CUBIC: &str = r#"{"bezier": [[-0.95, 0.7], [-0.3, 0.5], [0.3, -2.5], [0.9, -0.2]]}"#;
+
+fn opts(m: OffsetMethod, tol: f64) -> OffsetOptions {
+    let mut o = OffsetOptions::new(parse_rational("0.5").unwrap(), tol);
+    o.method = m;
+    o
+}
+
+fn bench(c: &mut Criterion) {
+    let curve = parse_curve(CUBIC).unwrap();
+    for m in [OffsetMethod::G2, OffsetMethod::LnPair] {
+        let t = std::time::Instant::now();
+        let r = offset(&curve, &opts(m, 1e-5)).unwrap();
+        let s = t.elapsed().as_secs_f64();
+        println!(
+            "one shot, {} TOL 1e-5: {} segments, {} control points, certified d_H ≤ {:.3e}, {:.2} s, {} certified searches ({:.1} ms each)",
+            m.name(),
+            r.segments.len(),
+            r.control_points(),
+            r.certified_hi,
+            s,
+            r.certifications,
+            1e3 * s / r.certifications as f64
+        );
+    }
+    let mut g = c.benchmark_group("offset");
+    g.sample_size(10);
+    for m in [OffsetMethod::G2, OffsetMethod::LnPair] {
+        for tol in [1e-2, 1e-3] {
+            g.bench_function(format!("{}_tol{tol:e}", m.name()), |b| {
+                b.iter(|| offset(black_box(&curve), &opts(m, tol)).unwrap())
+            });
+        }
+    }
+    // the float constructions alone, on a span of the cubic
+    let x: Bezier<f64> = curve[0].map(|v| v.approx()).restrict(&0.2, &0.4);
+    let n = |t: f64| {
+        let v = x.hodograph().eval(&t);
+        let l = v.norm2().sqrt();
+        V2::new(-v.y / l, v.x / l)
+    };
+    let (n0, n1) = (n(0.0), n(1.0));
+    g.bench_function("construct_g2_segment", |b| {
+        b.iter(|| g2::offset_approximant_f64(black_box(&x), 0.5))
+    });
+    g.bench_function("construct_ln_pair_segment", |b| {
+        b.iter(|| lnpair::ln_pair(black_box(&x), &n0, &n1, 0.5))
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

@@ -1,0 +1,162 @@
+//! Integration tests of `lncert offset`: the documented JSON keys, the control-point
+//! count, a certificate that `lncert verify` accepts, the SVG, arcs and circles,
+//! B-spline input, and exit codes 0/1/2 with bad input naming the flag.
+
+use serde_json::Value;
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+const CUBIC: &str = r#"{"bezier": [[-0.95, 0.7], [-0.3, 0.5], [0.3, -2.5], [0.9, -0.2]]}"#;
+
+fn lncert(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_lncert"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+fn tmp(name: &str, text: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("lncert-offset-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+fn json_of(o: &Output) -> Value {
+    serde_json::from_slice(&o.stdout).unwrap_or_else(|e| {
+        panic!("not JSON ({e}): {}", String::from_utf8_lossy(&o.stdout))
+    })
+}
+
+#[test]
+fn json_document_certificate_and_svg() {
+    let curve = tmp("cubic.json", CUBIC);
+    let cert = curve.with_file_name("cert.json");
+    let svg = curve.with_file_name("offset.svg");
+    let o = lncert(&[
+        "offset",
+        curve.to_str().unwrap(),
+        "--distance",
+        "-0.5",
+        "--tol",
+        "1e-2",
+        "--certificate",
+        cert.to_str().unwrap(),
+        "--svg",
+        svg.to_str().unwrap(),
+        "--json",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let doc = json_of(&o);
+    for key in ["segments", "control_points", "degree", "certified_error", "tol", "pieces", "cusps"] {
+        assert!(doc.get(key).is_some(), "missing key {key}");
+    }
+    let segs = doc["segments"].as_u64().unwrap();
+    assert_eq!(doc["degree"], 6);
+    assert_eq!(doc["control_points"].as_u64().unwrap(), 6 * segs + 1);
+    let e = doc["certified_error"].as_array().unwrap();
+    let (lo, hi) = (e[0].as_f64().unwrap(), e[1].as_f64().unwrap());
+    assert!(0.0 <= lo && lo <= hi && hi <= 1e-2, "[{lo}, {hi}]");
+    assert_eq!(doc["pieces"].as_array().unwrap().len() as u64, segs);
+    assert_eq!(doc["verdict"], "certified");
+    // the certificate re-checks independently
+    let v = lncert(&["verify", cert.to_str().unwrap(), "--json"]);
+    assert_eq!(v.status.code(), Some(0), "{}", String::from_utf8_lossy(&v.stdout));
+    // a tampered certificate does not
+    let mut c: Value = serde_json::from_str(&std::fs::read_to_string(&cert).unwrap()).unwrap();
+    c["tol"] = Value::String("1/1000000".into());
+    let bad = cert.with_file_name("tampered.json");
+    std::fs::write(&bad, c.to_string()).unwrap();
+    assert_eq!(lncert(&["verify", bad.to_str().unwrap()]).status.code(), Some(1));
+    let picture = std::fs::read_to_string(&svg).unwrap();
+    assert!(picture.starts_with("<svg") && picture.contains("curvature") && picture.trim_end().ends_with("</svg>"));
+}
+
+#[test]
+fn ln_pair_text_report_and_cusps() {
+    let curve = tmp("cubic2.json", CUBIC);
+    let o = lncert(&["offset", curve.to_str().unwrap(), "--distance", "0.4", "--tol", "0.1", "--method", "ln-pair"]);
+    assert_eq!(o.status.code(), Some(0));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains("ln-pair") && text.contains("certified"), "{text}");
+    assert_eq!(text.matches("cusp of the exact offset").count(), 2, "{text}");
+}
+
+#[test]
+fn bspline_svg_path_circle_and_arc_inputs() {
+    let spline = tmp(
+        "doc.json",
+        r#"{"bspline": {"degree": 2, "knots": "clamped", "control_points": [[0.7, 0.0], [0.7, 0.06], [0.1, 0.1], [0.1, 0.6], [0.6, 0.6], [0.8, 0.8], [0.8, 1.4], [0.6, 1.6]]}}"#,
+    );
+    let o = lncert(&["offset", spline.to_str().unwrap(), "--distance", "0.4", "--tol", "0.05", "--json"]);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(json_of(&o)["degree"], 5, "quadratic pieces give degree 2 + 3");
+
+    let path = tmp("l.svg", "M 0 0 L 1 0 L 1 -1");
+    let o = lncert(&["offset", path.to_str().unwrap(), "--distance", "1/4", "--tol", "1e-6", "--json"]);
+    assert_eq!(o.status.code(), Some(0));
+    let doc = json_of(&o);
+    assert_eq!(doc["joins"].as_array().unwrap().len(), 1, "a right turn opens a gap on the left");
+    assert_eq!(doc["joins"][0]["arc"]["radius"], "1/4");
+
+    let circle = tmp("circle.json", r#"{"circle": {"center": [0, 0], "radius": 1}}"#);
+    let o = lncert(&["offset", circle.to_str().unwrap(), "--distance", "-0.6", "--tol", "1e-5", "--json"]);
+    assert_eq!(o.status.code(), Some(0));
+    let doc = json_of(&o);
+    assert_eq!(doc["certified_error"], serde_json::json!([0.0, 0.0]));
+    let arcs = doc["arcs"].as_array().unwrap();
+    assert_eq!(arcs.len(), 4);
+    assert!(arcs.iter().all(|a| a["arc"]["radius"] == "8/5"));
+
+    let arc = tmp("arc.json", r#"{"arc": {"center": [0, 0], "radius": 1, "from": [1, 0], "to": [0, 1], "clockwise": true}}"#);
+    let o = lncert(&["offset", arc.to_str().unwrap(), "--distance", "1/2", "--tol", "1e-5", "--json"]);
+    assert_eq!(json_of(&o)["arcs"][0]["arc"]["radius"], "3/2", "clockwise: the left normal points out");
+}
+
+#[test]
+fn unreachable_tolerance_exits_1() {
+    let curve = tmp("cubic3.json", CUBIC);
+    let o = lncert(&["offset", curve.to_str().unwrap(), "--distance", "0.5", "--tol", "1e-8", "--max-depth", "1", "--json"]);
+    assert_eq!(o.status.code(), Some(1));
+    let doc = json_of(&o);
+    assert_eq!(doc["verdict"], "not reached");
+    assert!(!doc["unreached"].as_array().unwrap().is_empty());
+}
+
+#[test]
+fn bad_input_exits_2_naming_the_flag() {
+    let curve = tmp("cubic4.json", CUBIC);
+    let c = curve.to_str().unwrap();
+    let cases: [(&[&str], &str); 8] = [
+        (&["--distance", "0", "--tol", "0.1"], "--distance"),
+        (&["--distance", "abc", "--tol", "0.1"], "--distance"),
+        (&["--distance", "0.5", "--tol", "0"], "--tol"),
+        (&["--distance", "0.5", "--tol", "-1"], "--tol"),
+        (&["--distance", "0.5", "--tol", "1e-300"], "--tol"),
+        (&["--distance", "0.5", "--tol", "NaN"], "--tol"),
+        (&["--distance", "0.5", "--tol", "0.1", "--method", "g3"], "--method"),
+        (&["--distance", "0.5", "--tol", "0.1", "--max-depth", "99"], "--max-depth"),
+    ];
+    for (args, flag) in cases {
+        let mut all = vec!["offset", c];
+        all.extend_from_slice(args);
+        let o = lncert(&all);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains(flag), "{args:?}: {err}");
+    }
+    for (name, text) in [
+        ("cusp.json", r#"{"bezier": [[0, 0], [1, 1], [0, 1], [1, 0]]}"#),
+        ("broken.json", r#"{"bezier": [[0, 0], [1, "x"]]}"#),
+        ("nan.json", r#"{"bezier": [[0, 0], [1, "NaN"]]}"#),
+        ("circle0.json", r#"{"circle": {"center": [0, 0], "radius": 0}}"#),
+        ("empty.svg", ""),
+    ] {
+        let p = tmp(name, text);
+        let o = lncert(&["offset", p.to_str().unwrap(), "--distance", "0.5", "--tol", "0.1"]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{name}: {err}");
+        assert!(err.contains("CURVE"), "{name}: {err}");
+    }
+}
