@@ -199,7 +199,19 @@ fn global_bounds(
     approx: &[Bezier<f64>],
     tol: Option<f64>,
 ) -> Result<HausdorffBounds, String> {
-    let a = ShapeDesc::offset(input.to_vec(), d.clone()).map_err(|e| e.to_string())?;
+    // The exact offset of each input piece split exactly into 8 sub-pieces (the
+    // same point set): short pieces keep the certification's foot-point search
+    // on the right branch where the offset folds over itself near cusps.
+    let split: Vec<Bezier<Rational>> = input
+        .iter()
+        .flat_map(|x| {
+            (0..8).map(move |k| {
+                let q = |n: i64| Rational::new(n.into(), 8.into());
+                x.restrict(&q(k), &q(k + 1))
+            })
+        })
+        .collect();
+    let a = ShapeDesc::offset(split, d.clone()).map_err(|e| e.to_string())?;
     let pieces = approx
         .iter()
         .map(exact_bezier)

@@ -4,14 +4,14 @@
 
 mod common;
 
-use common::q;
+use common::{exact_dist2, q};
 use lncert::certify::cert::digest_of;
 use lncert::certify::verify::verify;
 use lncert::certify::{hausdorff, ArcDesc, Certificate, Config, ShapeDesc};
 use lncert::curve::{Bezier, V2};
 use lncert::ln::circle::ArcApprox;
-use lncert::poly::{isolate_roots, refine_root, Poly, Span};
-use lncert::scalar::{interval_from_rational, parse_rational, Interval, Rational, Scalar};
+use lncert::poly::{Poly, Span};
+use lncert::scalar::{interval_from_rational, parse_rational, Rational, Scalar};
 use proptest::prelude::*;
 use serde_json::Value;
 
@@ -172,29 +172,6 @@ fn identical_shapes_terminate_at_zero() {
 }
 
 // ----- independent exact distances ------------------------------------------------
-
-/// Encloses `dist(p, B)²` for a rational point `p` and a polynomial Bézier `B`:
-/// the minimum of `|p − B(t)|²` over the end points and the real roots in `(0, 1)`
-/// of `(B(t) − p)·B′(t)`, isolated exactly by Sturm sequences and refined.
-fn exact_dist2(p: &V2<Rational>, b: &Bezier<Rational>) -> Interval {
-    let (x, y) = b.power_coords();
-    let fx = x.sub(&Poly::new(vec![p.x.clone()]));
-    let fy = y.sub(&Poly::new(vec![p.y.clone()]));
-    let foot = fx.mul(&x.derivative()).add(&fy.mul(&y.derivative()));
-    let d2 = fx.mul(&fx).add(&fy.mul(&fy));
-    let d2i = d2.map(interval_from_rational);
-    let mut best =
-        interval_from_rational(&d2.eval(&q(0, 1))).min(interval_from_rational(&d2.eval(&q(1, 1))));
-    let zero_poly = foot.coeffs().iter().all(|c| *c == Rational::default());
-    if !zero_poly {
-        for r in isolate_roots(&foot, &Span::unit_open()) {
-            let r = refine_root(&foot, &r, &parse_rational("1e-12").unwrap());
-            let t = interval_from_rational(&r.lo).convex_hull(interval_from_rational(&r.hi));
-            best = best.min(d2i.eval(&t));
-        }
-    }
-    best
-}
 
 fn small_bezier(deg: usize) -> impl Strategy<Value = Bezier<Rational>> {
     prop::collection::vec((-8i64..=8, -8i64..=8), deg + 1).prop_map(|pts| {

@@ -4,29 +4,16 @@
 //! of rational functions (cross-multiplied numerators equal as polynomials).
 //! Each test names the proof obligation it discharges (see `proofs/`).
 
+mod common;
+use common::symbolic::{assert_id, div, k, v};
 use lncert::curve::V2;
 use lncert::ln::circle::ArcApprox;
 use lncert::ln::cubic::{deltas_from_rho, deltas_from_tau, LnFrame, Tau};
 use lncert::ln::hermite::{convolve_normal_forms, normal_form, HermiteData};
 use lncert::ln::pair::{convolution_deltas, CompatiblePair};
 use lncert::poly::{identity_holds, poly_in, Poly, RatFunc};
-use lncert::scalar::{frac, Scalar};
+use lncert::scalar::Scalar;
 
-fn v(i: usize) -> RatFunc {
-    RatFunc::var(i)
-}
-fn k(p: i64, q: i64) -> RatFunc {
-    frac(p, q)
-}
-fn div(a: RatFunc, b: RatFunc) -> RatFunc {
-    a.div(&b).expect("nonzero denominator")
-}
-fn assert_id(lhs: &RatFunc, rhs: &RatFunc, what: &str) {
-    assert!(
-        identity_holds(lhs, rhs),
-        "identity fails: {what}\n  lhs = {lhs}\n  rhs = {rhs}"
-    );
-}
 fn symbolic_frame(first_var: usize) -> LnFrame<RatFunc> {
     let p = |i: usize| V2::new(v(first_var + i), v(first_var + i + 1));
     LnFrame::new_unchecked(p(0), p(2), p(4))

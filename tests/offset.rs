@@ -5,13 +5,12 @@
 
 mod common;
 
-use common::q;
+use common::{exact_dist2, q};
 use lncert::approx::arc::{offset_arc, ArcOffset, TravelledArc};
 use lncert::approx::prep::Junction;
 use lncert::approx::{corners, lnpair, offset, OffsetMethod, OffsetOptions, OffsetResult};
 use lncert::certify::ArcDesc;
 use lncert::curve::{parse_curve, Bezier, V2};
-use lncert::poly::{isolate_roots, refine_root, Poly, Span};
 use lncert::scalar::{interval_from_rational, parse_rational, Interval, Rational, Scalar};
 use proptest::prelude::*;
 
@@ -141,26 +140,6 @@ fn both_methods_reach_every_tolerance_on_the_test_cubic() {
 }
 
 // ----- soundness against exact distances -----
-
-/// Encloses `dist(p, B)²` for a rational point and a polynomial Bézier: the minimum of
-/// `|p − B(t)|²` over the ends and the exactly isolated roots of `(B − p)·B′` in (0, 1).
-fn exact_dist2(p: &V2<Rational>, b: &Bezier<Rational>) -> Interval {
-    let (x, y) = b.power_coords();
-    let fx = x.sub(&Poly::new(vec![p.x.clone()]));
-    let fy = y.sub(&Poly::new(vec![p.y.clone()]));
-    let foot = fx.mul(&x.derivative()).add(&fy.mul(&y.derivative()));
-    let d2 = fx.mul(&fx).add(&fy.mul(&fy));
-    let d2i = d2.map(interval_from_rational);
-    let mut best = interval_from_rational(&d2.eval(&q(0, 1))).min(interval_from_rational(&d2.eval(&q(1, 1))));
-    if !foot.coeffs().iter().all(|c| *c == Rational::default()) {
-        for r in isolate_roots(&foot, &Span::unit_open()) {
-            let r = refine_root(&foot, &r, &parse_rational("1e-12").unwrap());
-            let t = interval_from_rational(&r.lo).convex_hull(interval_from_rational(&r.hi));
-            best = best.min(d2i.eval(&t));
-        }
-    }
-    best
-}
 
 /// A rational point within `eps` of the exact offset point `x(t) + d N(t)` (interval
 /// enclosure of the irrational normal), and `eps`.

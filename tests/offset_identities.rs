@@ -16,32 +16,18 @@
 //! (counter-clockwise, left turning — the paper's case) or `s = −1` (clockwise). As a complex
 //! number `x′(t) = s γ l · i e^{i t0} e^{i s l t}`; the centre `c0` does not enter.
 
+mod common;
+use common::symbolic::{assert_id, div, k, v};
 use lncert::approx::g2::{rot_cw, solve_alpha, system, G2Ends};
 use lncert::curve::V2;
 use lncert::poly::{identity_holds, RatFunc};
 use lncert::scalar::{frac, rational_from_f64, Rational, Scalar, Sign};
-use std::ops::{Add, Mul, Neg, Sub};
 
 const GAMMA: usize = 0;
 const LINV: usize = 1;
 const TAU: usize = 2;
 const SIGMA: usize = 3;
 
-fn v(i: usize) -> RatFunc {
-    RatFunc::var(i)
-}
-fn k(p: i64, q: i64) -> RatFunc {
-    frac(p, q)
-}
-fn div(a: RatFunc, b: RatFunc) -> RatFunc {
-    a.div(&b).expect("nonzero denominator")
-}
-fn assert_id(lhs: &RatFunc, rhs: &RatFunc, what: &str) {
-    assert!(
-        identity_holds(lhs, rhs),
-        "identity fails: {what}\n  lhs = {lhs}\n  rhs = {rhs}"
-    );
-}
 fn assert_v2_id(lhs: &V2<RatFunc>, rhs: &V2<RatFunc>, what: &str) {
     assert_id(&lhs.x, &rhs.x, &format!("{what} (x)"));
     assert_id(&lhs.y, &rhs.y, &format!("{what} (y)"));

@@ -510,7 +510,10 @@ pub(crate) fn one_sided(
                 .iter()
                 .filter_map(|p| foot_f64(p, q, 32).map(|r| r.1))
                 .fold(f64::INFINITY, f64::min);
-            if est <= *lo {
+            // a witness cannot raise lo above its float distance; below the
+            // absolute gap it is not worth a lower-distance search (coinciding
+            // shapes would run every witness to its budget)
+            if est <= *lo || est <= abs {
                 return;
             }
             let l = lower_distance((x.v, y.v), b, gap_rel, cfg.max_boxes.clamp(16, 4_000));

@@ -2,9 +2,10 @@
 //! compatible pairs and Hermite data, with planted boundary cases.
 #![allow(dead_code)]
 
-use lncert::curve::V2;
+use lncert::curve::{Bezier, V2};
 use lncert::ln::cubic::LnFrame;
-use lncert::scalar::{frac, Rational};
+use lncert::poly::{isolate_roots, refine_root, Poly, Span};
+use lncert::scalar::{frac, interval_from_rational, parse_rational, Interval, Rational};
 use proptest::prelude::*;
 
 /// Cases per property: `LNCERT_PROPTEST_CASES` (default 2000, the CI setting).
@@ -103,4 +104,51 @@ pub fn end_ratios_admissible() -> impl Strategy<Value = (Rational, Rational)> {
             Some(if neg { (-c0, -c1) } else { (c0, c1) })
         },
     )
+}
+
+/// Encloses `dist(p, B)²` for a rational point `p` and a polynomial Bézier `B`:
+/// the minimum of `|p − B(t)|²` over the end points and the real roots in `(0, 1)`
+/// of `(B(t) − p)·B′(t)`, isolated exactly by Sturm sequences and refined.
+pub fn exact_dist2(p: &V2<Rational>, b: &Bezier<Rational>) -> Interval {
+    let (x, y) = b.power_coords();
+    let fx = x.sub(&Poly::new(vec![p.x.clone()]));
+    let fy = y.sub(&Poly::new(vec![p.y.clone()]));
+    let foot = fx.mul(&x.derivative()).add(&fy.mul(&y.derivative()));
+    let d2 = fx.mul(&fx).add(&fy.mul(&fy));
+    let d2i = d2.map(interval_from_rational);
+    let mut best =
+        interval_from_rational(&d2.eval(&frac::<Rational>(0, 1))).min(interval_from_rational(&d2.eval(&frac::<Rational>(1, 1))));
+    let zero_poly = foot.coeffs().iter().all(|c| *c == Rational::default());
+    if !zero_poly {
+        for r in isolate_roots(&foot, &Span::unit_open()) {
+            let r = refine_root(&foot, &r, &parse_rational("1e-12").unwrap());
+            let t = interval_from_rational(&r.lo).convex_hull(interval_from_rational(&r.hi));
+            best = best.min(d2i.eval(&t));
+        }
+    }
+    best
+}
+
+
+/// Symbolic helpers of the identity tests: the `i`-th variable, a constant, a
+/// quotient, and an identity assertion.
+pub mod symbolic {
+    use lncert::poly::{identity_holds, RatFunc};
+    use lncert::scalar::{frac, Scalar};
+
+    pub fn v(i: usize) -> RatFunc {
+        RatFunc::var(i)
+    }
+    pub fn k(p: i64, q: i64) -> RatFunc {
+        frac(p, q)
+    }
+    pub fn div(a: RatFunc, b: RatFunc) -> RatFunc {
+        a.div(&b).expect("nonzero denominator")
+    }
+    pub fn assert_id(lhs: &RatFunc, rhs: &RatFunc, what: &str) {
+        assert!(
+            identity_holds(lhs, rhs),
+            "identity fails: {what}\n  lhs = {lhs}\n  rhs = {rhs}"
+        );
+    }
 }
