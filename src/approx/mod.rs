@@ -241,6 +241,8 @@ struct Outcome {
     segment: Option<OffsetSegment>,
     /// Where to split when not accepted.
     split: f64,
+    /// Splitting would not help (see `certify_segment`).
+    stuck: bool,
 }
 
 fn check_options(
@@ -345,21 +347,26 @@ fn construct(
     }
 }
 
+/// Certifies one span: the segment (if constructed and certified at all), the
+/// split point, and whether splitting is pointless: the search ran out of its
+/// box budget undecided while its lower bound is far below `tol` — the
+/// approximant is (nearly) exact and only the certification is slow (bounds on
+/// coinciding curves shrink like `w^{3/2}`), which halving does not change.
 fn certify_segment(
     x: &Bezier<Rational>,
     task: &Task,
     opts: &OffsetOptions,
     d: f64,
-) -> (Option<OffsetSegment>, f64) {
+) -> (Option<OffsetSegment>, f64, bool) {
     let split = 0.5;
     let Some(exact) = sub_exact(x, task.t) else {
-        return (None, split);
+        return (None, split, false);
     };
     let Some((bez, pair)) = construct(opts.method, x, task.t, d) else {
-        return (None, split_point(opts.method, x, task.t));
+        return (None, split_point(opts.method, x, task.t), false);
     };
     let Some(appr) = exact_bezier(&bez) else {
-        return (None, split);
+        return (None, split, false);
     };
     let a = ShapeDesc::Offset {
         curve: vec![exact.clone()],
@@ -372,7 +379,7 @@ fn certify_segment(
         ..Config::default()
     };
     let Ok(r) = hausdorff(&a, &b, &cfg) else {
-        return (None, split);
+        return (None, split, false);
     };
     let paper_error = match (&pair, opts.paper_error) {
         (Some(p), true) => paper_error_of(x, task.t, &exact, p, d),
@@ -385,7 +392,8 @@ fn certify_segment(
         error: (r.lo, r.hi),
         paper_error,
     };
-    (Some(seg), split_point(opts.method, x, task.t))
+    let stuck = r.incomplete() && r.hi > opts.tol && r.lo * 64.0 < opts.tol;
+    (Some(seg), split_point(opts.method, x, task.t), stuck)
 }
 
 fn split_point(method: OffsetMethod, x: &Bezier<Rational>, t: (f64, f64)) -> f64 {
@@ -459,11 +467,12 @@ pub fn offset(curve: &[Bezier<Rational>], opts: &OffsetOptions) -> Result<Offset
         let outcomes: Vec<Outcome> = tasks
             .par_iter()
             .map(|task| {
-                let (segment, s) = certify_segment(&curve[task.piece], task, opts, d);
+                let (segment, s, stuck) = certify_segment(&curve[task.piece], task, opts, d);
                 Outcome {
                     task: task.clone(),
                     segment,
                     split: s,
+                    stuck,
                 }
             })
             .collect();
@@ -482,7 +491,7 @@ pub fn offset(curve: &[Bezier<Rational>], opts: &OffsetOptions) -> Result<Offset
             // every outcome still to be looked at ends as at least one segment
             let room =
                 done.len() + unreached_segs.len() + next.len() + pending + 2 <= opts.max_segments;
-            if o.task.depth < opts.max_depth && m > a && m < b && room {
+            if !o.stuck && o.task.depth < opts.max_depth && m > a && m < b && room {
                 next.push(Task {
                     piece: o.task.piece,
                     t: (a, m),

@@ -154,7 +154,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
         });
         print_out(&format!("{}\n", serde_json::to_string_pretty(&doc).unwrap_or_default()));
     } else {
-        print_out(&text_report(&res, method, (lo, hi), verdict, build, total, cert_note));
+        print_out(&text_report(&res, method, &a.tol, (lo, hi), verdict, (build, total), cert_note));
     }
     Ok(if verdict == "certified" { 0 } else { 1 })
 }
@@ -162,17 +162,17 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
 fn text_report(
     res: &OffsetResult,
     method: OffsetMethod,
+    tol_text: &str,
     (lo, hi): (f64, f64),
     verdict: &str,
-    build: f64,
-    total: f64,
+    (build, total): (f64, f64),
     cert_note: Option<String>,
 ) -> String {
     let mut s = format!(
-        "offset at {} ({}, tol {:e}): {} segment(s) of degree {}, {} control points\n",
+        "offset at {} ({}, tol {}): {} segment(s) of degree {}, {} control points\n",
         res.distance,
         method.name(),
-        res.tol,
+        tol_text,
         res.segments.len(),
         res.degree(),
         res.control_points()
