@@ -234,6 +234,9 @@ struct Task {
     piece: usize,
     t: (f64, f64),
     depth: u32,
+    /// The parent's certification ran out of budget on a (nearly) exact
+    /// approximant; a second such level stops splitting.
+    stuck_before: bool,
 }
 
 struct Outcome {
@@ -348,10 +351,11 @@ fn construct(
 }
 
 /// Certifies one span: the segment (if constructed and certified at all), the
-/// split point, and whether splitting is pointless: the search ran out of its
-/// box budget undecided while its lower bound is far below `tol` — the
-/// approximant is (nearly) exact and only the certification is slow (bounds on
-/// coinciding curves shrink like `w^{3/2}`), which halving does not change.
+/// split point, and whether the search ran out of its box budget undecided while
+/// its lower bound is far below `tol` ("stuck"). Near a cusp halving helps; on a
+/// (nearly) exact approximant it does not (bounds on coinciding curves shrink
+/// like `w^{3/2}` however the span is cut), so the driver splits a stuck span
+/// once and gives up when a half is stuck again.
 fn certify_segment(
     x: &Bezier<Rational>,
     task: &Task,
@@ -457,6 +461,7 @@ pub fn offset(curve: &[Bezier<Rational>], opts: &OffsetOptions) -> Result<Offset
                 piece: i,
                 t,
                 depth: 0,
+                stuck_before: false,
             });
         }
     }
@@ -491,16 +496,19 @@ pub fn offset(curve: &[Bezier<Rational>], opts: &OffsetOptions) -> Result<Offset
             // every outcome still to be looked at ends as at least one segment
             let room =
                 done.len() + unreached_segs.len() + next.len() + pending + 2 <= opts.max_segments;
-            if !o.stuck && o.task.depth < opts.max_depth && m > a && m < b && room {
+            let give_up = o.stuck && o.task.stuck_before;
+            if !give_up && o.task.depth < opts.max_depth && m > a && m < b && room {
                 next.push(Task {
                     piece: o.task.piece,
                     t: (a, m),
                     depth: o.task.depth + 1,
+                    stuck_before: o.stuck,
                 });
                 next.push(Task {
                     piece: o.task.piece,
                     t: (m, b),
                     depth: o.task.depth + 1,
+                    stuck_before: o.stuck,
                 });
             } else if let Some(s) = o.segment {
                 unreached_segs.push(s);

@@ -24,6 +24,10 @@ use lncert::scalar::{interval_from_rational, Rational};
 use serde_json::{json, Value};
 use std::path::PathBuf;
 
+/// Relative gap of the global bounds `[lo, hi]` printed as `certified_error`
+/// (the proof of `hi ≤ tol` is per segment and does not depend on it).
+pub const GLOBAL_REL: f64 = 1e-2;
+
 /// Arguments of `lncert offset`.
 #[derive(clap::Args, Debug)]
 pub struct OffsetArgs {
@@ -53,6 +57,9 @@ pub struct OffsetArgs {
     /// Most output segments.
     #[arg(long, default_value_t = 20_000)]
     pub max_segments: usize,
+    /// Box budget of each segment's certified search (per direction).
+    #[arg(long, default_value_t = 50_000)]
+    pub max_boxes: usize,
     /// Print one JSON document.
     #[arg(long)]
     pub json: bool,
@@ -96,11 +103,15 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     opts.method = method;
     opts.max_depth = a.max_depth;
     opts.max_segments = a.max_segments;
+    if a.max_boxes == 0 || a.max_boxes > 50_000_000 {
+        return Err(bad("--max-boxes", "out of range (1 to 50000000)"));
+    }
+    opts.max_boxes = a.max_boxes;
     opts.paper_error = a.paper_error;
     let start = std::time::Instant::now();
     let res = offset(&curve, &opts).map_err(offset_err)?;
     let build = start.elapsed().as_secs_f64();
-    let (global, cert) = certify_result(&curve, &res, 1e-2, a.certificate.is_some())
+    let (global, cert) = certify_result(&curve, &res, GLOBAL_REL, a.certificate.is_some())
         .map_err(offset_err)?;
     let total = start.elapsed().as_secs_f64();
     let lo = global.lo;
