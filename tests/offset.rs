@@ -358,3 +358,50 @@ fn bad_input_is_a_typed_error_naming_the_field() {
     assert!(field_of(&huge, q(1, 2), 1e-2).starts_with("curve"));
     assert!(offset(&[], &OffsetOptions::new(q(1, 2), 1e-2)).is_err());
 }
+
+/// Seed 000's error measure (8), `d_H(p, pa) + |r| d_H(c, ca)`, is evaluated for every
+/// LN-pair segment on request (finite, positive) — and it does **not** bound the
+/// offset's error: on the span of the test cubic (d = 1/2) that contains a cusp of the
+/// exact offset, a rigorous upper bound of (8) (both Hausdorff distances certified,
+/// `d_H(c, ca)` against the exact arc of the span's normals) lies below the certified
+/// lower bound of `d_H(p ∗ c_r, pa + ca_r)`. The paper's acceptance test would accept
+/// that span at a TOL between the two. lncert accepts on the certified offset error.
+#[test]
+fn ln_pair_paper_error_does_not_bound_the_offset_error() {
+    use lncert::approx::prep::unit_left_normal;
+    use lncert::certify::{hausdorff, Config, ShapeDesc};
+    let c = parse_curve(TEST_CUBIC).unwrap();
+    let d = parse_rational("0.5").unwrap();
+    let mut o = opts("0.5", 1e-2, OffsetMethod::LnPair);
+    o.paper_error = true;
+    let r = offset(&c, &o).unwrap();
+    assert!(r.reached());
+    let cfg = Config { rel: 1e-3, ..Config::default() };
+    let mut counterexamples = 0;
+    for s in &r.segments {
+        let p = s.paper_error.expect("evaluated for every LN-pair segment");
+        assert!(p.is_finite() && p > 0.0, "{p}");
+        let (t0, t1) = (lncert::scalar::rational_from_f64(s.t.0).unwrap(), lncert::scalar::rational_from_f64(s.t.1).unwrap());
+        let exact = c[0].restrict(&t0, &t1);
+        let sub = approx(&exact);
+        let (n0, n1) = (unit_left_normal(&c[0], s.t.0).unwrap(), unit_left_normal(&c[0], s.t.1).unwrap());
+        let pair = lnpair::ln_pair(&sub, &n0, &n1, 0.5).unwrap();
+        assert_eq!(pair.offset, s.bezier, "the same construction as the driver's");
+        // rigorous (8): certified d_H(p, pa) + certified d_H(c_r, ca_r), c_r the exact
+        // arc of radius r between the exact normals (directions rot90(x′(tᵢ)))
+        let h = c[0].hodograph();
+        let (e0, e1) = (h.eval(&t0).rot90(), h.eval(&t1).rot90());
+        let (from, to) = if e0.cross(&e1) > q(0, 1) { (e0, e1) } else { (e1, e0) };
+        let arc = ShapeDesc::arc(ArcDesc { center: V2::new(q(0, 1), q(0, 1)), radius: d.clone(), from, to }).unwrap();
+        let ca = ShapeDesc::curve(vec![lncert::approx::exact_bezier(&pair.ca).unwrap()]).unwrap();
+        let pa = ShapeDesc::curve(vec![lncert::approx::exact_bezier(&pair.pa).unwrap()]).unwrap();
+        let dp = hausdorff(&ShapeDesc::curve(vec![exact]).unwrap(), &pa, &cfg).unwrap();
+        let dc = hausdorff(&arc, &ca, &cfg).unwrap();
+        let eq8_hi = (Interval::try_from((dp.hi, dp.hi)).unwrap() + Interval::try_from((dc.hi, dc.hi)).unwrap()).sup();
+        if eq8_hi < s.error.0 {
+            counterexamples += 1;
+            println!("t = {:?}: eq. (8) ≤ {eq8_hi:.6e} < {:.6e} ≤ d_H(offset, pa + ca)", s.t, s.error.0);
+        }
+    }
+    assert!(counterexamples >= 1, "eq. (8) bounded every segment here");
+}
