@@ -702,11 +702,22 @@ fn too_many_control_points() {
 /// The exact conversion's work is bounded: control points × degree³ ≤ MAX_BSPLINE_WORK.
 #[test]
 fn conversion_work_is_bounded() {
-    let pts = |n: usize| (0..n).map(|i| format!("[{i}, {}]", i % 5)).collect::<Vec<_>>().join(",");
+    let pts = |n: usize| {
+        (0..n)
+            .map(|i| format!("[{i}, {}]", i % 5))
+            .collect::<Vec<_>>()
+            .join(",")
+    };
     let doc = |deg: usize, n: usize| {
-        format!(r#"{{"bspline": {{"degree": {deg}, "knots": "clamped", "control_points": [{}]}}}}"#, pts(n))
+        format!(
+            r#"{{"bspline": {{"degree": {deg}, "knots": "clamped", "control_points": [{}]}}}}"#,
+            pts(n)
+        )
     };
     let e = parse_json_curve(&doc(63, 1000)).unwrap_err();
-    assert!(matches!(&e, CurveParseError::TooLarge { what, .. } if what.contains("degree³")), "{e}");
+    assert!(
+        matches!(&e, CurveParseError::TooLarge { what, .. } if what.contains("degree³")),
+        "{e}"
+    );
     assert_eq!(parse_json_curve(&doc(3, 2000)).unwrap().len(), 1997);
 }

@@ -39,11 +39,19 @@ fn approx(b: &Bezier<Rational>) -> Bezier<f64> {
 fn exact_offset_jet(x: &Bezier<f64>, d: f64, t: f64) -> (V2<f64>, V2<f64>, f64) {
     let d1 = x.hodograph();
     let v = d1.eval(&t);
-    let a = if d1.degree() == 0 { V2::new(0.0, 0.0) } else { d1.hodograph().eval(&t) };
+    let a = if d1.degree() == 0 {
+        V2::new(0.0, 0.0)
+    } else {
+        d1.hodograph().eval(&t)
+    };
     let s = v.norm2().sqrt();
     let k = v.cross(&a) / (s * s * s);
     let n = V2::new(-v.y / s, v.x / s);
-    (x.eval(&t).add(&n.scale(&d)), v.scale(&(1.0 - d * k)), k / (1.0 - d * k).abs())
+    (
+        x.eval(&t).add(&n.scale(&d)),
+        v.scale(&(1.0 - d * k)),
+        k / (1.0 - d * k).abs(),
+    )
 }
 
 fn curvature(b: &Bezier<f64>, u: f64) -> f64 {
@@ -70,7 +78,10 @@ fn assert_c1_g2(c: &[Bezier<Rational>], r: &OffsetResult) {
             let (p, dp, k) = exact_offset_jet(&x, d, t);
             let a = s.bezier.eval(&u);
             let da = s.bezier.hodograph().eval(&u);
-            assert!(close(a.x, p.x, 1e-12) && close(a.y, p.y, 1e-12), "position at t={t}");
+            assert!(
+                close(a.x, p.x, 1e-12) && close(a.y, p.y, 1e-12),
+                "position at t={t}"
+            );
             assert!(
                 close(da.x, dp.x * h, 1e-7) && close(da.y, dp.y * h, 1e-7),
                 "C1 at t={t}: {da:?} vs {:?}",
@@ -125,13 +136,20 @@ fn both_methods_reach_every_tolerance_on_the_test_cubic() {
                 assert!(r.reached(), "{m:?} {d} {tol}");
                 assert!(r.certified_hi <= tol);
                 let deg = if m == OffsetMethod::G2 { 6 } else { 3 };
-                assert_eq!(r.control_points(), deg * r.segments.len() + 1, "one connected spline");
+                assert_eq!(
+                    r.control_points(),
+                    deg * r.segments.len() + 1,
+                    "one connected spline"
+                );
                 // segments tile [0, 1] exactly
                 assert_eq!(r.segments[0].t.0, 0.0);
                 assert_eq!(r.segments.last().unwrap().t.1, 1.0);
                 for w in r.segments.windows(2) {
                     assert_eq!(w[0].t.1, w[1].t.0);
-                    let (e, s) = (w[0].bezier.points().last().unwrap(), &w[1].bezier.points()[0]);
+                    let (e, s) = (
+                        w[0].bezier.points().last().unwrap(),
+                        &w[1].bezier.points()[0],
+                    );
                     assert_eq!(e, s, "joint shared exactly");
                 }
             }
@@ -159,16 +177,26 @@ fn offset_point(x: &Bezier<Rational>, d: &Rational, t: &Rational) -> (V2<Rationa
 }
 
 fn exact_segments(r: &OffsetResult) -> Vec<Bezier<Rational>> {
-    r.segments.iter().map(|s| lncert::approx::exact_bezier(&s.bezier).unwrap()).collect()
+    r.segments
+        .iter()
+        .map(|s| lncert::approx::exact_bezier(&s.bezier).unwrap())
+        .collect()
 }
 
-fn assert_sound(c: &[Bezier<Rational>], r: &OffsetResult, samples: i64) -> Result<(), TestCaseError> {
+fn assert_sound(
+    c: &[Bezier<Rational>],
+    r: &OffsetResult,
+    samples: i64,
+) -> Result<(), TestCaseError> {
     let segs = exact_segments(r);
     for (i, x) in c.iter().enumerate() {
         for k in 0..=samples {
             let t = q(k, samples);
             let (p, eps) = offset_point(x, &r.distance, &t);
-            let d2 = segs.iter().map(|b| exact_dist2(&p, b)).fold(Interval::ENTIRE, |a, b| a.min(b));
+            let d2 = segs
+                .iter()
+                .map(|b| exact_dist2(&p, b))
+                .fold(Interval::ENTIRE, |a, b| a.min(b));
             let lower = d2.inf().max(0.0).sqrt() - eps;
             prop_assert!(
                 lower <= r.certified_hi * (1.0 + 1e-12),
@@ -182,7 +210,11 @@ fn assert_sound(c: &[Bezier<Rational>], r: &OffsetResult, samples: i64) -> Resul
 
 fn regular_cubic() -> impl Strategy<Value = Bezier<Rational>> {
     prop::collection::vec((-8i64..=8, -8i64..=8), 4).prop_map(|pts| {
-        Bezier::new(pts.into_iter().map(|(x, y)| V2::new(q(x, 4), q(y, 4))).collect())
+        Bezier::new(
+            pts.into_iter()
+                .map(|(x, y)| V2::new(q(x, 4), q(y, 4)))
+                .collect(),
+        )
     })
 }
 
@@ -232,7 +264,11 @@ fn cusps_are_where_the_radius_of_curvature_equals_the_distance() {
         };
         for cusp in &r.cusps {
             let (a, b) = (cusp.t.0.approx() - 1e-7, cusp.t.1.approx() + 1e-7);
-            assert!(factor(a) * factor(b) < 0.0, "d = {d}: no sign change around {}", cusp.t_approx);
+            assert!(
+                factor(a) * factor(b) < 0.0,
+                "d = {d}: no sign change around {}",
+                cusp.t_approx
+            );
         }
         // and none missed: a fine scan finds no other sign change
         let mut changes = 0;
@@ -264,7 +300,15 @@ fn corners_get_a_join_arc_or_an_overlap() {
     let c = parse_curve("M 0 0 L 1 0 L 1 -1").unwrap();
     let left = corners(&c, &q(1, 2));
     assert_eq!(left.len(), 1);
-    let Junction::Join { center, from, to, clockwise } = &left[0].kind else { panic!("{left:?}") };
+    let Junction::Join {
+        center,
+        from,
+        to,
+        clockwise,
+    } = &left[0].kind
+    else {
+        panic!("{left:?}")
+    };
     assert_eq!(*center, V2::new(q(1, 1), q(0, 1)));
     assert!(clockwise);
     // from the end normal of the first piece (up) to the start normal of the second (right)
@@ -277,7 +321,11 @@ fn corners_get_a_join_arc_or_an_overlap() {
     assert_eq!(corners(&square, &q(-1, 4)).len(), 4);
     let r = offset(&square, &OffsetOptions::new(q(-1, 4), 1e-6)).unwrap();
     assert!(r.reached() && r.corners.len() == 4);
-    assert_eq!(lncert::approx::join_arcs(&r).len(), 4, "outside of a ccw square: all joins");
+    assert_eq!(
+        lncert::approx::join_arcs(&r).len(),
+        4,
+        "outside of a ccw square: all joins"
+    );
 }
 
 #[test]
@@ -288,17 +336,33 @@ fn arcs_are_offset_exactly() {
         from: V2::new(q(1, 1), q(0, 1)),
         to: V2::new(q(0, 1), q(1, 1)),
     };
-    let arc = |clockwise| TravelledArc { arc: quarter.clone(), clockwise };
+    let arc = |clockwise| TravelledArc {
+        arc: quarter.clone(),
+        clockwise,
+    };
     let radius = |o: ArcOffset| match o {
         ArcOffset::Arc(a) => (a.arc.radius, a.arc.from),
         ArcOffset::Collapsed { .. } => (q(0, 1), V2::new(q(0, 1), q(0, 1))),
     };
-    assert_eq!(radius(offset_arc(&arc(false), &q(1, 2)).unwrap()).0, q(1, 2));
+    assert_eq!(
+        radius(offset_arc(&arc(false), &q(1, 2)).unwrap()).0,
+        q(1, 2)
+    );
     assert_eq!(radius(offset_arc(&arc(true), &q(1, 2)).unwrap()).0, q(3, 2));
-    assert_eq!(radius(offset_arc(&arc(false), &q(-3, 5)).unwrap()).0, q(8, 5));
+    assert_eq!(
+        radius(offset_arc(&arc(false), &q(-3, 5)).unwrap()).0,
+        q(8, 5)
+    );
     let (r, from) = radius(offset_arc(&arc(false), &q(3, 2)).unwrap());
-    assert_eq!((r, from), (q(1, 2), V2::new(q(-1, 1), q(0, 1))), "through the centre");
-    assert!(matches!(offset_arc(&arc(false), &q(1, 1)).unwrap(), ArcOffset::Collapsed { .. }));
+    assert_eq!(
+        (r, from),
+        (q(1, 2), V2::new(q(-1, 1), q(0, 1))),
+        "through the centre"
+    );
+    assert!(matches!(
+        offset_arc(&arc(false), &q(1, 1)).unwrap(),
+        ArcOffset::Collapsed { .. }
+    ));
     assert!(offset_arc(&arc(false), &q(0, 1)).is_err());
 }
 
@@ -333,14 +397,15 @@ fn budget_exhausted_on_an_exact_segment_stops_splitting() {
 #[test]
 fn bad_input_is_a_typed_error_naming_the_field() {
     let c = parse_curve(TEST_CUBIC).unwrap();
-    let field_of = |curve: &[Bezier<Rational>], d: Rational, tol: f64| {
-        match offset(curve, &OffsetOptions::new(d, tol)) {
-            Err(lncert::approx::OffsetError::Input { field, reason }) => {
-                assert!(!reason.is_empty());
-                field
-            }
-            Ok(_) => panic!("accepted d, tol = {tol}"),
+    let field_of = |curve: &[Bezier<Rational>], d: Rational, tol: f64| match offset(
+        curve,
+        &OffsetOptions::new(d, tol),
+    ) {
+        Err(lncert::approx::OffsetError::Input { field, reason }) => {
+            assert!(!reason.is_empty());
+            field
         }
+        Ok(_) => panic!("accepted d, tol = {tol}"),
     };
     for tol in [0.0, -1.0, f64::NAN, f64::INFINITY, 1e-300] {
         assert_eq!(field_of(&c, q(1, 2), tol), "tol");
@@ -376,31 +441,58 @@ fn ln_pair_paper_error_does_not_bound_the_offset_error() {
     o.paper_error = true;
     let r = offset(&c, &o).unwrap();
     assert!(r.reached());
-    let cfg = Config { rel: 1e-3, ..Config::default() };
+    let cfg = Config {
+        rel: 1e-3,
+        ..Config::default()
+    };
     let mut counterexamples = 0;
     for s in &r.segments {
         let p = s.paper_error.expect("evaluated for every LN-pair segment");
         assert!(p.is_finite() && p > 0.0, "{p}");
-        let (t0, t1) = (lncert::scalar::rational_from_f64(s.t.0).unwrap(), lncert::scalar::rational_from_f64(s.t.1).unwrap());
+        let (t0, t1) = (
+            lncert::scalar::rational_from_f64(s.t.0).unwrap(),
+            lncert::scalar::rational_from_f64(s.t.1).unwrap(),
+        );
         let exact = c[0].restrict(&t0, &t1);
         let sub = approx(&exact);
-        let (n0, n1) = (unit_left_normal(&c[0], s.t.0).unwrap(), unit_left_normal(&c[0], s.t.1).unwrap());
+        let (n0, n1) = (
+            unit_left_normal(&c[0], s.t.0).unwrap(),
+            unit_left_normal(&c[0], s.t.1).unwrap(),
+        );
         let pair = lnpair::ln_pair(&sub, &n0, &n1, 0.5).unwrap();
-        assert_eq!(pair.offset, s.bezier, "the same construction as the driver's");
+        assert_eq!(
+            pair.offset, s.bezier,
+            "the same construction as the driver's"
+        );
         // rigorous (8): certified d_H(p, pa) + certified d_H(c_r, ca_r), c_r the exact
         // arc of radius r between the exact normals (directions rot90(x′(tᵢ)))
         let h = c[0].hodograph();
         let (e0, e1) = (h.eval(&t0).rot90(), h.eval(&t1).rot90());
-        let (from, to) = if e0.cross(&e1) > q(0, 1) { (e0, e1) } else { (e1, e0) };
-        let arc = ShapeDesc::arc(ArcDesc { center: V2::new(q(0, 1), q(0, 1)), radius: d.clone(), from, to }).unwrap();
+        let (from, to) = if e0.cross(&e1) > q(0, 1) {
+            (e0, e1)
+        } else {
+            (e1, e0)
+        };
+        let arc = ShapeDesc::arc(ArcDesc {
+            center: V2::new(q(0, 1), q(0, 1)),
+            radius: d.clone(),
+            from,
+            to,
+        })
+        .unwrap();
         let ca = ShapeDesc::curve(vec![lncert::approx::exact_bezier(&pair.ca).unwrap()]).unwrap();
         let pa = ShapeDesc::curve(vec![lncert::approx::exact_bezier(&pair.pa).unwrap()]).unwrap();
         let dp = hausdorff(&ShapeDesc::curve(vec![exact]).unwrap(), &pa, &cfg).unwrap();
         let dc = hausdorff(&arc, &ca, &cfg).unwrap();
-        let eq8_hi = (Interval::try_from((dp.hi, dp.hi)).unwrap() + Interval::try_from((dc.hi, dc.hi)).unwrap()).sup();
+        let eq8_hi = (Interval::try_from((dp.hi, dp.hi)).unwrap()
+            + Interval::try_from((dc.hi, dc.hi)).unwrap())
+        .sup();
         if eq8_hi < s.error.0 {
             counterexamples += 1;
-            println!("t = {:?}: eq. (8) ≤ {eq8_hi:.6e} < {:.6e} ≤ d_H(offset, pa + ca)", s.t, s.error.0);
+            println!(
+                "t = {:?}: eq. (8) ≤ {eq8_hi:.6e} < {:.6e} ≤ d_H(offset, pa + ca)",
+                s.t, s.error.0
+            );
         }
     }
     assert!(counterexamples >= 1, "eq. (8) bounded every segment here");

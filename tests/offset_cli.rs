@@ -24,9 +24,8 @@ fn tmp(name: &str, text: &str) -> PathBuf {
 }
 
 fn json_of(o: &Output) -> Value {
-    serde_json::from_slice(&o.stdout).unwrap_or_else(|e| {
-        panic!("not JSON ({e}): {}", String::from_utf8_lossy(&o.stdout))
-    })
+    serde_json::from_slice(&o.stdout)
+        .unwrap_or_else(|e| panic!("not JSON ({e}): {}", String::from_utf8_lossy(&o.stdout)))
 }
 
 #[test]
@@ -47,9 +46,22 @@ fn json_document_certificate_and_svg() {
         svg.to_str().unwrap(),
         "--json",
     ]);
-    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
     let doc = json_of(&o);
-    for key in ["segments", "control_points", "degree", "certified_error", "tol", "pieces", "cusps"] {
+    for key in [
+        "segments",
+        "control_points",
+        "degree",
+        "certified_error",
+        "tol",
+        "pieces",
+        "cusps",
+    ] {
         assert!(doc.get(key).is_some(), "missing key {key}");
     }
     let segs = doc["segments"].as_u64().unwrap();
@@ -62,25 +74,53 @@ fn json_document_certificate_and_svg() {
     assert_eq!(doc["verdict"], "certified");
     // the certificate re-checks independently
     let v = lncert(&["verify", cert.to_str().unwrap(), "--json"]);
-    assert_eq!(v.status.code(), Some(0), "{}", String::from_utf8_lossy(&v.stdout));
+    assert_eq!(
+        v.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&v.stdout)
+    );
     // a tampered certificate does not
     let mut c: Value = serde_json::from_str(&std::fs::read_to_string(&cert).unwrap()).unwrap();
     c["tol"] = Value::String("1/1000000".into());
     let bad = cert.with_file_name("tampered.json");
     std::fs::write(&bad, c.to_string()).unwrap();
-    assert_eq!(lncert(&["verify", bad.to_str().unwrap()]).status.code(), Some(1));
+    assert_eq!(
+        lncert(&["verify", bad.to_str().unwrap()]).status.code(),
+        Some(1)
+    );
     let picture = std::fs::read_to_string(&svg).unwrap();
-    assert!(picture.starts_with("<svg") && picture.contains("curvature") && picture.trim_end().ends_with("</svg>"));
+    assert!(
+        picture.starts_with("<svg")
+            && picture.contains("curvature")
+            && picture.trim_end().ends_with("</svg>")
+    );
 }
 
 #[test]
 fn ln_pair_text_report_and_cusps() {
     let curve = tmp("cubic2.json", CUBIC);
-    let o = lncert(&["offset", curve.to_str().unwrap(), "--distance", "0.4", "--tol", "0.1", "--method", "ln-pair"]);
+    let o = lncert(&[
+        "offset",
+        curve.to_str().unwrap(),
+        "--distance",
+        "0.4",
+        "--tol",
+        "0.1",
+        "--method",
+        "ln-pair",
+    ]);
     assert_eq!(o.status.code(), Some(0));
     let text = String::from_utf8_lossy(&o.stdout);
-    assert!(text.contains("ln-pair") && text.contains("certified"), "{text}");
-    assert_eq!(text.matches("cusp of the exact offset").count(), 2, "{text}");
+    assert!(
+        text.contains("ln-pair") && text.contains("certified"),
+        "{text}"
+    );
+    assert_eq!(
+        text.matches("cusp of the exact offset").count(),
+        2,
+        "{text}"
+    );
 }
 
 #[test]
@@ -89,19 +129,59 @@ fn bspline_svg_path_circle_and_arc_inputs() {
         "doc.json",
         r#"{"bspline": {"degree": 2, "knots": "clamped", "control_points": [[0.7, 0.0], [0.7, 0.06], [0.1, 0.1], [0.1, 0.6], [0.6, 0.6], [0.8, 0.8], [0.8, 1.4], [0.6, 1.6]]}}"#,
     );
-    let o = lncert(&["offset", spline.to_str().unwrap(), "--distance", "0.4", "--tol", "0.05", "--json"]);
-    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
-    assert_eq!(json_of(&o)["degree"], 5, "quadratic pieces give degree 2 + 3");
+    let o = lncert(&[
+        "offset",
+        spline.to_str().unwrap(),
+        "--distance",
+        "0.4",
+        "--tol",
+        "0.05",
+        "--json",
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert_eq!(
+        json_of(&o)["degree"],
+        5,
+        "quadratic pieces give degree 2 + 3"
+    );
 
     let path = tmp("l.svg", "M 0 0 L 1 0 L 1 -1");
-    let o = lncert(&["offset", path.to_str().unwrap(), "--distance", "1/4", "--tol", "1e-6", "--json"]);
+    let o = lncert(&[
+        "offset",
+        path.to_str().unwrap(),
+        "--distance",
+        "1/4",
+        "--tol",
+        "1e-6",
+        "--json",
+    ]);
     assert_eq!(o.status.code(), Some(0));
     let doc = json_of(&o);
-    assert_eq!(doc["joins"].as_array().unwrap().len(), 1, "a right turn opens a gap on the left");
+    assert_eq!(
+        doc["joins"].as_array().unwrap().len(),
+        1,
+        "a right turn opens a gap on the left"
+    );
     assert_eq!(doc["joins"][0]["arc"]["radius"], "1/4");
 
-    let circle = tmp("circle.json", r#"{"circle": {"center": [0, 0], "radius": 1}}"#);
-    let o = lncert(&["offset", circle.to_str().unwrap(), "--distance", "-0.6", "--tol", "1e-5", "--json"]);
+    let circle = tmp(
+        "circle.json",
+        r#"{"circle": {"center": [0, 0], "radius": 1}}"#,
+    );
+    let o = lncert(&[
+        "offset",
+        circle.to_str().unwrap(),
+        "--distance",
+        "-0.6",
+        "--tol",
+        "1e-5",
+        "--json",
+    ]);
     assert_eq!(o.status.code(), Some(0));
     let doc = json_of(&o);
     assert_eq!(doc["certified_error"], serde_json::json!([0.0, 0.0]));
@@ -109,15 +189,40 @@ fn bspline_svg_path_circle_and_arc_inputs() {
     assert_eq!(arcs.len(), 4);
     assert!(arcs.iter().all(|a| a["arc"]["radius"] == "8/5"));
 
-    let arc = tmp("arc.json", r#"{"arc": {"center": [0, 0], "radius": 1, "from": [1, 0], "to": [0, 1], "clockwise": true}}"#);
-    let o = lncert(&["offset", arc.to_str().unwrap(), "--distance", "1/2", "--tol", "1e-5", "--json"]);
-    assert_eq!(json_of(&o)["arcs"][0]["arc"]["radius"], "3/2", "clockwise: the left normal points out");
+    let arc = tmp(
+        "arc.json",
+        r#"{"arc": {"center": [0, 0], "radius": 1, "from": [1, 0], "to": [0, 1], "clockwise": true}}"#,
+    );
+    let o = lncert(&[
+        "offset",
+        arc.to_str().unwrap(),
+        "--distance",
+        "1/2",
+        "--tol",
+        "1e-5",
+        "--json",
+    ]);
+    assert_eq!(
+        json_of(&o)["arcs"][0]["arc"]["radius"],
+        "3/2",
+        "clockwise: the left normal points out"
+    );
 }
 
 #[test]
 fn unreachable_tolerance_exits_1() {
     let curve = tmp("cubic3.json", CUBIC);
-    let o = lncert(&["offset", curve.to_str().unwrap(), "--distance", "0.5", "--tol", "1e-8", "--max-depth", "1", "--json"]);
+    let o = lncert(&[
+        "offset",
+        curve.to_str().unwrap(),
+        "--distance",
+        "0.5",
+        "--tol",
+        "1e-8",
+        "--max-depth",
+        "1",
+        "--json",
+    ]);
     assert_eq!(o.status.code(), Some(1));
     let doc = json_of(&o);
     assert_eq!(doc["verdict"], "not reached");
@@ -135,8 +240,14 @@ fn bad_input_exits_2_naming_the_flag() {
         (&["--distance", "0.5", "--tol", "-1"], "--tol"),
         (&["--distance", "0.5", "--tol", "1e-300"], "--tol"),
         (&["--distance", "0.5", "--tol", "NaN"], "--tol"),
-        (&["--distance", "0.5", "--tol", "0.1", "--method", "g3"], "--method"),
-        (&["--distance", "0.5", "--tol", "0.1", "--max-depth", "99"], "--max-depth"),
+        (
+            &["--distance", "0.5", "--tol", "0.1", "--method", "g3"],
+            "--method",
+        ),
+        (
+            &["--distance", "0.5", "--tol", "0.1", "--max-depth", "99"],
+            "--max-depth",
+        ),
     ];
     for (args, flag) in cases {
         let mut all = vec!["offset", c];
@@ -147,14 +258,27 @@ fn bad_input_exits_2_naming_the_flag() {
         assert!(err.contains(flag), "{args:?}: {err}");
     }
     for (name, text) in [
-        ("cusp.json", r#"{"bezier": [[0, 0], [1, 1], [0, 1], [1, 0]]}"#),
+        (
+            "cusp.json",
+            r#"{"bezier": [[0, 0], [1, 1], [0, 1], [1, 0]]}"#,
+        ),
         ("broken.json", r#"{"bezier": [[0, 0], [1, "x"]]}"#),
         ("nan.json", r#"{"bezier": [[0, 0], [1, "NaN"]]}"#),
-        ("circle0.json", r#"{"circle": {"center": [0, 0], "radius": 0}}"#),
+        (
+            "circle0.json",
+            r#"{"circle": {"center": [0, 0], "radius": 0}}"#,
+        ),
         ("empty.svg", ""),
     ] {
         let p = tmp(name, text);
-        let o = lncert(&["offset", p.to_str().unwrap(), "--distance", "0.5", "--tol", "0.1"]);
+        let o = lncert(&[
+            "offset",
+            p.to_str().unwrap(),
+            "--distance",
+            "0.5",
+            "--tol",
+            "0.1",
+        ]);
         let err = String::from_utf8_lossy(&o.stderr);
         assert_eq!(o.status.code(), Some(2), "{name}: {err}");
         assert!(err.contains("CURVE"), "{name}: {err}");

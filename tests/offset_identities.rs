@@ -437,7 +437,10 @@ fn s004_solve_alpha_on_plain_ratfunc_guard() {
     // parallel columns: det ≡ 0 is declined
     let mut m = arc.moments();
     m[2] = m[1].clone();
-    assert!(solve_alpha(&arc.ends(), &m).is_none(), "a zero det must be declined");
+    assert!(
+        solve_alpha(&arc.ends(), &m).is_none(),
+        "a zero det must be declined"
+    );
 }
 
 /// The engine's `solve_alpha` in exact rational arithmetic (no wrapper) at specialisations

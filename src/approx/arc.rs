@@ -93,13 +93,11 @@ pub fn parse_arc_input(text: &str) -> Option<Result<Vec<TravelledArc>, OffsetErr
             .get("clockwise")
             .and_then(Value::as_bool)
             .unwrap_or(false);
-        return Some(
-            match crate::certify::ShapeDesc::from_value(&doc) {
-                Ok(crate::certify::ShapeDesc::Arc(arc)) => Ok(vec![TravelledArc { arc, clockwise }]),
-                Ok(_) => Err(bad("arc", "not an arc")),
-                Err(e) => Err(bad("curve", e.to_string())),
-            },
-        );
+        return Some(match crate::certify::ShapeDesc::from_value(&doc) {
+            Ok(crate::certify::ShapeDesc::Arc(arc)) => Ok(vec![TravelledArc { arc, clockwise }]),
+            Ok(_) => Err(bad("arc", "not an arc")),
+            Err(e) => Err(bad("curve", e.to_string())),
+        });
     }
     let c = map.get("circle")?;
     Some(parse_circle(c, map.len()))
@@ -107,13 +105,22 @@ pub fn parse_arc_input(text: &str) -> Option<Result<Vec<TravelledArc>, OffsetErr
 
 fn parse_circle(c: &Value, keys: usize) -> Result<Vec<TravelledArc>, OffsetError> {
     if keys != 1 {
-        return Err(bad("(top level)", "a circle document has the single key \"circle\""));
+        return Err(bad(
+            "(top level)",
+            "a circle document has the single key \"circle\"",
+        ));
     }
     let Some(m) = c.as_object() else {
-        return Err(bad("circle", "expected {\"center\": [x, y], \"radius\": r}"));
+        return Err(bad(
+            "circle",
+            "expected {\"center\": [x, y], \"radius\": r}",
+        ));
     };
     if let Some(k) = m.keys().find(|k| *k != "center" && *k != "radius") {
-        return Err(bad(format!("circle.{k}"), "unknown field; expected center, radius"));
+        return Err(bad(
+            format!("circle.{k}"),
+            "unknown field; expected center, radius",
+        ));
     }
     let num = |v: Option<&Value>, f: &str| -> Result<Rational, OffsetError> {
         let v = v.ok_or_else(|| bad(f, "missing"))?;

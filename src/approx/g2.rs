@@ -107,11 +107,7 @@ pub fn ends<S: ScalarSqrt>(x: &Bezier<S>) -> Option<G2Ends<S>> {
     let one_end = |end: bool| -> Option<(V2<S>, S)> {
         let v = at(&d1, end);
         // x″ at the end: the hodograph of the hodograph (a zero point for lines).
-        let a = if last == 0 {
-            V2::zero()
-        } else {
-            at(&d2, end)
-        };
+        let a = if last == 0 { V2::zero() } else { at(&d2, end) };
         let len2 = v.norm2();
         if len2.sign() != Sign::Positive {
             return None;
@@ -135,11 +131,10 @@ pub fn ends<S: ScalarSqrt>(x: &Bezier<S>) -> Option<G2Ends<S>> {
 
 /// The right-hand side and columns of eq. (3.2): `(v₁, v₂, v)`.
 pub fn system<S: Scalar>(e: &G2Ends<S>, m: &[V2<S>; 4]) -> (V2<S>, V2<S>, V2<S>) {
-    let v = e
-        .n1
-        .sub(&e.n0)
-        .sub(&m[0].scale(&e.alpha0))
-        .sub(&m[3].scale(&e.alpha3));
+    let v =
+        e.n1.sub(&e.n0)
+            .sub(&m[0].scale(&e.alpha0))
+            .sub(&m[3].scale(&e.alpha3));
     (m[1].clone(), m[2].clone(), v)
 }
 

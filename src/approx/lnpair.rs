@@ -81,8 +81,7 @@ pub fn ln_pair(x: &Bezier<f64>, n0: &V2<f64>, n1: &V2<f64>, d: f64) -> Result<Ln
     let c0 = n0.scale(&d);
     let c3 = n1.scale(&d);
     let scale = c.norm2().sqrt();
-    let piece = if den.abs() <= 1e-12 && t0.dot(&t1) > 0.0 && c.cross(&t0).abs() <= 1e-12 * scale
-    {
+    let piece = if den.abs() <= 1e-12 && t0.dot(&t1) > 0.0 && c.cross(&t0).abs() <= 1e-12 * scale {
         // straight: the segment and a constant normal
         let third = 1.0 / 3.0;
         let pa = frame_cubic(&b0, &b0.lerp(&b3, &0.5), &b3, 2.0 * third, 2.0 * third);

@@ -451,7 +451,10 @@ fn paper_error_of(
 /// coordinates beyond `1e100`. A tolerance that cannot be reached within the
 /// depth and segment limits is not an error: the result lists the segments in
 /// [`OffsetResult::unreached`] with their certified bounds.
-pub fn offset(curve: &[Bezier<Rational>], opts: &OffsetOptions) -> Result<OffsetResult, OffsetError> {
+pub fn offset(
+    curve: &[Bezier<Rational>],
+    opts: &OffsetOptions,
+) -> Result<OffsetResult, OffsetError> {
     check_options(curve, opts)?;
     let d = opts.distance.approx();
     let mut tasks: Vec<Task> = Vec::new();
@@ -535,7 +538,11 @@ pub fn offset(curve: &[Bezier<Rational>], opts: &OffsetOptions) -> Result<Offset
         .map(|s| (s, false))
         .chain(unreached_segs.into_iter().map(|s| (s, true)))
         .collect();
-    segments.sort_by(|a, b| (a.0.piece, a.0.t.0).partial_cmp(&(b.0.piece, b.0.t.0)).unwrap_or(std::cmp::Ordering::Equal));
+    segments.sort_by(|a, b| {
+        (a.0.piece, a.0.t.0)
+            .partial_cmp(&(b.0.piece, b.0.t.0))
+            .unwrap_or(std::cmp::Ordering::Equal)
+    });
     let unreached = segments
         .iter()
         .enumerate()

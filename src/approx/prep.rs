@@ -42,7 +42,10 @@ fn bisect(sf: &Poly<Rational>, r: &RealRoot, bits: u32) -> RealRoot {
         let m = (&l + &h) / Rational::from_integer(2.into());
         let sm = sign(&m);
         if sm == 0 {
-            return RealRoot { lo: m.clone(), hi: m };
+            return RealRoot {
+                lo: m.clone(),
+                hi: m,
+            };
         }
         if sm == sl {
             l = m;
@@ -61,7 +64,13 @@ fn roots_refined(p: &Poly<Rational>, span: &Span, bits: u32) -> Vec<RealRoot> {
     let sf = square_free(p);
     isolate_roots(&sf, span)
         .iter()
-        .map(|r| if r.is_exact() { r.clone() } else { bisect(&sf, r, bits) })
+        .map(|r| {
+            if r.is_exact() {
+                r.clone()
+            } else {
+                bisect(&sf, r, bits)
+            }
+        })
         .collect()
 }
 
@@ -175,7 +184,11 @@ pub fn offset_cusps(piece: usize, x: &Bezier<Rational>, d: &Rational) -> Vec<Off
     let (dx, dy) = x.hodograph().power_coords();
     let speed2 = dx.mul(&dx).add(&dy.mul(&dy));
     let dd = Poly::constant(d * d);
-    let p = dd.mul(&k).mul(&k).sub(&speed2.mul(&speed2).mul(&speed2)).trimmed();
+    let p = dd
+        .mul(&k)
+        .mul(&k)
+        .sub(&speed2.mul(&speed2).mul(&speed2))
+        .trimmed();
     if is_zero_poly(&p) {
         return Vec::new();
     }

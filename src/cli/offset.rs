@@ -66,8 +66,8 @@ pub struct OffsetArgs {
 }
 
 fn read_text(path: &PathBuf) -> Result<String, CliError> {
-    let meta = std::fs::metadata(path)
-        .map_err(|e| bad("CURVE", format!("{}: {e}", path.display())))?;
+    let meta =
+        std::fs::metadata(path).map_err(|e| bad("CURVE", format!("{}: {e}", path.display())))?;
     if meta.len() > super::hausdorff::MAX_FILE_BYTES {
         return Err(bad("CURVE", format!("{}: file too large", path.display())));
     }
@@ -91,8 +91,12 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     let distance = number("--distance", &a.distance)?;
     let tol_q = number("--tol", &a.tol)?;
     let tol = interval_from_rational(&tol_q).inf();
-    let method = OffsetMethod::parse(&a.method)
-        .ok_or_else(|| bad("--method", format!("unknown method {:?}; expected g2 or ln-pair", a.method)))?;
+    let method = OffsetMethod::parse(&a.method).ok_or_else(|| {
+        bad(
+            "--method",
+            format!("unknown method {:?}; expected g2 or ln-pair", a.method),
+        )
+    })?;
     let text = read_text(&a.curve)?;
     if let Some(arcs) = parse_arc_input(&text) {
         let arcs = arcs.map_err(offset_err)?;
@@ -111,8 +115,8 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     let start = std::time::Instant::now();
     let res = offset(&curve, &opts).map_err(offset_err)?;
     let build = start.elapsed().as_secs_f64();
-    let (global, cert) = certify_result(&curve, &res, GLOBAL_REL, a.certificate.is_some())
-        .map_err(offset_err)?;
+    let (global, cert) =
+        certify_result(&curve, &res, GLOBAL_REL, a.certificate.is_some()).map_err(offset_err)?;
     let total = start.elapsed().as_secs_f64();
     let lo = global.lo;
     let hi = global.hi.min(res.certified_hi);
@@ -122,7 +126,11 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             Some(c) => {
                 std::fs::write(path, c.to_json_string())
                     .map_err(|e| bad("--certificate", format!("{}: {e}", path.display())))?;
-                cert_note = Some(format!("written to {} ({} boxes)", path.display(), c.box_count()));
+                cert_note = Some(format!(
+                    "written to {} ({} boxes)",
+                    path.display(),
+                    c.box_count()
+                ));
             }
             None => cert_note = Some("not written: the tolerance is not certified".to_string()),
         }
@@ -131,7 +139,11 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
         let svg = super::offset_svg::render(&curve, &res);
         std::fs::write(path, svg).map_err(|e| bad("--svg", format!("{}: {e}", path.display())))?;
     }
-    let verdict = if res.reached() && hi <= tol { "certified" } else { "not reached" };
+    let verdict = if res.reached() && hi <= tol {
+        "certified"
+    } else {
+        "not reached"
+    };
     if a.json {
         let doc = json!({
             "method": method.name(),
@@ -163,9 +175,20 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             "seconds": {"construct_and_certify": build, "total": total},
             "certificate": cert_note,
         });
-        print_out(&format!("{}\n", serde_json::to_string_pretty(&doc).unwrap_or_default()));
+        print_out(&format!(
+            "{}\n",
+            serde_json::to_string_pretty(&doc).unwrap_or_default()
+        ));
     } else {
-        print_out(&text_report(&res, method, &a.tol, (lo, hi), verdict, (build, total), cert_note));
+        print_out(&text_report(
+            &res,
+            method,
+            &a.tol,
+            (lo, hi),
+            verdict,
+            (build, total),
+            cert_note,
+        ));
     }
     Ok(if verdict == "certified" { 0 } else { 1 })
 }
@@ -255,11 +278,15 @@ fn run_arcs(
         .collect::<Result<Vec<_>, _>>()
         .map_err(offset_err)?;
     let arc_json = |o: &ArcOffset| match o {
-        ArcOffset::Arc(t) => json!({"arc": {"center": point_json(&t.arc.center), "radius": q(&t.arc.radius),
-            "from": point_json(&t.arc.from), "to": point_json(&t.arc.to), "travel": if t.clockwise {"clockwise"} else {"counter-clockwise"}}}),
+        ArcOffset::Arc(t) => {
+            json!({"arc": {"center": point_json(&t.arc.center), "radius": q(&t.arc.radius),
+            "from": point_json(&t.arc.from), "to": point_json(&t.arc.to), "travel": if t.clockwise {"clockwise"} else {"counter-clockwise"}}})
+        }
         ArcOffset::Collapsed { center } => json!({"collapsed_to": point_json(center)}),
     };
-    let collapsed = outs.iter().any(|o| matches!(o, ArcOffset::Collapsed { .. }));
+    let collapsed = outs
+        .iter()
+        .any(|o| matches!(o, ArcOffset::Collapsed { .. }));
     let note = "exact: seed 004 reproduces an arc's offset exactly (circular precision, proven symbolically in tests/offset_identities.rs)";
     if a.svg.is_some() {
         eprintln!("note: --svg: no picture for an exact arc offset");
@@ -275,7 +302,10 @@ fn run_arcs(
             "arcs": outs.iter().map(arc_json).collect::<Vec<_>>(),
             "cusps": if collapsed { json!(["the offset collapses to the centre"]) } else { json!([]) },
         });
-        print_out(&format!("{}\n", serde_json::to_string_pretty(&doc).unwrap_or_default()));
+        print_out(&format!(
+            "{}\n",
+            serde_json::to_string_pretty(&doc).unwrap_or_default()
+        ));
     } else {
         let mut s = format!("offset at {d} of {} arc(s): {note}\n", arcs.len());
         for o in &outs {

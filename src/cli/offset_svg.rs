@@ -86,7 +86,11 @@ pub fn render(curve: &[Bezier<Rational>], res: &OffsetResult) -> String {
     let all = input
         .iter()
         .flat_map(|b| b.points().iter().cloned())
-        .chain(res.segments.iter().flat_map(|s| s.bezier.points().iter().cloned()))
+        .chain(
+            res.segments
+                .iter()
+                .flat_map(|s| s.bezier.points().iter().cloned()),
+        )
         .chain(exact.iter().flatten().map(|s| s.1.clone()))
         .filter(|p| p.x.is_finite() && p.y.is_finite());
     let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
@@ -124,23 +128,45 @@ pub fn render(curve: &[Bezier<Rational>], res: &OffsetResult) -> String {
         );
     }
     for b in &input {
-        let pts: Vec<V2<f64>> = (0..=SAMPLES).map(|k| b.eval(&(k as f64 / SAMPLES as f64))).collect();
-        let _ = writeln!(s, r##"<polyline fill="none" stroke="#1f4fd1" stroke-width="1.5" points="{}"/>"##, poly(&pts, &map));
+        let pts: Vec<V2<f64>> = (0..=SAMPLES)
+            .map(|k| b.eval(&(k as f64 / SAMPLES as f64)))
+            .collect();
+        let _ = writeln!(
+            s,
+            r##"<polyline fill="none" stroke="#1f4fd1" stroke-width="1.5" points="{}"/>"##,
+            poly(&pts, &map)
+        );
     }
     for e in &exact {
         let pts: Vec<V2<f64>> = e.iter().map(|x| x.1.clone()).collect();
-        let _ = writeln!(s, r##"<polyline fill="none" stroke="#1a9c3a" stroke-width="3" stroke-opacity="0.5" points="{}"/>"##, poly(&pts, &map));
+        let _ = writeln!(
+            s,
+            r##"<polyline fill="none" stroke="#1a9c3a" stroke-width="3" stroke-opacity="0.5" points="{}"/>"##,
+            poly(&pts, &map)
+        );
     }
     for a in &approx {
         let pts: Vec<V2<f64>> = a.iter().map(|x| x.1.clone()).collect();
-        let _ = writeln!(s, r##"<polyline fill="none" stroke="#c2188f" stroke-width="1" points="{}"/>"##, poly(&pts, &map));
+        let _ = writeln!(
+            s,
+            r##"<polyline fill="none" stroke="#c2188f" stroke-width="1" points="{}"/>"##,
+            poly(&pts, &map)
+        );
     }
     for c in &res.cusps {
         let (x, y) = map(&V2::new(c.point.0, c.point.1));
-        let _ = writeln!(s, r##"<circle cx="{x:.2}" cy="{y:.2}" r="3" fill="#d11f1f"/>"##);
+        let _ = writeln!(
+            s,
+            r##"<circle cx="{x:.2}" cy="{y:.2}" r="3" fill="#d11f1f"/>"##
+        );
     }
     // curvature plot: exact offset (green) vs approximant (magenta), clipped to a robust range
-    let ks: Vec<f64> = exact.iter().flatten().map(|x| x.2).filter(|k| k.is_finite()).collect();
+    let ks: Vec<f64> = exact
+        .iter()
+        .flatten()
+        .map(|x| x.2)
+        .filter(|k| k.is_finite())
+        .collect();
     let mut sorted = ks.clone();
     sorted.sort_by(f64::total_cmp);
     let (klo, khi) = if sorted.is_empty() {
@@ -148,13 +174,20 @@ pub fn render(curve: &[Bezier<Rational>], res: &OffsetResult) -> String {
     } else {
         let q = |f: f64| sorted[((sorted.len() - 1) as f64 * f) as usize];
         let (a, b) = (q(0.02), q(0.98));
-        if b > a { (a - 0.1 * (b - a), b + 0.1 * (b - a)) } else { (a - 1.0, a + 1.0) }
+        if b > a {
+            (a - 0.1 * (b - a), b + 0.1 * (b - a))
+        } else {
+            (a - 1.0, a + 1.0)
+        }
     };
     let n = curve.len().max(1) as f64;
     let top = H_MAIN + 10.0;
     let pmap = |g: f64, k: f64| {
         let k = k.clamp(klo, khi);
-        (PAD + g / n * (W - 2.0 * PAD), top + (H_PLOT - 20.0) * (1.0 - (k - klo) / (khi - klo)))
+        (
+            PAD + g / n * (W - 2.0 * PAD),
+            top + (H_PLOT - 20.0) * (1.0 - (k - klo) / (khi - klo)),
+        )
     };
     let _ = writeln!(
         s,
@@ -173,11 +206,19 @@ pub fn render(curve: &[Bezier<Rational>], res: &OffsetResult) -> String {
         format!(r#"<polyline fill="none" stroke="{color}" stroke-width="{w}" points="{p}"/>"#)
     };
     for e in &exact {
-        let pts: Vec<(f64, f64)> = e.iter().map(|x| (x.0, x.2)).filter(|x| x.1.is_finite()).collect();
+        let pts: Vec<(f64, f64)> = e
+            .iter()
+            .map(|x| (x.0, x.2))
+            .filter(|x| x.1.is_finite())
+            .collect();
         let _ = writeln!(s, "{}", line(&pts, "#1a9c3a", 3.0));
     }
     for a in &approx {
-        let pts: Vec<(f64, f64)> = a.iter().map(|x| (x.0, x.2)).filter(|x| x.1.is_finite()).collect();
+        let pts: Vec<(f64, f64)> = a
+            .iter()
+            .map(|x| (x.0, x.2))
+            .filter(|x| x.1.is_finite())
+            .collect();
         let _ = writeln!(s, "{}", line(&pts, "#c2188f", 1.0));
     }
     s.push_str("</svg>\n");

@@ -10,6 +10,6 @@ pub use bspline::BSpline;
 pub use vec2::V2;
 pub(crate) mod io;
 pub use io::{
-    parse_curve, parse_json_curve, parse_svg_path, CurveParseError, MAX_BSPLINE_WORK, MAX_CONTROL_POINTS,
-    MAX_NUMBER_CHARS, MAX_SEGMENTS, MAX_SVG_BYTES,
+    parse_curve, parse_json_curve, parse_svg_path, CurveParseError, MAX_BSPLINE_WORK,
+    MAX_CONTROL_POINTS, MAX_NUMBER_CHARS, MAX_SEGMENTS, MAX_SVG_BYTES,
 };

@@ -73,7 +73,12 @@ fn points(v: &Value) -> Result<Vec<V2<Rational>>, String> {
 pub fn test_curves() -> Result<Vec<(String, Vec<Bezier<Rational>>, Vec<Rational>)>, String> {
     let doc: Value = serde_json::from_str(CURVES).map_err(|e| e.to_string())?;
     let mut out = Vec::new();
-    for name in ["cubic_bezier", "pawn_bspline", "cross_bspline", "doc_bspline"] {
+    for name in [
+        "cubic_bezier",
+        "pawn_bspline",
+        "cross_bspline",
+        "doc_bspline",
+    ] {
         let c = &doc[name];
         let pts = points(&c["control_points"])?;
         let pieces = if name == "cubic_bezier" {

@@ -116,8 +116,8 @@ pub fn exact_dist2(p: &V2<Rational>, b: &Bezier<Rational>) -> Interval {
     let foot = fx.mul(&x.derivative()).add(&fy.mul(&y.derivative()));
     let d2 = fx.mul(&fx).add(&fy.mul(&fy));
     let d2i = d2.map(interval_from_rational);
-    let mut best =
-        interval_from_rational(&d2.eval(&frac::<Rational>(0, 1))).min(interval_from_rational(&d2.eval(&frac::<Rational>(1, 1))));
+    let mut best = interval_from_rational(&d2.eval(&frac::<Rational>(0, 1)))
+        .min(interval_from_rational(&d2.eval(&frac::<Rational>(1, 1))));
     let zero_poly = foot.coeffs().iter().all(|c| *c == Rational::default());
     if !zero_poly {
         for r in isolate_roots(&foot, &Span::unit_open()) {
@@ -128,7 +128,6 @@ pub fn exact_dist2(p: &V2<Rational>, b: &Bezier<Rational>) -> Interval {
     }
     best
 }
-
 
 /// Symbolic helpers of the identity tests: the `i`-th variable, a constant, a
 /// quotient, and an identity assertion.
