@@ -255,7 +255,6 @@ fn cusps_are_where_the_radius_of_curvature_equals_the_distance() {
         let x = approx(&c[0]);
         let df = parse_rational(d).unwrap().approx();
         let factor = |t: f64| {
-            let (_, _, _) = exact_offset_jet(&x, df, t);
             let d1 = x.hodograph();
             let v = d1.eval(&t);
             let a = d1.hodograph().eval(&t);

@@ -120,7 +120,6 @@ pub fn ends<S: ScalarSqrt>(x: &Bezier<S>) -> Option<G2Ends<S>> {
     };
     let (n0, alpha0) = one_end(false)?;
     let (n1, alpha3) = one_end(true)?;
-    let _ = last;
     Some(G2Ends {
         n0,
         n1,
@@ -210,10 +209,15 @@ pub fn elevate_by<S: Scalar>(x: &Bezier<S>, k: usize) -> Bezier<S> {
 /// ```
 /// use lncert::approx::g2::offset_approximant;
 /// use lncert::curve::{Bezier, V2};
-/// // A straight segment: the approximant is its exact translate (degree 4).
-/// let x = Bezier::new(vec![V2::new(0.0, 0.0), V2::new(2.0, 0.0)]);
-/// let o = offset_approximant(&x, &0.5);
-/// assert!(o.is_none()); // v₁ ∥ v₂ for a line: (3.4) is singular
+/// // A quarter-circle-like cubic offset by 1/10 to the left: degree 3 + 3, and the
+/// // ends interpolate x + d N exactly in exact arithmetic (here to float rounding).
+/// let x = Bezier::new(vec![V2::new(1.0, 0.0), V2::new(1.0, 0.55), V2::new(0.55, 1.0), V2::new(0.0, 1.0)]);
+/// let o = offset_approximant(&x, &0.1).unwrap();
+/// assert_eq!(o.degree(), 6);
+/// assert!((o.points()[0].x - 0.9).abs() < 1e-15 && o.points()[0].y.abs() < 1e-15);
+/// // a straight segment makes (3.4) singular (v₁ ∥ v₂): see `offset_approximant_f64`
+/// let line = Bezier::new(vec![V2::new(0.0, 0.0), V2::new(2.0, 0.0)]);
+/// assert!(offset_approximant(&line, &0.5).is_none());
 /// ```
 pub fn offset_approximant<S: ScalarSqrt>(x: &Bezier<S>, d: &S) -> Option<Bezier<S>> {
     let e = ends(x)?;

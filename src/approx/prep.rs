@@ -3,7 +3,7 @@
 //! of the exact offset, and the corners of a piecewise curve.
 
 use crate::curve::{Bezier, V2};
-use crate::poly::{isolate_roots, square_free, Poly, RealRoot, Span};
+use crate::poly::{has_root_in, isolate_roots, square_free, Poly, RealRoot, Span};
 use crate::scalar::{rational_from_f64, Rational};
 use num_traits::{Signed, Zero};
 
@@ -80,18 +80,9 @@ fn roots_in_unit(p: &Poly<Rational>) -> Vec<f64> {
     let span = Span::open(Rational::zero(), Rational::from_integer(1.into()));
     roots_refined(p, &span, 30)
         .iter()
-        .map(|r| r.midpoint().approx_f64())
+        .map(|r| crate::scalar::Scalar::approx(&r.midpoint()))
         .filter(|t| *t > 0.0 && *t < 1.0)
         .collect()
-}
-
-trait ApproxF64 {
-    fn approx_f64(&self) -> f64;
-}
-impl ApproxF64 for Rational {
-    fn approx_f64(&self) -> f64 {
-        crate::scalar::Scalar::approx(self)
-    }
 }
 
 /// The inflection parameters of a piece in `(0, 1)` (sign changes of `x′ × x″`),
@@ -175,7 +166,7 @@ pub struct OffsetCusp {
 /// The cusps of the exact offset at signed distance `d` (left normal) of piece
 /// `x`, decided exactly: the roots in `[0, 1]` of `d²(x′×x″)² − (x′·x′)³` at
 /// which `d (x′ × x″) > 0` (Sturm isolation; the sign is decided on an
-/// isolating interval on which `x′ × x″` has no root).
+/// isolating interval on which `x′ × x″` has no root, checked by Sturm).
 pub fn offset_cusps(piece: usize, x: &Bezier<Rational>, d: &Rational) -> Vec<OffsetCusp> {
     let k = curvature_numerator(x);
     if is_zero_poly(&k) {
@@ -195,11 +186,14 @@ pub fn offset_cusps(piece: usize, x: &Bezier<Rational>, d: &Rational) -> Vec<Off
     let span = Span::closed(Rational::zero(), Rational::from_integer(1.into()));
     let mut out = Vec::new();
     for r in roots_refined(&p, &span, 40) {
-        // the sign of d·κ-numerator at the root: k has no root at a cusp
-        // (|x′|³ > 0 on a regular curve), and the isolating interval is narrow.
+        // The sign of d·(x′ × x″) at the root: at a root of `p`, |d (x′×x″)| = |x′|³ > 0,
+        // so the sign is that of d·k on the isolating interval when k has no root
+        // there (decided by Sturm). If it has one (never seen: the interval is
+        // 2⁻⁴⁰ wide), the root is kept — a possible cusp is reported, not dropped.
         let m = r.midpoint();
         let s = d * k.eval(&m);
-        if !s.is_positive() {
+        let decided = !has_root_in(&k, &Span::closed(r.lo.clone(), r.hi.clone()));
+        if decided && !s.is_positive() {
             continue;
         }
         let ta = crate::scalar::Scalar::approx(&m);

@@ -109,6 +109,21 @@ fn int(n: usize) -> Rational {
 }
 
 /// Checks `1 <= degree <= 63`.
+/// The degree check and `n ≥ degree + 1` control points; returns `n`.
+fn check_degree_and_count(degree: usize, n: usize, what: &str) -> Result<usize, CurveParseError> {
+    check_degree(degree)?;
+    if n < degree + 1 {
+        return Err(field_err(
+            "bspline.control_points",
+            format!(
+                "a {what} of degree {degree} needs at least {} control points, found {n}",
+                degree + 1
+            ),
+        ));
+    }
+    Ok(n)
+}
+
 fn check_degree(degree: usize) -> Result<(), CurveParseError> {
     if degree == 0 || degree > MAX_DEGREE {
         return Err(field_err(
@@ -155,17 +170,7 @@ impl BSpline {
         knots: Vec<Rational>,
         control_points: Vec<V2<Rational>>,
     ) -> Result<Self, CurveParseError> {
-        check_degree(degree)?;
-        let n = control_points.len();
-        if n < degree + 1 {
-            return Err(field_err(
-                "bspline.control_points",
-                format!(
-                    "a B-spline of degree {degree} needs at least {} control points, found {n}",
-                    degree + 1
-                ),
-            ));
-        }
+        let n = check_degree_and_count(degree, control_points.len(), "B-spline")?;
         let expected = n + degree + 1;
         if knots.len() != expected {
             return Err(field_err(
@@ -240,17 +245,7 @@ impl BSpline {
         degree: usize,
         control_points: Vec<V2<Rational>>,
     ) -> Result<Self, CurveParseError> {
-        check_degree(degree)?;
-        let n = control_points.len();
-        if n < degree + 1 {
-            return Err(field_err(
-                "bspline.control_points",
-                format!(
-                    "a clamped B-spline of degree {degree} needs at least {} control points, found {n}",
-                    degree + 1
-                ),
-            ));
-        }
+        let n = check_degree_and_count(degree, control_points.len(), "clamped B-spline")?;
         let last = n - degree;
         let knots = std::iter::repeat_n(0, degree)
             .chain(0..=last)

@@ -205,7 +205,7 @@ fn circle_claims(out: &mut Vec<Claim>) {
             };
             match offset_arc(&arc, &d) {
                 Ok(ArcOffset::Arc(t)) => {
-                    ok &= t.arc.radius == (q(1) - d.clone()).abs();
+                    ok &= t.arc.radius == num_traits::Signed::abs(&(q(1) - d.clone()));
                     radii.push(t.arc.radius.to_string());
                 }
                 _ => ok = false,
@@ -221,14 +221,5 @@ fn circle_claims(out: &mut Vec<Claim>) {
                 radii.first().cloned().unwrap_or_default()
             ),
         ));
-    }
-}
-
-trait AbsQ {
-    fn abs(self) -> Rational;
-}
-impl AbsQ for Rational {
-    fn abs(self) -> Rational {
-        num_traits::Signed::abs(&self)
     }
 }
