@@ -87,8 +87,9 @@ fn bench(c: &mut Criterion) {
         g.bench_function(format!("certify_tol/{name}"), |bch| {
             bch.iter(|| hausdorff(black_box(&a), black_box(&b), &cfg).unwrap())
         });
+        let text = cert.to_json_string();
         g.bench_function(format!("verify/{name}"), |bch| {
-            bch.iter(|| verify(black_box(&cert.doc)).unwrap())
+            bch.iter(|| verify(black_box(&text)).unwrap())
         });
     }
     g.finish();

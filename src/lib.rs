@@ -12,6 +12,7 @@ pub mod certify;
 pub mod curve;
 #[cfg(feature = "arbitrary")]
 pub mod gen;
+pub mod json;
 pub mod ln;
 pub mod poly;
 pub mod reproduce;

@@ -5,7 +5,6 @@
 mod common;
 
 use common::{exact_dist2, q};
-use lncert::certify::cert::digest_of;
 use lncert::certify::verify::verify;
 use lncert::certify::{hausdorff, ArcDesc, Certificate, Config, ShapeDesc};
 use lncert::curve::{Bezier, V2};
@@ -303,9 +302,9 @@ fn certified(a: &ShapeDesc, b: &ShapeDesc, tol: &str) -> Certificate {
     Certificate::new(a, b, &t, &r).expect("certified")
 }
 
-fn redigest(doc: &mut Value) {
-    let d = digest_of(doc);
-    doc["digest"] = Value::String(d);
+/// Verifies a (possibly edited) certificate document through its text.
+fn check(doc: &Value) -> Result<lncert::certify::verify::Valid, lncert::certify::verify::Invalid> {
+    verify(&doc.to_string())
 }
 
 /// Every string leaf that is a number, with its JSON pointer.
@@ -345,33 +344,184 @@ fn approximant_pair() -> (ShapeDesc, ShapeDesc) {
 fn certificate_round_trip_and_every_number_is_bound() {
     let (a, b) = approximant_pair();
     let cert = certified(&a, &b, "0.02");
-    let valid = verify(&cert.doc).expect("valid");
+    let valid = check(&cert.doc).expect("valid");
     assert!(valid.max_bound <= 0.02 && valid.boxes == cert.box_count());
+    assert!(valid.statement().contains("d_H(A, B) ≤ 1/50"));
     let mut leaves = Vec::new();
     number_leaves(&cert.doc, String::new(), &mut leaves);
     assert!(leaves.len() > 50);
+    // No digest: an edited number is either rejected, or the edited certificate
+    // still proves a true statement (an independent search cannot refute it).
+    let mut rejected = 0;
     for p in &leaves {
         let mut doc = cert.doc.clone();
         *doc.pointer_mut(p).unwrap() = bumped(doc.pointer(p).unwrap());
-        let e = verify(&doc).expect_err(p);
-        // the version is checked before the digest
-        assert!(
-            e.at == "digest" || (p == "/version" && e.at == "version"),
-            "{p}: {e}"
-        );
+        match check(&doc) {
+            Err(_) => rejected += 1,
+            Ok(v) => {
+                let sa = ShapeDesc::from_value(&doc["a"]).unwrap();
+                let sb = ShapeDesc::from_value(&doc["b"]).unwrap();
+                let r = hausdorff(&sa, &sb, &cfg(1e-2)).unwrap();
+                assert!(
+                    Rational::from_float(r.lo).unwrap() <= v.tol,
+                    "{p}: accepted d_H ≤ {}, refuted: {}",
+                    v.tol,
+                    r.lo
+                );
+            }
+        }
+    }
+    assert!(rejected > 0);
+}
+
+/// Nothing rides along unchecked: removing any key, adding any key to any
+/// object, or repeating any key is refused, and the error names that field.
+#[test]
+fn every_key_is_required_and_no_other_key_is_accepted() {
+    let (a, b) = approximant_pair();
+    let cert = certified(&a, &b, "0.02");
+    let text = cert.to_json_string();
+    assert!(verify(&text).is_ok());
+    // every object of the document, by JSON pointer and dotted field name
+    fn objects(v: &Value, ptr: String, field: String, out: &mut Vec<(String, String)>) {
+        match v {
+            Value::Object(m) => {
+                out.push((ptr.clone(), field.clone()));
+                for (k, x) in m {
+                    let f = if field.is_empty() {
+                        k.clone()
+                    } else {
+                        format!("{field}.{k}")
+                    };
+                    objects(x, format!("{ptr}/{k}"), f, out);
+                }
+            }
+            Value::Array(xs) => {
+                for (i, x) in xs.iter().enumerate().take(3) {
+                    objects(x, format!("{ptr}/{i}"), format!("{field}[{i}]"), out);
+                }
+            }
+            _ => {}
+        }
+    }
+    let mut objs = Vec::new();
+    objects(&cert.doc, String::new(), String::new(), &mut objs);
+    assert!(objs.len() >= 10, "{objs:?}");
+    for (ptr, field) in &objs {
+        let keys: Vec<String> = cert
+            .doc
+            .pointer(ptr)
+            .unwrap()
+            .as_object()
+            .unwrap()
+            .keys()
+            .cloned()
+            .collect();
+        let join = |k: &str| {
+            if field.is_empty() {
+                k.to_string()
+            } else {
+                format!("{field}.{k}")
+            }
+        };
+        for k in &keys {
+            let mut doc = cert.doc.clone();
+            doc.pointer_mut(ptr)
+                .unwrap()
+                .as_object_mut()
+                .unwrap()
+                .remove(k);
+            let e = check(&doc).expect_err(&join(k));
+            // a shape object without its one key is refused as a whole
+            assert!(
+                e.at == join(k) || e.at == *field || (field.is_empty() && e.at == "(top level)"),
+                "removed {}: {e}",
+                join(k)
+            );
+        }
+        for extra in ["clockwise", "bound", "digest", "note"] {
+            let mut doc = cert.doc.clone();
+            doc.pointer_mut(ptr)
+                .unwrap()
+                .as_object_mut()
+                .unwrap()
+                .insert(extra.into(), Value::Bool(true));
+            let e = check(&doc).expect_err(&join(extra));
+            assert!(
+                e.at == join(extra) || e.at == *field,
+                "added {}: {e}",
+                join(extra)
+            );
+        }
+    }
+    // a repeated key, at the top and deep inside a shape: the first occurrence
+    // would otherwise be silently dropped
+    for (from, to) in [
+        ("\"tol\": \"1/50\"", "\"tol\": \"1\", \"tol\": \"1/50\""),
+        ("\"piece\": 0", "\"piece\": 0, \"piece\": 0"),
+    ] {
+        assert!(text.contains(from), "{from}");
+        let e = verify(&text.replacen(from, to, 1)).unwrap_err();
+        assert!(e.reason.contains("duplicate"), "{e}");
     }
 }
 
+/// Numbers must be canonical and bounded: one spelling per value, so the text is
+/// the statement.
 #[test]
-fn semantic_checks_reject_forged_certificates_with_a_valid_digest() {
+fn numbers_must_be_canonical_and_bounded() {
     let (a, b) = approximant_pair();
     let cert = certified(&a, &b, "0.02");
-    let hi = verify(&cert.doc).unwrap().max_bound;
+    for (tol, ok) in [
+        (Value::from("1/50"), true),
+        (Value::from("0.02"), false),
+        (Value::from("2/100"), false),
+        (Value::from("+1/50"), false),
+        (Value::from("01/50"), false),
+        (Value::from("1/050"), false),
+        (Value::from("-0"), false),
+        (Value::from("1/1"), false),
+        (Value::from(" 1/50"), false),
+        (Value::from(1), false),
+        (Value::from("1".to_string() + &"0".repeat(100)), true), // 10¹⁰⁰: the limit
+        (Value::from("1".to_string() + &"0".repeat(99) + "1"), false),
+        (Value::from("1".repeat(5000)), false),
+        (Value::from("-1/50"), false),
+    ] {
+        let mut doc = cert.doc.clone();
+        doc["tol"] = tol.clone();
+        let r = check(&doc);
+        assert_eq!(r.is_ok(), ok, "{tol}: {r:?}");
+        if let Err(e) = r {
+            assert_eq!(e.at, "tol", "{tol}: {e}");
+        }
+    }
+    // box indices are plain integers
+    for bad in [
+        Value::from(-1),
+        Value::from(0.0),
+        Value::from("0"),
+        Value::from(1u64 << 40),
+    ] {
+        let mut doc = cert.doc.clone();
+        doc["directions"][0]["boxes"][0]["piece"] = bad.clone();
+        let e = check(&doc).expect_err("bad index");
+        assert_eq!(e.at, "directions[0].boxes[0].piece", "{bad}: {e}");
+    }
+    // the whole document: too large, too deep
+    let deep = format!("{}{}", "[".repeat(40), "]".repeat(40));
+    assert!(verify(&deep).unwrap_err().reason.contains("nested"));
+}
+
+#[test]
+fn semantic_checks_reject_forged_certificates() {
+    let (a, b) = approximant_pair();
+    let cert = certified(&a, &b, "0.02");
+    let hi = check(&cert.doc).unwrap().max_bound;
     let forge = |f: &dyn Fn(&mut Value)| {
         let mut d = cert.doc.clone();
         f(&mut d);
-        redigest(&mut d);
-        verify(&d)
+        check(&d)
     };
     // a tolerance below the proven bound
     let below = Rational::from_float(hi * 0.999).unwrap();
@@ -404,7 +554,8 @@ fn semantic_checks_reject_forged_certificates_with_a_valid_digest() {
     // indices out of range, wrong direction labels, wrong version
     assert!(forge(&|d| d["directions"][0]["boxes"][0]["target"] = Value::from(7)).is_err());
     assert!(forge(&|d| d["directions"][0]["from"] = Value::from("b")).is_err());
-    assert!(forge(&|d| d["version"] = Value::from(2)).is_err());
+    assert!(forge(&|d| d["version"] = Value::from(1)).is_err());
+    assert!(forge(&|d| d["version"] = Value::from(3)).is_err());
 }
 
 /// Moving a control point of the certified approximant by more than the slack
@@ -415,7 +566,7 @@ fn moved_control_points_fail_verification() {
     let (a, b) = approximant_pair();
     let tol = "0.03";
     let cert = certified(&a, &b, tol);
-    let hi = verify(&cert.doc).unwrap().max_bound;
+    let hi = check(&cert.doc).unwrap().max_bound;
     let slack = 0.03 - hi;
     assert!(slack > 0.0);
     let ShapeDesc::Curve(pieces) = &b else {
@@ -432,8 +583,7 @@ fn moved_control_points_fail_verification() {
                 let moved = ShapeDesc::curve(vec![Bezier::new(pts)]).unwrap();
                 let mut doc = cert.doc.clone();
                 doc["b"] = moved.to_json();
-                redigest(&mut doc);
-                let accepted = verify(&doc).is_ok();
+                let accepted = check(&doc).is_ok();
                 let truth = hausdorff(
                     &a,
                     &moved,
@@ -471,7 +621,7 @@ fn certificate_for_arc_and_offset_shapes() {
     // the standard cubic approximation of the quarter circle (k = 0.5523)
     let cubic = shape("M 1 0 C 1 0.5523 0.5523 1 0 1");
     let cert = certified(&arc, &cubic, "0.0003");
-    assert!(verify(&cert.doc).is_ok());
+    assert!(check(&cert.doc).is_ok());
     let off =
         shape(r#"{"offset": {"curve": {"bezier": [[0, 0], [1, 1], [2, 0]]}, "distance": "1/10"}}"#);
     let r = hausdorff(
@@ -497,7 +647,7 @@ fn certificate_for_arc_and_offset_shapes() {
         &r,
     )
     .unwrap();
-    assert!(verify(&cert.doc).is_ok());
+    assert!(check(&cert.doc).is_ok());
     let _ = Scalar::approx(&tol);
 }
 

@@ -80,6 +80,45 @@ fn json_document_certificate_and_svg() {
         "{}",
         String::from_utf8_lossy(&v.stdout)
     );
+    // it speaks about the offset of exactly this curve (stored split at dyadic
+    // parameters), and not about a neighbouring one
+    let c: Value = serde_json::from_str(&std::fs::read_to_string(&cert).unwrap()).unwrap();
+    let b = tmp("approximant.json", &c["b"].to_string());
+    for (distance, curve, code) in [
+        ("-0.5", CUBIC, 0),
+        ("-0.4", CUBIC, 1),
+        (
+            "-0.5",
+            r#"{"bezier": [[-0.95, 0.7], [-0.3, 0.5], [0.3, -2.5], [0.9, -0.21]]}"#,
+            1,
+        ),
+    ] {
+        let a = tmp(
+            "exact.json",
+            &format!(r#"{{"offset": {{"curve": {curve}, "distance": {distance}}}}}"#),
+        );
+        let v = lncert(&[
+            "verify",
+            cert.to_str().unwrap(),
+            "--against",
+            a.to_str().unwrap(),
+            b.to_str().unwrap(),
+        ]);
+        let out = String::from_utf8_lossy(&v.stdout);
+        assert_eq!(v.status.code(), Some(code), "{distance} {curve}: {out}");
+        if code == 0 {
+            assert!(
+                out.contains("exactly the shapes given to --against"),
+                "{out}"
+            );
+            assert!(
+                out.contains("A = the exact offset at signed distance -1/2"),
+                "{out}"
+            );
+        } else {
+            assert!(out.starts_with("invalid: a: "), "{out}");
+        }
+    }
     // a tampered certificate does not
     let mut c: Value = serde_json::from_str(&std::fs::read_to_string(&cert).unwrap()).unwrap();
     c["tol"] = Value::String("1/1000000".into());

@@ -86,7 +86,11 @@ pub fn offset_arc(a: &TravelledArc, d: &Rational) -> Result<ArcOffset, OffsetErr
 /// counter-clockwise circle, returned as four quarter arcs). `None` when the
 /// document is neither (e.g. a curve).
 pub fn parse_arc_input(text: &str) -> Option<Result<Vec<TravelledArc>, OffsetError>> {
-    let doc: Value = serde_json::from_str(text).ok()?;
+    // the bounded, duplicate-refusing reader; a document it refuses is left to
+    // the curve reader, which refuses it with the same message
+    let doc: Value = crate::json::parse(text, &crate::json::Limits::DEFAULT)
+        .ok()?
+        .to_value();
     let map = doc.as_object()?;
     if map.contains_key("arc") {
         let clockwise = map["arc"]

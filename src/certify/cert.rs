@@ -1,48 +1,55 @@
-//! The certificate format (version 1).
+//! The certificate format (version 2).
 //!
-//! A certificate is a JSON document:
+//! A certificate is a JSON document with exactly these keys (any order):
 //!
 //! ```text
 //! {
-//!   "format": "lncert-hausdorff-certificate", "version": 1,
-//!   "claim": "hausdorff(a, b) <= tol",
-//!   "tol": "1/1000",                         exact rational
-//!   "a": SHAPE, "b": SHAPE,                  canonical shapes, exact rational strings
-//!   "bounds": {"lo": Q, "hi": Q},            the search's figures (information only)
-//!   "directions": [                          exactly two: a→b and b→a
+//!   "format": "lncert-hausdorff-certificate", "version": 2,
+//!   "claim": "hausdorff(a, b) <= tol",       the one claim of this format
+//!   "tol": Q,                                 exact rational, ≥ 0
+//!   "a": SHAPE, "b": SHAPE,                   canonical shapes
+//!   "directions": [                           exactly two: a→b and b→a
 //!     {"from": "a", "to": "b", "boxes": [
-//!        {"piece": i, "s": [Q, Q], "target": j, "t": Q, "k": Q, "bound": Q}, ...]},
-//!     {"from": "b", "to": "a", "boxes": [...]}],
-//!   "digest": "sha256:…"                     over the canonical serialisation of the rest
+//!        {"piece": i, "s": [Q, Q], "target": j, "t": Q, "k": Q}, ...]},
+//!     {"from": "b", "to": "a", "boxes": [...]}]
 //! }
 //! ```
 //!
-//! Every number is an exact rational string (`"p/q"` or an integer): floats of the
-//! search are written exactly, so the verifier reads the very numbers the search
-//! used. The boxes of each direction must cover every parameter domain of the
-//! source shape; for each box `[s0, s1]` of piece `i`, the foot map
+//! `Q` is a canonical exact rational string (`"0"`, `"-3"`, `"7/2"`: lowest
+//! terms, no `+`, no leading zeros, no `/1`, at most 4 096 characters, magnitude
+//! ≤ 10¹⁰⁰); `i`, `j` are JSON integers. `SHAPE` is the canonical shape form of
+//! [`ShapeDesc::to_json`] (`proofs/certify-hausdorff.md` specifies it). Floats of
+//! the search are written exactly, so the verifier reads the very numbers the
+//! search used. The boxes of each direction must cover every parameter domain of
+//! the source shape; for each box `[s0, s1]` of piece `i`, the foot map
 //! `τ(s) = t + k (s − (s0+s1)/2)` must stay inside the domain of piece `j` of the
 //! target, and `sup |A(s) − B(τ(s))|` over the box — recomputed by the verifier —
 //! must be ≤ `tol`. That proves `h(a, b) ≤ tol` and `h(b, a) ≤ tol`, hence the claim.
-//! The digest detects accidental or deliberate edits of any field; the semantic
-//! checks stand on their own (a certificate with a recomputed digest is still
-//! rejected if its boxes do not prove the claim).
+//!
+//! Every field is checked: there is nothing informational (version 1's search
+//! figures `bounds` and per-box `bound` are gone), and an unknown or duplicate
+//! key anywhere makes the certificate invalid. There is no digest: an unkeyed
+//! hash authenticates nothing (anyone who edits a certificate can recompute it),
+//! and the verifier does not need one — it checks what the document *says*. A
+//! reader who wants to know *which* shapes a certificate speaks about asks
+//! `lncert verify CERT --against A B`.
 
 use super::search::OneSided;
 use super::{HausdorffBounds, ShapeDesc};
 use crate::scalar::{rational_from_f64, Rational};
 use serde_json::{json, Value};
-use sha2::{Digest, Sha256};
 
 /// Format name in the `format` field.
 pub const FORMAT: &str = "lncert-hausdorff-certificate";
 /// Current format version.
-pub const VERSION: u64 = 1;
+pub const VERSION: u64 = 2;
+/// The claim of this format, the value of the `claim` field.
+pub const CLAIM: &str = "hausdorff(a, b) <= tol";
 
 /// A tolerance certificate (see the module docs for the format).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Certificate {
-    /// The JSON document, digest included.
+    /// The JSON document.
     pub doc: Value,
 }
 
@@ -64,22 +71,8 @@ fn direction(from: &str, to: &str, d: &OneSided) -> Value {
             "target": b.target,
             "t": q(b.t),
             "k": q(b.k),
-            "bound": q(b.bound),
         })).collect::<Vec<_>>(),
     })
-}
-
-/// The digest of a certificate document: SHA-256 over the compact serialisation
-/// (keys sorted) of the document without its `digest` field.
-pub fn digest_of(doc: &Value) -> String {
-    let mut d = doc.clone();
-    if let Value::Object(m) = &mut d {
-        m.remove("digest");
-    }
-    let bytes = serde_json::to_vec(&d).unwrap_or_default();
-    let hash = Sha256::digest(&bytes);
-    let hex: String = hash.iter().map(|b| format!("{b:02x}")).collect();
-    format!("sha256:{hex}")
 }
 
 impl Certificate {
@@ -95,24 +88,21 @@ impl Certificate {
         let all = r.a_to_b.boxes.iter().chain(r.b_to_a.boxes.iter());
         if r.a_to_b.boxes.is_empty()
             || r.b_to_a.boxes.is_empty()
-            || all.clone().any(|bx| !(bx.bound <= tol_f))
+            || all.clone().any(|bx| {
+                !(bx.bound <= tol_f) || ![bx.s.0, bx.s.1, bx.t, bx.k].iter().all(|x| x.is_finite())
+            })
         {
             return None;
         }
-        let mut doc = json!({
+        let doc = json!({
             "format": FORMAT,
             "version": VERSION,
-            "claim": "hausdorff(a, b) <= tol",
+            "claim": CLAIM,
             "tol": tol.to_string(),
             "a": a.to_json(),
             "b": b.to_json(),
-            "bounds": {"lo": q(r.lo), "hi": q(r.hi)},
             "directions": [direction("a", "b", &r.a_to_b), direction("b", "a", &r.b_to_a)],
         });
-        let dg = digest_of(&doc);
-        if let Value::Object(m) = &mut doc {
-            m.insert("digest".to_string(), Value::String(dg));
-        }
         Some(Certificate { doc })
     }
 

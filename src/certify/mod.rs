@@ -29,6 +29,7 @@
 
 pub mod cert;
 pub mod jet;
+mod same;
 pub mod search;
 pub mod shape;
 pub mod verify;

@@ -26,8 +26,8 @@ use crate::scalar::{interval_from_rational, Interval, Rational, Scalar, ScalarSq
 use num_traits::{Signed, Zero};
 use serde_json::{json, Value};
 
-/// Largest accepted coordinate magnitude: squares of distances must stay far from
-/// the f64 overflow threshold in interval arithmetic.
+/// Largest accepted coordinate magnitude, `10¹⁰⁰` (compared exactly): squares of
+/// distances must stay far from the f64 overflow threshold in interval arithmetic.
 pub const MAX_COORDINATE: f64 = 1e100;
 
 /// A circular arc, counter-clockwise from direction `from` to direction `to`
@@ -104,7 +104,11 @@ fn check_keys(
 ) -> Result<(), CertifyError> {
     match map.keys().find(|k| !keys.contains(&k.as_str())) {
         Some(k) => Err(err(
-            format!("{field}.{k}"),
+            if field == "(top level)" {
+                k.to_string()
+            } else {
+                format!("{field}.{k}")
+            },
             format!("unknown field; expected one of {keys:?}"),
         )),
         None => Ok(()),
@@ -134,9 +138,17 @@ impl ShapeDesc {
                 parse_svg_path(trimmed).map_err(|e| err("path", e.to_string()))?,
             );
         }
-        let doc: Value = serde_json::from_str(trimmed)
-            .map_err(|e| err("(json)", format!("malformed JSON: {e}")))?;
-        Self::from_value(&doc)
+        let doc =
+            crate::json::parse(trimmed, &crate::json::Limits::DEFAULT).map_err(|e| {
+                match e.kind {
+                    crate::json::ErrorKind::Syntax => err("(json)", format!("malformed JSON: {e}")),
+                    _ => err(
+                        e.path.clone(),
+                        format!("{} (line {}, column {})", e.reason, e.line, e.column),
+                    ),
+                }
+            })?;
+        Self::from_value(&doc.to_value())
     }
 
     /// [`ShapeDesc::parse`] on a parsed JSON value.
@@ -147,6 +159,24 @@ impl ShapeDesc {
                 format!("expected an object, found {}", describe(doc)),
             ));
         };
+        let kinds = [
+            "arc",
+            "offset",
+            "convolution",
+            "bezier",
+            "beziers",
+            "bspline",
+        ];
+        let given: Vec<&str> = kinds.into_iter().filter(|k| map.contains_key(*k)).collect();
+        if given.len() > 1 {
+            return Err(err(
+                "(top level)",
+                format!(
+                    "a shape has exactly one of the keys {kinds:?}; found {}",
+                    given.join(" and ")
+                ),
+            ));
+        }
         if let Some(a) = map.get("arc") {
             check_keys(map, "(top level)", &["arc"])?;
             let Value::Object(m) = a else {
@@ -422,7 +452,8 @@ impl ShapeDesc {
 }
 
 fn check_magnitude(r: &Rational, field: &str) -> Result<(), CertifyError> {
-    if r.approx().abs() > MAX_COORDINATE {
+    // exactly |r| ≤ 10¹⁰⁰ (`MAX_COORDINATE`), the rule the verifier applies too
+    if !crate::scalar::abs_le_pow10(r, 100) {
         return Err(err(
             field,
             format!("magnitude above the supported limit {MAX_COORDINATE:e}"),

@@ -423,9 +423,22 @@ const CURVE_KEYS: [&str; 3] = ["bezier", "beziers", "bspline"];
 /// assert!(parse_json_curve(r#"{"bezier": [[1, 2]]}"#).is_err()); // too few points
 /// ```
 pub fn parse_json_curve(text: &str) -> Result<Vec<Bezier<Rational>>, CurveParseError> {
-    let doc: Value = serde_json::from_str(text).map_err(|e| CurveParseError::Json {
-        message: e.to_string(),
-    })?;
+    let doc: Value = crate::json::parse(text, &crate::json::Limits::DEFAULT)
+        .map_err(|e| match e.kind {
+            // a duplicate or an over-limit value is a problem of a field
+            crate::json::ErrorKind::Duplicate | crate::json::ErrorKind::Limit
+                if e.path != "(top level)" =>
+            {
+                field_err(
+                    &e.path,
+                    format!("{} (line {}, column {})", e.reason, e.line, e.column),
+                )
+            }
+            _ => CurveParseError::Json {
+                message: e.to_string(),
+            },
+        })?
+        .to_value();
     let Value::Object(map) = &doc else {
         return Err(field_err(
             "(top level)",

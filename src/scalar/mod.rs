@@ -24,7 +24,7 @@ pub use interval::{
     interval_from_rational, interval_to_json, sin_cos_enclosure, Interval, IntervalExt,
 };
 pub use rational::{
-    parse_rational, rational_from_f64, rational_to_string, ParseNumberError, Rational,
+    abs_le_pow10, parse_rational, rational_from_f64, rational_to_string, ParseNumberError, Rational,
 };
 pub use surd::Surd;
 

@@ -143,6 +143,19 @@ pub fn rational_from_f64(x: f64) -> Option<Rational> {
     }
 }
 
+/// `|r| ≤ 10^e`, decided exactly.
+///
+/// # Examples
+/// ```
+/// use lncert::scalar::{abs_le_pow10, parse_rational};
+/// assert!(abs_le_pow10(&parse_rational("-1e100").unwrap(), 100));
+/// assert!(!abs_le_pow10(&parse_rational("1e100").unwrap() + parse_rational("1e-400").unwrap(), 100));
+/// ```
+pub fn abs_le_pow10(r: &Rational, e: u32) -> bool {
+    let bound = num_traits::pow(BigInt::from(10u32), e as usize);
+    r.numer().abs() <= bound * r.denom().abs()
+}
+
 /// `"p/q"` (or `"p"` for integers), the CLI's and JSON's exact format.
 pub fn rational_to_string(r: &Rational) -> String {
     r.to_string()

@@ -1,0 +1,293 @@
+//! The independent certificate checker behind `lncert verify`.
+//!
+//! It shares nothing with the search but the scalar layer (inari intervals,
+//! exact rationals) and the bounded JSON reader ([`crate::json`]): its own
+//! strict reader of the canonical shapes ([`read`]), its own de Casteljau
+//! evaluation, arc and offset formulas and its own second-order Taylor
+//! arithmetic ([`eval`]). It never searches: it walks the boxes of the
+//! certificate, checks that they cover every parameter domain exactly (rational
+//! comparisons), that each foot map stays inside its target's domain, and that
+//! the recomputed bound of each box is ≤ the tolerance; the first failure is
+//! reported with its field, or its direction and box index.
+//!
+//! # What is read, and what is refused
+//!
+//! A certificate is read *strictly*: the document is parsed under
+//! [`Limits::DEFAULT`](crate::json::Limits::DEFAULT) (size, depth, values,
+//! number length — checked while parsing), duplicate keys are refused at every
+//! level, every object must have exactly the keys of the format (no key is
+//! ignored, none is informational), every number must be in canonical form
+//! (`"p/q"` in lowest terms) and within `10¹⁰⁰` in magnitude, and every shape
+//! must be in the canonical shape form (see `proofs/certify-hausdorff.md`). So
+//! the statement a valid certificate makes is exactly the one [`Valid::statement`]
+//! prints, and nothing in the file is left unchecked.
+//!
+//! Work is linear in the size of the document: each box costs at most
+//! `O(64²)` interval operations (64 control points per piece), and each number
+//! at most 4 096 characters of big-integer parsing.
+
+mod eval;
+mod read;
+
+use super::cert::{CLAIM, FORMAT, VERSION};
+use crate::json::{parse, Json, Limits};
+use crate::scalar::Rational;
+use eval::{check_box, le_rational, VShape};
+use num_traits::{Signed, Zero};
+use read::{canonical_index, canonical_rational, exact_object, read_shape};
+
+/// Why a certificate is invalid.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Invalid {
+    /// Where: a field (`a.arc.radius`), or `directions[d].boxes[i]`.
+    pub at: String,
+    /// What failed.
+    pub reason: String,
+}
+
+impl std::fmt::Display for Invalid {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}: {}", self.at, self.reason)
+    }
+}
+
+/// A valid certificate: what it proves, and the figures of the check.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Valid {
+    /// The tolerance proven: `d_H(A, B) ≤ tol`.
+    pub tol: Rational,
+    /// Shape `A`, described from its exact data.
+    pub a: String,
+    /// Shape `B`, described from its exact data.
+    pub b: String,
+    /// The largest recomputed box bound (an upper bound on the Hausdorff distance).
+    pub max_bound: f64,
+    /// Boxes checked.
+    pub boxes: usize,
+}
+
+impl Valid {
+    /// The statement proven, in words.
+    pub fn statement(&self) -> String {
+        format!(
+            "d_H(A, B) ≤ {} where
+  A = {}
+  B = {}",
+            self.tol, self.a, self.b
+        )
+    }
+}
+
+pub(crate) fn inv(at: impl Into<String>, reason: impl Into<String>) -> Invalid {
+    Invalid {
+        at: at.into(),
+        reason: reason.into(),
+    }
+}
+
+/// Reads one shape document in the canonical form exactly as the verifier
+/// reads a certificate's `a` and `b`; `Ok` is its description in words.
+///
+/// Regularity of an offset's or convolution's curve is not decided here: a
+/// certificate proves it, since its boxes evaluate the normal of every piece
+/// over its whole domain with `nᵀQn` enclosed away from 0.
+///
+/// # Examples
+/// ```
+/// use lncert::certify::verify::read_canonical_shape;
+/// let ok = read_canonical_shape(r#"{"beziers": [[["0", "0"], ["1/2", "1"]]]}"#).unwrap();
+/// assert!(ok.contains("1 Bézier piece of degree ≤ 1"));
+/// // the user language accepts JSON numbers; the canonical form does not
+/// let e = read_canonical_shape(r#"{"beziers": [[[0, 0], ["1/2", "1"]]]}"#).unwrap_err();
+/// assert_eq!(e.at, "beziers[0][0][0]");
+/// ```
+pub fn read_canonical_shape(text: &str) -> Result<String, Invalid> {
+    let doc = parse(text, &Limits::DEFAULT).map_err(|e| inv(e.path.clone(), e.reason))?;
+    read_shape(&doc, "").map(|s| s.text).map_err(top_level)
+}
+
+/// Errors about the document itself name it `(top level)`.
+fn top_level(mut e: Invalid) -> Invalid {
+    if e.at.is_empty() {
+        e.at = "(top level)".to_string();
+    }
+    e
+}
+
+#[cfg(test)]
+mod tests;
+
+/// The keys of a certificate, all required.
+const KEYS: [&str; 7] = ["format", "version", "claim", "tol", "a", "b", "directions"];
+
+/// Verifies a certificate document.
+///
+/// # Examples
+/// ```
+/// use lncert::certify::{hausdorff, Certificate, Config, ShapeDesc};
+/// use lncert::certify::verify::verify;
+/// use lncert::scalar::parse_rational;
+/// let a = ShapeDesc::parse("M 0 0 Q 0.5 0.5 1 0").unwrap();
+/// let b = ShapeDesc::parse("M 0 0 L 1 0").unwrap();
+/// let tol = parse_rational("0.26").unwrap();
+/// let r = hausdorff(&a, &b, &Config { tol: Some(0.26), ..Config::default() }).unwrap();
+/// let cert = Certificate::new(&a, &b, &tol, &r).unwrap();
+/// let valid = verify(&cert.to_json_string()).unwrap();
+/// assert!(valid.statement().contains("d_H(A, B) ≤ 13/50"));
+/// let mut forged = cert.doc.clone();
+/// forged["tol"] = "1/5".into(); // 0.2 < 1/4: false claim
+/// assert!(verify(&forged.to_string()).is_err());
+/// forged["tol"] = "0.26".into(); // not canonical
+/// assert_eq!(verify(&forged.to_string()).unwrap_err().at, "tol");
+/// ```
+pub fn verify(text: &str) -> Result<Valid, Invalid> {
+    let doc = parse(text, &Limits::DEFAULT).map_err(|e| {
+        inv(
+            e.path.clone(),
+            format!("{} (line {}, column {})", e.reason, e.line, e.column),
+        )
+    })?;
+    verify_json(&doc)
+}
+
+/// [`verify`] on a document already read by [`crate::json::parse`].
+pub fn verify_json(doc: &Json) -> Result<Valid, Invalid> {
+    check_document(doc).map_err(top_level)
+}
+
+fn check_document(doc: &Json) -> Result<Valid, Invalid> {
+    let [format, version, claim, tol, a, b, dirs] = exact_object(doc, "", KEYS)?;
+    if format.as_str() != Some(FORMAT) {
+        return Err(inv("format", format!("expected \"{FORMAT}\"")));
+    }
+    if !matches!(version, Json::Number(v) if **v == *VERSION.to_string()) {
+        return Err(inv(
+            "version",
+            format!("unsupported; this verifier reads version {VERSION} only (version 1 carried unverified fields: re-run the search)"),
+        ));
+    }
+    if claim.as_str() != Some(CLAIM) {
+        return Err(inv(
+            "claim",
+            format!("expected \"{CLAIM}\", the one claim of this format"),
+        ));
+    }
+    let tol = canonical_rational(tol, "tol")?;
+    if tol.is_negative() {
+        return Err(inv("tol", "negative"));
+    }
+    let shapes = [read_shape(a, "a")?, read_shape(b, "b")?];
+    let dirs = dirs
+        .as_array()
+        .filter(|d| d.len() == 2)
+        .ok_or_else(|| inv("directions", "expected the two directions a→b and b→a"))?;
+    let mut max_bound = 0.0f64;
+    let mut count = 0;
+    for (di, (from, to)) in [(0usize, 1usize), (1, 0)].into_iter().enumerate() {
+        let names = ["a", "b"];
+        let at_d = format!("directions[{di}]");
+        let [dfrom, dto, boxes] = exact_object(&dirs[di], &at_d, ["from", "to", "boxes"])?;
+        if dfrom.as_str() != Some(names[from]) || dto.as_str() != Some(names[to]) {
+            return Err(inv(
+                at_d,
+                format!("expected from \"{}\" to \"{}\"", names[from], names[to]),
+            ));
+        }
+        let boxes = boxes
+            .as_array()
+            .ok_or_else(|| inv(format!("{at_d}.boxes"), "expected a list of boxes"))?;
+        let (src, dst) = (&shapes[from], &shapes[to]);
+        // coverage: per piece, boxes in increasing order, contiguous, from 0 to ≥ the end
+        let mut cursor: Vec<Option<Rational>> = vec![Some(Rational::zero()); src.pieces.len()];
+        let mut last_piece = 0usize;
+        for (bi, bx) in boxes.iter().enumerate() {
+            let at = format!("{at_d}.boxes[{bi}]");
+            let [piece, s, target, t, k] =
+                exact_object(bx, &at, ["piece", "s", "target", "t", "k"])?;
+            let piece = canonical_index(piece, &format!("{at}.piece"))?;
+            let target = canonical_index(target, &format!("{at}.target"))?;
+            if piece >= src.pieces.len() {
+                return Err(inv(
+                    format!("{at}.piece"),
+                    format!(
+                        "out of range: {} has {} pieces",
+                        names[from],
+                        src.pieces.len()
+                    ),
+                ));
+            }
+            if target >= dst.pieces.len() {
+                return Err(inv(
+                    format!("{at}.target"),
+                    format!(
+                        "out of range: {} has {} pieces",
+                        names[to],
+                        dst.pieces.len()
+                    ),
+                ));
+            }
+            if piece < last_piece {
+                return Err(inv(at, "boxes are not ordered by piece"));
+            }
+            last_piece = piece;
+            let s = match s.as_array() {
+                Some([s0, s1]) => [s0, s1],
+                _ => return Err(inv(format!("{at}.s"), "expected [s0, s1]")),
+            };
+            let (s0, s1) = (
+                canonical_rational(s[0], &format!("{at}.s[0]"))?,
+                canonical_rational(s[1], &format!("{at}.s[1]"))?,
+            );
+            match &cursor[piece] {
+                Some(c) if *c == s0 && s0 < s1 => {}
+                Some(c) => {
+                    return Err(inv(at, format!("gap or overlap in the cover of piece {piece}: expected a box starting at {c}, ending after it")))
+                }
+                None => return Err(inv(at, format!("piece {piece} is already covered"))),
+            }
+            let end = src.ends[piece];
+            cursor[piece] = if le_rational(end.sup(), &s1) {
+                None
+            } else {
+                Some(s1.clone())
+            };
+            let t = canonical_rational(t, &format!("{at}.t"))?;
+            let k = canonical_rational(k, &format!("{at}.k"))?;
+            let bound = check_box(
+                &src.pieces[piece],
+                &s0,
+                &s1,
+                &dst.pieces[target],
+                dst.ends[target],
+                &t,
+                &k,
+            )
+            .map_err(|r| inv(&at, r))?;
+            if !le_rational(bound, &tol) {
+                return Err(inv(
+                    at,
+                    format!(
+                        "the recomputed bound {bound:e} exceeds the tolerance {}",
+                        tol
+                    ),
+                ));
+            }
+            max_bound = max_bound.max(bound);
+            count += 1;
+        }
+        if let Some(p) = cursor.iter().position(Option::is_some) {
+            return Err(inv(
+                format!("directions[{di}].boxes"),
+                format!("piece {p} of {} is not covered to its end", names[from]),
+            ));
+        }
+    }
+    let [a, b] = shapes.map(|s: VShape| s.text);
+    Ok(Valid {
+        tol,
+        a,
+        b,
+        max_bound,
+        boxes: count,
+    })
+}

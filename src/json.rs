@@ -1,0 +1,673 @@
+//! A strict, bounded JSON reader (RFC 8259) for everything lncert reads from
+//! users and certificates.
+//!
+//! `serde_json` keeps the *last* of two equal keys and builds its whole tree
+//! before anyone can look at its size. Neither is acceptable for a public
+//! statement such as a certificate, so shapes, curves and certificates are read
+//! here instead:
+//!
+//! - **duplicate keys are rejected** at every level, with the key's path;
+//! - **limits are checked while parsing**, before memory is spent: total bytes,
+//!   nesting depth, total nodes (values), and characters per string and per
+//!   number token ([`Limits`]);
+//! - numbers are kept as their exact text (never read through `f64`);
+//! - nothing else is lenient: no comments, no trailing commas, no control
+//!   characters in strings, no lone surrogates, no text after the value.
+//!
+//! Work and memory are linear in the input: every byte is looked at a bounded
+//! number of times, and a node costs at most a few dozen bytes besides its text.
+//!
+//! # Examples
+//! ```
+//! use lncert::json::{parse, Json, Limits};
+//! let doc = parse(r#"{"tol": "1/1000", "n": [1, 2.50]}"#, &Limits::DEFAULT).unwrap();
+//! assert_eq!(doc.get("tol").and_then(Json::as_str), Some("1/1000"));
+//! let e = parse(r#"{"tol": "1", "tol": "2"}"#, &Limits::DEFAULT).unwrap_err();
+//! assert_eq!(e.path, "tol");
+//! assert!(e.reason.contains("duplicate"));
+//! ```
+
+use std::fmt;
+
+/// Limits of the reader, checked while parsing.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Limits {
+    /// Largest input, in bytes.
+    pub max_bytes: usize,
+    /// Deepest nesting of arrays and objects.
+    pub max_depth: usize,
+    /// Most values (objects, arrays, strings, numbers, literals) in the document.
+    pub max_nodes: usize,
+    /// Longest string, in bytes after unescaping.
+    pub max_string_bytes: usize,
+    /// Longest number token, in bytes.
+    pub max_number_bytes: usize,
+}
+
+impl Limits {
+    /// The limits of every lncert input: 128 MiB, depth 32, 8 Mi values,
+    /// strings up to 1 MB (SVG path data), numbers up to 4 096 characters.
+    pub const DEFAULT: Limits = Limits {
+        max_bytes: 128 << 20,
+        max_depth: 32,
+        max_nodes: 8 << 20,
+        max_string_bytes: 1_000_000,
+        max_number_bytes: 4096,
+    };
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Limits::DEFAULT
+    }
+}
+
+/// A JSON value; object members keep their order and are unique.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Json {
+    /// `null`
+    Null,
+    /// `true` / `false`
+    Bool(bool),
+    /// A number, as its exact text (`-0.5e3`).
+    Number(Box<str>),
+    /// A string, unescaped.
+    String(Box<str>),
+    /// An array.
+    Array(Vec<Json>),
+    /// An object: its members in document order, keys unique.
+    Object(Vec<(Box<str>, Json)>),
+}
+
+impl Json {
+    /// The member `key` of an object.
+    pub fn get(&self, key: &str) -> Option<&Json> {
+        match self {
+            Json::Object(m) => m.iter().find(|(k, _)| &**k == key).map(|(_, v)| v),
+            _ => None,
+        }
+    }
+    /// The string, if this is one.
+    pub fn as_str(&self) -> Option<&str> {
+        match self {
+            Json::String(s) => Some(s),
+            _ => None,
+        }
+    }
+    /// The elements, if this is an array.
+    pub fn as_array(&self) -> Option<&[Json]> {
+        match self {
+            Json::Array(a) => Some(a),
+            _ => None,
+        }
+    }
+    /// The members, if this is an object.
+    pub fn as_object(&self) -> Option<&[(Box<str>, Json)]> {
+        match self {
+            Json::Object(m) => Some(m),
+            _ => None,
+        }
+    }
+    /// A short description for error messages (`a string`, `an array of 3 elements`).
+    pub fn describe(&self) -> String {
+        match self {
+            Json::Null => "null".to_string(),
+            Json::Bool(_) => "a boolean".to_string(),
+            Json::Number(_) => "a number".to_string(),
+            Json::String(_) => "a string".to_string(),
+            Json::Array(a) => format!("an array of {} elements", a.len()),
+            Json::Object(_) => "an object".to_string(),
+        }
+    }
+    /// The same document as a `serde_json` value (numbers keep their exact text).
+    pub fn to_value(&self) -> serde_json::Value {
+        use serde_json::Value;
+        match self {
+            Json::Null => Value::Null,
+            Json::Bool(b) => Value::Bool(*b),
+            // the token was validated by the grammar, which serde_json shares
+            Json::Number(n) => serde_json::from_str::<serde_json::Number>(n)
+                .map(Value::Number)
+                .unwrap_or(Value::Null),
+            Json::String(s) => Value::String(s.to_string()),
+            Json::Array(a) => Value::Array(a.iter().map(Json::to_value).collect()),
+            Json::Object(m) => Value::Object(
+                m.iter()
+                    .map(|(k, v)| (k.to_string(), v.to_value()))
+                    .collect(),
+            ),
+        }
+    }
+}
+
+/// Why a document was rejected: where (a field path such as `a.arc.center[1]`,
+/// and the line and column) and why.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub struct JsonError {
+    /// Path of the value being read (`(top level)` outside any value).
+    pub path: String,
+    /// 1-based line of the offending byte.
+    pub line: usize,
+    /// 1-based column (in bytes) of the offending byte.
+    pub column: usize,
+    /// What is wrong.
+    pub reason: String,
+    /// Which kind of problem.
+    pub kind: ErrorKind,
+}
+
+/// The kinds of [`JsonError`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ErrorKind {
+    /// Not JSON (RFC 8259), or not UTF-8.
+    Syntax,
+    /// Over one of the [`Limits`].
+    Limit,
+    /// A key given twice in one object.
+    Duplicate,
+}
+
+impl fmt::Display for JsonError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{} (line {}, column {}): {}",
+            self.path, self.line, self.column, self.reason
+        )
+    }
+}
+
+enum Seg<'a> {
+    Key(&'a str),
+    Index(usize),
+}
+
+struct Parser<'a> {
+    text: &'a str,
+    b: &'a [u8],
+    pos: usize,
+    nodes: usize,
+    lim: Limits,
+    path: Vec<Seg<'a>>,
+}
+
+/// Reads one JSON document under `limits`.
+pub fn parse(text: &str, limits: &Limits) -> Result<Json, JsonError> {
+    let mut p = Parser {
+        text,
+        b: text.as_bytes(),
+        pos: 0,
+        nodes: 0,
+        lim: *limits,
+        path: Vec::new(),
+    };
+    if text.len() > limits.max_bytes {
+        return Err(p.limit(format!(
+            "the document has {} bytes, more than the limit of {}",
+            text.len(),
+            limits.max_bytes
+        )));
+    }
+    p.ws();
+    let v = p.value(0)?;
+    p.ws();
+    if p.pos < p.b.len() {
+        return Err(p.err("text after the JSON value"));
+    }
+    Ok(v)
+}
+
+/// Reads one JSON document from bytes (which must be UTF-8) under `limits`.
+pub fn parse_bytes(bytes: &[u8], limits: &Limits) -> Result<Json, JsonError> {
+    if bytes.len() > limits.max_bytes {
+        return Err(JsonError {
+            path: "(top level)".to_string(),
+            line: 1,
+            column: 1,
+            reason: format!(
+                "the document has {} bytes, more than the limit of {}",
+                bytes.len(),
+                limits.max_bytes
+            ),
+            kind: ErrorKind::Limit,
+        });
+    }
+    match std::str::from_utf8(bytes) {
+        Ok(t) => parse(t, limits),
+        Err(e) => {
+            let upto = &bytes[..e.valid_up_to()];
+            let line = 1 + upto.iter().filter(|&&c| c == b'\n').count();
+            let column = 1 + upto.iter().rev().take_while(|&&c| c != b'\n').count();
+            Err(JsonError {
+                path: "(top level)".to_string(),
+                line,
+                column,
+                reason: "not UTF-8 text".to_string(),
+                kind: ErrorKind::Syntax,
+            })
+        }
+    }
+}
+
+impl<'a> Parser<'a> {
+    fn path_string(&self) -> String {
+        if self.path.is_empty() {
+            return "(top level)".to_string();
+        }
+        let mut s = String::new();
+        for seg in &self.path {
+            match seg {
+                Seg::Key(k) => {
+                    if !s.is_empty() {
+                        s.push('.');
+                    }
+                    s.push_str(k);
+                }
+                Seg::Index(i) => s.push_str(&format!("[{i}]")),
+            }
+        }
+        s
+    }
+
+    fn err(&self, reason: impl Into<String>) -> JsonError {
+        self.err_of(ErrorKind::Syntax, reason)
+    }
+
+    fn limit(&self, reason: impl Into<String>) -> JsonError {
+        self.err_of(ErrorKind::Limit, reason)
+    }
+
+    fn err_of(&self, kind: ErrorKind, reason: impl Into<String>) -> JsonError {
+        let upto = &self.b[..self.pos.min(self.b.len())];
+        let line = 1 + upto.iter().filter(|&&c| c == b'\n').count();
+        let column = 1 + upto.iter().rev().take_while(|&&c| c != b'\n').count();
+        JsonError {
+            path: self.path_string(),
+            line,
+            column,
+            reason: reason.into(),
+            kind,
+        }
+    }
+
+    fn peek(&self) -> Option<u8> {
+        self.b.get(self.pos).copied()
+    }
+
+    fn ws(&mut self) {
+        while matches!(self.peek(), Some(b' ' | b'\t' | b'\n' | b'\r')) {
+            self.pos += 1;
+        }
+    }
+
+    fn node(&mut self) -> Result<(), JsonError> {
+        self.nodes += 1;
+        if self.nodes > self.lim.max_nodes {
+            return Err(self.limit(format!(
+                "more than {} values in the document",
+                self.lim.max_nodes
+            )));
+        }
+        Ok(())
+    }
+
+    fn value(&mut self, depth: usize) -> Result<Json, JsonError> {
+        self.node()?;
+        match self.peek() {
+            None => Err(self.err("unexpected end of the document")),
+            Some(b'{') => self.object(depth + 1),
+            Some(b'[') => self.array(depth + 1),
+            Some(b'"') => Ok(Json::String(self.string()?.into_boxed_str())),
+            Some(b'-' | b'0'..=b'9') => self.number(),
+            Some(b't') => self.literal("true", Json::Bool(true)),
+            Some(b'f') => self.literal("false", Json::Bool(false)),
+            Some(b'n') => self.literal("null", Json::Null),
+            Some(c) => Err(self.err(format!("unexpected character {:?}", self.char_at(c)))),
+        }
+    }
+
+    fn char_at(&self, c: u8) -> String {
+        self.text
+            .get(self.pos..)
+            .and_then(|s| s.chars().next())
+            .map(|ch| ch.to_string())
+            .unwrap_or_else(|| format!("\\x{c:02x}"))
+    }
+
+    fn literal(&mut self, word: &str, v: Json) -> Result<Json, JsonError> {
+        if self.b[self.pos..].starts_with(word.as_bytes()) {
+            self.pos += word.len();
+            Ok(v)
+        } else {
+            Err(self.err(format!("expected `{word}`")))
+        }
+    }
+
+    fn enter(&self, depth: usize) -> Result<(), JsonError> {
+        if depth > self.lim.max_depth {
+            return Err(self.limit(format!(
+                "nested deeper than the limit of {}",
+                self.lim.max_depth
+            )));
+        }
+        Ok(())
+    }
+
+    fn array(&mut self, depth: usize) -> Result<Json, JsonError> {
+        self.enter(depth)?;
+        self.pos += 1;
+        let mut items = Vec::new();
+        self.ws();
+        if self.peek() == Some(b']') {
+            self.pos += 1;
+            return Ok(Json::Array(items));
+        }
+        loop {
+            self.ws();
+            self.path.push(Seg::Index(items.len()));
+            let v = self.value(depth)?;
+            self.path.pop();
+            items.push(v);
+            self.ws();
+            match self.peek() {
+                Some(b',') => self.pos += 1,
+                Some(b']') => {
+                    self.pos += 1;
+                    return Ok(Json::Array(items));
+                }
+                _ => return Err(self.err("expected `,` or `]` in an array")),
+            }
+        }
+    }
+
+    fn object(&mut self, depth: usize) -> Result<Json, JsonError> {
+        self.enter(depth)?;
+        self.pos += 1;
+        let mut members: Vec<(Box<str>, Json)> = Vec::new();
+        let mut seen: std::collections::HashSet<Box<str>> = std::collections::HashSet::new();
+        self.ws();
+        if self.peek() == Some(b'}') {
+            self.pos += 1;
+            return Ok(Json::Object(members));
+        }
+        loop {
+            self.ws();
+            if self.peek() != Some(b'"') {
+                return Err(self.err("expected a key (a string) in an object"));
+            }
+            let key_start = self.pos;
+            let key = self.string()?;
+            // the key's own text for the path: escaped keys are shown unescaped
+            let key_ref: &'a str = match self.text.get(key_start + 1..self.pos - 1) {
+                Some(raw) if raw == key => raw,
+                _ => "(escaped key)",
+            };
+            self.path.push(Seg::Key(key_ref));
+            // a linear scan while the object is small (every lncert format has
+            // a handful of members), a hash set beyond: linear overall
+            let dup = if members.len() < 16 {
+                members.iter().any(|(k, _)| **k == *key)
+            } else {
+                if seen.is_empty() {
+                    seen.extend(members.iter().map(|(k, _)| k.clone()));
+                }
+                !seen.insert(key.clone().into_boxed_str())
+            };
+            if dup {
+                self.pos = key_start;
+                return Err(self.err_of(
+                    ErrorKind::Duplicate,
+                    format!("duplicate key \"{key}\": a document must say each thing once"),
+                ));
+            }
+            self.ws();
+            if self.peek() != Some(b':') {
+                return Err(self.err("expected `:` after a key"));
+            }
+            self.pos += 1;
+            self.ws();
+            let v = self.value(depth)?;
+            self.path.pop();
+            members.push((key.into_boxed_str(), v));
+            self.ws();
+            match self.peek() {
+                Some(b',') => self.pos += 1,
+                Some(b'}') => {
+                    self.pos += 1;
+                    return Ok(Json::Object(members));
+                }
+                _ => return Err(self.err("expected `,` or `}` in an object")),
+            }
+        }
+    }
+
+    fn string(&mut self) -> Result<String, JsonError> {
+        self.pos += 1; // opening quote
+        let mut out = String::new();
+        loop {
+            let start = self.pos;
+            while let Some(c) = self.peek() {
+                if c == b'"' || c == b'\\' || c < 0x20 {
+                    break;
+                }
+                self.pos += 1;
+            }
+            out.push_str(&self.text[start..self.pos]);
+            if out.len() > self.lim.max_string_bytes {
+                return Err(self.limit(format!(
+                    "a string longer than the limit of {} bytes",
+                    self.lim.max_string_bytes
+                )));
+            }
+            match self.peek() {
+                None => return Err(self.err("unterminated string")),
+                Some(b'"') => {
+                    self.pos += 1;
+                    return Ok(out);
+                }
+                Some(b'\\') => {
+                    self.pos += 1;
+                    let c = self.peek().ok_or_else(|| self.err("unterminated escape"))?;
+                    self.pos += 1;
+                    let ch = match c {
+                        b'"' => '"',
+                        b'\\' => '\\',
+                        b'/' => '/',
+                        b'b' => '\u{8}',
+                        b'f' => '\u{c}',
+                        b'n' => '\n',
+                        b'r' => '\r',
+                        b't' => '\t',
+                        b'u' => self.unicode_escape()?,
+                        _ => return Err(self.err("invalid escape in a string")),
+                    };
+                    out.push(ch);
+                }
+                Some(_) => return Err(self.err("control character in a string (escape it)")),
+            }
+        }
+    }
+
+    fn hex4(&mut self) -> Result<u32, JsonError> {
+        let h = self
+            .text
+            .get(self.pos..self.pos + 4)
+            .filter(|h| h.bytes().all(|c| c.is_ascii_hexdigit()))
+            .ok_or_else(|| self.err("expected four hex digits after \\u"))?;
+        let v = u32::from_str_radix(h, 16).map_err(|_| self.err("bad \\u escape"))?;
+        self.pos += 4;
+        Ok(v)
+    }
+
+    fn unicode_escape(&mut self) -> Result<char, JsonError> {
+        let hi = self.hex4()?;
+        let code = if (0xD800..0xDC00).contains(&hi) {
+            if !self.b[self.pos..].starts_with(b"\\u") {
+                return Err(self.err("lone surrogate in a \\u escape"));
+            }
+            self.pos += 2;
+            let lo = self.hex4()?;
+            if !(0xDC00..0xE000).contains(&lo) {
+                return Err(self.err("lone surrogate in a \\u escape"));
+            }
+            0x10000 + ((hi - 0xD800) << 10) + (lo - 0xDC00)
+        } else {
+            hi
+        };
+        char::from_u32(code).ok_or_else(|| self.err("lone surrogate in a \\u escape"))
+    }
+
+    fn number(&mut self) -> Result<Json, JsonError> {
+        let start = self.pos;
+        let digits = |p: &mut Self| {
+            let s = p.pos;
+            while matches!(p.peek(), Some(b'0'..=b'9')) {
+                p.pos += 1;
+            }
+            p.pos - s
+        };
+        if self.peek() == Some(b'-') {
+            self.pos += 1;
+        }
+        match self.peek() {
+            Some(b'0') => self.pos += 1,
+            Some(b'1'..=b'9') => {
+                digits(self);
+            }
+            _ => return Err(self.err("a number needs digits")),
+        }
+        if self.peek() == Some(b'.') {
+            self.pos += 1;
+            if digits(self) == 0 {
+                return Err(self.err("a number needs digits after `.`"));
+            }
+        }
+        if matches!(self.peek(), Some(b'e' | b'E')) {
+            self.pos += 1;
+            if matches!(self.peek(), Some(b'+' | b'-')) {
+                self.pos += 1;
+            }
+            if digits(self) == 0 {
+                return Err(self.err("a number needs digits in its exponent"));
+            }
+        }
+        if self.pos - start > self.lim.max_number_bytes {
+            self.pos = start;
+            return Err(self.limit(format!(
+                "a number longer than the limit of {} characters",
+                self.lim.max_number_bytes
+            )));
+        }
+        Ok(Json::Number(self.text[start..self.pos].into()))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(s: &str) -> Result<Json, JsonError> {
+        parse(s, &Limits::DEFAULT)
+    }
+
+    #[test]
+    fn reads_the_grammar() {
+        let text = r#" {"a": [1, -0.5e+3, true, false, null, "x\"\u00e9\ud83d\ude00"], "b": {}} "#;
+        let v = p(text).unwrap();
+        let a = v.get("a").unwrap().as_array().unwrap();
+        assert_eq!(a[1], Json::Number("-0.5e+3".into()));
+        assert_eq!(a[5].as_str(), Some("x\"é😀"));
+        assert_eq!(v.get("b"), Some(&Json::Object(vec![])));
+        let serde: serde_json::Value = serde_json::from_str(text).unwrap();
+        assert_eq!(v.to_value(), serde);
+    }
+
+    #[test]
+    fn rejects_what_json_does_not_allow() {
+        for bad in [
+            "",
+            "{",
+            "[1,]",
+            "{\"a\":1,}",
+            "01",
+            "1.",
+            ".5",
+            "-",
+            "1e",
+            "+1",
+            "NaN",
+            "[1] 2",
+            "{'a': 1}",
+            "\"\\x\"",
+            "\"\u{1}\"",
+            "\"\\ud800\"",
+            "\"\\udc00\"",
+            "tru",
+            "[1 2]",
+            "{\"a\" 1}",
+            "{1: 2}",
+            "/* */ 1",
+        ] {
+            assert!(p(bad).is_err(), "{bad:?} accepted");
+        }
+    }
+
+    #[test]
+    fn duplicate_keys_are_rejected_with_their_path() {
+        let e = p(r#"{"a": {"arc": {"radius": 1, "center": [0, 0], "radius": 2}}}"#).unwrap_err();
+        assert_eq!(e.path, "a.arc.radius");
+        assert!(e.reason.contains("duplicate"), "{e}");
+        let e = p(r#"[{"x": 1}, {"y": [0, {"z": 1, "z": 1}]}]"#).unwrap_err();
+        assert_eq!(e.path, "[1].y[1].z");
+        assert_eq!((e.line, e.column), (1, 31));
+        assert_eq!(e.kind, ErrorKind::Duplicate);
+    }
+
+    #[test]
+    fn limits_are_checked_while_parsing() {
+        let lim = Limits {
+            max_bytes: 100,
+            max_depth: 3,
+            max_nodes: 5,
+            max_string_bytes: 4,
+            max_number_bytes: 3,
+        };
+        assert!(parse(&" ".repeat(101), &lim)
+            .unwrap_err()
+            .reason
+            .contains("bytes"));
+        assert!(parse("[[[1]]]", &lim).is_ok());
+        assert!(parse("[[[[1]]]]", &lim)
+            .unwrap_err()
+            .reason
+            .contains("nested"));
+        assert!(parse("[1,2,3,4]", &lim).is_ok());
+        let e = parse("[1,2,3,4,5]", &lim).unwrap_err();
+        assert!(e.reason.contains("values") && e.path == "[4]", "{e}");
+        assert!(parse("\"abcd\"", &lim).is_ok());
+        assert!(parse("\"abcde\"", &lim)
+            .unwrap_err()
+            .reason
+            .contains("string"));
+        assert!(parse("123", &lim).is_ok());
+        assert!(parse("1234", &lim).unwrap_err().reason.contains("number"));
+        // a deep document fails at the limit, not with a stack overflow
+        let deep = "[".repeat(100_000);
+        assert!(p(&deep).unwrap_err().reason.contains("nested"));
+    }
+
+    #[test]
+    fn large_objects_check_duplicates_too() {
+        let members: Vec<String> = (0..40).map(|i| format!("\"k{i}\": {i}")).collect();
+        let doc = format!("{{{}}}", members.join(","));
+        assert_eq!(p(&doc).unwrap().as_object().unwrap().len(), 40);
+        let doc = format!("{{{}, \"k3\": 0}}", members.join(","));
+        assert_eq!(p(&doc).unwrap_err().path, "k3");
+    }
+
+    #[test]
+    fn non_utf8_is_an_error() {
+        let e = parse_bytes(b"{\"a\": \"\xff\"}", &Limits::DEFAULT).unwrap_err();
+        assert!(e.reason.contains("UTF-8") && e.column == 8, "{e}");
+    }
+}
