@@ -458,7 +458,7 @@ fn every_key_is_required_and_no_other_key_is_accepted() {
     // would otherwise be silently dropped
     for (from, to) in [
         ("\"tol\": \"1/50\"", "\"tol\": \"1\", \"tol\": \"1/50\""),
-        ("\"piece\": 0", "\"piece\": 0, \"piece\": 0"),
+        ("\"piece\":0", "\"piece\":0, \"piece\":0"),
     ] {
         assert!(text.contains(from), "{from}");
         let e = verify(&text.replacen(from, to, 1)).unwrap_err();

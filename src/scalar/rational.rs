@@ -149,7 +149,8 @@ pub fn rational_from_f64(x: f64) -> Option<Rational> {
 /// ```
 /// use lncert::scalar::{abs_le_pow10, parse_rational};
 /// assert!(abs_le_pow10(&parse_rational("-1e100").unwrap(), 100));
-/// assert!(!abs_le_pow10(&parse_rational("1e100").unwrap() + parse_rational("1e-400").unwrap(), 100));
+/// let just_above = parse_rational("1e100").unwrap() + parse_rational("1e-400").unwrap();
+/// assert!(!abs_le_pow10(&just_above, 100));
 /// ```
 pub fn abs_le_pow10(r: &Rational, e: u32) -> bool {
     let bound = num_traits::pow(BigInt::from(10u32), e as usize);
