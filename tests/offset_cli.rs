@@ -323,3 +323,57 @@ fn bad_input_exits_2_naming_the_flag() {
         assert!(err.contains("CURVE"), "{name}: {err}");
     }
 }
+
+/// Without `--global-bounds` the certified error is the union bound of the
+/// per-segment proofs (no global search); with it, a two-sided global enclosure
+/// that lies under the union bound.
+#[test]
+fn global_bounds_are_opt_in() {
+    let curve = tmp("cubic-global.json", CUBIC);
+    let run = |extra: &[&str]| {
+        let mut args = vec![
+            "offset",
+            curve.to_str().unwrap(),
+            "--distance",
+            "0.4",
+            "--tol",
+            "1e-2",
+            "--json",
+        ];
+        args.extend_from_slice(extra);
+        let o = lncert(&args);
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        json_of(&o)
+    };
+    let union = run(&[]);
+    let global = run(&["--global-bounds"]);
+    let bounds = |d: &Value| {
+        let e = d["certified_error"].as_array().unwrap();
+        (e[0].as_f64().unwrap(), e[1].as_f64().unwrap())
+    };
+    let (ulo, uhi) = bounds(&union);
+    let (glo, ghi) = bounds(&global);
+    assert_eq!(
+        union["certified_error_from"],
+        "union of the per-segment proofs"
+    );
+    assert_eq!(global["certified_error_from"], "global search");
+    assert_eq!(ulo, 0.0);
+    // the per-segment bounds are the same; the global search only adds a lower bound
+    let seg_max = union["pieces"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| p["error"][1].as_f64().unwrap())
+        .fold(0.0, f64::max);
+    assert_eq!(uhi, seg_max);
+    assert!(
+        0.0 < glo && glo <= ghi && ghi <= uhi && uhi <= 1e-2,
+        "[{glo}, {ghi}] vs {uhi}"
+    );
+}

@@ -6,8 +6,9 @@
 //! bound against the exact offset of its input span ([`crate::certify`]), and
 //! the divide-and-conquer loop only accepts a segment whose certified bound is
 //! `≤ tol`. Since `d_H(∪Aᵢ, ∪Bᵢ) ≤ maxᵢ d_H(Aᵢ, Bᵢ)`, the spline is within `tol`
-//! of the whole offset; [`certify_result`] re-proves that globally and writes a
-//! certificate that `lncert verify` re-checks.
+//! of the whole offset; [`union_certificate`] writes that as a certificate
+//! (the per-segment covers, no further search) that `lncert verify` re-checks,
+//! and [`global_bounds`] (opt-in) encloses the global distance from both sides.
 //!
 //! Two constructions, both from the seeds:
 //!
@@ -41,7 +42,9 @@ pub mod g2;
 pub mod lnpair;
 pub mod prep;
 
-use crate::certify::{hausdorff, Certificate, Config, HausdorffBounds, ShapeDesc};
+use crate::certify::{
+    hausdorff, Certificate, Config, CoverBox, HausdorffBounds, OneSided, ShapeDesc,
+};
 use crate::curve::{Bezier, V2};
 use crate::scalar::{interval_from_rational, rational_from_f64, Interval, Rational, Scalar};
 use num_traits::Zero;
@@ -142,6 +145,19 @@ pub struct OffsetSegment {
     /// Seed 000 eq. (8) for LN-pair segments when requested (an upper bound of
     /// the paper's error measure).
     pub paper_error: Option<f64>,
+    /// The proof of `error.1 ≤ tol` when the segment was accepted.
+    pub proof: Option<SegmentProof>,
+}
+
+/// The proof of one accepted segment: the final covers of its certified search,
+/// both directions (piece and target 0: the exact offset of the span, the segment).
+/// [`union_certificate`] assembles them into a certificate of the whole result.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SegmentProof {
+    /// Cover of the span's exact offset, foot maps into the segment.
+    pub exact_to_segment: Vec<CoverBox>,
+    /// Cover of the segment, foot maps into the span's exact offset.
+    pub segment_to_exact: Vec<CoverBox>,
 }
 
 /// A junction of two input pieces that needs attention.
@@ -389,12 +405,17 @@ fn certify_segment(
         (Some(p), true) => paper_error_of(x, task.t, &exact, p, d),
         _ => None,
     };
+    let proof = (r.hi <= opts.tol).then(|| SegmentProof {
+        exact_to_segment: r.a_to_b.boxes.clone(),
+        segment_to_exact: r.b_to_a.boxes.clone(),
+    });
     let seg = OffsetSegment {
         piece: task.piece,
         t: task.t,
         bezier: bez,
         error: (r.lo, r.hi),
         paper_error,
+        proof,
     };
     let stuck = r.incomplete() && r.hi > opts.tol && r.lo * 64.0 < opts.tol;
     (Some(seg), split_point(opts.method, x, task.t), stuck)
@@ -527,6 +548,7 @@ pub fn offset(
                         bezier: Bezier::new(vec![p[0].clone(), p[p.len() - 1].clone()]),
                         error: (0.0, f64::INFINITY),
                         paper_error: None,
+                        proof: None,
                     });
                 }
             }
@@ -591,40 +613,18 @@ pub fn corners(curve: &[Bezier<Rational>], d: &Rational) -> Vec<Corner> {
     out
 }
 
-/// Global certification of a result: certified bounds `lo ≤ d_H ≤ hi` between
-/// the exact offset of the whole input and the whole approximant (relative gap
-/// `rel`), and, when the tolerance holds, a certificate of
-/// `d_H ≤ tol` that [`crate::certify::verify::verify`] re-checks.
-///
-/// The certificate's shapes are the exact offset of the input curve split
-/// exactly at the segments' parameters ([`exact_offset_shape`]) and the
-/// approximant.
-pub fn certify_result(
+/// Certified global bounds `lo ≤ d_H ≤ hi` between the exact offset of the
+/// whole input and the whole approximant (relative gap `rel`), by a two-sided
+/// search over all pieces (opt-in: its cost grows with the square of the number
+/// of segments; the tolerance itself is proven by the per-segment proofs).
+pub fn global_bounds(
     curve: &[Bezier<Rational>],
     res: &OffsetResult,
     rel: f64,
-    want_certificate: bool,
-) -> Result<(HausdorffBounds, Option<Certificate>), OffsetError> {
+) -> Result<HausdorffBounds, OffsetError> {
     let a = exact_offset_shape(curve, res)?;
     let b = res.approximant_shape()?;
-    if want_certificate && res.reached() {
-        // one search serves both: it runs until `hi ≤ tol` is proven (its `lo`
-        // comes from the same witnesses as a relative search's)
-        let tol = rational_from_f64(res.tol).ok_or_else(|| bad("tol", "not finite"))?;
-        let r = hausdorff(
-            &a,
-            &b,
-            &Config {
-                tol: Some(res.tol),
-                rel,
-                ..Config::default()
-            },
-        )
-        .map_err(|e| bad("certify", e.to_string()))?;
-        let cert = Certificate::new(&a, &b, &tol, &r);
-        return Ok((r, cert));
-    }
-    let bounds = hausdorff(
+    hausdorff(
         &a,
         &b,
         &Config {
@@ -632,8 +632,67 @@ pub fn certify_result(
             ..Config::default()
         },
     )
-    .map_err(|e| bad("certify", e.to_string()))?;
-    Ok((bounds, None))
+    .map_err(|e| bad("certify", e.to_string()))
+}
+
+/// The certificate of `d_H(exact offset, approximant) ≤ tol`, assembled from the
+/// per-segment proofs without any further search (linear in the segments), or
+/// `None` when the tolerance was not reached. `tol` is the claim, exactly as the
+/// user gave it (every segment's bound is ≤ `res.tol`, the largest float ≤ it).
+///
+/// Shapes: the exact offset of the input split exactly at the segments'
+/// parameters ([`exact_offset_shape`], piece `i` = segment `i`'s span) and the
+/// approximant (piece `i` = segment `i`). Boxes: each segment's final covers,
+/// with piece and target `i`. Sound because `h(∪Aᵢ, ∪Bᵢ) ≤ maxᵢ h(Aᵢ, Bᵢ)`
+/// (a point of `Aᵢ` within `tol` of `Bᵢ` is within `tol` of `∪B`), and
+/// [`crate::certify::verify::verify`] re-checks every box against the whole
+/// shapes.
+pub fn union_certificate(
+    curve: &[Bezier<Rational>],
+    res: &OffsetResult,
+    tol: &Rational,
+) -> Result<Option<Certificate>, OffsetError> {
+    if !res.reached() || res.segments.iter().any(|s| s.proof.is_none()) {
+        return Ok(None);
+    }
+    let a = exact_offset_shape(curve, res)?;
+    let b = res.approximant_shape()?;
+    let side = |boxes: &mut dyn Iterator<Item = CoverBox>| OneSided {
+        lo: 0.0,
+        hi: res.certified_hi,
+        witness: None,
+        boxes: boxes.collect(),
+        evaluated: 0,
+        incomplete: false,
+    };
+    let renumber = |i: usize, bs: &[CoverBox]| {
+        bs.iter()
+            .map(move |bx| CoverBox {
+                piece: i,
+                target: i,
+                ..bx.clone()
+            })
+            .collect::<Vec<_>>()
+    };
+    let proofs = res.segments.iter().filter_map(|s| s.proof.as_ref());
+    let ab = side(
+        &mut proofs
+            .clone()
+            .enumerate()
+            .flat_map(|(i, p)| renumber(i, &p.exact_to_segment)),
+    );
+    let ba = side(
+        &mut proofs
+            .enumerate()
+            .flat_map(|(i, p)| renumber(i, &p.segment_to_exact)),
+    );
+    let r = HausdorffBounds {
+        lo: 0.0,
+        hi: res.certified_hi,
+        a_to_b: ab,
+        b_to_a: ba,
+    };
+    Ok(Certificate::new(&a, &b, tol, &r))
 }
 
 /// The exact offset of the input, as the union of the exact offsets of the

@@ -17,15 +17,16 @@ use super::{print_out, CliError};
 use lncert::approx::arc::{offset_arc, parse_arc_input, ArcOffset, TravelledArc};
 use lncert::approx::prep::Junction;
 use lncert::approx::{
-    certify_result, join_arcs, offset, OffsetError, OffsetMethod, OffsetOptions, OffsetResult,
+    global_bounds, join_arcs, offset, union_certificate, OffsetError, OffsetMethod, OffsetOptions,
+    OffsetResult,
 };
 use lncert::curve::parse_curve;
 use lncert::scalar::{interval_from_rational, Rational};
 use serde_json::{json, Value};
 use std::path::PathBuf;
 
-/// Relative gap of the global bounds `[lo, hi]` printed as `certified_error`
-/// (the proof of `hi ≤ tol` is per segment and does not depend on it).
+/// Relative gap of the global bounds `[lo, hi]` that `--global-bounds` prints as
+/// `certified_error` (the proof of `hi ≤ tol` is per segment and does not depend on it).
 pub const GLOBAL_REL: f64 = 1e-2;
 
 /// Arguments of `lncert offset`.
@@ -60,6 +61,11 @@ pub struct OffsetArgs {
     /// Box budget of each segment's certified search (per direction).
     #[arg(long, default_value_t = 50_000)]
     pub max_boxes: usize,
+    /// Also enclose the global distance from both sides by a search over all
+    /// segments (its cost grows with the square of the number of segments;
+    /// without it the certified error is the union bound of the per-segment proofs).
+    #[arg(long)]
+    pub global_bounds: bool,
     /// Print one JSON document.
     #[arg(long)]
     pub json: bool,
@@ -115,11 +121,18 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     let start = std::time::Instant::now();
     let res = offset(&curve, &opts).map_err(offset_err)?;
     let build = start.elapsed().as_secs_f64();
-    let (global, cert) =
-        certify_result(&curve, &res, GLOBAL_REL, a.certificate.is_some()).map_err(offset_err)?;
+    let cert = match a.certificate {
+        Some(_) => union_certificate(&curve, &res, &tol_q).map_err(offset_err)?,
+        None => None,
+    };
+    // without --global-bounds: 0 ≤ d_H ≤ the union bound of the per-segment proofs
+    let (lo, hi) = if a.global_bounds {
+        let g = global_bounds(&curve, &res, GLOBAL_REL).map_err(offset_err)?;
+        (g.lo, g.hi.min(res.certified_hi))
+    } else {
+        (0.0, res.certified_hi)
+    };
     let total = start.elapsed().as_secs_f64();
-    let lo = global.lo;
-    let hi = global.hi.min(res.certified_hi);
     let mut cert_note = None;
     if let Some(path) = &a.certificate {
         match cert {
@@ -153,6 +166,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             "control_points": res.control_points(),
             "degree": res.degree(),
             "certified_error": [lo, hi],
+            "certified_error_from": if a.global_bounds { "global search" } else { "union of the per-segment proofs" },
             "verdict": verdict,
             "pieces": res.segments.iter().map(|s| json!({
                 "piece": s.piece, "t": [s.t.0, s.t.1],
@@ -172,7 +186,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
                 _ => None,
             }).collect::<Vec<_>>(),
             "certifications": res.certifications,
-            "seconds": {"construct_and_certify": build, "total": total},
+            "seconds": {"construct_and_certify": build, "total": total, "global_bounds": a.global_bounds.then_some(total - build)},
             "certificate": cert_note,
         });
         print_out(&format!(
@@ -188,6 +202,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             verdict,
             (build, total),
             cert_note,
+            a.global_bounds,
         ));
     }
     Ok(if verdict == "certified" { 0 } else { 1 })
@@ -201,6 +216,7 @@ fn text_report(
     verdict: &str,
     (build, total): (f64, f64),
     cert_note: Option<String>,
+    global: bool,
 ) -> String {
     let mut s = format!(
         "offset at {} ({}, tol {}): {} segment(s) of degree {}, {} control points\n",
@@ -211,11 +227,21 @@ fn text_report(
         res.degree(),
         res.control_points()
     );
-    s += &format!("  certified error: {lo:.6e} ≤ d_H ≤ {hi:.6e} — {verdict}\n");
-    s += &format!(
-        "  {} certified searches, {:.3} s to build and certify, {:.3} s with the global bounds\n",
-        res.certifications, build, total
-    );
+    if global {
+        s += &format!("  certified error: {lo:.6e} ≤ d_H ≤ {hi:.6e} (global search) — {verdict}\n");
+        s += &format!(
+            "  {} certified searches, {:.3} s to build and certify, {:.3} s with the global bounds\n",
+            res.certifications, build, total
+        );
+    } else {
+        s += &format!(
+            "  certified error: d_H ≤ {hi:.6e} (union of the per-segment proofs; --global-bounds for a two-sided enclosure) — {verdict}\n"
+        );
+        s += &format!(
+            "  {} certified searches, {:.3} s to build and certify, {:.3} s in all\n",
+            res.certifications, build, total
+        );
+    }
     for c in &res.cusps {
         s += &format!(
             "  cusp of the exact offset: piece {} at t ≈ {:.9} ({:.6}, {:.6})\n",
