@@ -396,11 +396,26 @@ fn certify_segment(
     let cfg = Config {
         tol: Some(opts.tol),
         max_boxes: opts.max_boxes,
+        // a refuted span is split: its other direction is not needed — unless it
+        // cannot be split any more and its bounds are reported
+        verdict_only: task.depth < opts.max_depth,
         ..Config::default()
     };
     let Ok(r) = hausdorff(&a, &b, &cfg) else {
         return (None, split, false);
     };
+    if std::env::var_os("LNCERT_TRACE").is_some() {
+        eprintln!(
+            "span {:?}: [{:.4e}, {:.4e}] boxes {}+{} final {}+{}",
+            task.t,
+            r.lo,
+            r.hi,
+            r.a_to_b.evaluated,
+            r.b_to_a.evaluated,
+            r.a_to_b.boxes.len(),
+            r.b_to_a.boxes.len()
+        );
+    }
     let paper_error = match (&pair, opts.paper_error) {
         (Some(p), true) => paper_error_of(x, task.t, &exact, p, d),
         _ => None,

@@ -119,7 +119,17 @@ pub fn hausdorff(
         1e-10 * (1.0 + a.scale().max(b.scale()))
     };
     let ab = search::one_sided(&pa, &pb, cfg, abs, (0.0, 0.0));
-    let ba = if cfg.tol.is_some_and(|t| ab.lo > t) {
+    let refuted = cfg.tol.is_some_and(|t| ab.lo > t);
+    let ba = if refuted && cfg.verdict_only {
+        OneSided {
+            lo: 0.0,
+            hi: f64::INFINITY,
+            witness: None,
+            boxes: Vec::new(),
+            evaluated: 0,
+            incomplete: true,
+        }
+    } else if refuted {
         // already refuted: the other direction is not needed for the verdict, but its
         // bounds are still reported (coarse).
         search::one_sided(

@@ -499,17 +499,24 @@ fn check_regular(c: &[Bezier<Rational>], field: &str) -> Result<(), CertifyError
 /// Interval and float data of one parametrised piece.
 #[derive(Clone, Debug)]
 pub(crate) enum PieceData<S> {
+    /// `pts` and its first and second hodographs (`d1`, `d2`; a single zero
+    /// point where the degree is too low).
     Bez {
         pts: Vec<(S, S)>,
+        d1: Vec<(S, S)>,
+        d2: Vec<(S, S)>,
     },
     Arc {
         c: (S, S),
         r: S,
         e0: (S, S),
     },
+    /// The curve `pts`, its hodographs `hod` (x′), `hod2` (x″), `hod3` (x‴).
     Conv {
         pts: Vec<(S, S)>,
         hod: Vec<(S, S)>,
+        hod2: Vec<(S, S)>,
+        hod3: Vec<(S, S)>,
         q: (S, S, S),
         sigma: S,
     },
@@ -536,18 +543,30 @@ fn mid(x: Interval) -> f64 {
 
 fn mid_data(d: &PieceData<Interval>) -> PieceData<f64> {
     let m2 = |p: &(Interval, Interval)| (mid(p.0), mid(p.1));
+    let m2s = |v: &[(Interval, Interval)]| v.iter().map(m2).collect::<Vec<_>>();
     match d {
-        PieceData::Bez { pts } => PieceData::Bez {
-            pts: pts.iter().map(m2).collect(),
+        PieceData::Bez { pts, d1, d2 } => PieceData::Bez {
+            pts: m2s(pts),
+            d1: m2s(d1),
+            d2: m2s(d2),
         },
         PieceData::Arc { c, r, e0 } => PieceData::Arc {
             c: m2(c),
             r: mid(*r),
             e0: m2(e0),
         },
-        PieceData::Conv { pts, hod, q, sigma } => PieceData::Conv {
-            pts: pts.iter().map(m2).collect(),
-            hod: hod.iter().map(m2).collect(),
+        PieceData::Conv {
+            pts,
+            hod,
+            hod2,
+            hod3,
+            q,
+            sigma,
+        } => PieceData::Conv {
+            pts: m2s(pts),
+            hod: m2s(hod),
+            hod2: m2s(hod2),
+            hod3: m2s(hod3),
             q: (mid(q.0), mid(q.1), mid(q.2)),
             sigma: mid(*sigma),
         },
@@ -566,21 +585,17 @@ impl Piece {
     }
 
     fn bezier(b: &Bezier<Rational>) -> Piece {
-        let pts = b.points().iter().map(|p| (iv(&p.x), iv(&p.y))).collect();
-        Piece::from_iv(PieceData::Bez { pts }, (0.0, 1.0), (0.0, 1.0))
+        let [pts, d1, d2, _] = hodographs(b);
+        Piece::from_iv(PieceData::Bez { pts, d1, d2 }, (0.0, 1.0), (0.0, 1.0))
     }
 
     fn conv(b: &Bezier<Rational>, q: [&Rational; 3], sigma: i8) -> Piece {
-        let pts = b.points().iter().map(|p| (iv(&p.x), iv(&p.y))).collect();
-        let hod = b
-            .hodograph()
-            .points()
-            .iter()
-            .map(|p| (iv(&p.x), iv(&p.y)))
-            .collect();
+        let [pts, hod, hod2, hod3] = hodographs(b);
         let data = PieceData::Conv {
             pts,
             hod,
+            hod2,
+            hod3,
             q: (iv(q[0]), iv(q[1]), iv(q[2])),
             sigma: Interval::from_i64(sigma as i64),
         };
@@ -622,6 +637,16 @@ impl Piece {
     }
 }
 
+/// The control points of `b` and of its first three hodographs, computed
+/// exactly, as interval enclosures.
+fn hodographs(b: &Bezier<Rational>) -> [Vec<(Interval, Interval)>; 4] {
+    let enclose = |c: &Bezier<Rational>| c.points().iter().map(|p| (iv(&p.x), iv(&p.y))).collect();
+    let h1 = b.hodograph();
+    let h2 = h1.hodograph();
+    let h3 = h2.hodograph();
+    [enclose(b), enclose(&h1), enclose(&h2), enclose(&h3)]
+}
+
 /// `tan(Θ/4)` for the counter-clockwise sweep `Θ ∈ (0, 2π)` from `e0` to `e1`:
 /// with `sin(Θ/2) = |e1 − e0|/2 > 0` and `cos(Θ/2) = ±|e1 + e0|/2` (the sign of
 /// `e0 × e1`, decided exactly from the rational directions),
@@ -651,9 +676,19 @@ pub(crate) fn arc_end_parameter(
 impl<S: ScalarSqrt + Copy> PieceData<S> {
     /// The point of the piece at the parameter jet `t`, or `None` where the
     /// evaluation is undefined (a possibly vanishing normal or denominator).
+    ///
+    /// Polynomial parts are evaluated through their hodographs with scalar de
+    /// Casteljau at `t.v` and the chain rule (`B(τ)′ = B′(τ) τ′`,
+    /// `B(τ)″ = B″(τ) τ′² + B′(τ) τ″`): about a third of the interval products of
+    /// de Casteljau on jets, and no wider.
     pub fn eval(&self, t: Jet<S>) -> Option<JetPoint<S>> {
         match self {
-            PieceData::Bez { pts } => Some(casteljau(pts, t)),
+            PieceData::Bez { pts, d1, d2 } => {
+                let p = casteljau(pts, t.v);
+                let p1 = casteljau(d1, t.v);
+                let p2 = casteljau(d2, t.v);
+                Some(chain(p, p1, p2, t))
+            }
             PieceData::Arc { c, r, e0 } => {
                 let one = Jet::constant(S::one());
                 let t2 = t * t;
@@ -667,9 +702,18 @@ impl<S: ScalarSqrt + Copy> PieceData<S> {
                 let y = Jet::constant(c.1) + (cs.scale(e0.1) + sn.scale(e0.0)).scale(*r);
                 Some((x, y))
             }
-            PieceData::Conv { pts, hod, q, sigma } => {
-                let (x, y) = casteljau(pts, t);
-                let (dx, dy) = casteljau(hod, t);
+            PieceData::Conv {
+                pts,
+                hod,
+                hod2,
+                hod3,
+                q,
+                sigma,
+            } => {
+                let p1 = casteljau(hod, t.v);
+                let p2 = casteljau(hod2, t.v);
+                let (x, y) = chain(casteljau(pts, t.v), p1, p2, t);
+                let (dx, dy) = chain(p1, p2, casteljau(hod3, t.v), t);
                 // n = (−y′, x′); Q n; nᵀ Q n
                 let (n1, n2) = (-dy, dx);
                 let qn1 = n1.scale(q.0) + n2.scale(q.1);
@@ -682,10 +726,21 @@ impl<S: ScalarSqrt + Copy> PieceData<S> {
     }
 }
 
-/// De Casteljau's algorithm on jets.
-fn casteljau<S: Scalar + Copy>(pts: &[(S, S)], t: Jet<S>) -> JetPoint<S> {
-    let mut xs: Vec<Jet<S>> = pts.iter().map(|p| Jet::constant(p.0)).collect();
-    let mut ys: Vec<Jet<S>> = pts.iter().map(|p| Jet::constant(p.1)).collect();
+/// The jet of `B(τ(s))` from `B(τ)`, `B′(τ)`, `B″(τ)` and the jet `τ`.
+fn chain<S: Scalar + Copy>(p: (S, S), p1: (S, S), p2: (S, S), t: Jet<S>) -> JetPoint<S> {
+    let d2 = t.d * t.d;
+    let coord = |v: S, d: S, dd: S| Jet {
+        v,
+        d: d * t.d,
+        dd: dd * d2 + d * t.dd,
+    };
+    (coord(p.0, p1.0, p2.0), coord(p.1, p1.1, p2.1))
+}
+
+/// De Casteljau's algorithm at a scalar parameter.
+fn casteljau<S: Scalar + Copy>(pts: &[(S, S)], t: S) -> (S, S) {
+    let mut xs: Vec<S> = pts.iter().map(|p| p.0).collect();
+    let mut ys: Vec<S> = pts.iter().map(|p| p.1).collect();
     let n = xs.len();
     for level in 1..n {
         for i in 0..n - level {

@@ -57,15 +57,18 @@ impl T3 {
 
 /// One piece of a shape, with interval data.
 pub(crate) enum VPiece {
-    Poly(Vec<[Interval; 2]>),
+    /// A Bézier piece: its control points and those of its first and second
+    /// derivatives (`[pts, x′, x″]`).
+    Poly([Vec<[Interval; 2]>; 3]),
     Arc {
         c: [Interval; 2],
         r: Interval,
         e0: [Interval; 2],
     },
+    /// An offset or convolution piece: the curve's control points and those of
+    /// its first three derivatives (`[x, x′, x″, x‴]`), `Q`, the side.
     Conv {
-        pts: Vec<[Interval; 2]>,
-        hod: Vec<[Interval; 2]>,
+        pts: [Vec<[Interval; 2]>; 4],
         q: [Interval; 3],
         sigma: Interval,
     },
@@ -80,22 +83,34 @@ pub(crate) struct VShape {
     pub text: String,
 }
 
-fn casteljau(pts: &[[Interval; 2]], t: T3) -> [T3; 2] {
-    let mut x: Vec<T3> = pts.iter().map(|p| T3::c(p[0])).collect();
-    let mut y: Vec<T3> = pts.iter().map(|p| T3::c(p[1])).collect();
+/// De Casteljau at an interval parameter.
+fn casteljau(pts: &[[Interval; 2]], t: Interval) -> [Interval; 2] {
+    let mut x: Vec<Interval> = pts.iter().map(|p| p[0]).collect();
+    let mut y: Vec<Interval> = pts.iter().map(|p| p[1]).collect();
     for n in (1..pts.len()).rev() {
         for i in 0..n {
-            x[i] = x[i].add(t.mul(x[i + 1].sub(x[i])));
-            y[i] = y[i].add(t.mul(y[i + 1].sub(y[i])));
+            x[i] = x[i] + t * (x[i + 1] - x[i]);
+            y[i] = y[i] + t * (y[i + 1] - y[i]);
         }
     }
     [x[0], y[0]]
 }
 
+/// The Taylor triples of `P(τ(s))` for a polynomial `P` given by the control
+/// points of `P`, `P′`, `P″`: value, `P′(τ) τ′`, `P″(τ) τ′² + P′(τ) τ″`.
+fn poly_at(c: &[Vec<[Interval; 2]>], t: T3) -> [T3; 2] {
+    let [tv, td, tdd] = t.0;
+    let p0 = casteljau(&c[0], tv);
+    let p1 = casteljau(&c[1], tv);
+    let p2 = casteljau(&c[2], tv);
+    let coord = |i: usize| T3([p0[i], p1[i] * td, p2[i] * td * td + p1[i] * tdd]);
+    [coord(0), coord(1)]
+}
+
 impl VPiece {
     fn at(&self, t: T3) -> Option<[T3; 2]> {
         match self {
-            VPiece::Poly(p) => Some(casteljau(p, t)),
+            VPiece::Poly(p) => Some(poly_at(p, t)),
             VPiece::Arc { c, r, e0 } => {
                 let one = T3::c(ic(1));
                 let t2 = t.mul(t);
@@ -109,9 +124,9 @@ impl VPiece {
                     T3::c(c[1]).add(cs.k(e0[1]).add(sn.k(e0[0])).k(*r)),
                 ])
             }
-            VPiece::Conv { pts, hod, q, sigma } => {
-                let [x, y] = casteljau(pts, t);
-                let [dx, dy] = casteljau(hod, t);
+            VPiece::Conv { pts, q, sigma } => {
+                let [x, y] = poly_at(&pts[0..3], t);
+                let [dx, dy] = poly_at(&pts[1..4], t);
                 let (n1, n2) = (T3::c(ic(0)).sub(dy), dx);
                 let m1 = n1.k(q[0]).add(n2.k(q[1]));
                 let m2 = n1.k(q[1]).add(n2.k(q[2]));
@@ -162,19 +177,43 @@ pub(crate) fn check_box(
         ));
     }
     let undefined = || "the shapes cannot be evaluated on this box (undefined normal)".to_string();
-    let d2 = |sv: Interval, tauv: Interval| -> Option<T3> {
+    // D(s) = A(s) − B(τ(s)), over the box and at its centre
+    let diff = |sv: Interval, tauv: Interval| -> Option<[T3; 2]> {
         let a = src.at(T3([sv, ic(1), ic(0)]))?;
         let b = dst.at(T3([tauv, kv, ic(0)]))?;
-        let (dx, dy) = (a[0].sub(b[0]), a[1].sub(b[1]));
-        Some(dx.mul(dx).add(dy.mul(dy)))
+        Some([a[0].sub(b[0]), a[1].sub(b[1])])
     };
-    let over = d2(sbox, tau).ok_or_else(undefined)?;
-    let at_c = d2(scv, tv).ok_or_else(undefined)?;
-    let h = (sbox - scv).mag();
+    let over = diff(sbox, tau).ok_or_else(undefined)?;
+    let at_c = diff(scv, tv).ok_or_else(undefined)?;
+    let w = sbox - scv;
+    // Over the box, D and D′ also lie in the mean-value forms D(c) + D′(S)(S − c)
+    // and D′(c) + D″(S)(S − c); keep the meet with the direct enclosures.
+    let meet = |direct: Interval, mv: Interval| {
+        let m = direct.intersection(mv);
+        if m.is_empty() {
+            direct
+        } else {
+            m
+        }
+    };
+    let tight = |o: T3, c: T3| {
+        [
+            meet(o.0[0], c.0[0] + o.0[1] * w),
+            meet(o.0[1], c.0[1] + o.0[2] * w),
+            o.0[2],
+        ]
+    };
+    let [x, y] = [tight(over[0], at_c[0]), tight(over[1], at_c[1])];
+    // g = |D|²: its value over the box, g″ = 2 (Dx′² + Dy′² + Dx Dx″ + Dy Dy″)
+    let g_over = x[0].sqr() + y[0].sqr();
+    let g_dd = ic(2) * (x[1].sqr() + y[1].sqr() + x[0] * x[2] + y[0] * y[2]);
+    // g and g′ at the centre
+    let g_c = at_c[0].mul(at_c[0]).add(at_c[1].mul(at_c[1]));
+    let h = w.mag();
     let h = Interval::try_from((h, h)).map_err(|_| undefined())?;
-    let curv = Interval::try_from((0.0, over.0[2].sup().max(0.0))).map_err(|_| undefined())?;
-    let taylor = at_c.0[0] + at_c.0[1].abs() * h + curv * h * h / ic(2);
-    let g = taylor.sup().min(over.0[0].sup());
+    let curv = Interval::try_from((0.0, g_dd.sup().max(0.0))).map_err(|_| undefined())?;
+    let taylor = g_c.0[0] + g_c.0[1].abs() * h + curv * h * h / ic(2);
+    let g = taylor.sup().min(g_over.sup());
     if !g.is_finite() {
         return Err(undefined());
     }

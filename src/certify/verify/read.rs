@@ -199,11 +199,25 @@ fn describe_curve(bs: &[Vec<[Rational; 2]>]) -> String {
     )
 }
 
+/// The control points of the derivative (a single zero point for a constant).
 fn hodograph(p: &[[Rational; 2]]) -> Vec<[Rational; 2]> {
+    if p.len() < 2 {
+        return vec![[Rational::zero(), Rational::zero()]];
+    }
     let n = Rational::from_integer(((p.len() - 1) as i64).into());
     p.windows(2)
         .map(|w| [&n * (&w[1][0] - &w[0][0]), &n * (&w[1][1] - &w[0][1])])
         .collect()
+}
+
+/// Enclosures of the control points of `p`, `p′`, …, `p⁽ᴺ⁻¹⁾`.
+fn derivatives<const N: usize>(p: &[[Rational; 2]]) -> [Vec<[Interval; 2]>; N] {
+    let mut cur = p.to_vec();
+    std::array::from_fn(|_| {
+        let out = cur.iter().map(ivp).collect();
+        cur = hodograph(&cur);
+        out
+    })
 }
 
 /// The pieces `x(t) + σ Q n/√(nᵀQn)` of an offset or convolution.
@@ -218,8 +232,7 @@ fn conv_shape(bs: &[Vec<[Rational; 2]>], q: [Rational; 3], sigma: i64, text: Str
         pieces: bs
             .iter()
             .map(|b| VPiece::Conv {
-                pts: b.iter().map(ivp).collect(),
-                hod: hodograph(b).iter().map(ivp).collect(),
+                pts: derivatives::<4>(b),
                 q: qi,
                 sigma: ic(sigma),
             })
@@ -262,7 +275,7 @@ pub(crate) fn read_shape(v: &Json, at: &str) -> Result<VShape, Invalid> {
                 ends: vec![ic(1); bs.len()],
                 pieces: bs
                     .iter()
-                    .map(|b| VPiece::Poly(b.iter().map(ivp).collect()))
+                    .map(|b| VPiece::Poly(derivatives::<3>(b)))
                     .collect(),
                 text: format!("the curve of {}", describe_curve(&bs)),
             })
