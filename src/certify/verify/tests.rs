@@ -101,3 +101,102 @@ fn both_readers_follow_the_corpus() {
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
+
+// ----- the box bound itself, against exact samples -----------------------------
+
+use super::eval::check_box;
+use crate::certify::search::{box_bound_from, SourceJets};
+use crate::scalar::{rational_from_f64, Rational};
+use proptest::prelude::*;
+
+fn cases() -> u32 {
+    std::env::var("LNCERT_PROPTEST_CASES")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(2000)
+}
+
+/// `|A(s) − B(τ(s))|²` exactly, for Bézier pieces with rational control points.
+fn exact_gap2(a: &[(i64, i64)], b: &[(i64, i64)], s: &Rational, tau: &Rational) -> Rational {
+    let eval = |p: &[(i64, i64)], t: &Rational| {
+        let mut xs: Vec<(Rational, Rational)> = p
+            .iter()
+            .map(|&(x, y)| {
+                (
+                    Rational::from_integer(x.into()) / Rational::from_integer(8.into()),
+                    Rational::from_integer(y.into()) / Rational::from_integer(8.into()),
+                )
+            })
+            .collect();
+        for n in (1..xs.len()).rev() {
+            for i in 0..n {
+                let (x0, y0) = xs[i].clone();
+                let (x1, y1) = xs[i + 1].clone();
+                xs[i] = (&x0 + t * (&x1 - &x0), &y0 + t * (&y1 - &y0));
+            }
+        }
+        xs.swap_remove(0)
+    };
+    let (ax, ay) = eval(a, s);
+    let (bx, by) = eval(b, tau);
+    let (dx, dy) = (ax - bx, ay - by);
+    &dx * &dx + &dy * &dy
+}
+
+fn shape_of(p: &[(i64, i64)]) -> String {
+    let e = |v: i64| Rational::new(v.into(), 8.into()).to_string();
+    let pts: Vec<String> = p
+        .iter()
+        .map(|&(x, y)| format!("[\"{}\", \"{}\"]", e(x), e(y)))
+        .collect();
+    format!("{{\"beziers\": [[{}]]}}", pts.join(", "))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: cases(), ..ProptestConfig::default() })]
+
+    /// Neither the search's box bound nor the verifier's is ever below
+    /// `|A(s) − B(τ(s))|` at 33 exactly evaluated points of the box, for random
+    /// cubics, boxes and (deliberately poor) foot maps `τ(s) = t + k (s − s_c)`.
+    /// An upper bound that drops a term (say the slope of a mean-value form) fails
+    /// here, in the search's code or in the verifier's.
+    #[test]
+    fn box_bounds_are_never_below_an_exact_sample(
+        a in proptest::collection::vec((-16i64..16, -16i64..16), 2..5),
+        b in proptest::collection::vec((-16i64..16, -16i64..16), 2..5),
+        s0 in 0u32..64, len in 1u32..32, t_c in 8u32..56, k8 in -8i64..9,
+    ) {
+        let s1 = (s0 + len).min(64);
+        prop_assume!(s1 > s0);
+        let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
+        let (s0r, s1r) = (q(s0 as i64, 64), q(s1 as i64, 64));
+        let (tr, kr) = (q(t_c as i64, 64), q(k8, 8));
+        let half = (&s1r - &s0r) / q(2, 1);
+        // keep τ(S) inside [0, 1]
+        let reach = &half * if kr < q(0, 1) { -kr.clone() } else { kr.clone() };
+        prop_assume!(&tr - &reach >= q(0, 1) && &tr + &reach <= q(1, 1));
+        // the verifier's bound
+        let (sa, sb) = (shape_of(&a), shape_of(&b));
+        let va = read_shape(&parse(&sa, &Limits::DEFAULT).unwrap(), "a").unwrap();
+        let vb = read_shape(&parse(&sb, &Limits::DEFAULT).unwrap(), "b").unwrap();
+        let v = check_box(&va.pieces[0], &s0r, &s1r, &vb.pieces[0], vb.ends[0], &tr, &kr);
+        // the search's bound (its box and foot map are the same dyadic numbers)
+        let pa = ShapeDesc::parse(&sa).unwrap().pieces().unwrap();
+        let pb = ShapeDesc::parse(&sb).unwrap().pieces().unwrap();
+        let f = |r: &Rational| crate::scalar::Scalar::approx(r);
+        let src = SourceJets::new(&pa[0], (f(&s0r), f(&s1r))).unwrap();
+        let w = box_bound_from(&src, &pb[0], f(&tr), f(&kr));
+        let sc = (&s0r + &s1r) / q(2, 1);
+        for i in 0..=32 {
+            let s = &s0r + (&s1r - &s0r) * q(i, 32);
+            let tau = &tr + &kr * (&s - &sc);
+            let g = exact_gap2(&a, &b, &s, &tau);
+            for (who, bound) in [("verifier", v.as_ref().ok().copied()), ("search", w)] {
+                if let Some(bd) = bound {
+                    let bd = rational_from_f64(bd).unwrap();
+                    prop_assert!(&bd * &bd >= g, "{who}: bound {} below the exact gap at s = {s}", bd);
+                }
+            }
+        }
+    }
+}
