@@ -187,6 +187,9 @@ pub(crate) fn rational_to_f64_nearest(r: &Rational) -> f64 {
 /// Floats `lo <= r <= hi` with `lo == hi` iff `r` is a float; adjacent otherwise.
 /// Outside the float range the bracket ends at `±inf`.
 pub(crate) fn rational_to_f64_bracket(r: &Rational) -> (f64, f64) {
+    if let Some(x) = dyadic_f64(r) {
+        return (x, x);
+    }
     let guess = approx_quotient(r);
     if !guess.is_finite() {
         return if r.is_negative() {
@@ -212,6 +215,21 @@ pub(crate) fn rational_to_f64_bracket(r: &Rational) -> (f64, f64) {
     } else {
         (lo, lo.next_up())
     }
+}
+
+/// The float equal to `r` when `r = n / 2^k` with `|n| < 2^53` and `k ≤ 1022`
+/// (every number the search writes into a certificate): `n` and `2^-k` are
+/// floats, and their product is exact since it is a normal float or zero.
+/// `None` otherwise (the caller brackets `r` by comparisons).
+fn dyadic_f64(r: &Rational) -> Option<f64> {
+    let (n, d) = (r.numer(), r.denom());
+    let k = d.bits().checked_sub(1)?;
+    if n.bits() > 53 || k > 1022 || d.trailing_zeros() != Some(k) {
+        return None;
+    }
+    // n·2^-k ≥ 2^-1022 in magnitude (n ≠ 0) or zero: a normal float, exact
+    let nf = n.to_f64()?;
+    Some(nf * f64::from_bits((1023 - k) << 52))
 }
 
 /// A float close to `r` (within a few ulps) without overflow on huge numerators.
@@ -243,6 +261,44 @@ fn approx_quotient(r: &Rational) -> f64 {
 
 #[cfg(test)]
 mod tests {
+    /// The dyadic fast path of `rational_to_f64_bracket` agrees with the
+    /// comparison walk: every float is its own bracket, and a rational between
+    /// two floats is bracketed by them.
+    #[test]
+    fn dyadic_fast_path_is_exact() {
+        use super::*;
+        let mut x = 1.0f64;
+        let mut seen = 0;
+        for i in 0..4000u64 {
+            // a spread of magnitudes and signs, normal and subnormal
+            x = f64::from_bits(
+                x.to_bits()
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(i)
+                    >> 1,
+            );
+            for v in [
+                x,
+                -x,
+                x.sqrt(),
+                1.0 / (1.0 + x.abs()),
+                f64::MIN_POSITIVE * 3.0,
+                5e-324,
+            ] {
+                if !v.is_finite() {
+                    continue;
+                }
+                let r = rational_from_f64(v).unwrap();
+                assert_eq!(rational_to_f64_bracket(&r), (v, v), "{v:e}");
+                let next = rational_from_f64(v.next_up()).unwrap();
+                let between = (&r + &next) / Rational::from_integer(2.into());
+                assert_eq!(rational_to_f64_bracket(&between), (v, v.next_up()), "{v:e}");
+                seen += 1;
+            }
+        }
+        assert!(seen > 10_000);
+    }
+
     use super::*;
 
     #[test]
