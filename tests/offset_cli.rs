@@ -377,3 +377,62 @@ fn global_bounds_are_opt_in() {
         "[{glo}, {ghi}] vs {uhi}"
     );
 }
+
+/// `--no-certify` builds the same construction without proving it: the output
+/// says so everywhere (no certified error, `proven: false`, an UNPROVEN estimate),
+/// and it cannot be combined with a certificate.
+#[test]
+fn no_certify_is_labelled_unproven() {
+    let curve = tmp("cubic-unproven.json", CUBIC);
+    let o = lncert(&[
+        "offset",
+        curve.to_str().unwrap(),
+        "--distance",
+        "0.4",
+        "--tol",
+        "1e-3",
+        "--no-certify",
+        "--json",
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let d = json_of(&o);
+    assert_eq!(d["proven"], false);
+    assert!(d["certified_error"].is_null());
+    assert_eq!(d["certified_error_from"], "none: --no-certify");
+    assert!(d["verdict"].as_str().unwrap().starts_with("unproven"));
+    let e = d["estimated_error"].as_f64().unwrap();
+    assert!(e > 0.0 && e <= 1e-3, "{e}");
+    let text = lncert(&[
+        "offset",
+        curve.to_str().unwrap(),
+        "--distance",
+        "0.4",
+        "--tol",
+        "1e-3",
+        "--no-certify",
+    ]);
+    let out = String::from_utf8_lossy(&text.stdout);
+    assert!(
+        out.contains("UNPROVEN") && !out.contains("certified error"),
+        "{out}"
+    );
+    let cert = curve.with_file_name("never.json");
+    let bad = lncert(&[
+        "offset",
+        curve.to_str().unwrap(),
+        "--distance",
+        "0.4",
+        "--tol",
+        "1e-3",
+        "--no-certify",
+        "--certificate",
+        cert.to_str().unwrap(),
+    ]);
+    assert_eq!(bad.status.code(), Some(2));
+    assert!(!cert.exists());
+}

@@ -100,6 +100,11 @@ pub struct OffsetOptions {
     /// Also evaluate seed 000's error measure (8) per LN-pair segment (one more
     /// certified bound per segment; default false).
     pub paper_error: bool,
+    /// Prove each segment (default true). `false` accepts segments on an
+    /// **unproven** sampled estimate instead ([`crate::certify::sampled_estimate`],
+    /// 32 samples per direction) — the same construction, left unproven, for
+    /// comparison; the result says so ([`OffsetResult::proven`]).
+    pub certify: bool,
 }
 
 impl OffsetOptions {
@@ -113,6 +118,7 @@ impl OffsetOptions {
             max_segments: 20_000,
             max_boxes: 50_000,
             paper_error: false,
+            certify: true,
         }
     }
 }
@@ -187,6 +193,9 @@ pub struct OffsetResult {
     pub corners: Vec<Corner>,
     /// Certified Hausdorff searches run (accepted and rejected segments).
     pub certifications: usize,
+    /// True when every segment's `error` is certified; false with
+    /// `certify: false`, where `error` is a sampled estimate (`(e, e)`), not a bound.
+    pub proven: bool,
 }
 
 impl OffsetResult {
@@ -393,6 +402,21 @@ fn certify_segment(
         distance: opts.distance.clone(),
     };
     let b = ShapeDesc::Curve(vec![appr]);
+    if !opts.certify {
+        // the same construction, accepted on a sampled estimate (unproven)
+        let Ok(e) = crate::certify::sampled_estimate(&a, &b, 32) else {
+            return (None, split, false);
+        };
+        let seg = OffsetSegment {
+            piece: task.piece,
+            t: task.t,
+            bezier: bez,
+            error: (e, e),
+            paper_error: None,
+            proof: None,
+        };
+        return (Some(seg), split_point(opts.method, x, task.t), false);
+    }
     let cfg = Config {
         tol: Some(opts.tol),
         max_boxes: opts.max_boxes,
@@ -603,6 +627,7 @@ pub fn offset(
         cusps,
         corners: corners(curve, &opts.distance),
         certifications,
+        proven: opts.certify,
     })
 }
 

@@ -100,6 +100,27 @@ fn check_config(cfg: &Config) -> Result<(), CertifyError> {
     Ok(())
 }
 
+/// An **unproven** float estimate of `d_H(A, B)`: the larger of the two
+/// one-sided sampled maxima (`samples + 1` points per piece, float foot points on
+/// the other shape). Not a bound — it can be below the true distance; lncert uses
+/// it only where the user asked for no proof (`lncert offset --no-certify`), and
+/// labels it unproven there.
+///
+/// # Examples
+/// ```
+/// use lncert::certify::{sampled_estimate, ShapeDesc};
+/// let a = ShapeDesc::parse("M 0 0 Q 0.5 0.5 1 0").unwrap();
+/// let b = ShapeDesc::parse("M 0 0 L 1 0").unwrap();
+/// let e = sampled_estimate(&a, &b, 32).unwrap();
+/// assert!((e - 0.25).abs() < 1e-9); // the sample hits the maximum at t = 1/2
+/// ```
+pub fn sampled_estimate(a: &ShapeDesc, b: &ShapeDesc, samples: usize) -> Result<f64, CertifyError> {
+    let (pa, pb) = (a.pieces()?, b.pieces()?);
+    let samples = samples.clamp(1, 4096);
+    Ok(search::sampled_one_sided(&pa, &pb, samples)
+        .max(search::sampled_one_sided(&pb, &pa, samples)))
+}
+
 /// Certified bounds on `d_H(A, B)`.
 ///
 /// Stops when `hi − lo ≤ max(rel · hi, abs)` — or, with `cfg.tol`, when the

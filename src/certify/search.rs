@@ -188,6 +188,29 @@ pub(crate) fn foot_f64(piece: &Piece, q: (f64, f64), samples: usize) -> Option<(
         .map(|(t, v)| (t, v.sqrt()))
 }
 
+/// An **unproven** float estimate of `h(A, B)`: the largest float distance from
+/// `samples + 1` points of each piece of `A` to their float foot points on `B`.
+/// A sampled maximum, not a bound (it may be below the true distance); for
+/// `--no-certify` comparisons only.
+pub(crate) fn sampled_one_sided(a: &[Piece], b: &[Piece], samples: usize) -> f64 {
+    let mut worst = 0.0f64;
+    for p in a {
+        let (lo, hi) = p.inner;
+        for i in 0..=samples {
+            let s = lo + (hi - lo) * (i as f64 / samples as f64);
+            let Some((x, y)) = jet_f64(p, s) else {
+                return f64::INFINITY;
+            };
+            let d = b
+                .iter()
+                .filter_map(|q| foot_f64(q, (x.v, y.v), 16).map(|r| r.1))
+                .fold(f64::INFINITY, f64::min);
+            worst = worst.max(d);
+        }
+    }
+    worst
+}
+
 /// Local minima of the sample refined by [`foot_f64`].
 const FOOT_CANDIDATES: usize = 4;
 /// Sub-samples of each candidate's bracket `[t − h, t + h]`.
