@@ -39,7 +39,18 @@ fn is_zero_poly(p: &Poly<Rational>) -> bool {
 fn bisect(sf: &Poly<Rational>, r: &RealRoot, bits: u32) -> RealRoot {
     let w = Rational::new(1.into(), num_bigint::BigInt::from(1u8) << bits);
     let (mut l, mut h) = (r.lo.clone(), r.hi.clone());
+    // the sign by an interval enclosure of `sf(x)` first (the coefficients
+    // enclosed once, Horner at the enclosure of `x`), exactly only when that
+    // enclosure contains 0: most bisection steps are far from the root
+    let sf_iv = sf.map(interval_from_rational);
     let sign = |x: &Rational| {
+        let e = sf_iv.eval(&interval_from_rational(x));
+        if e.inf() > 0.0 {
+            return 1;
+        }
+        if e.sup() < 0.0 {
+            return -1;
+        }
         let v = sf.eval(x);
         if v.is_zero() {
             0
