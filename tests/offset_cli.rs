@@ -331,17 +331,9 @@ fn bad_input_exits_2_naming_the_flag() {
 fn global_bounds_are_opt_in() {
     let curve = tmp("cubic-global.json", CUBIC);
     let run = |extra: &[&str]| {
-        let mut args = vec![
-            "offset",
-            curve.to_str().unwrap(),
-            "--distance",
-            "0.4",
-            "--tol",
-            "1e-2",
-            "--json",
-        ];
+        let mut args = vec!["--json"];
         args.extend_from_slice(extra);
-        let o = lncert(&args);
+        let o = run_offset(&curve, "0.4", "1e-2", &args);
         assert_eq!(
             o.status.code(),
             Some(0),
@@ -378,22 +370,27 @@ fn global_bounds_are_opt_in() {
     );
 }
 
+/// `lncert offset CURVE --distance D --tol T EXTRA...`
+fn run_offset(curve: &std::path::Path, distance: &str, tol: &str, extra: &[&str]) -> Output {
+    let mut args = vec![
+        "offset",
+        curve.to_str().unwrap(),
+        "--distance",
+        distance,
+        "--tol",
+        tol,
+    ];
+    args.extend_from_slice(extra);
+    lncert(&args)
+}
+
 /// `--no-certify` builds the same construction without proving it: the output
 /// says so everywhere (no certified error, `proven: false`, an UNPROVEN estimate),
 /// and it cannot be combined with a certificate.
 #[test]
 fn no_certify_is_labelled_unproven() {
     let curve = tmp("cubic-unproven.json", CUBIC);
-    let o = lncert(&[
-        "offset",
-        curve.to_str().unwrap(),
-        "--distance",
-        "0.4",
-        "--tol",
-        "1e-3",
-        "--no-certify",
-        "--json",
-    ]);
+    let o = run_offset(&curve, "0.4", "1e-3", &["--no-certify", "--json"]);
     assert_eq!(
         o.status.code(),
         Some(0),
@@ -407,32 +404,19 @@ fn no_certify_is_labelled_unproven() {
     assert!(d["verdict"].as_str().unwrap().starts_with("unproven"));
     let e = d["estimated_error"].as_f64().unwrap();
     assert!(e > 0.0 && e <= 1e-3, "{e}");
-    let text = lncert(&[
-        "offset",
-        curve.to_str().unwrap(),
-        "--distance",
-        "0.4",
-        "--tol",
-        "1e-3",
-        "--no-certify",
-    ]);
+    let text = run_offset(&curve, "0.4", "1e-3", &["--no-certify"]);
     let out = String::from_utf8_lossy(&text.stdout);
     assert!(
         out.contains("UNPROVEN") && !out.contains("certified error"),
         "{out}"
     );
     let cert = curve.with_file_name("never.json");
-    let bad = lncert(&[
-        "offset",
-        curve.to_str().unwrap(),
-        "--distance",
+    let bad = run_offset(
+        &curve,
         "0.4",
-        "--tol",
         "1e-3",
-        "--no-certify",
-        "--certificate",
-        cert.to_str().unwrap(),
-    ]);
+        &["--no-certify", "--certificate", cert.to_str().unwrap()],
+    );
     assert_eq!(bad.status.code(), Some(2));
     assert!(!cert.exists());
 }

@@ -3,7 +3,10 @@
 //! of the exact offset, and the corners of a piecewise curve.
 
 use crate::curve::{Bezier, V2};
-use crate::poly::{certify_no_root, has_root_in, isolate_roots, square_free, Poly, RealRoot, Span};
+use crate::poly::{
+    certify_no_root, has_root_in, isolate_roots, isolate_simple_roots, square_free, Poly, RealRoot,
+    Span,
+};
 use crate::scalar::{interval_from_rational, rational_from_f64, Rational};
 use num_traits::{Signed, Zero};
 
@@ -86,6 +89,30 @@ fn bisect(sf: &Poly<Rational>, r: &RealRoot, bits: u32) -> RealRoot {
 fn roots_refined(p: &Poly<Rational>, span: &Span, bits: u32) -> Vec<RealRoot> {
     if is_zero_poly(p) || no_root_in_unit(p) {
         return Vec::new();
+    }
+    // Simple roots isolated by interval Bernstein subdivision (Descartes' rule)
+    // before the exact Sturm path: proven isolating intervals with ends that are
+    // not roots, so `[0, 1]` and `(0, 1)` hold the same roots. Exact bisection
+    // then refines each (a sign change of `p` itself: the root is simple).
+    let unit = span.lo.is_zero() && span.hi == Rational::from_integer(1.into());
+    if unit && p.coeffs().len() <= 61 {
+        let pi = p.map(interval_from_rational);
+        if let Some(pieces) = isolate_simple_roots(&pi, 0.0, 1.0, 2_000) {
+            let exact = |x: f64| rational_from_f64(x).expect("finite dyadic");
+            return pieces
+                .into_iter()
+                .map(|(a, b)| {
+                    bisect(
+                        p,
+                        &RealRoot {
+                            lo: exact(a),
+                            hi: exact(b),
+                        },
+                        bits,
+                    )
+                })
+                .collect();
+        }
     }
     let sf = square_free(p);
     isolate_roots(&sf, span)
