@@ -5,9 +5,10 @@
 //! * `lncert audit [--cases N] [--seed S] [--json]` — the float path audited;
 //! * `lncert hausdorff A B [--rel R] [--tol T] [--certificate OUT] [--json]` — certified
 //!   Hausdorff bounds and tolerance certificates;
-//! * `lncert offset CURVE --distance R --tol T [--method g2|ln-pair] [--certificate OUT] [--svg OUT] [--json]`
-//!   — an offset approximant proven within a tolerance;
-//! * `lncert verify CERT [--json]` — the independent certificate check.
+//! * `lncert offset CURVE --distance R --tol T [--method g2|ln-pair] [--certificate OUT] [--svg OUT]
+//!   [--global-bounds] [--no-certify] [--json]` — an offset approximant proven within a tolerance;
+//! * `lncert verify CERT [--against A B] [--json]` — the independent certificate check, and
+//!   whether it speaks about the shapes `A`, `B`.
 //! * `lncert tangency --x1 X --y1 Y --u U --center OX,OY --radius R [...]` —
 //!   quartic LN curves tangent to a circle (seed 003 §4).
 //!

@@ -1,6 +1,9 @@
 //! `lncert offset CURVE --distance R --tol T [--method g2|ln-pair] [--certificate OUT]
-//! [--svg OUT] [--json]`: an offset approximant proven within `T` of the exact
-//! offset (see [`lncert::approx`]).
+//! [--svg OUT] [--global-bounds] [--no-certify] [--json]`: an offset approximant proven
+//! within `T` of the exact offset (see [`lncert::approx`]). The certified error is the
+//! union bound of the per-segment proofs, and the certificate is assembled from them;
+//! `--global-bounds` adds a two-sided search over the whole offset; `--no-certify`
+//! builds the same construction unproven (labelled so) to measure the proof's cost.
 //!
 //! `CURVE` is a file with a curve (`{"bezier": ...}`, `{"beziers": ...}`,
 //! `{"bspline": ...}` or SVG path data), an arc (`{"arc": {...}}`) or a circle
