@@ -481,6 +481,11 @@ fn numbers_must_be_canonical_and_bounded() {
         (Value::from("1/050"), false),
         (Value::from("-0"), false),
         (Value::from("1/1"), false),
+        (Value::from("0/7"), false),
+        (Value::from("-0/7"), false),
+        (Value::from("1/0"), false),
+        (Value::from("-1/50"), false),
+        (Value::from("4/200"), false),
         (Value::from(" 1/50"), false),
         (Value::from(1), false),
         (Value::from("1".to_string() + &"0".repeat(100)), true), // 10¹⁰⁰: the limit
