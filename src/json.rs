@@ -235,9 +235,7 @@ pub fn parse_bytes(bytes: &[u8], limits: &Limits) -> Result<Json, JsonError> {
     match std::str::from_utf8(bytes) {
         Ok(t) => parse(t, limits),
         Err(e) => {
-            let upto = &bytes[..e.valid_up_to()];
-            let line = 1 + upto.iter().filter(|&&c| c == b'\n').count();
-            let column = 1 + upto.iter().rev().take_while(|&&c| c != b'\n').count();
+            let (line, column) = line_col(bytes, e.valid_up_to());
             Err(JsonError {
                 path: "(top level)".to_string(),
                 line,
@@ -247,6 +245,14 @@ pub fn parse_bytes(bytes: &[u8], limits: &Limits) -> Result<Json, JsonError> {
             })
         }
     }
+}
+
+/// 1-based line and column (in bytes) of byte `pos` of `bytes`.
+fn line_col(bytes: &[u8], pos: usize) -> (usize, usize) {
+    let upto = &bytes[..pos.min(bytes.len())];
+    let line = 1 + upto.iter().filter(|&&c| c == b'\n').count();
+    let column = 1 + upto.iter().rev().take_while(|&&c| c != b'\n').count();
+    (line, column)
 }
 
 impl<'a> Parser<'a> {
@@ -278,9 +284,7 @@ impl<'a> Parser<'a> {
     }
 
     fn err_of(&self, kind: ErrorKind, reason: impl Into<String>) -> JsonError {
-        let upto = &self.b[..self.pos.min(self.b.len())];
-        let line = 1 + upto.iter().filter(|&&c| c == b'\n').count();
-        let column = 1 + upto.iter().rev().take_while(|&&c| c != b'\n').count();
+        let (line, column) = line_col(self.b, self.pos);
         JsonError {
             path: self.path_string(),
             line,

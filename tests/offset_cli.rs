@@ -404,6 +404,13 @@ fn no_certify_is_labelled_unproven() {
     assert!(d["verdict"].as_str().unwrap().starts_with("unproven"));
     let e = d["estimated_error"].as_f64().unwrap();
     assert!(e > 0.0 && e <= 1e-3, "{e}");
+    // no piece claims a certified bound: its error is the trivial [0, ∞), the
+    // estimate stands apart
+    for p in d["pieces"].as_array().unwrap() {
+        assert_eq!(p["error"][0].as_f64(), Some(0.0));
+        assert!(p["error"][1].is_null(), "{p}");
+        assert!(p["estimate"].as_f64().unwrap() <= e);
+    }
     let text = run_offset(&curve, "0.4", "1e-3", &["--no-certify"]);
     let out = String::from_utf8_lossy(&text.stdout);
     assert!(

@@ -153,6 +153,9 @@ pub struct OffsetSegment {
     pub paper_error: Option<f64>,
     /// The proof of `error.1 ≤ tol` when the segment was accepted.
     pub proof: Option<SegmentProof>,
+    /// With `certify: false` only: the **unproven** sampled estimate the
+    /// segment was accepted on (`error` is then `(0, ∞)`: nothing is certified).
+    pub estimate: Option<f64>,
 }
 
 /// The proof of one accepted segment: the final covers of its certified search,
@@ -185,7 +188,8 @@ pub struct OffsetResult {
     /// Indices of segments whose certified bound stayed above `tol` (depth or
     /// segment limit reached); empty when the tolerance is proven.
     pub unreached: Vec<usize>,
-    /// `max` of the segments' certified upper bounds: `d_H ≤ certified_hi`.
+    /// `max` of the segments' certified upper bounds: `d_H ≤ certified_hi`
+    /// (`∞` when nothing is certified, `certify: false`).
     pub certified_hi: f64,
     /// Cusps of the exact offset (radius of curvature = distance).
     pub cusps: Vec<OffsetCusp>,
@@ -193,15 +197,30 @@ pub struct OffsetResult {
     pub corners: Vec<Corner>,
     /// Certified Hausdorff searches run (accepted and rejected segments).
     pub certifications: usize,
-    /// True when every segment's `error` is certified; false with
-    /// `certify: false`, where `error` is a sampled estimate (`(e, e)`), not a bound.
+    /// True when the segments are certified; false with `certify: false`, where
+    /// every `error` is the trivial `(0, ∞)` and the segments carry an unproven
+    /// `estimate` instead.
     pub proven: bool,
 }
 
 impl OffsetResult {
-    /// True when every segment is certified within `tol`.
+    /// True when every segment is certified within `tol` (with `certify: false`:
+    /// estimated within it, see [`OffsetResult::proven`]).
     pub fn reached(&self) -> bool {
         self.unreached.is_empty()
+    }
+    /// With `certify: false`: the largest **unproven** sampled estimate of the
+    /// segments (`None` when the result is proven). Not a bound.
+    pub fn estimated_hi(&self) -> Option<f64> {
+        if self.proven {
+            return None;
+        }
+        Some(
+            self.segments
+                .iter()
+                .map(|s| s.estimate.unwrap_or(f64::INFINITY))
+                .fold(0.0, f64::max),
+        )
     }
     /// The largest segment degree.
     pub fn degree(&self) -> usize {
@@ -411,9 +430,11 @@ fn certify_segment(
             piece: task.piece,
             t: task.t,
             bezier: bez,
-            error: (e, e),
+            // nothing is certified: the trivial bounds, and the estimate apart
+            error: (0.0, f64::INFINITY),
             paper_error: None,
             proof: None,
+            estimate: Some(e),
         };
         return (Some(seg), split_point(opts.method, x, task.t), false);
     }
@@ -428,18 +449,6 @@ fn certify_segment(
     let Ok(r) = hausdorff(&a, &b, &cfg) else {
         return (None, split, false);
     };
-    if std::env::var_os("LNCERT_TRACE").is_some() {
-        eprintln!(
-            "span {:?}: [{:.4e}, {:.4e}] boxes {}+{} final {}+{}",
-            task.t,
-            r.lo,
-            r.hi,
-            r.a_to_b.evaluated,
-            r.b_to_a.evaluated,
-            r.a_to_b.boxes.len(),
-            r.b_to_a.boxes.len()
-        );
-    }
     let paper_error = match (&pair, opts.paper_error) {
         (Some(p), true) => paper_error_of(x, task.t, &exact, p, d),
         _ => None,
@@ -455,6 +464,7 @@ fn certify_segment(
         error: (r.lo, r.hi),
         paper_error,
         proof,
+        estimate: None,
     };
     let stuck = r.incomplete() && r.hi > opts.tol && r.lo * 64.0 < opts.tol;
     (Some(seg), split_point(opts.method, x, task.t), stuck)
@@ -549,7 +559,10 @@ pub fn offset(
         let mut pending = outcomes.len();
         for o in outcomes {
             pending -= 1;
-            let accepted = o.segment.as_ref().is_some_and(|s| s.error.1 <= opts.tol);
+            // proven within tol, or (certify: false) estimated within it
+            let accepted = o.segment.as_ref().is_some_and(|s| {
+                s.error.1 <= opts.tol || s.estimate.is_some_and(|e| e <= opts.tol)
+            });
             if accepted {
                 done.extend(o.segment);
                 continue;
@@ -588,6 +601,7 @@ pub fn offset(
                         error: (0.0, f64::INFINITY),
                         paper_error: None,
                         proof: None,
+                        estimate: None,
                     });
                 }
             }

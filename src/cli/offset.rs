@@ -136,15 +136,8 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     // without --global-bounds: 0 ≤ d_H ≤ the union bound of the per-segment proofs
     let (lo, hi) = if a.global_bounds {
         let g = global_bounds(&curve, &res, GLOBAL_REL).map_err(offset_err)?;
-        // with --no-certify the per-segment figures are estimates: not mixed in
-        (
-            g.lo,
-            if res.proven {
-                g.hi.min(res.certified_hi)
-            } else {
-                g.hi
-            },
-        )
+        // (with --no-certify, certified_hi is ∞: nothing per segment is certified)
+        (g.lo, g.hi.min(res.certified_hi))
     } else {
         (0.0, res.certified_hi)
     };
@@ -169,7 +162,9 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
         let svg = super::offset_svg::render(&curve, &res);
         std::fs::write(path, svg).map_err(|e| bad("--svg", format!("{}: {e}", path.display())))?;
     }
-    let verdict = match (res.reached() && hi <= tol, proven) {
+    // unproven: every segment within tol by its sampled estimate (res.reached())
+    let within = res.reached() && (hi <= tol || !proven);
+    let verdict = match (within, proven) {
         (true, true) => "certified",
         (true, false) => "unproven: within tol by a sampled estimate",
         (false, _) => "not reached",
@@ -185,12 +180,13 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             "certified_error": if proven { json!([lo, hi]) } else { Value::Null },
             "certified_error_from": if a.global_bounds { "global search" } else if res.proven { "union of the per-segment proofs" } else { "none: --no-certify" },
             "proven": proven,
-            "estimated_error": if res.proven { Value::Null } else { json!(res.certified_hi) },
+            "estimated_error": res.estimated_hi(),
             "verdict": verdict,
             "pieces": res.segments.iter().map(|s| json!({
                 "piece": s.piece, "t": [s.t.0, s.t.1],
                 "control_points": s.bezier.points().iter().map(|p| json!([p.x, p.y])).collect::<Vec<_>>(),
                 "error": [s.error.0, s.error.1],
+                "estimate": s.estimate,
                 "paper_error": s.paper_error,
             })).collect::<Vec<_>>(),
             "unreached": res.unreached,
@@ -224,7 +220,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             a.global_bounds,
         ));
     }
-    Ok(if res.reached() && hi <= tol { 0 } else { 1 })
+    Ok(if within { 0 } else { 1 })
 }
 
 fn text_report(
@@ -247,7 +243,8 @@ fn text_report(
         res.control_points()
     );
     if !res.proven && !global {
-        s += &format!("  estimated error (sampled, UNPROVEN): d_H ≈ {hi:.6e} — {verdict}\n");
+        let e = res.estimated_hi().unwrap_or(f64::INFINITY);
+        s += &format!("  estimated error (sampled, UNPROVEN): d_H ≈ {e:.6e} — {verdict}\n");
         s += &format!(
             "  {} segments built, {:.3} s, nothing proven\n",
             res.segments.len(),
@@ -296,10 +293,16 @@ fn text_report(
     }
     for &i in &res.unreached {
         let g = &res.segments[i];
-        s += &format!(
-            "  not reached: piece {} t ∈ [{}, {}], certified error ≤ {:.3e}\n",
-            g.piece, g.t.0, g.t.1, g.error.1
-        );
+        s += &match g.estimate {
+            Some(e) => format!(
+                "  not reached: piece {} t ∈ [{}, {}], estimated error (UNPROVEN) ≈ {e:.3e}\n",
+                g.piece, g.t.0, g.t.1
+            ),
+            None => format!(
+                "  not reached: piece {} t ∈ [{}, {}], certified error ≤ {:.3e}\n",
+                g.piece, g.t.0, g.t.1, g.error.1
+            ),
+        };
     }
     if let Some(n) = cert_note {
         s += &format!("  certificate: {n}\n");

@@ -112,11 +112,14 @@ pub fn render(curve: &[Bezier<Rational>], res: &OffsetResult) -> String {
     );
     let _ = writeln!(
         s,
-        r#"<title>lncert offset: {} segment(s), degree {}, {} control points, certified d_H ≤ {:.3e} (tol {:e})</title>"#,
+        r#"<title>lncert offset: {} segment(s), degree {}, {} control points, {} (tol {:e})</title>"#,
         res.segments.len(),
         res.degree(),
         res.control_points(),
-        res.certified_hi,
+        match res.estimated_hi() {
+            None => format!("certified d_H ≤ {:.3e}", res.certified_hi),
+            Some(e) => format!("UNPROVEN sampled estimate d_H ≈ {e:.3e}"),
+        },
         res.tol
     );
     let _ = writeln!(s, r#"<rect width="100%" height="100%" fill="white"/>"#);
