@@ -74,18 +74,30 @@ fn bench(c: &mut Criterion) {
         )
         .unwrap();
         let tol = Rational::from_float(r.hi * 1.01).unwrap();
+        // the default path (parametric proof first) and the two-directional
+        // search, whose box covers a certificate is built from
         let cfg = Config {
             tol: Some(interval_from_rational(&tol).inf()),
             ..Config::default()
         };
-        let rt = hausdorff(&a, &b, &cfg).unwrap();
+        let cfg_search = Config {
+            parametric: false,
+            ..cfg.clone()
+        };
+        let rp = hausdorff(&a, &b, &cfg).unwrap();
+        let rt = hausdorff(&a, &b, &cfg_search).unwrap();
         let cert = Certificate::new(&a, &b, &tol, &rt).expect("certified");
         println!(
-            "{name}: certificate of d_H ≤ 1.01·hi with {} boxes",
+            "{name}: d_H ≤ 1.01·hi by the {} path ({} boxes); certificate by the search with {} boxes",
+            if rp.parametric.is_some() { "parametric" } else { "search" },
+            rp.a_to_b.evaluated + rp.b_to_a.evaluated,
             cert.box_count()
         );
         g.bench_function(format!("certify_tol/{name}"), |bch| {
             bch.iter(|| hausdorff(black_box(&a), black_box(&b), &cfg).unwrap())
+        });
+        g.bench_function(format!("certify_tol_search/{name}"), |bch| {
+            bch.iter(|| hausdorff(black_box(&a), black_box(&b), &cfg_search).unwrap())
         });
         let text = cert.to_json_string();
         g.bench_function(format!("verify/{name}"), |bch| {

@@ -295,6 +295,7 @@ fn certified(a: &ShapeDesc, b: &ShapeDesc, tol: &str) -> Certificate {
         b,
         &Config {
             tol: Some(interval_from_rational(&t).inf()),
+            parametric: false,
             ..Config::default()
         },
     )
@@ -641,6 +642,7 @@ fn certificate_for_arc_and_offset_shapes() {
         &shape("M -0.0707 0.0707 Q 1 1.2 2.0707 0.0707"),
         &Config {
             tol: Some(interval_from_rational(&tol).inf()),
+            parametric: false,
             ..Config::default()
         },
     )

@@ -391,6 +391,13 @@ fn budget_exhausted_on_an_exact_segment_stops_splitting() {
     let proven = offset(&c, &o).unwrap();
     assert!(proven.reached() && proven.segments.len() == 1);
     o.max_boxes = 16;
+    // the parametric proof follows the translate to third order: 16 boxes suffice
+    let fast = offset(&c, &o).unwrap();
+    assert!(fast.reached() && fast.segments.len() == 1);
+    let path = fast.segments[0].proof.as_ref().map(|p| p.path);
+    assert_eq!(path, Some(lncert::approx::ProofPath::Parametric));
+    // the search alone (as for a certificate) runs out of its 16 boxes
+    o.covers = true;
     let r = offset(&c, &o).unwrap();
     assert_eq!(r.segments.len(), 2, "split once, then given up");
     assert_eq!(r.certifications, 3);

@@ -105,6 +105,13 @@ pub struct OffsetOptions {
     /// 32 samples per direction) — the same construction, left unproven, for
     /// comparison; the result says so ([`OffsetResult::proven`]).
     pub certify: bool,
+    /// Keep box covers of every segment's proof (default false), which
+    /// [`union_certificate`] needs: segments are then proven by the
+    /// two-directional search only. Without it, a segment is first tried by the
+    /// parametric proof ([`crate::certify::param`]: one cover of the segment's
+    /// parameter for both directions, several times cheaper), with the search
+    /// as fallback; [`SegmentProof::path`] says which proved it.
+    pub covers: bool,
 }
 
 impl OffsetOptions {
@@ -119,6 +126,7 @@ impl OffsetOptions {
             max_boxes: 50_000,
             paper_error: false,
             certify: true,
+            covers: false,
         }
     }
 }
@@ -158,11 +166,35 @@ pub struct OffsetSegment {
     pub estimate: Option<f64>,
 }
 
-/// The proof of one accepted segment: the final covers of its certified search,
-/// both directions (piece and target 0: the exact offset of the span, the segment).
-/// [`union_certificate`] assembles them into a certificate of the whole result.
+/// Which proof accepted a segment.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ProofPath {
+    /// The parametric proof: one cover of the segment's parameter, with a
+    /// cubic map into the span's exact offset, proves both directions
+    /// ([`crate::certify::param`]). No box covers are kept.
+    Parametric,
+    /// The two-directional branch and bound ([`crate::certify::search`]).
+    Search,
+}
+
+impl ProofPath {
+    /// `"parametric"` or `"search"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            ProofPath::Parametric => "parametric",
+            ProofPath::Search => "search",
+        }
+    }
+}
+
+/// The proof of one accepted segment. For the search path: its final covers,
+/// both directions (piece and target 0: the exact offset of the span, the
+/// segment), which [`union_certificate`] assembles into a certificate of the
+/// whole result; the parametric path keeps no covers (empty vectors).
 #[derive(Clone, Debug, PartialEq)]
 pub struct SegmentProof {
+    /// The proof that accepted the segment.
+    pub path: ProofPath,
     /// Cover of the span's exact offset, foot maps into the segment.
     pub exact_to_segment: Vec<CoverBox>,
     /// Cover of the segment, foot maps into the span's exact offset.
@@ -444,6 +476,7 @@ fn certify_segment(
         // a refuted span is split: its other direction is not needed — unless it
         // cannot be split any more and its bounds are reported
         verdict_only: task.depth < opts.max_depth,
+        parametric: !opts.covers,
         ..Config::default()
     };
     let Ok(r) = hausdorff(&a, &b, &cfg) else {
@@ -454,6 +487,11 @@ fn certify_segment(
         _ => None,
     };
     let proof = (r.hi <= opts.tol).then(|| SegmentProof {
+        path: if r.parametric.is_some() {
+            ProofPath::Parametric
+        } else {
+            ProofPath::Search
+        },
         exact_to_segment: r.a_to_b.boxes.clone(),
         segment_to_exact: r.b_to_a.boxes.clone(),
     });
@@ -709,6 +747,19 @@ pub fn union_certificate(
     if !res.reached() || res.segments.iter().any(|s| s.proof.is_none()) {
         return Ok(None);
     }
+    if let Some(i) = res
+        .segments
+        .iter()
+        .position(|s| s.proof.as_ref().is_some_and(|p| p.path != ProofPath::Search))
+    {
+        return Err(bad(
+            "segments",
+            format!(
+                "segment {i} was proven by the parametric path, which keeps no box covers: \
+                 run offset with `covers: true` to assemble a certificate"
+            ),
+        ));
+    }
     let a = exact_offset_shape(curve, res)?;
     let b = res.approximant_shape()?;
     let side = |boxes: &mut dyn Iterator<Item = CoverBox>| OneSided {
@@ -745,6 +796,7 @@ pub fn union_certificate(
         hi: res.certified_hi,
         a_to_b: ab,
         b_to_a: ba,
+        parametric: None,
     };
     Ok(Certificate::new(&a, &b, tol, &r))
 }

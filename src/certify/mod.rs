@@ -28,7 +28,9 @@
 //! ```
 
 pub mod cert;
+mod bern;
 pub mod jet;
+pub mod param;
 mod same;
 pub mod search;
 pub mod shape;
@@ -61,6 +63,9 @@ pub struct HausdorffBounds {
     pub a_to_b: OneSided,
     /// Bounds on `h(B, A)`.
     pub b_to_a: OneSided,
+    /// The parametric proof of `hi` when that path decided (then both
+    /// one-sided results are `[0, hi]` with no boxes, and `lo` is 0).
+    pub parametric: Option<param::Parametric>,
 }
 
 impl HausdorffBounds {
@@ -139,6 +144,9 @@ pub fn hausdorff(
     } else {
         1e-10 * (1.0 + a.scale().max(b.scale()))
     };
+    if let Some(r) = parametric_path(&pa, &pb, cfg, abs) {
+        return Ok(r);
+    }
     let ab = search::one_sided(&pa, &pb, cfg, abs, (0.0, 0.0));
     let refuted = cfg.tol.is_some_and(|t| ab.lo > t);
     let ba = if refuted && cfg.verdict_only {
@@ -172,5 +180,58 @@ pub fn hausdorff(
         hi: ab.hi.max(ba.hi),
         a_to_b: ab,
         b_to_a: ba,
+        parametric: None,
     })
 }
+
+/// The parametric proof where it applies (one piece each, one of them with
+/// an exact parameter domain; see [`param`]): for `cfg.tol`, or for the
+/// relative gap `cfg.rel` with witness lower bounds.
+fn parametric_path(
+    pa: &[shape::Piece],
+    pb: &[shape::Piece],
+    cfg: &Config,
+    abs: f64,
+) -> Option<HausdorffBounds> {
+    if !cfg.parametric || pa.len() != 1 || pb.len() != 1 {
+        return None;
+    }
+    let goal = match cfg.tol {
+        Some(t) => param::Goal::Tol(t),
+        None => param::Goal::Gap { rel: cfg.rel, abs },
+    };
+    let (a, b) = (&pa[0], &pb[0]);
+    let budget = cfg.max_boxes.min(PARAMETRIC_BOXES);
+    // the parametrised side needs an exact domain: a polynomial piece
+    let (p, swapped) = if b.inner == b.outer {
+        (param::prove(a, b, goal, budget)?, false)
+    } else if a.inner == a.outer {
+        (param::prove(b, a, goal, budget)?, true)
+    } else {
+        return None;
+    };
+    // the witness is a point of the parametrised side, at distance ≥ lo from the other
+    let side = |evaluated, lo, witness: Option<f64>| OneSided {
+        lo,
+        hi: p.hi,
+        witness: witness.map(|t| (0, t)),
+        boxes: Vec::new(),
+        evaluated,
+        incomplete: false,
+    };
+    let (ab, ba) = if swapped {
+        (side(p.evaluated, p.lo, p.witness), side(0, 0.0, None))
+    } else {
+        (side(p.evaluated, 0.0, None), side(0, p.lo, p.witness))
+    };
+    Some(HausdorffBounds {
+        lo: p.lo,
+        hi: p.hi,
+        a_to_b: ab,
+        b_to_a: ba,
+        parametric: Some(p),
+    })
+}
+
+/// Box budget of the parametric proof before the search takes over.
+const PARAMETRIC_BOXES: usize = 2_000;

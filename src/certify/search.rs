@@ -57,6 +57,13 @@ pub struct Config {
     /// (its bounds are reported as `[0, ∞]`) instead of bounding it coarsely.
     /// For callers that only need the verdict (the offset driver splits a refuted span).
     pub verdict_only: bool,
+    /// For one piece against one piece: try the parametric proof
+    /// ([`super::param`]) first — one cover for both directions, lower bounds
+    /// from witness points of one side — and run the search only if it does not
+    /// reach the goal (default true).
+    /// Its result has no box covers, so a [`super::Certificate`] cannot be
+    /// built from it: set `false` when one is wanted.
+    pub parametric: bool,
 }
 
 impl Default for Config {
@@ -67,6 +74,7 @@ impl Default for Config {
             max_boxes: 200_000,
             tol: None,
             verdict_only: false,
+            parametric: true,
         }
     }
 }
@@ -143,6 +151,44 @@ fn point_iv(x: f64) -> Interval {
 
 fn jet_f64(p: &Piece, t: f64) -> Option<JetPoint<f64>> {
     p.fl.eval(Jet::variable(t))
+}
+
+/// The float point of a piece at `t`.
+pub(crate) fn point_f64(p: &Piece, t: f64) -> Option<(f64, f64)> {
+    let (x, y) = jet_f64(p, t)?;
+    (x.v.is_finite() && y.v.is_finite()).then_some((x.v, y.v))
+}
+
+/// Newton's float foot point of `q` on `piece` from `guess` (kept in the inner
+/// domain; `guess` itself when Newton cannot start).
+pub(crate) fn foot_newton(piece: &Piece, q: (f64, f64), guess: f64) -> f64 {
+    let d2 = |t: f64| jet_f64(piece, t).map(|(x, y)| (x.v - q.0).powi(2) + (y.v - q.1).powi(2));
+    let Some(mut cur) = d2(guess).filter(|v| v.is_finite()).map(|v| (guess, v)) else {
+        return guess;
+    };
+    // Newton converges only linearly where the piece is nearly stationary (an
+    // offset's cusp): run it again while it still improves.
+    for _ in 0..8 {
+        let next = newton_foot(piece, q, cur, &d2);
+        if !(next.1 < cur.1) {
+            break;
+        }
+        cur = next;
+    }
+    cur.0
+}
+
+/// The float slope `ds/dt` of the foot point `s` of `B(t)` on `A`:
+/// `F(t, s) = (B(t) − A(s))·A′(s) = 0` gives `ds/dt = −F_t/F_s` (`None` where
+/// `F_s ≥ 0`, i.e. not a strict local minimum).
+pub(crate) fn foot_slope_of(b: &Piece, t: f64, a: &Piece, s: f64) -> Option<f64> {
+    let (bx, by) = jet_f64(b, t)?;
+    let (ax, ay) = jet_f64(a, s)?;
+    let (ex, ey) = (bx.v - ax.v, by.v - ay.v);
+    let ft = bx.d * ax.d + by.d * ay.d;
+    let fs = -(ax.d * ax.d + ay.d * ay.d) + ex * ax.dd + ey * ay.dd;
+    let k = -ft / fs;
+    (fs < 0.0 && k.is_finite()).then_some(k)
 }
 
 /// Float foot point of `q` on one piece: every local minimum of a sample
@@ -357,14 +403,28 @@ pub(crate) fn box_bound_from(src: &SourceJets, b: &Piece, t: f64, k: f64) -> Opt
     } else {
         b.iv.eval(Jet::affine(ti, ki))?
     };
-    let g_c = dist2(&src.centre, &pb_c);
-    let w = sb - sc; // ⊆ [−w/2, w/2]
-                     // The difference D(s) = A(s) − B(τ(s)) over the box. Its value and slope are
-                     // also enclosed by mean-value forms around the centre, D(c) + D′(S)(S − c) and
-                     // D′(c) + D″(S)(S − c) (sound by the mean value theorem), and the tighter of
-                     // the two enclosures is kept: the separate enclosures of A(S) and B(τ(S)) are
-                     // as wide as the curves move over the box, while D itself stays as small as
-                     // the distance when the foot map follows B.
+    difference_bound(&src.over, &src.centre, &pb, &pb_c, src.sb - src.sc)
+}
+
+/// Certified upper bound on `sup_S |D|`, `D(s) = P(s) − Q(s)`, from jets of `P`
+/// and `Q` over the box `S` (`p_over`, `q_over`) and at its centre `s_c`
+/// (`p_c`, `q_c`); `w ⊇ S − s_c`. Both must be `C²` on `S`. The second-order
+/// Taylor bound of `g = |D|²` with the mean-value-form meets described in the
+/// module docs; `None` if the bound is not finite.
+pub(crate) fn difference_bound(
+    p_over: &JetPoint<Interval>,
+    p_c: &JetPoint<Interval>,
+    q_over: &JetPoint<Interval>,
+    q_c: &JetPoint<Interval>,
+    w: Interval,
+) -> Option<f64> {
+    let g_c = dist2(p_c, q_c);
+    // The difference D over the box. Its value and slope are also enclosed by
+    // mean-value forms around the centre, D(c) + D′(S)(S − c) and
+    // D′(c) + D″(S)(S − c) (sound by the mean value theorem), and the tighter of
+    // the two enclosures is kept: the separate enclosures of P(S) and Q(S) are as
+    // wide as the curves move over the box, while D itself stays as small as the
+    // distance when the map between the parameters follows the curves.
     let tighten = |over: Jet<Interval>, centre: Jet<Interval>| {
         let v = over.v.intersection(centre.v + over.d * w);
         let d = over.d.intersection(centre.d + over.dd * w);
@@ -375,8 +435,8 @@ pub(crate) fn box_bound_from(src: &SourceJets, b: &Piece, t: f64, k: f64) -> Opt
             Jet { v, d, dd: over.dd }
         }
     };
-    let dx = tighten(src.over.0 - pb.0, src.centre.0 - pb_c.0);
-    let dy = tighten(src.over.1 - pb.1, src.centre.1 - pb_c.1);
+    let dx = tighten(p_over.0 - q_over.0, p_c.0 - q_c.0);
+    let dy = tighten(p_over.1 - q_over.1, p_c.1 - q_c.1);
     // g = |D|² over the box: g = Dx² + Dy², g″ = 2 (Dx′² + Dy′² + Dx Dx″ + Dy Dy″)
     let two = Interval::from_frac(2, 1);
     let g_box_v = dx.v.sqr() + dy.v.sqr();

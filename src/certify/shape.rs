@@ -673,7 +673,7 @@ pub(crate) fn arc_end_parameter(
     }
 }
 
-impl<S: ScalarSqrt + Copy> PieceData<S> {
+impl<S: ScalarSqrt + Copy + Casteljau> PieceData<S> {
     /// The point of the piece at the parameter jet `t`, or `None` where the
     /// evaluation is undefined (a possibly vanishing normal or denominator).
     ///
@@ -684,9 +684,9 @@ impl<S: ScalarSqrt + Copy> PieceData<S> {
     pub fn eval(&self, t: Jet<S>) -> Option<JetPoint<S>> {
         match self {
             PieceData::Bez { pts, d1, d2 } => {
-                let p = casteljau(pts, t.v);
-                let p1 = casteljau(d1, t.v);
-                let p2 = casteljau(d2, t.v);
+                let p = S::casteljau(pts, t.v);
+                let p1 = S::casteljau(d1, t.v);
+                let p2 = S::casteljau(d2, t.v);
                 Some(chain(p, p1, p2, t))
             }
             PieceData::Arc { c, r, e0 } => {
@@ -710,10 +710,10 @@ impl<S: ScalarSqrt + Copy> PieceData<S> {
                 q,
                 sigma,
             } => {
-                let p1 = casteljau(hod, t.v);
-                let p2 = casteljau(hod2, t.v);
-                let (x, y) = chain(casteljau(pts, t.v), p1, p2, t);
-                let (dx, dy) = chain(p1, p2, casteljau(hod3, t.v), t);
+                let p1 = S::casteljau(hod, t.v);
+                let p2 = S::casteljau(hod2, t.v);
+                let (x, y) = chain(S::casteljau(pts, t.v), p1, p2, t);
+                let (dx, dy) = chain(p1, p2, S::casteljau(hod3, t.v), t);
                 // n = (−y′, x′); Q n; nᵀ Q n
                 let (n1, n2) = (-dy, dx);
                 let qn1 = n1.scale(q.0) + n2.scale(q.1);
@@ -737,16 +737,51 @@ fn chain<S: Scalar + Copy>(p: (S, S), p1: (S, S), p2: (S, S), t: Jet<S>) -> JetP
     (coord(p.0, p1.0, p2.0), coord(p.1, p1.1, p2.1))
 }
 
-/// De Casteljau's algorithm at a scalar parameter.
+/// De Casteljau's algorithm at a scalar parameter (on the stack up to
+/// [`STACK_POINTS`] control points: this runs for every box of a search).
 fn casteljau<S: Scalar + Copy>(pts: &[(S, S)], t: S) -> (S, S) {
-    let mut xs: Vec<S> = pts.iter().map(|p| p.0).collect();
-    let mut ys: Vec<S> = pts.iter().map(|p| p.1).collect();
-    let n = xs.len();
-    for level in 1..n {
-        for i in 0..n - level {
-            xs[i] = xs[i] + t * (xs[i + 1] - xs[i]);
-            ys[i] = ys[i] + t * (ys[i + 1] - ys[i]);
+    fn run<S: Scalar + Copy>(buf: &mut [(S, S)], t: S) -> (S, S) {
+        let n = buf.len();
+        for level in 1..n {
+            for i in 0..n - level {
+                let (a, b) = (buf[i], buf[i + 1]);
+                buf[i] = (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1));
+            }
         }
+        buf[0]
     }
-    (xs[0], ys[0])
+    let n = pts.len();
+    if n <= STACK_POINTS {
+        let mut buf = [pts[0]; STACK_POINTS];
+        buf[..n].copy_from_slice(pts);
+        run(&mut buf[..n], t)
+    } else {
+        run(&mut pts.to_vec(), t)
+    }
+}
+
+
+/// Control points evaluated without a heap allocation.
+const STACK_POINTS: usize = 24;
+
+/// De Casteljau's algorithm as each scalar runs it in the hot loop of a search.
+pub(crate) trait Casteljau: Sized {
+    /// The point with Bézier control points `pts` at `t` (an enclosure of the
+    /// range over `t` for intervals).
+    fn casteljau(pts: &[(Self, Self)], t: Self) -> (Self, Self);
+}
+
+impl Casteljau for f64 {
+    fn casteljau(pts: &[(f64, f64)], t: f64) -> (f64, f64) {
+        casteljau(pts, t)
+    }
+}
+
+impl Casteljau for Interval {
+    /// [`super::bern::enclose`] (floats with an a-priori error bound, Bernstein
+    /// hull over the parameter box) for parameters in `[0, 1]`; interval de
+    /// Casteljau otherwise.
+    fn casteljau(pts: &[(Interval, Interval)], t: Interval) -> (Interval, Interval) {
+        super::bern::enclose(pts, t).unwrap_or_else(|| casteljau(pts, t))
+    }
 }

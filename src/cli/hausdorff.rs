@@ -103,6 +103,8 @@ pub fn run(a: &HausdorffArgs) -> Result<i32, CliError> {
         rel: rel_f,
         max_boxes: a.max_boxes,
         tol: tol_f,
+        // a certificate is built from the search's box covers
+        parametric: a.certificate.is_none(),
         ..Config::default()
     };
     let start = std::time::Instant::now();
@@ -140,6 +142,8 @@ pub fn run(a: &HausdorffArgs) -> Result<i32, CliError> {
             "tol": tol.as_ref().map(|t| t.to_string()),
             "verdict": verdict,
             "incomplete": r.incomplete(),
+            "proof": if r.parametric.is_some() { "parametric" } else { "search" },
+            "parametric_boxes": r.parametric.as_ref().map(|p| p.boxes.len()),
             "certificate": cert_note,
             "seconds": elapsed.as_secs_f64(),
         });
@@ -156,7 +160,17 @@ pub fn run(a: &HausdorffArgs) -> Result<i32, CliError> {
             r.hi,
             r.hi - r.lo
         );
+        if let Some(p) = &r.parametric {
+            out += &format!(
+                "  proof: parametric, one cover of {} boxes for both directions ({} evaluated)\n",
+                p.boxes.len(),
+                p.evaluated
+            );
+        }
         for (name, d) in [("h(A→B)", &r.a_to_b), ("h(B→A)", &r.b_to_a)] {
+            if r.parametric.is_some() && d.witness.is_none() {
+                continue;
+            }
             out += &format!(
                 "  {name} ∈ [{:e}, {:e}]  {} boxes",
                 d.lo,

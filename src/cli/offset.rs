@@ -126,6 +126,8 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     opts.max_boxes = a.max_boxes;
     opts.paper_error = a.paper_error;
     opts.certify = !a.no_certify;
+    // a certificate is assembled from the search's box covers
+    opts.covers = a.certificate.is_some();
     let start = std::time::Instant::now();
     let res = offset(&curve, &opts).map_err(offset_err)?;
     let build = start.elapsed().as_secs_f64();
@@ -186,6 +188,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
                 "piece": s.piece, "t": [s.t.0, s.t.1],
                 "control_points": s.bezier.points().iter().map(|p| json!([p.x, p.y])).collect::<Vec<_>>(),
                 "error": [s.error.0, s.error.1],
+                "proof": s.proof.as_ref().map(|p| p.path.name()),
                 "estimate": s.estimate,
                 "paper_error": s.paper_error,
             })).collect::<Vec<_>>(),

@@ -83,8 +83,57 @@ pub(crate) struct VShape {
     pub text: String,
 }
 
-/// De Casteljau at an interval parameter.
+/// The range of a polynomial over an interval parameter.
+///
+/// For `t = [t₀, t₁] ⊆ [0, 1]` with `t₀ < t₁`: the hull of its Bernstein
+/// coefficients on `[τ t₁, t₁] ⊇ t`, obtained by two subdivisions at *point*
+/// parameters in interval arithmetic (at `t₁`, keeping `[0, t₁]`; then at
+/// `τ = inf(t₀ / t₁)`, keeping `[τ, 1]` of that), so every operation is
+/// outward rounded and the hull converges to the true range quadratically
+/// in the width. Otherwise (a point, or a parameter outside `[0, 1]`): de
+/// Casteljau at the interval itself.
 fn casteljau(pts: &[[Interval; 2]], t: Interval) -> [Interval; 2] {
+    let (t0, t1) = (t.inf(), t.sup());
+    if !(t0 >= 0.0 && t0 < t1 && t1 <= 1.0) || pts.len() < 2 {
+        return casteljau_at(pts, t);
+    }
+    let p1 = Interval::try_from((t1, t1)).expect("finite");
+    let left = subdivide(pts, p1, true);
+    let tau = (Interval::try_from((t0, t0)).expect("finite") / p1).inf().max(0.0);
+    let sub = if tau > 0.0 {
+        subdivide(&left, Interval::try_from((tau, tau)).expect("finite"), false)
+    } else {
+        left
+    };
+    let hull = |k: usize| {
+        let lo = sub.iter().map(|p| p[k].inf()).fold(f64::INFINITY, f64::min);
+        let hi = sub.iter().map(|p| p[k].sup()).fold(f64::NEG_INFINITY, f64::max);
+        Interval::try_from((lo, hi)).unwrap_or(Interval::ENTIRE)
+    };
+    [hull(0), hull(1)]
+}
+
+/// The control points of the piece on `[0, t]` (`left`) or `[t, 1]`.
+fn subdivide(pts: &[[Interval; 2]], t: Interval, left: bool) -> Vec<[Interval; 2]> {
+    let n = pts.len();
+    let mut tri: Vec<[Interval; 2]> = pts.to_vec();
+    let mut edge = Vec::with_capacity(n);
+    edge.push(if left { tri[0] } else { tri[n - 1] });
+    for level in 1..n {
+        for i in 0..n - level {
+            let (a, b) = (tri[i], tri[i + 1]);
+            tri[i] = [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])];
+        }
+        edge.push(if left { tri[0] } else { tri[n - 1 - level] });
+    }
+    if !left {
+        edge.reverse();
+    }
+    edge
+}
+
+/// De Casteljau at an interval parameter.
+fn casteljau_at(pts: &[[Interval; 2]], t: Interval) -> [Interval; 2] {
     let mut x: Vec<Interval> = pts.iter().map(|p| p[0]).collect();
     let mut y: Vec<Interval> = pts.iter().map(|p| p[1]).collect();
     for n in (1..pts.len()).rev() {

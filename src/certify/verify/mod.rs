@@ -130,7 +130,9 @@ const KEYS: [&str; 7] = ["format", "version", "claim", "tol", "a", "b", "directi
 /// let a = ShapeDesc::parse("M 0 0 Q 0.5 0.5 1 0").unwrap();
 /// let b = ShapeDesc::parse("M 0 0 L 1 0").unwrap();
 /// let tol = parse_rational("0.26").unwrap();
-/// let r = hausdorff(&a, &b, &Config { tol: Some(0.26), ..Config::default() }).unwrap();
+/// // a certificate is built from the search's box covers: `parametric: false`
+/// let cfg = Config { tol: Some(0.26), parametric: false, ..Config::default() };
+/// let r = hausdorff(&a, &b, &cfg).unwrap();
 /// let cert = Certificate::new(&a, &b, &tol, &r).unwrap();
 /// let valid = verify(&cert.to_json_string()).unwrap();
 /// assert!(valid.statement().contains("d_H(A, B) ≤ 13/50"));
