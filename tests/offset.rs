@@ -464,7 +464,7 @@ fn ln_pair_paper_error_does_not_bound_the_offset_error() {
             lncert::scalar::rational_from_f64(s.t.1).unwrap(),
         );
         let exact = c[0].restrict(&t0, &t1);
-        let sub = approx(&exact);
+        let sub = lncert::approx::span_f64(&c[0], s.t).unwrap();
         let (n0, n1) = (
             unit_left_normal(&c[0], s.t.0).unwrap(),
             unit_left_normal(&c[0], s.t.1).unwrap(),

@@ -24,11 +24,17 @@ fn pair() -> impl Strategy<Value = (Bezier<Rational>, Bezier<Rational>)> {
         any::<bool>(),
     )
         .prop_map(|(pts, eps, reverse, elevate)| {
-            let a = Bezier::new(pts.iter().map(|&(x, y)| V2::new(q(x, 4), q(y, 4))).collect());
+            let a = Bezier::new(
+                pts.iter()
+                    .map(|&(x, y)| V2::new(q(x, 4), q(y, 4)))
+                    .collect(),
+            );
             let mut b = Bezier::new(
                 pts.iter()
                     .zip(&eps)
-                    .map(|(&(x, y), &(ex, ey))| V2::new(q(x * 256 + ex, 1024), q(y * 256 + ey, 1024)))
+                    .map(|(&(x, y), &(ex, ey))| {
+                        V2::new(q(x * 256 + ex, 1024), q(y * 256 + ey, 1024))
+                    })
                     .collect(),
             );
             if elevate {
@@ -116,7 +122,11 @@ fn check(a: &Bezier<Rational>, b: &Bezier<Rational>) -> Result<(), TestCaseError
             }
             let d2 = exact_dist2(&p, to);
             let d = d2.inf().max(0.0).sqrt();
-            prop_assert!(d <= r.hi * (1.0 + 1e-15), "sample {k}/48 at {d} > hi {}", r.hi);
+            prop_assert!(
+                d <= r.hi * (1.0 + 1e-15),
+                "sample {k}/48 at {d} > hi {}",
+                r.hi
+            );
         }
     }
     Ok(())
@@ -161,6 +171,8 @@ fn the_parametric_path_decides_most_pairs() {
         }
     }
     assert!(tried >= 150, "{tried}");
-    assert!(parametric * 2 >= tried, "parametric {parametric} of {tried}");
+    assert!(
+        parametric * 2 >= tried,
+        "parametric {parametric} of {tried}"
+    );
 }
-

@@ -227,7 +227,8 @@ pub struct OffsetResult {
     pub cusps: Vec<OffsetCusp>,
     /// G⁰ corners: join arcs to add, or overlaps to trim.
     pub corners: Vec<Corner>,
-    /// Certified Hausdorff searches run (accepted and rejected segments).
+    /// Certified Hausdorff searches run (accepted and rejected segments; a span
+    /// whose sampled error is above `tol` is split without one).
     pub certifications: usize,
     /// True when the segments are certified; false with `certify: false`, where
     /// every `error` is the trivial `(0, ∞)` and the segments carry an unproven
@@ -372,7 +373,7 @@ fn initial_spans(x: &Bezier<Rational>) -> Vec<(f64, f64)> {
     for w in cuts.windows(2) {
         let mut stack = vec![(w[0], w[1], 0u32)];
         while let Some((a, b, depth)) = stack.pop() {
-            let sub = sub_f64(x, (a, b));
+            let sub = span_f64(x, (a, b));
             if depth >= 8 || sub.as_ref().is_some_and(prep::gauss_map_short) {
                 out.push((a, b));
             } else {
@@ -390,8 +391,40 @@ fn sub_exact(x: &Bezier<Rational>, t: (f64, f64)) -> Option<Bezier<Rational>> {
     Some(x.restrict(&rational_from_f64(t.0)?, &rational_from_f64(t.1)?))
 }
 
-fn sub_f64(x: &Bezier<Rational>, t: (f64, f64)) -> Option<Bezier<f64>> {
-    sub_exact(x, t).map(|b| b.map(|v| v.approx()))
+/// The span `t` of `x` in floats, the input of the constructions (heuristics:
+/// only tightness depends on it): blossoms of the float control points, with the
+/// end points evaluated by one canonical float de Casteljau at `t₀`, `t₁`, so
+/// that neighbouring spans share them bit for bit.
+pub fn span_f64(x: &Bezier<Rational>, t: (f64, f64)) -> Option<Bezier<f64>> {
+    let xf: Vec<(f64, f64)> = x
+        .points()
+        .iter()
+        .map(|p| (p.x.approx(), p.y.approx()))
+        .collect();
+    let n = xf.len() - 1;
+    // the blossom x(u₁, …, u_n) by de Casteljau with one parameter per level
+    let blossom = |params: &dyn Fn(usize) -> f64| {
+        let mut v = xf.clone();
+        for level in 0..n {
+            let u = params(level);
+            for i in 0..n - level {
+                v[i] = (
+                    (1.0 - u) * v[i].0 + u * v[i + 1].0,
+                    (1.0 - u) * v[i].1 + u * v[i + 1].1,
+                );
+            }
+        }
+        v[0]
+    };
+    let pts: Vec<V2<f64>> = (0..=n)
+        .map(|k| {
+            let p = blossom(&|level| if level < n - k { t.0 } else { t.1 });
+            V2::new(p.0, p.1)
+        })
+        .collect();
+    pts.iter()
+        .all(|p| p.x.is_finite() && p.y.is_finite())
+        .then(|| Bezier::new(pts))
 }
 
 /// Builds the approximant of one span: the construction with canonical end
@@ -402,7 +435,7 @@ fn construct(
     t: (f64, f64),
     d: f64,
 ) -> Option<(Bezier<f64>, Option<lnpair::LnPairPiece>)> {
-    let sub = sub_f64(x, t)?;
+    let sub = span_f64(x, t)?;
     let n0 = prep::unit_left_normal(x, t.0)?;
     let n1 = prep::unit_left_normal(x, t.1)?;
     match method {
@@ -437,27 +470,24 @@ fn certify_segment(
     task: &Task,
     opts: &OffsetOptions,
     d: f64,
+    searches: &std::sync::atomic::AtomicUsize,
 ) -> (Option<OffsetSegment>, f64, bool) {
     let split = 0.5;
-    let Some(exact) = sub_exact(x, task.t) else {
-        return (None, split, false);
-    };
     let Some((bez, pair)) = construct(opts.method, x, task.t, d) else {
         return (None, split_point(opts.method, x, task.t), false);
     };
-    let Some(appr) = exact_bezier(&bez) else {
+    // The pieces of the span's exact offset (`ShapeDesc::Offset` of the exact
+    // restriction of `x`) and of the segment, enclosed without rationals.
+    let (Some(pa), Some(pb)) = (
+        crate::certify::shape::offset_span(x, task.t, &opts.distance),
+        crate::certify::shape::bezier_f64(&bez),
+    ) else {
         return (None, split, false);
     };
-    let a = ShapeDesc::Offset {
-        curve: vec![exact.clone()],
-        distance: opts.distance.clone(),
-    };
-    let b = ShapeDesc::Curve(vec![appr]);
+    let (pa, pb) = ([pa], [pb]);
     if !opts.certify {
         // the same construction, accepted on a sampled estimate (unproven)
-        let Ok(e) = crate::certify::sampled_estimate(&a, &b, 32) else {
-            return (None, split, false);
-        };
+        let e = crate::certify::sampled_pieces(&pa, &pb, 32);
         let seg = OffsetSegment {
             piece: task.piece,
             t: task.t,
@@ -470,6 +500,22 @@ fn certify_segment(
         };
         return (Some(seg), split_point(opts.method, x, task.t), false);
     }
+    // A span whose sampled (float, unproven) error is already above `tol` is
+    // split without a proof: only acceptance needs one, and refuting the span
+    // with a certified lower bound costs more than the rest of its search. At
+    // the depth limit the span is bounded anyway, to report it.
+    if task.depth < opts.max_depth && crate::certify::sampled_pieces(&pa, &pb, 8) > opts.tol {
+        let seg = OffsetSegment {
+            piece: task.piece,
+            t: task.t,
+            bezier: bez,
+            error: (0.0, f64::INFINITY),
+            paper_error: None,
+            proof: None,
+            estimate: None,
+        };
+        return (Some(seg), split_point(opts.method, x, task.t), false);
+    }
     let cfg = Config {
         tol: Some(opts.tol),
         max_boxes: opts.max_boxes,
@@ -479,11 +525,19 @@ fn certify_segment(
         parametric: !opts.covers,
         ..Config::default()
     };
-    let Ok(r) = hausdorff(&a, &b, &cfg) else {
-        return (None, split, false);
+    searches.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    // the absolute gap of `hausdorff` for these shapes, from the float data
+    let abs_of = || {
+        let scale = bez
+            .points()
+            .iter()
+            .map(|p| p.x.abs().max(p.y.abs()))
+            .fold(0.0, f64::max);
+        1e-10 * (1.0 + scale + d.abs())
     };
+    let r = crate::certify::hausdorff_pieces(&pa, &pb, &cfg, &abs_of);
     let paper_error = match (&pair, opts.paper_error) {
-        (Some(p), true) => paper_error_of(x, task.t, &exact, p, d),
+        (Some(p), true) => sub_exact(x, task.t).and_then(|e| paper_error_of(x, task.t, &e, p, d)),
         _ => None,
     };
     let proof = (r.hi <= opts.tol).then(|| SegmentProof {
@@ -511,7 +565,7 @@ fn certify_segment(
 fn split_point(method: OffsetMethod, x: &Bezier<Rational>, t: (f64, f64)) -> f64 {
     match method {
         OffsetMethod::G2 => 0.5,
-        OffsetMethod::LnPair => sub_f64(x, t).map_or(0.5, |s| lnpair::mid_angle_param(&s)),
+        OffsetMethod::LnPair => span_f64(x, t).map_or(0.5, |s| lnpair::mid_angle_param(&s)),
     }
 }
 
@@ -564,6 +618,37 @@ pub fn offset(
     opts: &OffsetOptions,
 ) -> Result<OffsetResult, OffsetError> {
     check_options(curve, opts)?;
+    // the exact cusp isolation does not depend on the segments: beside them
+    let (cusps, segs) = rayon::join(
+        || {
+            curve
+                .iter()
+                .enumerate()
+                .flat_map(|(i, x)| prep::offset_cusps(i, x, &opts.distance))
+                .collect()
+        },
+        || offset_segments(curve, opts),
+    );
+    let (segments, unreached, certified_hi, certifications) = segs;
+    Ok(OffsetResult {
+        method: opts.method,
+        distance: opts.distance.clone(),
+        tol: opts.tol,
+        segments,
+        unreached,
+        certified_hi,
+        cusps,
+        corners: corners(curve, &opts.distance),
+        certifications,
+        proven: opts.certify,
+    })
+}
+
+/// The segments of [`offset`]: `(segments, unreached, certified_hi, certified searches)`.
+fn offset_segments(
+    curve: &[Bezier<Rational>],
+    opts: &OffsetOptions,
+) -> (Vec<OffsetSegment>, Vec<usize>, f64, usize) {
     let d = opts.distance.approx();
     let mut tasks: Vec<Task> = Vec::new();
     for (i, x) in curve.iter().enumerate() {
@@ -578,12 +663,13 @@ pub fn offset(
     }
     let mut done: Vec<OffsetSegment> = Vec::new();
     let mut unreached_segs: Vec<OffsetSegment> = Vec::new();
-    let mut certifications = 0;
+    let searches = std::sync::atomic::AtomicUsize::new(0);
     while !tasks.is_empty() {
         let outcomes: Vec<Outcome> = tasks
             .par_iter()
             .map(|task| {
-                let (segment, s, stuck) = certify_segment(&curve[task.piece], task, opts, d);
+                let (segment, s, stuck) =
+                    certify_segment(&curve[task.piece], task, opts, d, &searches);
                 Outcome {
                     task: task.clone(),
                     segment,
@@ -592,7 +678,6 @@ pub fn offset(
                 }
             })
             .collect();
-        certifications += outcomes.len();
         let mut next = Vec::new();
         let mut pending = outcomes.len();
         for o in outcomes {
@@ -630,7 +715,7 @@ pub fn offset(
                 // no construction at all: keep the exact span's chord offset? No —
                 // report an unreached segment with an infinite bound.
                 let x = &curve[o.task.piece];
-                if let Some(sub) = sub_f64(x, o.task.t) {
+                if let Some(sub) = span_f64(x, o.task.t) {
                     let p = sub.points();
                     unreached_segs.push(OffsetSegment {
                         piece: o.task.piece,
@@ -664,23 +749,7 @@ pub fn offset(
         .collect();
     let segments: Vec<OffsetSegment> = segments.into_iter().map(|s| s.0).collect();
     let certified_hi = segments.iter().map(|s| s.error.1).fold(0.0, f64::max);
-    let cusps = curve
-        .iter()
-        .enumerate()
-        .flat_map(|(i, x)| prep::offset_cusps(i, x, &opts.distance))
-        .collect();
-    Ok(OffsetResult {
-        method: opts.method,
-        distance: opts.distance.clone(),
-        tol: opts.tol,
-        segments,
-        unreached,
-        certified_hi,
-        cusps,
-        corners: corners(curve, &opts.distance),
-        certifications,
-        proven: opts.certify,
-    })
+    (segments, unreached, certified_hi, searches.into_inner())
 }
 
 /// The junctions of consecutive pieces that need a join arc or trimming, and the
@@ -747,11 +816,11 @@ pub fn union_certificate(
     if !res.reached() || res.segments.iter().any(|s| s.proof.is_none()) {
         return Ok(None);
     }
-    if let Some(i) = res
-        .segments
-        .iter()
-        .position(|s| s.proof.as_ref().is_some_and(|p| p.path != ProofPath::Search))
-    {
+    if let Some(i) = res.segments.iter().position(|s| {
+        s.proof
+            .as_ref()
+            .is_some_and(|p| p.path != ProofPath::Search)
+    }) {
         return Err(bad(
             "segments",
             format!(

@@ -3,7 +3,8 @@
 //! operation per arithmetic step.
 //!
 //! **Input.** Control points given as intervals `[mᵢ ± rᵢ]` (`mᵢ` the float
-//! midpoint, `rᵢ` inari's radius, rounded up), a parameter box
+//! midpoint, `rᵢ ≥` the width, an upper bound of the radius about any point of
+//! the interval), a parameter box
 //! `T = [t₀, t₁] ⊆ [0, 1]`.
 //!
 //! **Result.** An interval enclosing `{p(t) : t ∈ T, bᵢ ∈ [mᵢ ± rᵢ]}` for the
@@ -62,9 +63,14 @@ pub(crate) fn enclose(pts: &[(Interval, Interval)], t: Interval) -> Option<(Inte
         ys[i] = y.mid();
         mx = mx.max(xs[i].abs());
         my = my.max(ys[i].abs());
-        rx = rx.max(x.rad());
-        ry = ry.max(y.rad());
+        // |b − m| ≤ sup − inf for b, m in the interval: the widths here, made
+        // an upper bound below
+        rx = rx.max(x.sup() - x.inf());
+        ry = ry.max(y.sup() - y.inf());
     }
+    // fl(sup − inf) ≥ (sup − inf)(1 − ε): (1 + 4ε) and one more rounding cover it
+    let up = 1.0 + 4.0 * f64::EPSILON;
+    let (rx, ry) = (rx * up, ry * up);
     if !(mx.is_finite() && my.is_finite() && rx.is_finite() && ry.is_finite()) {
         return None;
     }
@@ -86,7 +92,9 @@ pub(crate) fn enclose(pts: &[(Interval, Interval)], t: Interval) -> Option<(Inte
     // added upward
     let err = |m: f64, r: f64| {
         let e = 8.0 * levels * eps * m + 8.0 * levels * f64::MIN_POSITIVE;
-        (Interval::try_from((e, e)).ok()? + Interval::try_from((r, r)).ok()?).sup().into()
+        (Interval::try_from((e, e)).ok()? + Interval::try_from((r, r)).ok()?)
+            .sup()
+            .into()
     };
     let widen = |(lo, hi): (f64, f64), e: Option<f64>| -> Option<Interval> {
         let e = e?;
@@ -106,7 +114,9 @@ fn next_down(x: f64) -> f64 {
 
 fn hull(v: &[f64]) -> (f64, f64) {
     v.iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| (lo.min(*x), hi.max(*x)))
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| {
+            (lo.min(*x), hi.max(*x))
+        })
 }
 
 /// De Casteljau at `t`: the value.
@@ -157,7 +167,12 @@ mod tests {
     fn exact_point(c: &[(f64, f64)], t: &Rational) -> (Rational, Rational) {
         let b = Bezier::new(
             c.iter()
-                .map(|p| V2::new(rational_from_f64(p.0).unwrap(), rational_from_f64(p.1).unwrap()))
+                .map(|p| {
+                    V2::new(
+                        rational_from_f64(p.0).unwrap(),
+                        rational_from_f64(p.1).unwrap(),
+                    )
+                })
                 .collect(),
         );
         let p = b.eval(t);

@@ -27,8 +27,8 @@
 //! assert!(r.lo <= 0.25 && 0.25 <= r.hi && r.hi - r.lo <= 1e-6 * r.hi);
 //! ```
 
-pub mod cert;
 mod bern;
+pub mod cert;
 pub mod jet;
 pub mod param;
 mod same;
@@ -121,9 +121,7 @@ fn check_config(cfg: &Config) -> Result<(), CertifyError> {
 /// ```
 pub fn sampled_estimate(a: &ShapeDesc, b: &ShapeDesc, samples: usize) -> Result<f64, CertifyError> {
     let (pa, pb) = (a.pieces()?, b.pieces()?);
-    let samples = samples.clamp(1, 4096);
-    Ok(search::sampled_one_sided(&pa, &pb, samples)
-        .max(search::sampled_one_sided(&pb, &pa, samples)))
+    Ok(sampled_pieces(&pa, &pb, samples))
 }
 
 /// Certified bounds on `d_H(A, B)`.
@@ -139,15 +137,32 @@ pub fn hausdorff(
     check_config(cfg)?;
     let pa = a.pieces()?;
     let pb = b.pieces()?;
-    let abs = if cfg.abs > 0.0 {
-        cfg.abs
-    } else {
-        1e-10 * (1.0 + a.scale().max(b.scale()))
+    // (the coordinate scale converts every rational: only computed when used)
+    let abs_of = || {
+        if cfg.abs > 0.0 {
+            cfg.abs
+        } else {
+            1e-10 * (1.0 + a.scale().max(b.scale()))
+        }
     };
-    if let Some(r) = parametric_path(&pa, &pb, cfg, abs) {
-        return Ok(r);
+    Ok(hausdorff_pieces(&pa, &pb, cfg, &abs_of))
+}
+
+/// [`hausdorff`] on pieces built by the caller (`cfg` already checked);
+/// `abs_of` gives the absolute gap, called only when it is used.
+pub(crate) fn hausdorff_pieces(
+    pa: &[shape::Piece],
+    pb: &[shape::Piece],
+    cfg: &Config,
+    abs_of: &dyn Fn() -> f64,
+) -> HausdorffBounds {
+    // a tolerance goal does not use the absolute gap
+    let gap_abs = if cfg.tol.is_some() { 0.0 } else { abs_of() };
+    if let Some(r) = parametric_path(pa, pb, cfg, gap_abs) {
+        return r;
     }
-    let ab = search::one_sided(&pa, &pb, cfg, abs, (0.0, 0.0));
+    let abs = abs_of();
+    let ab = search::one_sided(pa, pb, cfg, abs, (0.0, 0.0));
     let refuted = cfg.tol.is_some_and(|t| ab.lo > t);
     let ba = if refuted && cfg.verdict_only {
         OneSided {
@@ -162,8 +177,8 @@ pub fn hausdorff(
         // already refuted: the other direction is not needed for the verdict, but its
         // bounds are still reported (coarse).
         search::one_sided(
-            &pb,
-            &pa,
+            pb,
+            pa,
             &Config {
                 rel: 0.5,
                 tol: None,
@@ -173,15 +188,21 @@ pub fn hausdorff(
             (ab.lo, ab.hi),
         )
     } else {
-        search::one_sided(&pb, &pa, cfg, abs, (ab.lo, ab.hi))
+        search::one_sided(pb, pa, cfg, abs, (ab.lo, ab.hi))
     };
-    Ok(HausdorffBounds {
+    HausdorffBounds {
         lo: ab.lo.max(ba.lo),
         hi: ab.hi.max(ba.hi),
         a_to_b: ab,
         b_to_a: ba,
         parametric: None,
-    })
+    }
+}
+
+/// The unproven sampled estimate of [`sampled_estimate`] on pieces.
+pub(crate) fn sampled_pieces(pa: &[shape::Piece], pb: &[shape::Piece], samples: usize) -> f64 {
+    let samples = samples.clamp(1, 4096);
+    search::sampled_one_sided(pa, pb, samples).max(search::sampled_one_sided(pb, pa, samples))
 }
 
 /// The parametric proof where it applies (one piece each, one of them with

@@ -194,7 +194,8 @@ fn end_terms(a: &Piece) -> Option<f64> {
             continue;
         }
         let (lo, hi) = if x < y { (x, y) } else { (y, x) };
-        let over = a.iv.eval(Jet::variable(Interval::try_from((lo, hi)).ok()?))?;
+        let over =
+            a.iv.eval(Jet::variable(Interval::try_from((lo, hi)).ok()?))?;
         let speed = crate::scalar::ScalarSqrt::sqrt(&(over.0.d.sqr() + over.1.d.sqr()))?;
         total = total + speed * (point(hi) - point(lo));
     }
@@ -268,7 +269,12 @@ pub(crate) fn prove(a: &Piece, b: &Piece, goal: Goal, max_boxes: usize) -> Optio
             c
         } else {
             // a slope that overshoots the domain: the straight map instead
-            [n0.s, (2.0 * n0.s + n1.s) / 3.0, (n0.s + 2.0 * n1.s) / 3.0, n1.s]
+            [
+                n0.s,
+                (2.0 * n0.s + n1.s) / 3.0,
+                (n0.s + 2.0 * n1.s) / 3.0,
+                n1.s,
+            ]
         };
         let bound = box_bound(a, b, (n0.t, n1.t), c).unwrap_or(f64::INFINITY);
         HeapBox {

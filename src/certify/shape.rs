@@ -637,14 +637,106 @@ impl Piece {
     }
 }
 
-/// The control points of `b` and of its first three hodographs, computed
-/// exactly, as interval enclosures.
+/// Enclosures of the control points of `b` and of its first three hodographs:
+/// the points enclosed once from the exact rationals, the hodographs
+/// `m (pᵢ₊₁ − pᵢ)` then in interval arithmetic (sound enclosures of the exact
+/// hodographs, without the rational arithmetic on large denominators).
 fn hodographs(b: &Bezier<Rational>) -> [Vec<(Interval, Interval)>; 4] {
-    let enclose = |c: &Bezier<Rational>| c.points().iter().map(|p| (iv(&p.x), iv(&p.y))).collect();
-    let h1 = b.hodograph();
-    let h2 = h1.hodograph();
-    let h3 = h2.hodograph();
-    [enclose(b), enclose(&h1), enclose(&h2), enclose(&h3)]
+    hodographs_iv(b.points().iter().map(|p| (iv(&p.x), iv(&p.y))).collect())
+}
+
+/// [`hodographs`] from enclosures of the control points.
+fn hodographs_iv(pts: Vec<(Interval, Interval)>) -> [Vec<(Interval, Interval)>; 4] {
+    let hod = |c: &[(Interval, Interval)]| -> Vec<(Interval, Interval)> {
+        let m = c.len().saturating_sub(1);
+        if m == 0 {
+            // the derivative of a constant: the zero polynomial
+            let z = Interval::zero();
+            return vec![(z, z)];
+        }
+        let k = Interval::from_i64(m as i64);
+        c.windows(2)
+            .map(|w| (k * (w[1].0 - w[0].0), k * (w[1].1 - w[0].1)))
+            .collect()
+    };
+    let h1 = hod(&pts);
+    let h2 = hod(&h1);
+    let h3 = hod(&h2);
+    [pts, h1, h2, h3]
+}
+
+/// The piece of the exact offset at `distance` of the span `[t₀, t₁]` of `x`
+/// (reparametrised to `[0, 1]`), the same piece as
+/// `ShapeDesc::Offset { curve: [x restricted to the span], distance }`, without
+/// rational arithmetic: the span's control points are the blossom values
+/// `x(t₀, …, t₀, t₁, …, t₁)`, enclosed by de Casteljau with one *point*
+/// parameter per level in interval arithmetic from enclosures of `x`'s
+/// control points. `None` if `t` is not a finite span or the input pieces are
+/// degenerate (checked by the caller's shape validation).
+pub(crate) fn offset_span(
+    x: &Bezier<Rational>,
+    t: (f64, f64),
+    distance: &Rational,
+) -> Option<Piece> {
+    if !(t.0.is_finite() && t.1.is_finite() && t.0 < t.1) || x.points().is_empty() {
+        return None;
+    }
+    let xi: Vec<(Interval, Interval)> = x.points().iter().map(|p| (iv(&p.x), iv(&p.y))).collect();
+    let n = xi.len() - 1;
+    let (p0, p1) = (
+        Interval::try_from((t.0, t.0)).ok()?,
+        Interval::try_from((t.1, t.1)).ok()?,
+    );
+    let pts: Vec<(Interval, Interval)> = (0..=n)
+        .map(|k| {
+            let mut v = xi.clone();
+            for level in 0..n {
+                let u = if level < n - k { p0 } else { p1 };
+                for i in 0..n - level {
+                    v[i] = (
+                        v[i].0 + u * (v[i + 1].0 - v[i].0),
+                        v[i].1 + u * (v[i + 1].1 - v[i].1),
+                    );
+                }
+            }
+            v[0]
+        })
+        .collect();
+    let [pts, hod, hod2, hod3] = hodographs_iv(pts);
+    let r2 = iv(&(distance * distance));
+    let sigma = if distance.is_positive() { 1 } else { -1 };
+    let data = PieceData::Conv {
+        pts,
+        hod,
+        hod2,
+        hod3,
+        q: (r2, Interval::zero(), r2),
+        sigma: Interval::from_i64(sigma),
+    };
+    Some(Piece::from_iv(data, (0.0, 1.0), (0.0, 1.0)))
+}
+
+/// The piece of a Bézier curve with float (exact dyadic) control points.
+pub(crate) fn bezier_f64(b: &Bezier<f64>) -> Option<Piece> {
+    let pts = b
+        .points()
+        .iter()
+        .map(|p| {
+            Some((
+                Interval::try_from((p.x, p.x)).ok()?,
+                Interval::try_from((p.y, p.y)).ok()?,
+            ))
+        })
+        .collect::<Option<Vec<_>>>()?;
+    if pts.is_empty() {
+        return None;
+    }
+    let [pts, d1, d2, _] = hodographs_iv(pts);
+    Some(Piece::from_iv(
+        PieceData::Bez { pts, d1, d2 },
+        (0.0, 1.0),
+        (0.0, 1.0),
+    ))
 }
 
 /// `tan(Θ/4)` for the counter-clockwise sweep `Θ ∈ (0, 2π)` from `e0` to `e1`:
@@ -759,7 +851,6 @@ fn casteljau<S: Scalar + Copy>(pts: &[(S, S)], t: S) -> (S, S) {
         run(&mut pts.to_vec(), t)
     }
 }
-
 
 /// Control points evaluated without a heap allocation.
 const STACK_POINTS: usize = 24;

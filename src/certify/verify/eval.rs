@@ -99,15 +99,24 @@ fn casteljau(pts: &[[Interval; 2]], t: Interval) -> [Interval; 2] {
     }
     let p1 = Interval::try_from((t1, t1)).expect("finite");
     let left = subdivide(pts, p1, true);
-    let tau = (Interval::try_from((t0, t0)).expect("finite") / p1).inf().max(0.0);
+    let tau = (Interval::try_from((t0, t0)).expect("finite") / p1)
+        .inf()
+        .max(0.0);
     let sub = if tau > 0.0 {
-        subdivide(&left, Interval::try_from((tau, tau)).expect("finite"), false)
+        subdivide(
+            &left,
+            Interval::try_from((tau, tau)).expect("finite"),
+            false,
+        )
     } else {
         left
     };
     let hull = |k: usize| {
         let lo = sub.iter().map(|p| p[k].inf()).fold(f64::INFINITY, f64::min);
-        let hi = sub.iter().map(|p| p[k].sup()).fold(f64::NEG_INFINITY, f64::max);
+        let hi = sub
+            .iter()
+            .map(|p| p[k].sup())
+            .fold(f64::NEG_INFINITY, f64::max);
         Interval::try_from((lo, hi)).unwrap_or(Interval::ENTIRE)
     };
     [hull(0), hull(1)]
