@@ -98,6 +98,47 @@ fn check(a: &Bezier<Rational>, b: &Bezier<Rational>) -> Result<(), TestCaseError
         ..Config::default()
     };
     let r = hausdorff(&sa, &sb, &cfg).unwrap();
+    // the relative-gap goal: the same upper-bound check, and the witness's
+    // exact distance is at least `lo`
+    let g = hausdorff(
+        &sa,
+        &sb,
+        &Config {
+            rel: 1e-3,
+            max_boxes: 2_000,
+            ..Config::default()
+        },
+    )
+    .unwrap();
+    if g.parametric.is_some() {
+        prop_assert!(g.lo <= g.hi);
+        for (side, from, to) in [(&g.a_to_b, a, b), (&g.b_to_a, b, a)] {
+            if let Some((_, t)) = side.witness {
+                let d2 = exact_dist2(&from.eval(&rational_from_f64(t).unwrap()), to);
+                prop_assert!(
+                    d2.sup().sqrt() >= side.lo * (1.0 - 1e-15),
+                    "witness {} < lo {}",
+                    d2.sup().sqrt(),
+                    side.lo
+                );
+            }
+        }
+        let hi2 = rational_from_f64(g.hi).unwrap();
+        let hi2 = hi2.clone() * hi2;
+        for (from, to) in [(a, b), (b, a)] {
+            for k in 0..=16 {
+                let p = from.eval(&q(k, 16));
+                if exact_dist2_upper(&p, to) > hi2 {
+                    let d = exact_dist2(&p, to).inf().max(0.0).sqrt();
+                    prop_assert!(
+                        d <= g.hi * (1.0 + 1e-15),
+                        "gap goal: sample {k}/16 at {d} > hi {}",
+                        g.hi
+                    );
+                }
+            }
+        }
+    }
     let Some(p) = &r.parametric else {
         return Ok(());
     };

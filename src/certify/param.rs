@@ -49,6 +49,9 @@ use crate::scalar::{Interval, Scalar};
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
+/// The narrowest box split before the path gives up (relative to `B`'s domain).
+const MIN_WIDTH: f64 = 1.0 / (1u64 << 24) as f64;
+
 /// One box of the parametric cover: `t` the box of `B`'s parameter, `c` the
 /// Bernstein coefficients of the map `φ` on it.
 #[derive(Clone, Debug, PartialEq)]
@@ -224,6 +227,17 @@ pub(crate) fn prove(a: &Piece, b: &Piece, goal: Goal, max_boxes: usize) -> Optio
     let mut lo = 0.0f64;
     let mut witness = None;
     let a_slice = std::slice::from_ref(a);
+    // The candidate witness: the node farthest from `A` in floats; its lower
+    // bound (a branch and bound of its own) is computed only once the float
+    // distance says the gap would be met, and once per candidate.
+    let mut cand: Option<(f64, f64)> = None; // (t, float distance)
+    let mut cand_done = true;
+    let note = |t: f64, fd: f64, cand: &mut Option<(f64, f64)>, done: &mut bool| {
+        if fd.is_finite() && cand.is_none_or(|c| fd > c.1) {
+            *cand = Some((t, fd));
+            *done = false;
+        }
+    };
     let try_witness = |t: f64, float_dist: f64, lo: &mut f64, witness: &mut Option<f64>| {
         let Goal::Gap { rel, .. } = goal else {
             return;
@@ -305,7 +319,7 @@ pub(crate) fn prove(a: &Piece, b: &Piece, goal: Goal, max_boxes: usize) -> Optio
         evaluated += 1;
     }
     for n in &nodes {
-        try_witness(n.t, n.fd, &mut lo, &mut witness);
+        note(n.t, n.fd, &mut cand, &mut cand_done);
     }
     loop {
         let top = heap.peek()?;
@@ -313,7 +327,14 @@ pub(crate) fn prove(a: &Piece, b: &Piece, goal: Goal, max_boxes: usize) -> Optio
             Goal::Tol(_) => top.b.bound <= budget,
             Goal::Gap { rel, abs } => {
                 let hi = top.b.bound + ends;
-                hi.is_finite() && hi - lo <= (rel * hi).max(abs)
+                let gap = |lo: f64| hi.is_finite() && hi - lo <= (rel * hi).max(abs);
+                if !gap(lo) && !cand_done {
+                    if let Some((t, fd)) = cand.filter(|c| gap(c.1)) {
+                        try_witness(t, fd, &mut lo, &mut witness);
+                        cand_done = true;
+                    }
+                }
+                gap(lo)
             }
         };
         if done {
@@ -325,7 +346,10 @@ pub(crate) fn prove(a: &Piece, b: &Piece, goal: Goal, max_boxes: usize) -> Optio
         let top = heap.pop()?;
         let (t0, t1) = top.b.t;
         let tm = 0.5 * (t0 + t1);
-        if !(tm > t0 && tm < t1) {
+        // A top box this narrow means φ cannot follow: typically `h(A, B) >
+        // h(B, A)`, where `φ` must jump over a part of `A` at the end of `B`
+        // and the bound of that box stops shrinking. Leave it to the search.
+        if !(tm > t0 && tm < t1) || t1 - t0 < MIN_WIDTH * (b1 - b0) {
             return None;
         }
         let n0 = Node {
@@ -344,7 +368,7 @@ pub(crate) fn prove(a: &Piece, b: &Piece, goal: Goal, max_boxes: usize) -> Optio
         let c = top.b.c;
         let guess = (c[0] + 3.0 * (c[1] + c[2]) + c[3]) / 8.0;
         let nm = node(tm, guess, None)?;
-        try_witness(tm, nm.fd, &mut lo, &mut witness);
+        note(tm, nm.fd, &mut cand, &mut cand_done);
         heap.push(make(&n0, &nm));
         heap.push(make(&nm, &n1));
         evaluated += 2;
