@@ -24,7 +24,7 @@
 //!   the first starts at 0, the last ends at 1, `t0 < t1`, and consecutive
 //!   spans share their end point exactly;
 //! * counts: each task ends as one segment or two child tasks, so with `N`
-//!   segments and `C = certifications`, `S = 2N - C` is the number of initial
+//!   segments and `C = spans` (tasks tried), `S = 2N - C` is the number of initial
 //!   spans; `pieces <= S <= N`, `N <= S 2^max_depth`, and
 //!   `N <= max(S, max_segments)` (a span is split only when the segments
 //!   done, the tasks queued and the outcomes still pending in the round leave
@@ -316,10 +316,15 @@ fn check_ok(inp: &Input, r: &OffsetResult) {
     );
 
     // counts: N = S + splits, C = S + 2 splits
-    let c = r.certifications;
+    let c = r.spans;
     assert!(
         c >= n && c <= 2 * n,
-        "certifications {c} inconsistent with {n} segments"
+        "spans {c} inconsistent with {n} segments"
+    );
+    assert!(
+        r.certifications <= c,
+        "{} certified searches for {c} spans",
+        r.certifications
     );
     let s0 = 2 * n - c;
     let m = opts.max_segments;

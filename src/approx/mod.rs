@@ -230,6 +230,9 @@ pub struct OffsetResult {
     /// Certified Hausdorff searches run (accepted and rejected segments; a span
     /// whose sampled error is above `tol` is split without one).
     pub certifications: usize,
+    /// Spans tried in all (each ends as one segment or two halves), with or
+    /// without a proof search: `certifications ≤ spans`.
+    pub spans: usize,
     /// True when the segments are certified; false with `certify: false`, where
     /// every `error` is the trivial `(0, ∞)` and the segments carry an unproven
     /// `estimate` instead.
@@ -629,7 +632,7 @@ pub fn offset(
         },
         || offset_segments(curve, opts),
     );
-    let (segments, unreached, certified_hi, certifications) = segs;
+    let (segments, unreached, certified_hi, certifications, spans) = segs;
     Ok(OffsetResult {
         method: opts.method,
         distance: opts.distance.clone(),
@@ -640,15 +643,18 @@ pub fn offset(
         cusps,
         corners: corners(curve, &opts.distance),
         certifications,
+        spans,
         proven: opts.certify,
     })
 }
 
-/// The segments of [`offset`]: `(segments, unreached, certified_hi, certified searches)`.
+/// The segments of [`offset`]: `(segments, unreached, certified_hi, certified
+/// searches, spans tried)`.
 fn offset_segments(
     curve: &[Bezier<Rational>],
     opts: &OffsetOptions,
-) -> (Vec<OffsetSegment>, Vec<usize>, f64, usize) {
+) -> (Vec<OffsetSegment>, Vec<usize>, f64, usize, usize) {
+    let mut spans = 0usize;
     let d = opts.distance.approx();
     let mut tasks: Vec<Task> = Vec::new();
     for (i, x) in curve.iter().enumerate() {
@@ -665,6 +671,7 @@ fn offset_segments(
     let mut unreached_segs: Vec<OffsetSegment> = Vec::new();
     let searches = std::sync::atomic::AtomicUsize::new(0);
     while !tasks.is_empty() {
+        spans += tasks.len();
         let outcomes: Vec<Outcome> = tasks
             .par_iter()
             .map(|task| {
@@ -749,7 +756,13 @@ fn offset_segments(
         .collect();
     let segments: Vec<OffsetSegment> = segments.into_iter().map(|s| s.0).collect();
     let certified_hi = segments.iter().map(|s| s.error.1).fold(0.0, f64::max);
-    (segments, unreached, certified_hi, searches.into_inner())
+    (
+        segments,
+        unreached,
+        certified_hi,
+        searches.into_inner(),
+        spans,
+    )
 }
 
 /// The junctions of consecutive pieces that need a join arc or trimming, and the

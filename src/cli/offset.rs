@@ -1,7 +1,8 @@
 //! `lncert offset CURVE --distance R --tol T [--method g2|ln-pair] [--certificate OUT]
 //! [--svg OUT] [--global-bounds] [--no-certify] [--json]`: an offset approximant proven
 //! within `T` of the exact offset (see [`lncert::approx`]). The certified error is the
-//! union bound of the per-segment proofs, and the certificate is assembled from them;
+//! union bound of the per-segment proofs (each the parametric proof or the
+//! two-directional search, said per piece), and the certificate is assembled from them;
 //! `--global-bounds` adds a two-sided search over the whole offset; `--no-certify`
 //! builds the same construction unproven (labelled so) to measure the proof's cost.
 //!
@@ -21,7 +22,7 @@ use lncert::approx::arc::{offset_arc, parse_arc_input, ArcOffset, TravelledArc};
 use lncert::approx::prep::Junction;
 use lncert::approx::{
     global_bounds, join_arcs, offset, union_certificate, OffsetError, OffsetMethod, OffsetOptions,
-    OffsetResult,
+    OffsetResult, ProofPath,
 };
 use lncert::curve::parse_curve;
 use lncert::scalar::{interval_from_rational, Rational};
@@ -204,6 +205,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
                 _ => None,
             }).collect::<Vec<_>>(),
             "certifications": res.certifications,
+            "spans": res.spans,
             "seconds": {"construct_and_certify": build, "total": total, "global_bounds": a.global_bounds.then_some(total - build)},
             "certificate": cert_note,
         });
@@ -266,6 +268,22 @@ fn text_report(
         s += &format!(
             "  {} certified searches, {:.3} s to build and certify, {:.3} s in all\n",
             res.certifications, build, total
+        );
+    }
+    if res.proven {
+        let parametric = res
+            .segments
+            .iter()
+            .filter(|g| {
+                g.proof
+                    .as_ref()
+                    .is_some_and(|p| p.path == ProofPath::Parametric)
+            })
+            .count();
+        let proven = res.segments.iter().filter(|g| g.proof.is_some()).count();
+        s += &format!(
+            "  proofs: {parametric} parametric (one cover, both directions), {} by the two-directional search\n",
+            proven - parametric
         );
     }
     for c in &res.cusps {
