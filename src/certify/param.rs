@@ -52,6 +52,9 @@ use std::collections::BinaryHeap;
 /// The narrowest box split before the path gives up (relative to `B`'s domain).
 const MIN_WIDTH: f64 = 1.0 / (1u64 << 24) as f64;
 
+/// The steepest top box split, relative to the mean slope of `φ`.
+const MAX_SLOPE: f64 = 256.0;
+
 /// One box of the parametric cover: `t` the box of `B`'s parameter, `c` the
 /// Bernstein coefficients of the map `φ` on it.
 #[derive(Clone, Debug, PartialEq)]
@@ -346,10 +349,13 @@ pub(crate) fn prove(a: &Piece, b: &Piece, goal: Goal, max_boxes: usize) -> Optio
         let top = heap.pop()?;
         let (t0, t1) = top.b.t;
         let tm = 0.5 * (t0 + t1);
-        // A top box this narrow means φ cannot follow: typically `h(A, B) >
-        // h(B, A)`, where `φ` must jump over a part of `A` at the end of `B`
-        // and the bound of that box stops shrinking. Leave it to the search.
-        if !(tm > t0 && tm < t1) || t1 - t0 < MIN_WIDTH * (b1 - b0) {
+        // A top box this narrow, or this steep, means φ cannot follow:
+        // typically `h(A, B) > h(B, A)`, where `φ` must jump over a part of `A`
+        // at the end of `B` and the bound of that box stops shrinking. Leave it
+        // to the search.
+        let mean_slope = (s_end - s_start).abs() / (b1 - b0);
+        let steep = (top.b.c[3] - top.b.c[0]).abs() > MAX_SLOPE * mean_slope * (t1 - t0);
+        if !(tm > t0 && tm < t1) || t1 - t0 < MIN_WIDTH * (b1 - b0) || steep {
             return None;
         }
         let n0 = Node {
