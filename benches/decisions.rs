@@ -1,5 +1,6 @@
 //! Time per decision of Prop 4.2 + Prop 4.4 (seed 000) on random compatible
-//! pairs, in f64, interval, filtered (interval, then exact fallback) and
+//! pairs, in f64, interval, filtered (interval, then exact fallback), filtered
+//! with the static stage first (float with error bound, interval, exact) and
 //! rational-only arithmetic; prints the filter's fallback rate and how often
 //! the f64 path disagrees with the exact answer.
 //!
@@ -8,7 +9,8 @@
 use criterion::{criterion_group, criterion_main, Criterion};
 use lncert::ln::pair::{pair_decision, PairDecision};
 use lncert::scalar::{
-    filter_stats, filtered, frac, reset_filter_stats, Interval, Predicate, Rational, Scalar,
+    filter_stats, filtered, frac, reset_filter_stats, FloatErr, Interval, Predicate, Rational,
+    Scalar,
 };
 use std::hint::black_box;
 
@@ -81,6 +83,24 @@ fn bench(c: &mut Criterion) {
             )
         })
         .collect();
+    let fes: Vec<(FloatErr, FloatErr, FloatErr)> = rat
+        .iter()
+        .map(|(a, b, r)| {
+            (
+                FloatErr::from_rational(a),
+                FloatErr::from_rational(b),
+                FloatErr::from_rational(r),
+            )
+        })
+        .collect();
+    let undecided = fes
+        .iter()
+        .filter(|(a, c, r)| pair_decision(a, c, r).is_none())
+        .count();
+    println!(
+        "decisions: the float-with-error-bound stage leaves {undecided} of {} undecided",
+        fes.len()
+    );
     let mut g = c.benchmark_group("prop_4_2_and_4_4");
     g.bench_function("f64", |b| {
         b.iter(|| {
@@ -102,6 +122,28 @@ fn bench(c: &mut Criterion) {
                 .zip(&rat)
                 .filter_map(|((a, c, r), (ea, ec, er))| {
                     pair_decision(black_box(a), c, r).or_else(|| pair_decision(ea, ec, er))
+                })
+                .count()
+        })
+    });
+    // the static stage alone (decides all but the near-boundary cases)
+    g.bench_function("float_err", |b| {
+        b.iter(|| {
+            fes.iter()
+                .filter_map(|(a, c, r)| pair_decision(black_box(a), c, r))
+                .count()
+        })
+    });
+    // the three stages: float with error bound, then intervals, then rationals
+    g.bench_function("filtered_static", |b| {
+        b.iter(|| {
+            fes.iter()
+                .zip(&ivs)
+                .zip(&rat)
+                .filter_map(|(((a, c, r), (ia, ic, ir)), (ea, ec, er))| {
+                    pair_decision(black_box(a), c, r)
+                        .or_else(|| pair_decision(ia, ic, ir))
+                        .or_else(|| pair_decision(ea, ec, er))
                 })
                 .count()
         })

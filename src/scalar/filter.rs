@@ -1,8 +1,10 @@
 //! Filtered decisions (the idea of CGAL's filtered kernels): evaluate a predicate
-//! with interval arithmetic first, and only when the enclosure cannot decide,
-//! re-evaluate it exactly with rationals. Exact answers at close to float speed.
+//! with floats carrying an a-priori error bound first ([`FloatErr`]: plain float
+//! operations, no rounding-mode switches), then with interval arithmetic, and
+//! only when neither can decide, exactly with rationals. Exact answers at close
+//! to float speed.
 
-use super::{Interval, Rational, Scalar};
+use super::{FloatErr, Interval, Rational, Scalar};
 use std::sync::atomic::{AtomicU64, Ordering};
 
 /// A decision that can be evaluated in any arithmetic.
@@ -57,7 +59,8 @@ pub fn reset_filter_stats() {
     FALLBACKS.store(0, Ordering::Relaxed);
 }
 
-/// Decides `p` exactly: intervals first, rationals when the intervals cannot.
+/// Decides `p` exactly: floats with an error bound first, then intervals, then
+/// rationals when neither can decide.
 ///
 /// Returns `None` only if the exact evaluation itself declines, which a correct
 /// predicate never does.
@@ -79,6 +82,9 @@ pub fn reset_filter_stats() {
 /// ```
 pub fn filtered<P: Predicate>(p: &P) -> Option<P::Out> {
     CALLS.fetch_add(1, Ordering::Relaxed);
+    if let Some(out) = p.decide::<FloatErr>() {
+        return Some(out);
+    }
     if let Some(out) = p.decide::<Interval>() {
         return Some(out);
     }

@@ -7,18 +7,21 @@
 //! | `f64` | fast float path, may be wrong near degeneracy | never `Unknown` (except NaN) |
 //! | [`Rational`] (`BigRational`) | exact | never `Unknown` |
 //! | [`Interval`] (inari) | certified enclosure, outward rounded | `Unknown` when the enclosure straddles 0 |
+//! | [`FloatErr`] | a float with a running a-priori error bound (the static filter) | `Unknown` when the bound reaches 0 |
 //! | [`crate::poly::RatFunc`] | symbolic rational functions over Q | exact for constants, else `Unknown` |
 //!
 //! Square roots are a separate capability ([`ScalarSqrt`]): only `f64` and
 //! [`Interval`] have them. Exact decisions on irrational quantities square first
 //! (compare `lambda^2`, not `lambda`).
 
+mod ferr;
 mod filter;
 mod float;
 mod interval;
 mod rational;
 mod surd;
 
+pub use ferr::FloatErr;
 pub use filter::{filter_stats, filtered, reset_filter_stats, Decision, FilterStats, Predicate};
 pub use interval::{
     interval_from_rational, interval_to_json, sin_cos_enclosure, Interval, IntervalExt,
