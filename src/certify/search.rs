@@ -636,29 +636,57 @@ pub(crate) fn one_sided(
     let mut lo = 0.0f64;
     let mut witness = None;
     let mut incomplete = false;
-    let try_witness =
-        |i: usize, s: f64, lo: &mut f64, witness: &mut Option<(usize, f64)>, gap_rel: f64| {
-            let inner = a[i].inner;
-            let s = s.clamp(inner.0, inner.1);
-            let Some((x, y)) = a[i].iv.eval(Jet::constant(point_iv(s))) else {
-                return;
-            };
-            // float estimate first: a witness below the current lo cannot help
-            let q = (x.v.mid(), y.v.mid());
-            let est = b
-                .iter()
-                .filter_map(|p| foot_f64(p, q, 32).map(|r| r.1))
-                .fold(f64::INFINITY, f64::min);
-            // a witness cannot raise lo above its float distance; below the
-            // absolute gap it is not worth a lower-distance search (coinciding
-            // shapes would run every witness to its budget)
-            if est <= *lo || est <= abs {
+    // Witnesses. A point's float distance to `B` is cheap; its certified lower
+    // bound is a branch and bound of its own. So each witness point is first
+    // estimated, and only certified when it can matter: at once when its
+    // estimate exceeds the tolerance (it may refute it), otherwise the best
+    // pending one (largest estimate) once certifying it could close the gap,
+    // and at the end.
+    struct Cand {
+        i: usize,
+        s: f64,
+        p: (Interval, Interval),
+        est: f64,
+    }
+    let estimate = |i: usize, s: f64| -> Option<Cand> {
+        let inner = a[i].inner;
+        let s = s.clamp(inner.0, inner.1);
+        let (x, y) = a[i].iv.eval(Jet::constant(point_iv(s)))?;
+        let q = (x.v.mid(), y.v.mid());
+        let est = b
+            .iter()
+            .filter_map(|p| foot_f64(p, q, 32).map(|r| r.1))
+            .fold(f64::INFINITY, f64::min);
+        Some(Cand {
+            i,
+            s,
+            p: (x.v, y.v),
+            est,
+        })
+    };
+    let certify = |c: &Cand, lo: &mut f64, witness: &mut Option<(usize, f64)>| {
+        // a witness cannot raise lo above its float distance; below the
+        // absolute gap it is not worth a lower-distance search (coinciding
+        // shapes would run every witness to its budget)
+        if c.est <= *lo || c.est <= abs {
+            return;
+        }
+        let l = lower_distance(c.p, b, cfg.rel * 0.25, cfg.max_boxes.clamp(16, 4_000));
+        if l > *lo {
+            *lo = l;
+            *witness = Some((c.i, c.s));
+        }
+    };
+    let mut pending: Option<Cand> = None;
+    let offer =
+        |c: Cand, lo: &mut f64, witness: &mut Option<(usize, f64)>, pending: &mut Option<Cand>| {
+            if !(c.est > *lo && c.est > abs) {
                 return;
             }
-            let l = lower_distance((x.v, y.v), b, gap_rel, cfg.max_boxes.clamp(16, 4_000));
-            if l > *lo {
-                *lo = l;
-                *witness = Some((i, s));
+            if cfg.tol.is_some_and(|t| c.est > t) {
+                certify(&c, lo, witness);
+            } else if pending.as_ref().is_none_or(|p| c.est > p.est) {
+                *pending = Some(c);
             }
         };
     // initial witnesses: the ends and centres of the pieces
@@ -668,19 +696,27 @@ pub(crate) fn one_sided(
             0.5 * (piece.inner.0 + piece.inner.1),
             piece.inner.1,
         ] {
-            try_witness(i, s, &mut lo, &mut witness, cfg.rel * 0.25);
+            if let Some(c) = estimate(i, s) {
+                offer(c, &mut lo, &mut witness, &mut pending);
+            }
         }
     }
     loop {
         let Some(top) = heap.peek() else { break };
         let hi = top.b.bound;
-        let (olo, ohi) = (lo.max(other.0), hi.max(other.1));
         // Without a tolerance the goal is the relative gap; with one, it is the
         // verdict (refined down to a 1e-12 relative gap if need be).
         let rel = if cfg.tol.is_some() { 1e-12 } else { cfg.rel };
+        let ohi = hi.max(other.1);
+        let closes = |l: f64| ohi.is_finite() && ohi - l.max(other.0) <= (rel * ohi).max(abs);
+        if pending.as_ref().is_some_and(|c| closes(c.est)) {
+            if let Some(c) = pending.take() {
+                certify(&c, &mut lo, &mut witness);
+            }
+        }
         // An infinite upper bound (a box whose normal could not be bounded yet) is
         // never convergence: keep splitting.
-        if ohi.is_finite() && ohi - olo <= (rel * ohi).max(abs) {
+        if closes(lo) {
             break;
         }
         if let Some(tol) = cfg.tol {
@@ -698,11 +734,16 @@ pub(crate) fn one_sided(
         let top = heap.pop().expect("peeked");
         let (s0, s1) = top.b.s;
         let sm = 0.5 * (s0 + s1);
-        try_witness(top.b.piece, sm, &mut lo, &mut witness, cfg.rel * 0.25);
+        if let Some(c) = estimate(top.b.piece, sm) {
+            offer(c, &mut lo, &mut witness, &mut pending);
+        }
         for half in [(s0, sm), (sm, s1)] {
             heap.push(make_box(a, top.b.piece, half, b));
             evaluated += 1;
         }
+    }
+    if let Some(c) = pending.take() {
+        certify(&c, &mut lo, &mut witness);
     }
     let mut boxes: Vec<CoverBox> = heap.into_iter().map(|h| h.b).collect();
     boxes.sort_by(|x, y| x.piece.cmp(&y.piece).then(x.s.0.total_cmp(&y.s.0)));
