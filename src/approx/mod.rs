@@ -395,39 +395,15 @@ fn sub_exact(x: &Bezier<Rational>, t: (f64, f64)) -> Option<Bezier<Rational>> {
 }
 
 /// The span `t` of `x` in floats, the input of the constructions (heuristics:
-/// only tightness depends on it): blossoms of the float control points, with the
-/// end points evaluated by one canonical float de Casteljau at `t₀`, `t₁`, so
-/// that neighbouring spans share them bit for bit.
+/// only tightness depends on it): [`Bezier::restrict`] of the float control
+/// points, whose end points are one canonical float de Casteljau at `t₀`, `t₁`,
+/// so that neighbouring spans share them bit for bit.
 pub fn span_f64(x: &Bezier<Rational>, t: (f64, f64)) -> Option<Bezier<f64>> {
-    let xf: Vec<(f64, f64)> = x
-        .points()
+    let sub = x.map(|v| v.approx()).restrict(&t.0, &t.1);
+    sub.points()
         .iter()
-        .map(|p| (p.x.approx(), p.y.approx()))
-        .collect();
-    let n = xf.len() - 1;
-    // the blossom x(u₁, …, u_n) by de Casteljau with one parameter per level
-    let blossom = |params: &dyn Fn(usize) -> f64| {
-        let mut v = xf.clone();
-        for level in 0..n {
-            let u = params(level);
-            for i in 0..n - level {
-                v[i] = (
-                    (1.0 - u) * v[i].0 + u * v[i + 1].0,
-                    (1.0 - u) * v[i].1 + u * v[i + 1].1,
-                );
-            }
-        }
-        v[0]
-    };
-    let pts: Vec<V2<f64>> = (0..=n)
-        .map(|k| {
-            let p = blossom(&|level| if level < n - k { t.0 } else { t.1 });
-            V2::new(p.0, p.1)
-        })
-        .collect();
-    pts.iter()
         .all(|p| p.x.is_finite() && p.y.is_finite())
-        .then(|| Bezier::new(pts))
+        .then_some(sub)
 }
 
 /// Builds the approximant of one span: the construction with canonical end
@@ -488,36 +464,36 @@ fn certify_segment(
         return (None, split, false);
     };
     let (pa, pb) = ([pa], [pb]);
+    // a segment with nothing certified: the trivial bounds (and, with
+    // `certify: false`, the sampled estimate apart)
+    let unproven = |estimate: Option<f64>| OffsetSegment {
+        piece: task.piece,
+        t: task.t,
+        bezier: bez.clone(),
+        error: (0.0, f64::INFINITY),
+        paper_error: None,
+        proof: None,
+        estimate,
+    };
     if !opts.certify {
         // the same construction, accepted on a sampled estimate (unproven)
         let e = crate::certify::sampled_pieces(&pa, &pb, 32);
-        let seg = OffsetSegment {
-            piece: task.piece,
-            t: task.t,
-            bezier: bez,
-            // nothing is certified: the trivial bounds, and the estimate apart
-            error: (0.0, f64::INFINITY),
-            paper_error: None,
-            proof: None,
-            estimate: Some(e),
-        };
-        return (Some(seg), split_point(opts.method, x, task.t), false);
+        return (
+            Some(unproven(Some(e))),
+            split_point(opts.method, x, task.t),
+            false,
+        );
     }
     // A span whose sampled (float, unproven) error is already above `tol` is
     // split without a proof: only acceptance needs one, and refuting the span
     // with a certified lower bound costs more than the rest of its search. At
     // the depth limit the span is bounded anyway, to report it.
     if task.depth < opts.max_depth && crate::certify::sampled_pieces(&pa, &pb, 8) > opts.tol {
-        let seg = OffsetSegment {
-            piece: task.piece,
-            t: task.t,
-            bezier: bez,
-            error: (0.0, f64::INFINITY),
-            paper_error: None,
-            proof: None,
-            estimate: None,
-        };
-        return (Some(seg), split_point(opts.method, x, task.t), false);
+        return (
+            Some(unproven(None)),
+            split_point(opts.method, x, task.t),
+            false,
+        );
     }
     let cfg = Config {
         tol: Some(opts.tol),

@@ -119,16 +119,9 @@ fn hull(v: &[f64]) -> (f64, f64) {
         })
 }
 
-/// De Casteljau at `t`: the value.
+/// De Casteljau at `t`: the value (the first coefficient on `[t, 1]`).
 fn point(xs: &mut [f64], ys: &mut [f64], t: f64) -> (f64, f64) {
-    let u = 1.0 - t;
-    let n = xs.len();
-    for level in 1..n {
-        for i in 0..n - level {
-            xs[i] = u * xs[i] + t * xs[i + 1];
-            ys[i] = u * ys[i] + t * ys[i + 1];
-        }
-    }
+    right(xs, ys, t);
     (xs[0], ys[0])
 }
 

@@ -43,10 +43,9 @@
 //! does not decide: it never refutes (it has no lower bounds of its own).
 
 use super::jet::Jet;
-use super::search::{difference_bound, foot_newton, foot_slope_of};
+use super::search::{difference_bound, foot_newton, foot_slope_of, point_iv as point, ByBound};
 use super::shape::Piece;
 use crate::scalar::{Interval, Scalar};
-use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
 /// The narrowest box split before the path gives up (relative to `B`'s domain).
@@ -103,27 +102,6 @@ struct Node {
 struct HeapBox {
     b: ParamBox,
     k: (f64, f64),
-}
-
-impl PartialEq for HeapBox {
-    fn eq(&self, o: &Self) -> bool {
-        self.b.bound.total_cmp(&o.b.bound) == Ordering::Equal
-    }
-}
-impl Eq for HeapBox {}
-impl PartialOrd for HeapBox {
-    fn partial_cmp(&self, o: &Self) -> Option<Ordering> {
-        Some(self.cmp(o))
-    }
-}
-impl Ord for HeapBox {
-    fn cmp(&self, o: &Self) -> Ordering {
-        self.b.bound.total_cmp(&o.b.bound)
-    }
-}
-
-fn point(x: f64) -> Interval {
-    Interval::try_from((x, x)).unwrap_or(Interval::ENTIRE)
 }
 
 fn hull(xs: &[Interval]) -> Interval {
@@ -315,10 +293,11 @@ pub(crate) fn prove(a: &Piece, b: &Piece, goal: Goal, max_boxes: usize) -> Optio
         };
         nodes.push(node(t, guess, fixed)?);
     }
+    let ranked = |h: HeapBox| ByBound::new(h.b.bound, h);
     let mut heap = BinaryHeap::new();
     let mut evaluated = 0usize;
     for w in nodes.windows(2) {
-        heap.push(make(&w[0], &w[1]));
+        heap.push(ranked(make(&w[0], &w[1])));
         evaluated += 1;
     }
     for n in &nodes {
@@ -375,11 +354,11 @@ pub(crate) fn prove(a: &Piece, b: &Piece, goal: Goal, max_boxes: usize) -> Optio
         let guess = (c[0] + 3.0 * (c[1] + c[2]) + c[3]) / 8.0;
         let nm = node(tm, guess, None)?;
         note(tm, nm.fd, &mut cand, &mut cand_done);
-        heap.push(make(&n0, &nm));
-        heap.push(make(&nm, &n1));
+        heap.push(ranked(make(&n0, &nm)));
+        heap.push(ranked(make(&nm, &n1)));
         evaluated += 2;
     }
-    let mut boxes: Vec<ParamBox> = heap.into_iter().map(|h| h.b).collect();
+    let mut boxes: Vec<ParamBox> = heap.into_iter().map(|h| h.item.b).collect();
     boxes.sort_by(|x, y| x.t.0.total_cmp(&y.t.0));
     let max = boxes.iter().map(|b| b.bound).fold(0.0, f64::max);
     let hi = (point(max) + point(ends)).sup();

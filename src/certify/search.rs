@@ -118,20 +118,41 @@ struct HeapBox {
     splittable: bool,
 }
 
-impl PartialEq for HeapBox {
-    fn eq(&self, o: &Self) -> bool {
-        self.b.bound.total_cmp(&o.b.bound) == Ordering::Equal
+/// A max-heap entry ordered by an upper bound (`total_cmp`): the box with the
+/// largest bound is refined first, by the search and by the parametric proof.
+#[derive(Clone, Debug)]
+pub(crate) struct ByBound<T> {
+    pub bound: f64,
+    pub item: T,
+}
+
+impl<T> ByBound<T> {
+    pub(crate) fn new(bound: f64, item: T) -> Self {
+        ByBound { bound, item }
     }
 }
-impl Eq for HeapBox {}
-impl PartialOrd for HeapBox {
+
+impl<T> std::ops::Deref for ByBound<T> {
+    type Target = T;
+    fn deref(&self) -> &T {
+        &self.item
+    }
+}
+
+impl<T> PartialEq for ByBound<T> {
+    fn eq(&self, o: &Self) -> bool {
+        self.bound.total_cmp(&o.bound) == Ordering::Equal
+    }
+}
+impl<T> Eq for ByBound<T> {}
+impl<T> PartialOrd for ByBound<T> {
     fn partial_cmp(&self, o: &Self) -> Option<Ordering> {
         Some(self.cmp(o))
     }
 }
-impl Ord for HeapBox {
+impl<T> Ord for ByBound<T> {
     fn cmp(&self, o: &Self) -> Ordering {
-        self.b.bound.total_cmp(&o.b.bound)
+        self.bound.total_cmp(&o.bound)
     }
 }
 
@@ -145,7 +166,7 @@ fn split_domain((lo, hi): (f64, f64), n: usize) -> Vec<(f64, f64)> {
     (0..n).map(|k| (at(k), at(k + 1))).collect()
 }
 
-fn point_iv(x: f64) -> Interval {
+pub(crate) fn point_iv(x: f64) -> Interval {
     Interval::try_from((x, x)).unwrap_or(Interval::ENTIRE)
 }
 
@@ -453,6 +474,10 @@ pub(crate) fn difference_bound(
     Some(g.sqrt().sup())
 }
 
+fn ranked(h: HeapBox) -> ByBound<HeapBox> {
+    ByBound::new(h.b.bound, h)
+}
+
 fn make_box(a: &[Piece], i: usize, s: (f64, f64), b: &[Piece]) -> HeapBox {
     let s_c = 0.5 * (s.0 + s.1);
     let splittable = s_c > s.0 && s_c < s.1;
@@ -629,7 +654,7 @@ pub(crate) fn one_sided(
     let mut evaluated = 0usize;
     for (i, piece) in a.iter().enumerate() {
         for (s0, s1) in split_domain(piece.outer, 4) {
-            heap.push(make_box(a, i, (s0, s1), b));
+            heap.push(ranked(make_box(a, i, (s0, s1), b)));
             evaluated += 1;
         }
     }
@@ -738,14 +763,14 @@ pub(crate) fn one_sided(
             offer(c, &mut lo, &mut witness, &mut pending);
         }
         for half in [(s0, sm), (sm, s1)] {
-            heap.push(make_box(a, top.b.piece, half, b));
+            heap.push(ranked(make_box(a, top.b.piece, half, b)));
             evaluated += 1;
         }
     }
     if let Some(c) = pending.take() {
         certify(&c, &mut lo, &mut witness);
     }
-    let mut boxes: Vec<CoverBox> = heap.into_iter().map(|h| h.b).collect();
+    let mut boxes: Vec<CoverBox> = heap.into_iter().map(|h| h.item.b).collect();
     boxes.sort_by(|x, y| x.piece.cmp(&y.piece).then(x.s.0.total_cmp(&y.s.0)));
     let hi = boxes.iter().map(|b| b.bound).fold(0.0, f64::max);
     OneSided {

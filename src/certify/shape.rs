@@ -668,10 +668,8 @@ fn hodographs_iv(pts: Vec<(Interval, Interval)>) -> [Vec<(Interval, Interval)>; 
 /// The piece of the exact offset at `distance` of the span `[t₀, t₁]` of `x`
 /// (reparametrised to `[0, 1]`), the same piece as
 /// `ShapeDesc::Offset { curve: [x restricted to the span], distance }`, without
-/// rational arithmetic: the span's control points are the blossom values
-/// `x(t₀, …, t₀, t₁, …, t₁)`, enclosed by de Casteljau with one *point*
-/// parameter per level in interval arithmetic from enclosures of `x`'s
-/// control points. `None` if `t` is not a finite span or the input pieces are
+/// rational arithmetic: [`Bezier::restrict`] (blossoms, one *point* parameter
+/// per level) in interval arithmetic on enclosures of `x`'s control points. `None` if `t` is not a finite span or the input pieces are
 /// degenerate (checked by the caller's shape validation).
 pub(crate) fn offset_span(
     x: &Bezier<Rational>,
@@ -681,27 +679,12 @@ pub(crate) fn offset_span(
     if !(t.0.is_finite() && t.1.is_finite() && t.0 < t.1) || x.points().is_empty() {
         return None;
     }
-    let xi: Vec<(Interval, Interval)> = x.points().iter().map(|p| (iv(&p.x), iv(&p.y))).collect();
-    let n = xi.len() - 1;
     let (p0, p1) = (
         Interval::try_from((t.0, t.0)).ok()?,
         Interval::try_from((t.1, t.1)).ok()?,
     );
-    let pts: Vec<(Interval, Interval)> = (0..=n)
-        .map(|k| {
-            let mut v = xi.clone();
-            for level in 0..n {
-                let u = if level < n - k { p0 } else { p1 };
-                for i in 0..n - level {
-                    v[i] = (
-                        v[i].0 + u * (v[i + 1].0 - v[i].0),
-                        v[i].1 + u * (v[i + 1].1 - v[i].1),
-                    );
-                }
-            }
-            v[0]
-        })
-        .collect();
+    let span = x.map(iv).restrict(&p0, &p1);
+    let pts: Vec<(Interval, Interval)> = span.points().iter().map(|p| (p.x, p.y)).collect();
     let [pts, hod, hod2, hod3] = hodographs_iv(pts);
     let r2 = iv(&(distance * distance));
     let sigma = if distance.is_positive() { 1 } else { -1 };

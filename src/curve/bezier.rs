@@ -94,15 +94,19 @@ impl<S: Scalar> Bezier<S> {
     }
     /// The piece over `[a, b]` reparametrised to `[0, 1]` (`a > b` reverses).
     pub fn restrict(&self, a: &S, b: &S) -> Bezier<S> {
-        // Blossom: control point i = blossom(a^(n-i), b^i).
+        // Blossom: control point i = blossom(a^(n-i), b^i), by de Casteljau in
+        // the convex form (1 − u) p + u q: in floats a parameter 0 or 1 gives an
+        // end control point bit for bit, and neighbouring spans share the
+        // point at their common parameter.
         let n = self.degree();
         let pts = (0..=n)
             .map(|i| {
                 let mut p = self.pts.clone();
                 for r in 0..n {
                     let u = if r < n - i { a } else { b };
+                    let v = S::one() - u.clone();
                     for j in 0..n - r {
-                        p[j] = p[j].lerp(&p[j + 1], u);
+                        p[j] = p[j].scale(&v).add(&p[j + 1].scale(u));
                     }
                 }
                 p.swap_remove(0)
