@@ -288,19 +288,47 @@ fn sector_holds(c: &Rational, s: &Rational, ca: &Bezier<Rational>) -> bool {
 
 // ----- certificates ------------------------------------------------------------------
 
-fn certified(a: &ShapeDesc, b: &ShapeDesc, tol: &str) -> Certificate {
+/// The two kinds of proof a certificate carries.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Kind {
+    /// The two-directional search's box covers (`directions`).
+    Search,
+    /// The parametric proof's map (`maps`).
+    Map,
+}
+
+const KINDS: [Kind; 2] = [Kind::Search, Kind::Map];
+
+fn certified_by(a: &ShapeDesc, b: &ShapeDesc, tol: &str, kind: Kind) -> Certificate {
     let t = parse_rational(tol).unwrap();
     let r = hausdorff(
         a,
         b,
         &Config {
             tol: Some(interval_from_rational(&t).inf()),
-            parametric: false,
+            parametric: kind == Kind::Map,
             ..Config::default()
         },
     )
     .unwrap();
-    Certificate::new(a, b, &t, &r).expect("certified")
+    let cert = Certificate::new(a, b, &t, &r).expect("certified");
+    // the kind asked for, and only that kind of proof
+    let n = |k: &str| cert.doc[k].as_array().map_or(0, Vec::len);
+    let dir_boxes = cert.doc["directions"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|d| d["boxes"].as_array().unwrap().len())
+        .sum::<usize>();
+    match kind {
+        Kind::Search => assert!(n("maps") == 0 && dir_boxes > 0),
+        Kind::Map => assert!(n("maps") == 1 && dir_boxes == 0, "the parametric path did not decide"),
+    }
+    cert
+}
+
+fn certified(a: &ShapeDesc, b: &ShapeDesc, tol: &str) -> Certificate {
+    certified_by(a, b, tol, Kind::Search)
 }
 
 /// Verifies a (possibly edited) certificate document through its text.
@@ -343,14 +371,20 @@ fn approximant_pair() -> (ShapeDesc, ShapeDesc) {
 
 #[test]
 fn certificate_round_trip_and_every_number_is_bound() {
+    for kind in KINDS {
+        round_trip_and_every_number_is_bound(kind);
+    }
+}
+
+fn round_trip_and_every_number_is_bound(kind: Kind) {
     let (a, b) = approximant_pair();
-    let cert = certified(&a, &b, "0.02");
+    let cert = certified_by(&a, &b, "0.02", kind);
     let valid = check(&cert.doc).expect("valid");
     assert!(valid.max_bound <= 0.02 && valid.boxes == cert.box_count());
     assert!(valid.statement().contains("d_H(A, B) ≤ 1/50"));
     let mut leaves = Vec::new();
     number_leaves(&cert.doc, String::new(), &mut leaves);
-    assert!(leaves.len() > 50);
+    assert!(leaves.len() > 50, "{kind:?}: {}", leaves.len());
     // No digest: an edited number is either rejected, or the edited certificate
     // still proves a true statement (an independent search cannot refute it).
     let mut rejected = 0;
@@ -365,7 +399,7 @@ fn certificate_round_trip_and_every_number_is_bound() {
                 let r = hausdorff(&sa, &sb, &cfg(1e-2)).unwrap();
                 assert!(
                     Rational::from_float(r.lo).unwrap() <= v.tol,
-                    "{p}: accepted d_H ≤ {}, refuted: {}",
+                    "{kind:?} {p}: accepted d_H ≤ {}, refuted: {}",
                     v.tol,
                     r.lo
                 );
@@ -379,8 +413,14 @@ fn certificate_round_trip_and_every_number_is_bound() {
 /// object, or repeating any key is refused, and the error names that field.
 #[test]
 fn every_key_is_required_and_no_other_key_is_accepted() {
+    for kind in KINDS {
+        every_key_is_required(kind);
+    }
+}
+
+fn every_key_is_required(kind: Kind) {
     let (a, b) = approximant_pair();
-    let cert = certified(&a, &b, "0.02");
+    let cert = certified_by(&a, &b, "0.02", kind);
     let text = cert.to_json_string();
     assert!(verify(&text).is_ok());
     // every object of the document, by JSON pointer and dotted field name
@@ -407,7 +447,7 @@ fn every_key_is_required_and_no_other_key_is_accepted() {
     }
     let mut objs = Vec::new();
     objects(&cert.doc, String::new(), String::new(), &mut objs);
-    assert!(objs.len() >= 10, "{objs:?}");
+    assert!(objs.len() >= 9, "{objs:?}");
     for (ptr, field) in &objs {
         let keys: Vec<String> = cert
             .doc
@@ -457,9 +497,13 @@ fn every_key_is_required_and_no_other_key_is_accepted() {
     }
     // a repeated key, at the top and deep inside a shape: the first occurrence
     // would otherwise be silently dropped
+    let deep = match kind {
+        Kind::Search => ("\"piece\":0", "\"piece\":0, \"piece\":0"),
+        Kind::Map => ("\"phi\":[", "\"phi\":[\"0\",\"0\",\"0\",\"0\"], \"phi\":["),
+    };
     for (from, to) in [
         ("\"tol\": \"1/50\"", "\"tol\": \"1\", \"tol\": \"1/50\""),
-        ("\"piece\":0", "\"piece\":0, \"piece\":0"),
+        deep,
     ] {
         assert!(text.contains(from), "{from}");
         let e = verify(&text.replacen(from, to, 1)).unwrap_err();
@@ -502,7 +546,8 @@ fn numbers_must_be_canonical_and_bounded() {
             assert_eq!(e.at, "tol", "{tol}: {e}");
         }
     }
-    // box indices are plain integers
+    // box and map indices are plain integers
+    let mcert = certified_by(&a, &b, "0.02", Kind::Map);
     for bad in [
         Value::from(-1),
         Value::from(0.0),
@@ -513,7 +558,17 @@ fn numbers_must_be_canonical_and_bounded() {
         doc["directions"][0]["boxes"][0]["piece"] = bad.clone();
         let e = check(&doc).expect_err("bad index");
         assert_eq!(e.at, "directions[0].boxes[0].piece", "{bad}: {e}");
+        for field in ["piece", "target"] {
+            let mut doc = mcert.doc.clone();
+            doc["maps"][0][field] = bad.clone();
+            let e = check(&doc).expect_err("bad index");
+            assert_eq!(e.at, format!("maps[0].{field}"), "{bad}: {e}");
+        }
     }
+    // map coefficients are canonical rationals too
+    let mut doc = mcert.doc.clone();
+    doc["maps"][0]["boxes"][1]["phi"][2] = Value::from(0.5);
+    assert_eq!(check(&doc).unwrap_err().at, "maps[0].boxes[1].phi[2]");
     // the whole document: too large, too deep
     let deep = format!("{}{}", "[".repeat(40), "]".repeat(40));
     assert!(verify(&deep).unwrap_err().reason.contains("nested"));
@@ -561,7 +616,120 @@ fn semantic_checks_reject_forged_certificates() {
     assert!(forge(&|d| d["directions"][0]["boxes"][0]["target"] = Value::from(7)).is_err());
     assert!(forge(&|d| d["directions"][0]["from"] = Value::from("b")).is_err());
     assert!(forge(&|d| d["version"] = Value::from(1)).is_err());
-    assert!(forge(&|d| d["version"] = Value::from(3)).is_err());
+    assert!(forge(&|d| d["version"] = Value::from(4)).is_err());
+    // version 2 is still read: the same document without maps
+    assert!(forge(&|d| d["version"] = Value::from(2)).is_err(), "v2 has no maps key");
+    let v2 = forge(&|d| {
+        d["version"] = Value::from(2);
+        d.as_object_mut().unwrap().remove("maps");
+    });
+    assert!(v2.is_ok(), "{v2:?}");
+    assert!(forge(&|d| {
+        d.as_object_mut().unwrap().remove("maps");
+    })
+    .is_err());
+}
+
+/// Forged maps: every rule of a parametric cover is checked.
+#[test]
+fn semantic_checks_reject_forged_maps() {
+    let (a, b) = approximant_pair();
+    let cert = certified_by(&a, &b, "0.02", Kind::Map);
+    let hi = check(&cert.doc).unwrap().max_bound;
+    let forge = |f: &dyn Fn(&mut Value)| {
+        let mut d = cert.doc.clone();
+        f(&mut d);
+        check(&d)
+    };
+    let n = cert.doc["maps"][0]["boxes"].as_array().unwrap().len();
+    assert!(n >= 3, "{n}");
+    let expect = |r: Result<_, lncert::certify::verify::Invalid>, at: &str, why: &str| {
+        let e = r.expect_err(why);
+        assert!(e.at.starts_with(at) && e.reason.contains(why), "{at} / {why}: {e}");
+    };
+    // a tolerance below the proven bound
+    let below = Rational::from_float(hi * 0.999).unwrap();
+    expect(
+        forge(&|d| d["tol"] = Value::String(below.to_string())),
+        "maps[0]",
+        "exceeds the tolerance",
+    );
+    // a box removed: the cover has a gap
+    expect(
+        forge(&|d| {
+            d["maps"][0]["boxes"].as_array_mut().unwrap().remove(1);
+        }),
+        "maps[0].boxes[1]",
+        "gap",
+    );
+    // the last box removed: the source is not covered to its end
+    expect(
+        forge(&|d| {
+            d["maps"][0]["boxes"].as_array_mut().unwrap().pop();
+        }),
+        "maps[0].boxes",
+        "not covered",
+    );
+    // a box beyond the end of the source's domain
+    expect(
+        forge(&|d| d["maps"][0]["boxes"][n - 1]["t"][1] = "2".into()),
+        &format!("maps[0].boxes[{}]", n - 1),
+        "gap",
+    );
+    // the map made discontinuous (the box's bound alone could still hold)
+    expect(
+        forge(&|d| {
+            let c = parse_rational(d["maps"][0]["boxes"][1]["phi"][0].as_str().unwrap()).unwrap();
+            d["maps"][0]["boxes"][1]["phi"][0] = (c + q(1, 1 << 30)).to_string().into();
+        }),
+        "maps[0].boxes[1].phi[0]",
+        "not continuous",
+    );
+    // a coefficient outside the target's domain [0, 1]
+    expect(
+        forge(&|d| {
+            d["maps"][0]["boxes"][0]["phi"][0] = "-1/1024".into();
+        }),
+        "maps[0].boxes[0]",
+        "domain",
+    );
+    // a map that is not onto: it stops short of the target's end — the end
+    // term is added and the tolerance fails (the last value pulled back to 1/2
+    // with the whole last box moved)
+    expect(
+        forge(&|d| {
+            d["maps"][0]["boxes"][n - 1]["phi"] =
+                serde_json::json!([d["maps"][0]["boxes"][n - 1]["phi"][0], "1/2", "1/2", "1/2"]);
+        }),
+        "maps[0]",
+        "exceeds the tolerance",
+    );
+    // the wrong direction labels, a map and boxes for the same piece, two maps
+    expect(forge(&|d| d["maps"][0]["to"] = "b".into()), "maps[0]", "expected from");
+    let boxes_too = forge(&|d| {
+        d["directions"][0]["boxes"] = serde_json::json!([
+            {"piece": 0, "s": ["0", "1"], "target": 0, "t": "1/2", "k": "1"}
+        ]);
+    });
+    expect(boxes_too, "directions[0].boxes[0]", "covered by maps[0]");
+    let twice = forge(&|d| {
+        let m = d["maps"][0].clone();
+        d["maps"].as_array_mut().unwrap().push(m);
+    });
+    expect(twice, "maps[1].piece", "already covered");
+    // no maps and no boxes: nothing proven
+    let empty = forge(&|d| d["maps"] = serde_json::json!([]));
+    expect(empty, "directions[0].boxes", "not covered");
+    // an arc as the source: its parameter domain is not exact
+    let arc = shape(r#"{"arc": {"center": [0, 0], "radius": 1, "from": [1, 0], "to": [0, 1]}}"#);
+    let cubic = shape("M 1 0 C 1 0.5523 0.5523 1 0 1");
+    let ac = certified_by(&arc, &cubic, "0.0003", Kind::Map);
+    assert!(check(&ac.doc).is_ok());
+    assert_eq!(ac.doc["maps"][0]["from"], "b", "the polynomial side is the source");
+    let mut d = ac.doc.clone();
+    d["maps"][0]["from"] = "a".into();
+    d["maps"][0]["to"] = "b".into();
+    expect(check(&d), "maps[0].piece", "exact parameter domain");
 }
 
 /// Moving a control point of the certified approximant by more than the slack
@@ -569,9 +737,15 @@ fn semantic_checks_reject_forged_certificates() {
 /// and it rejects the large moves.
 #[test]
 fn moved_control_points_fail_verification() {
+    for kind in KINDS {
+        moved_control_points(kind);
+    }
+}
+
+fn moved_control_points(kind: Kind) {
     let (a, b) = approximant_pair();
     let tol = "0.03";
-    let cert = certified(&a, &b, tol);
+    let cert = certified_by(&a, &b, tol, kind);
     let hi = check(&cert.doc).unwrap().max_bound;
     let slack = 0.03 - hi;
     assert!(slack > 0.0);
@@ -626,8 +800,10 @@ fn certificate_for_arc_and_offset_shapes() {
     let arc = shape(r#"{"arc": {"center": [0, 0], "radius": 1, "from": [1, 0], "to": [0, 1]}}"#);
     // the standard cubic approximation of the quarter circle (k = 0.5523)
     let cubic = shape("M 1 0 C 1 0.5523 0.5523 1 0 1");
-    let cert = certified(&arc, &cubic, "0.0003");
-    assert!(check(&cert.doc).is_ok());
+    for kind in KINDS {
+        let cert = certified_by(&arc, &cubic, "0.0003", kind);
+        assert!(check(&cert.doc).is_ok(), "{kind:?}");
+    }
     let off =
         shape(r#"{"offset": {"curve": {"bezier": [[0, 0], [1, 1], [2, 0]]}, "distance": "1/10"}}"#);
     let r = hausdorff(

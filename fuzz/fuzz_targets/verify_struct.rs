@@ -2,7 +2,8 @@
 //! Fuzz target `verify_struct`: structure-aware forgeries of real certificates.
 //!
 //! The bytes are *choices* (read with `arbitrary::Unstructured`): one of the
-//! seed certificates of fuzz/seeds/verify/ (embedded), then 1 to 4 mutations of
+//! seed certificates of fuzz/seeds/verify/ (embedded; version 2 with box
+//! covers, version 3 with parametric maps), then 1 to 4 mutations of
 //! its JSON tree ([`Mutation`]): add a key (from the keys of the certificate and
 //! shape formats, plus `clockwise`, `bounds`, `bound`, `digest`, `extra`) with a
 //! boolean, a small integer, a canonical rational or a copy of a subtree; remove
@@ -29,7 +30,7 @@ use serde_json::Value;
 use std::fmt::Write;
 use std::sync::OnceLock;
 
-const SEED_TEXTS: [&str; 7] = [
+const SEED_TEXTS: [&str; 10] = [
     include_str!("../seeds/verify/cert_quad_seg.json"),
     include_str!("../seeds/verify/cert_quad_seg_tol1.json"),
     include_str!("../seeds/verify/cert_box_deleted.json"),
@@ -37,6 +38,9 @@ const SEED_TEXTS: [&str; 7] = [
     include_str!("../seeds/verify/cert_offset_quad.json"),
     include_str!("../seeds/verify/cert_convolution_quad.json"),
     include_str!("../seeds/verify/cert_convolution_segment.json"),
+    include_str!("../seeds/verify/cert_map_quad_seg.json"),
+    include_str!("../seeds/verify/cert_map_arc_cubic.json"),
+    include_str!("../seeds/verify/cert_map_offset_quad.json"),
 ];
 
 fn seeds() -> &'static [Value] {
@@ -51,10 +55,11 @@ fn seeds() -> &'static [Value] {
 
 /// Keys a forger may add: every key of the formats, and the classic extras.
 #[rustfmt::skip]
-const KEYS: [&str; 28] = [
+const KEYS: [&str; 30] = [
     "clockwise", "bounds", "bound", "digest", "beziers", "bezier", "arc", "offset",
     "convolution", "side", "ellipse", "curve", "distance", "radius", "center", "from", "to",
     "piece", "target", "s", "t", "k", "tol", "claim", "extra", "format", "version", "directions",
+    "maps", "phi",
 ];
 
 /// A value to put somewhere.

@@ -7,7 +7,7 @@
 //! the divide-and-conquer loop only accepts a segment whose certified bound is
 //! `≤ tol`. Since `d_H(∪Aᵢ, ∪Bᵢ) ≤ maxᵢ d_H(Aᵢ, Bᵢ)`, the spline is within `tol`
 //! of the whole offset; [`union_certificate`] writes that as a certificate
-//! (the per-segment covers, no further search) that `lncert verify` re-checks,
+//! (the per-segment maps and covers, no further search) that `lncert verify` re-checks,
 //! and [`global_bounds`] (opt-in) encloses the global distance from both sides.
 //!
 //! Two constructions, both from the seeds:
@@ -43,7 +43,7 @@ pub mod lnpair;
 pub mod prep;
 
 use crate::certify::{
-    hausdorff, Certificate, Config, CoverBox, HausdorffBounds, OneSided, ShapeDesc,
+    hausdorff, Certificate, Config, CoverBox, HausdorffBounds, MapCover, ShapeDesc,
 };
 use crate::curve::{Bezier, V2};
 use crate::scalar::{interval_from_rational, rational_from_f64, Interval, Rational, Scalar};
@@ -105,13 +105,13 @@ pub struct OffsetOptions {
     /// 32 samples per direction) — the same construction, left unproven, for
     /// comparison; the result says so ([`OffsetResult::proven`]).
     pub certify: bool,
-    /// Keep box covers of every segment's proof (default false), which
-    /// [`union_certificate`] needs: segments are then proven by the
-    /// two-directional search only. Without it, a segment is first tried by the
-    /// parametric proof ([`crate::certify::param`]: one cover of the segment's
-    /// parameter for both directions, several times cheaper), with the search
-    /// as fallback; [`SegmentProof::path`] says which proved it.
-    pub covers: bool,
+    /// Prove every segment by the two-directional search (default false).
+    /// Without it, a segment is first tried by the parametric proof
+    /// ([`crate::certify::param`]: one cover of the segment's parameter for
+    /// both directions, several times cheaper), with the search as fallback;
+    /// [`SegmentProof::path`] says which proved it. Either way the proofs are
+    /// kept for [`union_certificate`].
+    pub search_only: bool,
 }
 
 impl OffsetOptions {
@@ -126,7 +126,7 @@ impl OffsetOptions {
             max_boxes: 50_000,
             paper_error: false,
             certify: true,
-            covers: false,
+            search_only: false,
         }
     }
 }
@@ -171,7 +171,7 @@ pub struct OffsetSegment {
 pub enum ProofPath {
     /// The parametric proof: one cover of the segment's parameter, with a
     /// cubic map into the span's exact offset, proves both directions
-    /// ([`crate::certify::param`]). No box covers are kept.
+    /// ([`crate::certify::param`]). Its map is kept ([`SegmentProof::map`]).
     Parametric,
     /// The two-directional branch and bound ([`crate::certify::search`]).
     Search,
@@ -187,14 +187,17 @@ impl ProofPath {
     }
 }
 
-/// The proof of one accepted segment. For the search path: its final covers,
-/// both directions (piece and target 0: the exact offset of the span, the
-/// segment), which [`union_certificate`] assembles into a certificate of the
-/// whole result; the parametric path keeps no covers (empty vectors).
+/// The proof of one accepted segment, which [`union_certificate`] assembles
+/// into a certificate of the whole result: for the parametric path its map
+/// (from the segment's parameter onto the span's exact offset), for the search
+/// its final covers, both directions (piece and target 0: the exact offset of
+/// the span, the segment); the other path's fields are empty.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SegmentProof {
     /// The proof that accepted the segment.
     pub path: ProofPath,
+    /// The parametric proof (its map's cover, in order), for that path.
+    pub map: Option<crate::certify::param::Parametric>,
     /// Cover of the span's exact offset, foot maps into the segment.
     pub exact_to_segment: Vec<CoverBox>,
     /// Cover of the segment, foot maps into the span's exact offset.
@@ -501,7 +504,7 @@ fn certify_segment(
         // a refuted span is split: its other direction is not needed — unless it
         // cannot be split any more and its bounds are reported
         verdict_only: task.depth < opts.max_depth,
-        parametric: !opts.covers,
+        parametric: !opts.search_only,
         ..Config::default()
     };
     searches.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
@@ -525,6 +528,7 @@ fn certify_segment(
         } else {
             ProofPath::Search
         },
+        map: r.parametric.clone(),
         exact_to_segment: r.a_to_b.boxes.clone(),
         segment_to_exact: r.b_to_a.boxes.clone(),
     });
@@ -792,8 +796,9 @@ pub fn global_bounds(
 ///
 /// Shapes: the exact offset of the input split exactly at the segments'
 /// parameters ([`exact_offset_shape`], piece `i` = segment `i`'s span) and the
-/// approximant (piece `i` = segment `i`). Boxes: each segment's final covers,
-/// with piece and target `i`. Sound because `h(∪Aᵢ, ∪Bᵢ) ≤ maxᵢ h(Aᵢ, Bᵢ)`
+/// approximant (piece `i` = segment `i`). Proofs: each segment's parametric
+/// map (source and target `i`), or its two search covers (piece and target
+/// `i`). Sound because `h(∪Aᵢ, ∪Bᵢ) ≤ maxᵢ h(Aᵢ, Bᵢ)`
 /// (a point of `Aᵢ` within `tol` of `Bᵢ` is within `tol` of `∪B`), and
 /// [`crate::certify::verify::verify`] re-checks every box against the whole
 /// shapes.
@@ -805,29 +810,8 @@ pub fn union_certificate(
     if !res.reached() || res.segments.iter().any(|s| s.proof.is_none()) {
         return Ok(None);
     }
-    if let Some(i) = res.segments.iter().position(|s| {
-        s.proof
-            .as_ref()
-            .is_some_and(|p| p.path != ProofPath::Search)
-    }) {
-        return Err(bad(
-            "segments",
-            format!(
-                "segment {i} was proven by the parametric path, which keeps no box covers: \
-                 run offset with `covers: true` to assemble a certificate"
-            ),
-        ));
-    }
     let a = exact_offset_shape(curve, res)?;
     let b = res.approximant_shape()?;
-    let side = |boxes: &mut dyn Iterator<Item = CoverBox>| OneSided {
-        lo: 0.0,
-        hi: res.certified_hi,
-        witness: None,
-        boxes: boxes.collect(),
-        evaluated: 0,
-        incomplete: false,
-    };
     let renumber = |i: usize, bs: &[CoverBox]| {
         bs.iter()
             .map(move |bx| CoverBox {
@@ -837,26 +821,24 @@ pub fn union_certificate(
             })
             .collect::<Vec<_>>()
     };
-    let proofs = res.segments.iter().filter_map(|s| s.proof.as_ref());
-    let ab = side(
-        &mut proofs
-            .clone()
-            .enumerate()
-            .flat_map(|(i, p)| renumber(i, &p.exact_to_segment)),
-    );
-    let ba = side(
-        &mut proofs
-            .enumerate()
-            .flat_map(|(i, p)| renumber(i, &p.segment_to_exact)),
-    );
-    let r = HausdorffBounds {
-        lo: 0.0,
-        hi: res.certified_hi,
-        a_to_b: ab,
-        b_to_a: ba,
-        parametric: None,
-    };
-    Ok(Certificate::new(&a, &b, tol, &r))
+    let mut maps = Vec::new();
+    let (mut ab, mut ba) = (Vec::new(), Vec::new());
+    for (i, p) in res.segments.iter().filter_map(|s| s.proof.as_ref()).enumerate() {
+        match &p.map {
+            Some(m) => maps.push(MapCover {
+                from_a: m.source_a,
+                piece: i,
+                target: i,
+                boxes: m.boxes.clone(),
+                hi: m.hi,
+            }),
+            None => {
+                ab.extend(renumber(i, &p.exact_to_segment));
+                ba.extend(renumber(i, &p.segment_to_exact));
+            }
+        }
+    }
+    Ok(Certificate::assemble(&a, &b, tol, &maps, &ab, &ba))
 }
 
 /// The exact offset of the input, as the union of the exact offsets of the

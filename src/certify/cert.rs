@@ -1,13 +1,16 @@
-//! The certificate format (version 2).
+//! The certificate format (version 3; version 2 is still read).
 //!
 //! A certificate is a JSON document with exactly these keys (any order):
 //!
 //! ```text
 //! {
-//!   "format": "lncert-hausdorff-certificate", "version": 2,
+//!   "format": "lncert-hausdorff-certificate", "version": 3,
 //!   "claim": "hausdorff(a, b) <= tol",       the one claim of this format
 //!   "tol": Q,                                 exact rational, ≥ 0
 //!   "a": SHAPE, "b": SHAPE,                   canonical shapes
+//!   "maps": [                                 parametric covers (may be empty)
+//!     {"from": "b", "piece": j, "to": "a", "target": i, "boxes": [
+//!        {"t": [Q, Q], "phi": [Q, Q, Q, Q]}, ...]}, ...],
 //!   "directions": [                           exactly two: a→b and b→a
 //!     {"from": "a", "to": "b", "boxes": [
 //!        {"piece": i, "s": [Q, Q], "target": j, "t": Q, "k": Q}, ...]},
@@ -19,22 +22,40 @@
 //! terms, no `+`, no leading zeros, no `/1`, at most 4 096 characters, magnitude
 //! ≤ 10¹⁰⁰); `i`, `j` are JSON integers. `SHAPE` is the canonical shape form of
 //! [`ShapeDesc::to_json`] (`proofs/certify-hausdorff.md` specifies it). Floats of
-//! the search are written exactly, so the verifier reads the very numbers the
-//! search used. The boxes of each direction must cover every parameter domain of
-//! the source shape; for each box `[s0, s1]` of piece `i`, the foot map
-//! `τ(s) = t + k (s − (s0+s1)/2)` must stay inside the domain of piece `j` of the
-//! target, and `sup |A(s) − B(τ(s))|` over the box — recomputed by the verifier —
-//! must be ≤ `tol`. That proves `h(a, b) ≤ tol` and `h(b, a) ≤ tol`, hence the claim.
+//! the proofs are written exactly, so the verifier reads the very numbers the
+//! proofs used.
 //!
-//! Every field is checked: there is nothing informational (version 1's search
-//! figures `bounds` and per-box `bound` are gone), and an unknown or duplicate
-//! key anywhere makes the certificate invalid. There is no digest: an unkeyed
-//! hash authenticates nothing (anyone who edits a certificate can recompute it),
-//! and the verifier does not need one — it checks what the document *says*. A
-//! reader who wants to know *which* shapes a certificate speaks about asks
-//! `lncert verify CERT --against A B`.
+//! **A map** (the parametric proof, [`super::param`]) proves both one-sided
+//! distances between one piece of each shape: its boxes cover the source
+//! piece's parameter domain exactly and in order (`t`), and on each box the
+//! map `φ` into the target piece's parameter is the cubic with Bernstein
+//! coefficients `phi`; consecutive boxes share their end value (`φ` is
+//! continuous), every coefficient lies in the target's domain, and
+//! `sup |src(t) − dst(φ(t))|` over each box, plus `sup |dst′| · length` for the
+//! parts of the target's domain before and after the values of `φ` at the ends,
+//! must be ≤ `tol`. Then every point of either piece is within `tol` of the
+//! other (`φ` is onto the range between its end values).
+//!
+//! **A direction's boxes** (the two-directional search) cover the pieces of
+//! the source shape that no map covers: for each box `[s0, s1]` of piece `i`,
+//! the foot map `τ(s) = t + k (s − (s0+s1)/2)` must stay inside the domain of
+//! piece `j` of the target, and `sup |A(s) − B(τ(s))|` over the box —
+//! recomputed by the verifier — must be ≤ `tol`.
+//!
+//! Each piece of each shape is covered, in each direction, exactly once: by one
+//! map (as its source or its target) or by that direction's boxes. That proves
+//! `h(a, b) ≤ tol` and `h(b, a) ≤ tol`, hence the claim. Version 2 is the same
+//! document without `maps`.
+//!
+//! Every field is checked: there is nothing informational, and an unknown or
+//! duplicate key anywhere makes the certificate invalid. There is no digest: an
+//! unkeyed hash authenticates nothing (anyone who edits a certificate can
+//! recompute it), and the verifier does not need one — it checks what the
+//! document *says*. A reader who wants to know *which* shapes a certificate
+//! speaks about asks `lncert verify CERT --against A B`.
 
-use super::search::OneSided;
+use super::param::ParamBox;
+use super::search::CoverBox;
 use super::{HausdorffBounds, ShapeDesc};
 use crate::scalar::{rational_from_f64, Rational};
 use serde_json::{json, Value};
@@ -42,7 +63,9 @@ use serde_json::{json, Value};
 /// Format name in the `format` field.
 pub const FORMAT: &str = "lncert-hausdorff-certificate";
 /// Current format version.
-pub const VERSION: u64 = 2;
+pub const VERSION: u64 = 3;
+/// The older version the verifier still reads (no `maps`).
+pub const VERSION_2: u64 = 2;
 /// The claim of this format, the value of the `claim` field.
 pub const CLAIM: &str = "hausdorff(a, b) <= tol";
 
@@ -61,11 +84,11 @@ fn q(x: f64) -> Value {
     )
 }
 
-fn direction(from: &str, to: &str, d: &OneSided) -> Value {
+fn direction(from: &str, to: &str, boxes: &[CoverBox]) -> Value {
     json!({
         "from": from,
         "to": to,
-        "boxes": d.boxes.iter().map(|b| json!({
+        "boxes": boxes.iter().map(|b| json!({
             "piece": b.piece,
             "s": [q(b.s.0), q(b.s.1)],
             "target": b.target,
@@ -75,23 +98,87 @@ fn direction(from: &str, to: &str, d: &OneSided) -> Value {
     })
 }
 
+/// One parametric cover for a certificate: the map from piece `piece` of the
+/// source shape onto piece `target` of the other ([`super::param`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct MapCover {
+    /// The source is shape `a` (else `b`).
+    pub from_a: bool,
+    /// The source piece (its parameter is covered by the boxes).
+    pub piece: usize,
+    /// The target piece (the map runs onto its domain).
+    pub target: usize,
+    /// The cover, in order.
+    pub boxes: Vec<ParamBox>,
+    /// The proof's bound, end terms included.
+    pub hi: f64,
+}
+
+fn map_json(m: &MapCover) -> Value {
+    let (from, to) = if m.from_a { ("a", "b") } else { ("b", "a") };
+    json!({
+        "from": from,
+        "piece": m.piece,
+        "to": to,
+        "target": m.target,
+        "boxes": m.boxes.iter().map(|b| json!({
+            "t": [q(b.t.0), q(b.t.1)],
+            "phi": b.c.iter().map(|c| q(*c)).collect::<Vec<_>>(),
+        })).collect::<Vec<_>>(),
+    })
+}
+
 impl Certificate {
-    /// Builds the certificate of `d_H(a, b) ≤ tol` from a search result, or
-    /// `None` if the bounds do not prove it (some box bound above `tol`).
+    /// Builds the certificate of `d_H(a, b) ≤ tol` from a proof of
+    /// [`super::hausdorff`] (its parametric map, or its two box covers), or
+    /// `None` if the bounds do not prove it (some bound above `tol`).
     pub fn new(
         a: &ShapeDesc,
         b: &ShapeDesc,
         tol: &Rational,
         r: &HausdorffBounds,
     ) -> Option<Certificate> {
+        match &r.parametric {
+            Some(p) => {
+                let m = MapCover {
+                    from_a: p.source_a,
+                    piece: 0,
+                    target: 0,
+                    boxes: p.boxes.clone(),
+                    hi: p.hi,
+                };
+                Self::assemble(a, b, tol, &[m], &[], &[])
+            }
+            None if r.a_to_b.boxes.is_empty() || r.b_to_a.boxes.is_empty() => None,
+            None => Self::assemble(a, b, tol, &[], &r.a_to_b.boxes, &r.b_to_a.boxes),
+        }
+    }
+
+    /// Assembles a certificate from parametric maps and the two directions'
+    /// boxes (for the pieces no map covers); `None` if some bound is above
+    /// `tol` or some number is not finite. Whether the pieces are covered is
+    /// for the verifier to say.
+    pub fn assemble(
+        a: &ShapeDesc,
+        b: &ShapeDesc,
+        tol: &Rational,
+        maps: &[MapCover],
+        a_to_b: &[CoverBox],
+        b_to_a: &[CoverBox],
+    ) -> Option<Certificate> {
         let tol_f = crate::scalar::interval_from_rational(tol).inf();
-        let all = r.a_to_b.boxes.iter().chain(r.b_to_a.boxes.iter());
-        if r.a_to_b.boxes.is_empty()
-            || r.b_to_a.boxes.is_empty()
-            || all.clone().any(|bx| {
-                !(bx.bound <= tol_f) || ![bx.s.0, bx.s.1, bx.t, bx.k].iter().all(|x| x.is_finite())
-            })
-        {
+        let boxes_ok = a_to_b.iter().chain(b_to_a).all(|bx| {
+            bx.bound <= tol_f && [bx.s.0, bx.s.1, bx.t, bx.k].iter().all(|x| x.is_finite())
+        });
+        let maps_ok = maps.iter().all(|m| {
+            m.hi <= tol_f
+                && !m.boxes.is_empty()
+                && m.boxes.iter().all(|bx| {
+                    bx.bound <= tol_f
+                        && [bx.t.0, bx.t.1].iter().chain(&bx.c).all(|x| x.is_finite())
+                })
+        });
+        if !boxes_ok || !maps_ok || (maps.is_empty() && (a_to_b.is_empty() || b_to_a.is_empty())) {
             return None;
         }
         let doc = json!({
@@ -101,7 +188,8 @@ impl Certificate {
             "tol": tol.to_string(),
             "a": a.to_json(),
             "b": b.to_json(),
-            "directions": [direction("a", "b", &r.a_to_b), direction("b", "a", &r.b_to_a)],
+            "maps": maps.iter().map(map_json).collect::<Vec<_>>(),
+            "directions": [direction("a", "b", a_to_b), direction("b", "a", b_to_a)],
         });
         Some(Certificate { doc })
     }
@@ -115,7 +203,7 @@ impl Certificate {
         };
         let mut out = String::from("{\n");
         let mut first = true;
-        let order = ["format", "version", "claim", "tol", "a", "b", "directions"];
+        let order = ["format", "version", "claim", "tol", "a", "b", "maps", "directions"];
         let ordered = order
             .iter()
             .filter_map(|k| m.get_key_value(*k))
@@ -127,9 +215,9 @@ impl Certificate {
             first = false;
             out.push_str(&format!("  {}: ", compact(&Value::String(k.clone()))));
             match (k.as_str(), v) {
-                ("directions", Value::Array(dirs)) => {
+                ("directions" | "maps", Value::Array(items)) if !items.is_empty() => {
                     out.push_str("[\n");
-                    for (i, d) in dirs.iter().enumerate() {
+                    for (i, d) in items.iter().enumerate() {
                         let boxes = d["boxes"].as_array().map(Vec::as_slice).unwrap_or(&[]);
                         let mut head = d.clone();
                         if let Value::Object(h) = &mut head {
@@ -142,7 +230,7 @@ impl Certificate {
                             out.push_str(if j == 0 { "\n      " } else { ",\n      " });
                             out.push_str(&compact(b));
                         }
-                        out.push_str(if i + 1 == dirs.len() { "]}\n" } else { "]},\n" });
+                        out.push_str(if i + 1 == items.len() { "]}\n" } else { "]},\n" });
                     }
                     out.push_str("  ]");
                 }
@@ -155,13 +243,11 @@ impl Certificate {
 
     /// Number of proof boxes.
     pub fn box_count(&self) -> usize {
-        self.doc["directions"]
-            .as_array()
-            .map(|ds| {
-                ds.iter()
-                    .map(|d| d["boxes"].as_array().map_or(0, Vec::len))
-                    .sum()
-            })
-            .unwrap_or(0)
+        ["maps", "directions"]
+            .iter()
+            .filter_map(|k| self.doc[*k].as_array())
+            .flatten()
+            .map(|d| d["boxes"].as_array().map_or(0, Vec::len))
+            .sum()
     }
 }

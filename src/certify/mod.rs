@@ -36,7 +36,7 @@ pub mod search;
 pub mod shape;
 pub mod verify;
 
-pub use cert::Certificate;
+pub use cert::{Certificate, MapCover};
 pub use search::{Config, CoverBox, OneSided};
 pub use shape::{ArcDesc, ShapeDesc};
 
@@ -224,13 +224,14 @@ fn parametric_path(
     let (a, b) = (&pa[0], &pb[0]);
     let budget = cfg.max_boxes.min(PARAMETRIC_BOXES);
     // the parametrised side needs an exact domain: a polynomial piece
-    let (p, swapped) = if b.inner == b.outer {
+    let (mut p, swapped) = if b.inner == b.outer {
         (param::prove(a, b, goal, budget)?, false)
     } else if a.inner == a.outer {
         (param::prove(b, a, goal, budget)?, true)
     } else {
         return None;
     };
+    p.source_a = swapped;
     // the witness is a point of the parametrised side, at distance ≥ lo from the other
     let side = |evaluated, lo, witness: Option<f64>| OneSided {
         lo,

@@ -89,6 +89,9 @@ pub struct Parametric {
     pub boxes: Vec<ParamBox>,
     /// Boxes evaluated in all.
     pub evaluated: usize,
+    /// The map's source (the covered parameter) is shape `A` of
+    /// [`super::hausdorff`] (else `B`); [`prove`] itself always maps `B`.
+    pub source_a: bool,
 }
 
 struct Node {
@@ -372,5 +375,6 @@ pub(crate) fn prove(a: &Piece, b: &Piece, goal: Goal, max_boxes: usize) -> Optio
         witness,
         boxes,
         evaluated,
+        source_a: false,
     })
 }

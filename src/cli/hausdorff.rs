@@ -103,8 +103,6 @@ pub fn run(a: &HausdorffArgs) -> Result<i32, CliError> {
         rel: rel_f,
         max_boxes: a.max_boxes,
         tol: tol_f,
-        // a certificate is built from the search's box covers
-        parametric: a.certificate.is_none(),
         ..Config::default()
     };
     let start = std::time::Instant::now();

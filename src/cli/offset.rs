@@ -127,8 +127,6 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     opts.max_boxes = a.max_boxes;
     opts.paper_error = a.paper_error;
     opts.certify = !a.no_certify;
-    // a certificate is assembled from the search's box covers
-    opts.covers = a.certificate.is_some();
     let start = std::time::Instant::now();
     let res = offset(&curve, &opts).map_err(offset_err)?;
     let build = start.elapsed().as_secs_f64();

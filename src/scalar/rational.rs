@@ -153,6 +153,11 @@ pub fn rational_from_f64(x: f64) -> Option<Rational> {
 /// assert!(!abs_le_pow10(&just_above, 100));
 /// ```
 pub fn abs_le_pow10(r: &Rational, e: u32) -> bool {
+    // |n/d| < 2^(bits(n) − bits(d) + 1) ≤ 2^⌊e·log₂10⌋ < 10^e: no big power needed
+    let (nb, db) = (r.numer().bits(), r.denom().bits());
+    if nb < db + (e as u64 * 3321928) / 1000000 {
+        return true;
+    }
     let bound = num_traits::pow(BigInt::from(10u32), e as usize);
     r.numer().abs() <= bound * r.denom().abs()
 }
@@ -190,6 +195,14 @@ pub(crate) fn rational_to_f64_bracket(r: &Rational) -> (f64, f64) {
     if let Some(x) = dyadic_f64(r) {
         return (x, x);
     }
+    if let Some(b) = normal_bracket(r) {
+        return b;
+    }
+    walk_bracket(r)
+}
+
+/// The bracket by comparisons: from a float near `r`, step by ulps.
+fn walk_bracket(r: &Rational) -> (f64, f64) {
     let guess = approx_quotient(r);
     if !guess.is_finite() {
         return if r.is_negative() {
@@ -230,6 +243,56 @@ fn dyadic_f64(r: &Rational) -> Option<f64> {
     // n·2^-k ≥ 2^-1022 in magnitude (n ≠ 0) or zero: a normal float, exact
     let nf = n.to_f64()?;
     Some(nf * f64::from_bits((1023 - k) << 52))
+}
+
+/// The bracket of `r` by one big-integer division when both ends are normal
+/// floats: `q = ⌊|n| 2^s / d⌋` with 53 significant bits, so `q 2^-s ≤ |r| <
+/// (q + 1) 2^-s` and both are floats (`q + 1 = 2^53` included). `None`
+/// outside the normal range (the caller walks instead).
+fn normal_bracket(r: &Rational) -> Option<(f64, f64)> {
+    let (n, d) = (r.numer(), r.denom());
+    if n.is_zero() {
+        return Some((0.0, 0.0));
+    }
+    let a = n.magnitude();
+    let b = d.magnitude();
+    // 2^(bits(a) − bits(b) − 1) < |r| < 2^(bits(a) − bits(b) + 1)
+    let e = a.bits() as i64 - b.bits() as i64;
+    if !(-1000..=1000).contains(&e) {
+        return None;
+    }
+    // s so that 2^52 ≤ |r| 2^s < 2^54; then one more bit if needed
+    let mut s = 53 - e;
+    let div = |s: i64| {
+        let (num, den) = if s >= 0 {
+            (a << s as usize, b.clone())
+        } else {
+            (a.clone(), b << (-s) as usize)
+        };
+        let (q, rem) = num_integer::Integer::div_rem(&num, &den);
+        (q, rem.is_zero())
+    };
+    let (mut q, mut exact) = div(s);
+    if q.bits() > 53 {
+        s -= 1;
+        (q, exact) = div(s);
+    }
+    if q.bits() != 53 {
+        return None;
+    }
+    let qf = q.to_f64()?; // exact: 53 bits
+    let scale = 2f64.powi(-(s as i32)); // exact power of two, normal for |s| ≤ 1060
+    let lo = qf * scale;
+    let hi = (qf + 1.0) * scale;
+    if !(lo.is_normal() && hi.is_finite()) {
+        return None;
+    }
+    Some(match (r.is_negative(), exact) {
+        (false, true) => (lo, lo),
+        (true, true) => (-lo, -lo),
+        (false, false) => (lo, hi),
+        (true, false) => (-hi, -lo),
+    })
 }
 
 /// A float close to `r` (within a few ulps) without overflow on huge numerators.
@@ -300,6 +363,37 @@ mod tests {
     }
 
     use super::*;
+
+    /// The one-division bracket agrees with the comparison walk on rationals
+    /// that are not dyadic, over signs and magnitudes (and declines outside
+    /// the normal range).
+    #[test]
+    fn division_bracket_matches_the_walk() {
+        let mut x = 0x9e3779b97f4a7c15u64;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        let mut checked = 0;
+        for _ in 0..3000 {
+            let n = BigInt::from(next() >> (next() % 64)) * BigInt::from(next() % 1000 + 1);
+            let d = BigInt::from((next() >> (next() % 64)) | 1) * BigInt::from(3 + next() % 5);
+            let shift = (next() % 2200) as usize;
+            let n = if next() % 2 == 0 { -n } else { n };
+            for (nn, dd) in [(n.clone() << shift, d.clone()), (n.clone(), d.clone() << shift), (n.clone(), d.clone())] {
+                let r = Rational::new(nn, dd);
+                if let Some(b) = normal_bracket(&r) {
+                    assert_eq!(b, walk_bracket(&r), "{r}");
+                    checked += 1;
+                }
+            }
+        }
+        assert!(checked > 3000, "{checked}");
+        assert_eq!(normal_bracket(&parse_rational("1e-320").unwrap()), None);
+        assert_eq!(normal_bracket(&parse_rational("1e400").unwrap()), None);
+    }
 
     #[test]
     fn bracket_is_tight_and_correct() {

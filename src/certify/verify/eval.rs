@@ -234,15 +234,33 @@ pub(crate) fn check_box(
             tau.sup()
         ));
     }
-    let undefined = || "the shapes cannot be evaluated on this box (undefined normal)".to_string();
+    taylor_bound(src, sbox, scv, T3([tau, kv, ic(0)]), T3([tv, kv, ic(0)]), dst)
+}
+
+fn undefined() -> String {
+    "the shapes cannot be evaluated on this box (undefined normal)".to_string()
+}
+
+/// `sup_{s∈S} |src(s) − dst(τ(s))|` from the Taylor triples of `τ` over the
+/// box `S` and at its centre `c` (the enclosure `scv` of the exact rational
+/// midpoint): the second-order Taylor bound of `|D|²`, `D = src − dst∘τ`, with
+/// the mean-value meets.
+fn taylor_bound(
+    src: &VPiece,
+    sbox: Interval,
+    scv: Interval,
+    tau_over: T3,
+    tau_c: T3,
+    dst: &VPiece,
+) -> Result<f64, String> {
     // D(s) = A(s) − B(τ(s)), over the box and at its centre
-    let diff = |sv: Interval, tauv: Interval| -> Option<[T3; 2]> {
+    let diff = |sv: Interval, tau: T3| -> Option<[T3; 2]> {
         let a = src.at(T3([sv, ic(1), ic(0)]))?;
-        let b = dst.at(T3([tauv, kv, ic(0)]))?;
+        let b = dst.at(tau)?;
         Some([a[0].sub(b[0]), a[1].sub(b[1])])
     };
-    let over = diff(sbox, tau).ok_or_else(undefined)?;
-    let at_c = diff(scv, tv).ok_or_else(undefined)?;
+    let over = diff(sbox, tau_over).ok_or_else(undefined)?;
+    let at_c = diff(scv, tau_c).ok_or_else(undefined)?;
     let w = sbox - scv;
     // Over the box, D and D′ also lie in the mean-value forms D(c) + D′(S)(S − c)
     // and D′(c) + D″(S)(S − c); keep the meet with the direct enclosures.
@@ -279,4 +297,68 @@ pub(crate) fn check_box(
         .map_err(|_| undefined())?
         .sqrt()
         .sup())
+}
+
+/// Checks one box `[t₀, t₁]` of a parametric map: `φ` the cubic with Bernstein
+/// coefficients `c` on it must stay in the target's domain `[0, dst_end]`;
+/// `Ok(sup |src(t) − dst(φ(t))|)` over the box, or the reason it fails.
+pub(crate) fn check_map_box(
+    src: &VPiece,
+    t0: &Rational,
+    t1: &Rational,
+    dst: &VPiece,
+    dst_end: Interval,
+    c: &[Rational; 4],
+) -> Result<f64, String> {
+    // every number enclosed once; the rest in interval arithmetic (exact for
+    // the dyadic numbers lncert writes, outward rounded for any other)
+    let ci = [0, 1, 2, 3].map(|k| interval_from_rational(&c[k]));
+    if ci.iter().any(|x| !(x.inf() >= 0.0 && x.sup() <= dst_end.inf())) {
+        return Err(format!(
+            "a coefficient of the map leaves the target's parameter domain [0, {}]",
+            dst_end.inf()
+        ));
+    }
+    let (i0, i1) = (interval_from_rational(t0), interval_from_rational(t1));
+    let w = i1 - i0;
+    if !(w.inf() > 0.0) {
+        return Err("the box is too narrow to enclose its width".to_string());
+    }
+    let d1 = [ci[1] - ci[0], ci[2] - ci[1], ci[3] - ci[2]];
+    let d2 = [d1[1] - d1[0], d1[2] - d1[1]];
+    let k1 = ic(3) / w;
+    let k2 = ic(6) / (w * w);
+    let hull = |xs: &[Interval]| {
+        let lo = xs.iter().map(|x| x.inf()).fold(f64::INFINITY, f64::min);
+        let hi = xs.iter().map(|x| x.sup()).fold(f64::NEG_INFINITY, f64::max);
+        Interval::try_from((lo, hi)).map_err(|_| undefined())
+    };
+    // over the box: the Bernstein hulls of φ, φ′ = (3/w) Δc, φ″ = (6/w²) Δ²c
+    let tau_over = T3([hull(&ci)?, k1 * hull(&d1)?, k2 * hull(&d2)?]);
+    // at the exact midpoint (u = 1/2): de Casteljau at 1/2
+    let v = (ci[0] + ic(3) * (ci[1] + ci[2]) + ci[3]) / ic(8);
+    let d = k1 * (d1[0] + ic(2) * d1[1] + d1[2]) / ic(4);
+    let dd = k2 * (d2[0] + d2[1]) / ic(2);
+    let tau_c = T3([v, d, dd]);
+    let sbox = Interval::try_from((i0.inf(), i1.sup())).map_err(|_| "empty box".to_string())?;
+    let scv = (i0 + i1) / ic(2); // encloses the exact midpoint
+    taylor_bound(src, sbox, scv, tau_over, tau_c, dst)
+}
+
+/// `sup |dst′| · (hi − lo)` over `[lo, hi]` (enclosures of the ends): the
+/// distance from any point of `dst` on that parameter range to `dst(lo)`.
+pub(crate) fn reach(dst: &VPiece, lo: Interval, hi: Interval) -> Result<Interval, String> {
+    if lo.inf() == hi.sup() {
+        return Ok(ic(0));
+    }
+    let range = Interval::try_from((lo.inf(), hi.sup())).map_err(|_| undefined())?;
+    let [x, y] = dst.at(T3([range, ic(1), ic(0)])).ok_or_else(undefined)?;
+    let speed = (x.0[1].sqr() + y.0[1].sqr()).sqrt();
+    let len = hi - lo;
+    let r = speed * Interval::try_from((0.0, len.sup().max(0.0))).map_err(|_| undefined())?;
+    if r.sup().is_finite() {
+        Ok(r)
+    } else {
+        Err(undefined())
+    }
 }

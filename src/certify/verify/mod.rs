@@ -29,10 +29,11 @@
 mod eval;
 mod read;
 
-use super::cert::{CLAIM, FORMAT, VERSION};
+use super::cert::{CLAIM, FORMAT, VERSION, VERSION_2};
 use crate::json::{parse, Json, Limits};
-use crate::scalar::Rational;
-use eval::{check_box, le_rational, VShape};
+use crate::scalar::{rational_from_f64, Interval, Rational};
+use rayon::prelude::*;
+use eval::{check_box, check_map_box, le_rational, reach, VShape};
 use num_traits::{Signed, Zero};
 use read::{canonical_index, canonical_rational, exact_object, read_shape};
 
@@ -117,8 +118,10 @@ fn top_level(mut e: Invalid) -> Invalid {
 #[cfg(test)]
 mod tests;
 
-/// The keys of a certificate, all required.
-const KEYS: [&str; 7] = ["format", "version", "claim", "tol", "a", "b", "directions"];
+/// The keys of a version 3 certificate, all required.
+const KEYS: [&str; 8] = ["format", "version", "claim", "tol", "a", "b", "maps", "directions"];
+/// The keys of a version 2 certificate (no maps), all required.
+const KEYS_2: [&str; 7] = ["format", "version", "claim", "tol", "a", "b", "directions"];
 
 /// Verifies a certificate document.
 ///
@@ -164,15 +167,24 @@ fn check_document(doc: &Json) -> Result<Valid, Invalid> {
             return Err(inv("format", format!("expected \"{FORMAT}\"")));
         }
     }
-    if let Some(version) = doc.get("version") {
-        if !matches!(version, Json::Number(v) if **v == *VERSION.to_string()) {
+    let version = match doc.get("version") {
+        Some(Json::Number(v)) if **v == *VERSION_2.to_string() => VERSION_2,
+        Some(Json::Number(v)) if **v == *VERSION.to_string() => VERSION,
+        Some(_) => {
             return Err(inv(
                 "version",
-                format!("unsupported; this verifier reads version {VERSION} only (version 1 carried unverified fields and a digest that authenticated nothing: re-run the search to get a version {VERSION} certificate)"),
-            ));
+                format!("unsupported; this verifier reads versions {VERSION_2} and {VERSION} (version 1 carried unverified fields and a digest that authenticated nothing: re-run the proof to get a version {VERSION} certificate)"),
+            ))
         }
-    }
-    let [_format, _version, claim, tol, a, b, dirs] = exact_object(doc, "", KEYS)?;
+        None => VERSION,
+    };
+    let (claim, tol, a, b, maps, dirs) = if version == VERSION {
+        let [_format, _version, claim, tol, a, b, maps, dirs] = exact_object(doc, "", KEYS)?;
+        (claim, tol, a, b, Some(maps), dirs)
+    } else {
+        let [_format, _version, claim, tol, a, b, dirs] = exact_object(doc, "", KEYS_2)?;
+        (claim, tol, a, b, None, dirs)
+    };
     if claim.as_str() != Some(CLAIM) {
         return Err(inv(
             "claim",
@@ -183,13 +195,42 @@ fn check_document(doc: &Json) -> Result<Valid, Invalid> {
     if tol.is_negative() {
         return Err(inv("tol", "negative"));
     }
+    let tol = Tol {
+        below: crate::scalar::interval_from_rational(&tol).inf(),
+        exact: tol,
+    };
     let shapes = [read_shape(a, "a")?, read_shape(b, "b")?];
+    let mut max_bound = 0.0f64;
+    let mut count = 0;
+    // which pieces the maps cover: `by_map[shape][piece]` (both directions)
+    let mut by_map: [Vec<Option<usize>>; 2] = [
+        vec![None; shapes[0].pieces.len()],
+        vec![None; shapes[1].pieces.len()],
+    ];
+    if let Some(maps) = maps {
+        let maps = maps
+            .as_array()
+            .ok_or_else(|| inv("maps", "expected a list of maps"))?;
+        for (mi, m) in maps.iter().enumerate() {
+            mark_map(m, &format!("maps[{mi}]"), &shapes, &mut by_map, mi)?;
+        }
+        // the maps are independent: checked in parallel, the first failure
+        // in document order reported
+        let checked: Vec<_> = maps
+            .par_iter()
+            .enumerate()
+            .map(|(mi, m)| check_map(m, &format!("maps[{mi}]"), &shapes, &tol))
+            .collect();
+        for r in checked {
+            let (bound, boxes) = r?;
+            max_bound = max_bound.max(bound);
+            count += boxes;
+        }
+    }
     let dirs = dirs
         .as_array()
         .filter(|d| d.len() == 2)
         .ok_or_else(|| inv("directions", "expected the two directions a→b and b→a"))?;
-    let mut max_bound = 0.0f64;
-    let mut count = 0;
     for (di, (from, to)) in [(0usize, 1usize), (1, 0)].into_iter().enumerate() {
         let names = ["a", "b"];
         let at_d = format!("directions[{di}]");
@@ -205,8 +246,12 @@ fn check_document(doc: &Json) -> Result<Valid, Invalid> {
             .ok_or_else(|| inv(format!("{at_d}.boxes"), "expected a list of boxes"))?;
         let (src, dst) = (&shapes[from], &shapes[to]);
         // coverage: per piece, boxes in increasing order, contiguous, from 0 to ≥ the end
-        let mut cursor: Vec<Option<Rational>> = vec![Some(Rational::zero()); src.pieces.len()];
+        let mut cursor: Vec<Option<Rational>> = by_map[from]
+            .iter()
+            .map(|m| m.is_none().then(Rational::zero))
+            .collect();
         let mut last_piece = 0usize;
+        let mut jobs = Vec::with_capacity(boxes.len());
         for (bi, bx) in boxes.iter().enumerate() {
             let at = format!("{at_d}.boxes[{bi}]");
             let [piece, s, target, t, k] =
@@ -250,7 +295,15 @@ fn check_document(doc: &Json) -> Result<Valid, Invalid> {
                 Some(c) => {
                     return Err(inv(at, format!("gap or overlap in the cover of piece {piece}: expected a box starting at {c}, ending after it")))
                 }
-                None => return Err(inv(at, format!("piece {piece} is already covered"))),
+                None => match by_map[from][piece] {
+                    Some(m) => {
+                        return Err(inv(
+                            at,
+                            format!("piece {piece} of {} is covered by maps[{m}]", names[from]),
+                        ))
+                    }
+                    None => return Err(inv(at, format!("piece {piece} is already covered"))),
+                },
             }
             let end = src.ends[piece];
             cursor[piece] = if le_rational(end.sup(), &s1) {
@@ -260,27 +313,7 @@ fn check_document(doc: &Json) -> Result<Valid, Invalid> {
             };
             let t = canonical_rational(t, &format!("{at}.t"))?;
             let k = canonical_rational(k, &format!("{at}.k"))?;
-            let bound = check_box(
-                &src.pieces[piece],
-                &s0,
-                &s1,
-                &dst.pieces[target],
-                dst.ends[target],
-                &t,
-                &k,
-            )
-            .map_err(|r| inv(&at, r))?;
-            if !le_rational(bound, &tol) {
-                return Err(inv(
-                    at,
-                    format!(
-                        "the recomputed bound {bound:e} exceeds the tolerance {}",
-                        tol
-                    ),
-                ));
-            }
-            max_bound = max_bound.max(bound);
-            count += 1;
+            jobs.push((at, piece, s0, s1, target, t, k));
         }
         if let Some(p) = cursor.iter().position(Option::is_some) {
             return Err(inv(
@@ -288,13 +321,207 @@ fn check_document(doc: &Json) -> Result<Valid, Invalid> {
                 format!("piece {p} of {} is not covered to its end", names[from]),
             ));
         }
+        // the boxes' bounds: independent, checked in parallel, the first
+        // failure in document order reported
+        let bounds: Vec<_> = jobs
+            .par_iter()
+            .map(|(at, piece, s0, s1, target, t, k)| {
+                let bound = check_box(
+                    &src.pieces[*piece],
+                    s0,
+                    s1,
+                    &dst.pieces[*target],
+                    dst.ends[*target],
+                    t,
+                    k,
+                )
+                .map_err(|r| inv(at, r))?;
+                if !within(bound, &tol) {
+                    return Err(inv(
+                        at,
+                        format!("the recomputed bound {bound:e} exceeds the tolerance {tol}"),
+                    ));
+                }
+                Ok(bound)
+            })
+            .collect();
+        for b in bounds {
+            max_bound = max_bound.max(b?);
+            count += 1;
+        }
     }
     let [a, b] = shapes.map(|s: VShape| s.text);
+    if count == 0 {
+        return Err(inv("(top level)", "no boxes: nothing is proven"));
+    }
     Ok(Valid {
-        tol,
+        tol: tol.exact,
         a,
         b,
         max_bound,
         boxes: count,
     })
+}
+
+/// The head of a map: source shape and piece, target shape and piece (in
+/// range), and its boxes.
+#[allow(clippy::type_complexity)]
+fn map_head<'j>(
+    m: &'j Json,
+    at: &str,
+    shapes: &[VShape; 2],
+) -> Result<((usize, usize), (usize, usize), &'j Json), Invalid> {
+    let names = ["a", "b"];
+    let [from, piece, to, target, boxes] =
+        exact_object(m, at, ["from", "piece", "to", "target", "boxes"])?;
+    let (f, t) = match (from.as_str(), to.as_str()) {
+        (Some("a"), Some("b")) => (0, 1),
+        (Some("b"), Some("a")) => (1, 0),
+        _ => return Err(inv(at, "expected from \"a\" to \"b\", or from \"b\" to \"a\"")),
+    };
+    let piece = canonical_index(piece, &format!("{at}.piece"))?;
+    let target = canonical_index(target, &format!("{at}.target"))?;
+    for (which, i, field) in [(f, piece, "piece"), (t, target, "target")] {
+        if i >= shapes[which].pieces.len() {
+            return Err(inv(
+                format!("{at}.{field}"),
+                format!("out of range: {} has {} pieces", names[which], shapes[which].pieces.len()),
+            ));
+        }
+    }
+    Ok(((f, piece), (t, target), boxes))
+}
+
+/// Marks the pieces a map covers; a piece covered by two maps is refused.
+fn mark_map(
+    m: &Json,
+    at: &str,
+    shapes: &[VShape; 2],
+    by_map: &mut [Vec<Option<usize>>; 2],
+    index: usize,
+) -> Result<(), Invalid> {
+    let names = ["a", "b"];
+    let (src, dst, _) = map_head(m, at, shapes)?;
+    for ((which, i), field) in [(src, "piece"), (dst, "target")] {
+        if let Some(other) = by_map[which][i] {
+            return Err(inv(
+                format!("{at}.{field}"),
+                format!("piece {i} of {} is already covered by maps[{other}]", names[which]),
+            ));
+        }
+        by_map[which][i] = Some(index);
+    }
+    Ok(())
+}
+
+/// Checks one map (see [`super::cert`]): its bound (end terms included) and
+/// its number of boxes.
+fn check_map(m: &Json, at: &str, shapes: &[VShape; 2], tol: &Tol) -> Result<(f64, usize), Invalid> {
+    let ((f, piece), (t, target), boxes) = map_head(m, at, shapes)?;
+    let (src, dst) = (&shapes[f].pieces[piece], &shapes[t].pieces[target]);
+    let (src_end, dst_end) = (shapes[f].ends[piece], shapes[t].ends[target]);
+    // the source's domain must be exact: the boxes cover exactly [0, end]
+    let src_end = match rational_from_f64(src_end.inf()) {
+        Some(e) if src_end.inf() == src_end.sup() => e,
+        _ => {
+            return Err(inv(
+                format!("{at}.piece"),
+                "the source of a map needs an exact parameter domain (a polynomial piece)",
+            ))
+        }
+    };
+    let boxes = boxes
+        .as_array()
+        .filter(|b| !b.is_empty())
+        .ok_or_else(|| inv(format!("{at}.boxes"), "expected a non-empty list of boxes"))?;
+    let mut cursor = Rational::zero();
+    let mut value: Option<Rational> = None; // φ at the cursor
+    let mut first = Rational::zero();
+    let mut max_box = 0.0f64;
+    for (bi, bx) in boxes.iter().enumerate() {
+        let at_b = format!("{at}.boxes[{bi}]");
+        let [tb, phi] = exact_object(bx, &at_b, ["t", "phi"])?;
+        let (t0, t1) = match tb.as_array() {
+            Some([t0, t1]) => (
+                canonical_rational(t0, &format!("{at_b}.t[0]"))?,
+                canonical_rational(t1, &format!("{at_b}.t[1]"))?,
+            ),
+            _ => return Err(inv(format!("{at_b}.t"), "expected [t0, t1]")),
+        };
+        let c = match phi.as_array() {
+            Some(cs) if cs.len() == 4 => {
+                let mut out: [Rational; 4] = Default::default();
+                for (k, x) in cs.iter().enumerate() {
+                    out[k] = canonical_rational(x, &format!("{at_b}.phi[{k}]"))?;
+                }
+                out
+            }
+            _ => return Err(inv(format!("{at_b}.phi"), "expected the 4 Bernstein coefficients of the map")),
+        };
+        if t0 != cursor || t0 >= t1 || t1 > src_end {
+            return Err(inv(
+                at_b,
+                format!("gap or overlap in the cover of the source piece: expected a box starting at {cursor}, ending after it, inside [0, {src_end}]"),
+            ));
+        }
+        match &value {
+            Some(v) if *v != c[0] => {
+                return Err(inv(
+                    format!("{at_b}.phi[0]"),
+                    format!("the map is not continuous: the previous box ends at {v}"),
+                ))
+            }
+            Some(_) => {}
+            None => first = c[0].clone(),
+        }
+        let bound = check_map_box(src, &t0, &t1, dst, dst_end, &c).map_err(|r| inv(&at_b, r))?;
+        if !within(bound, tol) {
+            return Err(inv(
+                at_b,
+                format!("the recomputed bound {bound:e} exceeds the tolerance {tol}"),
+            ));
+        }
+        max_box = max_box.max(bound);
+        cursor = t1;
+        value = Some(c[3].clone());
+    }
+    if cursor != src_end {
+        return Err(inv(
+            format!("{at}.boxes"),
+            format!("the source piece is not covered to its end {src_end}"),
+        ));
+    }
+    // φ is onto the range between its end values; the rest of the target's
+    // domain, before and after, is within `sup |dst′| · length` of its ends
+    let last = value.unwrap_or_default();
+    let (lo, hi) = if first <= last { (first, last) } else { (last, first) };
+    let iv = crate::scalar::interval_from_rational;
+    let terms = reach(dst, crate::certify::verify::eval::ic(0), iv(&lo))
+        .and_then(|x| Ok(x + reach(dst, iv(&hi), dst_end)?))
+        .map_err(|r| inv(at, r))?;
+    let total = (Interval::try_from((max_box, max_box)).map_err(|_| inv(at, "undefined"))? + terms).sup();
+    if !within(total, tol) {
+        return Err(inv(
+            at,
+            format!("the recomputed bound {total:e} (boxes {max_box:e}, ends of the target's domain {:e}) exceeds the tolerance {tol}", terms.sup()),
+        ));
+    }
+    Ok((total, boxes.len()))
+}
+
+/// The tolerance, exactly and as the largest float below it.
+struct Tol {
+    exact: Rational,
+    below: f64,
+}
+
+impl std::fmt::Display for Tol {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        self.exact.fmt(f)
+    }
+}
+
+/// `x ≤ tol`, exactly (the float comparison first).
+fn within(x: f64, tol: &Tol) -> bool {
+    x <= tol.below || le_rational(x, &tol.exact)
 }

@@ -50,24 +50,38 @@ pub(crate) fn canonical_rational(v: &Json, at: &str) -> Result<Rational, Invalid
         ));
     }
     let n: BigInt = num.parse().map_err(|_| inv(at, "unreadable integer"))?;
+    let noncanonical = |r: &Rational| {
+        inv(
+            at,
+            format!(
+                "{s:?} is not in canonical form: write it as \"{r}\" (lowest terms, no -0, no /1)"
+            ),
+        )
+    };
+    // The digits are canonical (checked above); the value is in canonical form
+    // iff it is not "-0", and a written denominator is ≥ 2, coprime to the
+    // numerator, with a nonzero numerator (the test is cheap for the powers of
+    // two lncert writes: then coprime means odd).
     let r = match den {
+        None if num == "-0" => return Err(noncanonical(&Rational::zero())),
         None => Rational::from_integer(n),
         Some(d) => {
             let d: BigInt = d.parse().map_err(|_| inv(at, "unreadable integer"))?;
             if d.is_zero() {
                 return Err(inv(at, "zero denominator"));
             }
-            Rational::new(n, d)
+            let bits = d.bits();
+            let coprime = if d.trailing_zeros() == Some(bits - 1) {
+                n.trailing_zeros() == Some(0)
+            } else {
+                num_integer::Integer::gcd(&n, &d) == BigInt::from(1)
+            };
+            if !coprime || d == BigInt::from(1) || n.is_zero() {
+                return Err(noncanonical(&Rational::new(n, d)));
+            }
+            Rational::new_raw(n, d)
         }
     };
-    if r.to_string() != s {
-        return Err(inv(
-            at,
-            format!(
-                "{s:?} is not in canonical form: write it as \"{r}\" (lowest terms, no -0, no /1)"
-            ),
-        ));
-    }
     if !abs_le_pow10(&r, MAX_EXPONENT10) {
         return Err(inv(at, "magnitude above the limit 1e100"));
     }

@@ -200,3 +200,61 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: cases(), ..ProptestConfig::default() })]
+
+    /// Neither the parametric proof's box bound nor the verifier's map-box
+    /// bound is ever below `|A(t) − B(φ(t))|` at 33 exactly evaluated points of
+    /// the box, for random polynomial pieces, boxes and cubic maps `φ` (random
+    /// Bernstein coefficients in `[0, 1]`, so deliberately poor maps).
+    #[test]
+    fn map_box_bounds_are_never_below_an_exact_sample(
+        a in proptest::collection::vec((-16i64..16, -16i64..16), 2..5),
+        b in proptest::collection::vec((-16i64..16, -16i64..16), 2..5),
+        t0 in 0u32..64, len in 1u32..32, narrow in any::<bool>(),
+        c in proptest::array::uniform4(0i64..=64),
+    ) {
+        let t1 = (t0 + len).min(64);
+        prop_assume!(t1 > t0);
+        let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
+        // wide boxes, where the direct enclosure wins, and narrow ones (and
+        // nearly linear maps), where the Taylor bound from the centre does
+        let den = if narrow { 64 * 64 } else { 64 };
+        let (t0r, t1r) = (q(t0 as i64, den), q(t1 as i64, den));
+        let cr = if narrow {
+            let base = q(c[0], 64) * q(1, 2);
+            [0, 1, 2, 3].map(|j| &base + q(c[j] + 64 * j as i64, 64 * 64 * 2))
+        } else {
+            c.map(|x| q(x, 64))
+        };
+        let (sa, sb) = (shape_of(&a), shape_of(&b));
+        let va = read_shape(&parse(&sa, &Limits::DEFAULT).unwrap(), "a").unwrap();
+        let vb = read_shape(&parse(&sb, &Limits::DEFAULT).unwrap(), "b").unwrap();
+        // source A (parameter t), target B (parameter φ(t))
+        let v = super::eval::check_map_box(&va.pieces[0], &t0r, &t1r, &vb.pieces[0], vb.ends[0], &cr);
+        prop_assert!(v.is_ok(), "{v:?}");
+        let pa = ShapeDesc::parse(&sa).unwrap().pieces().unwrap();
+        let pb = ShapeDesc::parse(&sb).unwrap().pieces().unwrap();
+        let f = |r: &Rational| crate::scalar::Scalar::approx(r);
+        let w = crate::certify::param::box_bound(&pb[0], &pa[0], (f(&t0r), f(&t1r)), cr.clone().map(|x| f(&x)));
+        for i in 0..=32 {
+            let u = q(i, 32);
+            let t = &t0r + (&t1r - &t0r) * &u;
+            // φ(t) by exact de Casteljau at u
+            let mut d = cr.to_vec();
+            for n in (1..4).rev() {
+                for j in 0..n {
+                    d[j] = &d[j] + &u * (&d[j + 1] - &d[j]);
+                }
+            }
+            let g = exact_gap2(&a, &b, &t, &d[0]);
+            for (who, bound) in [("verifier", v.as_ref().ok().copied()), ("parametric", w)] {
+                if let Some(bd) = bound {
+                    let bd = rational_from_f64(bd).unwrap();
+                    prop_assert!(&bd * &bd >= g, "{who}: bound {} below the exact gap at t = {t}", bd);
+                }
+            }
+        }
+    }
+}
