@@ -12,9 +12,10 @@
 //! interval bound.
 //!
 //! When a tolerance is certified, [`Certificate`] records the inputs exactly,
-//! the claim and the final parameter boxes with their foot maps and bounds;
-//! [`verify`](verify::verify) re-checks it without searching, with its own
-//! evaluation code (it shares only the scalar layer with the search).
+//! the claim and the proof: the parametric map ([`param`]) or the search's
+//! final parameter boxes with their foot maps; [`verify`](verify::verify)
+//! re-checks it without searching, with its own evaluation code (it shares
+//! only the scalar layer with the proofs).
 //!
 //! # Examples
 //! ```
