@@ -129,14 +129,14 @@ fn human_output_is_a_table() {
 }
 
 #[test]
-fn user_window_and_incomplete_exit_1() {
+fn user_window_and_incomplete_exit_3() {
     // A window with no solution: complete and empty, exit 0.
     let (doc, code) = json(&with(&["-5/2", "--a2-range", "100,200"]));
     assert_eq!(code, 0);
     assert!(doc["roots"].as_array().unwrap().is_empty());
     assert_eq!(doc["a2_range"][0], "100");
     // Circle through the start point with the start normal: a line of
-    // solutions at m = 0, never certifiable -> exit 1.
+    // solutions at m = 0, never certifiable -> exit 3.
     let (doc, code) = json(
         &[
             "tangency",
@@ -155,7 +155,7 @@ fn user_window_and_incomplete_exit_1() {
         ]
         .map(String::from),
     );
-    assert_eq!(code, 1, "{doc}");
+    assert_eq!(code, 3, "{doc}");
     assert_eq!(doc["complete"], false);
     assert_eq!(doc["lines_of_solutions"][0]["m"], "0");
 }
@@ -216,8 +216,8 @@ fn raster_backends_find_the_two_roots_and_report_misses() {
         cells.push(r["candidates"].clone());
     }
     assert_eq!(cells[0], cells[1], "CPU and GPU rasters disagree");
-    // A coarse raster misses roots; the comparison says so and the exit code is 1.
+    // A coarse raster misses roots; the comparison says so and the exit code is 3.
     let (doc, code) = json(&with(&["-5/2", "--backend", "cpu", "--resolution", "2"]));
     let missed = doc["raster"]["missed"].as_u64().unwrap();
-    assert_eq!(code, if missed == 0 { 0 } else { 1 }, "{doc}");
+    assert_eq!(code, if missed == 0 { 0 } else { 3 }, "{doc}");
 }

@@ -18,7 +18,54 @@ use lncert::scalar::{parse_rational, Rational};
 
 /// A bad-input error `--flag: reason`.
 pub fn bad(flag: &str, reason: impl std::fmt::Display) -> CliError {
-    CliError(format!("{flag}: {reason}"))
+    CliError {
+        field: flag.to_string(),
+        reason: reason.to_string(),
+    }
+}
+
+/// Checks, before any work, that `path` can be written as an output file:
+/// not a directory, its parent directory exists, and the file can be opened
+/// for writing (created and removed again if it did not exist). A run that
+/// would otherwise fail at the end, losing its results, fails at once.
+pub fn output_file(flag: &str, path: &std::path::Path) -> Result<(), CliError> {
+    let shown = path.display();
+    if path.as_os_str().is_empty() {
+        return Err(bad(flag, "empty path"));
+    }
+    if path.is_dir() {
+        return Err(bad(flag, format!("{shown} is a directory, not a file")));
+    }
+    if let Some(parent) = path.parent().filter(|p| !p.as_os_str().is_empty()) {
+        if !parent.is_dir() {
+            return Err(bad(
+                flag,
+                format!("cannot write {shown}: the directory {} does not exist", parent.display()),
+            ));
+        }
+    }
+    let existed = path.exists();
+    std::fs::OpenOptions::new()
+        .append(true)
+        .create(true)
+        .open(path)
+        .map_err(|e| bad(flag, format!("cannot write {shown}: {e}")))?;
+    if !existed {
+        let _ = std::fs::remove_file(path);
+    }
+    Ok(())
+}
+
+/// Checks, before any work, that `dir` is or can become an output directory
+/// (created now if missing, as the output would).
+pub fn output_dir(flag: &str, dir: &std::path::Path) -> Result<(), CliError> {
+    std::fs::create_dir_all(dir)
+        .map_err(|e| bad(flag, format!("cannot create the directory {}: {e}", dir.display())))?;
+    let probe = dir.join(format!(".lncert-write-test-{}", std::process::id()));
+    std::fs::write(&probe, b"")
+        .map_err(|e| bad(flag, format!("cannot write into {}: {e}", dir.display())))?;
+    let _ = std::fs::remove_file(probe);
+    Ok(())
 }
 
 /// An [`LnError`] reported against the command-line flag that produced it.
@@ -68,8 +115,18 @@ pub fn required<'a>(
 }
 
 /// An exact rational: `0.95` is `19/20`, `1/3` is `1/3`.
+///
+/// Every number is bounded like every coordinate of every input (shapes,
+/// curves, certificates): `|x| ≤ 10¹⁰⁰`, decided exactly.
 pub fn number(flag: &str, text: &str) -> Result<Rational, CliError> {
-    parse_rational(text).map_err(|e| bad(flag, e))
+    let r = parse_rational(text).map_err(|e| bad(flag, e))?;
+    if !lncert::scalar::abs_le_pow10(&r, 100) {
+        return Err(bad(
+            flag,
+            "magnitude above the limit 1e100 (the one limit of every lncert input)",
+        ));
+    }
+    Ok(r)
 }
 
 /// A required exact number.
@@ -188,7 +245,7 @@ mod tests {
     fn numbers_are_exact_and_errors_name_the_flag() {
         assert_eq!(q(&number("--u", "0.95").unwrap()), "19/20");
         let e = number("--x1", "abc").unwrap_err();
-        assert!(e.0.starts_with("--x1: cannot read \"abc\""), "{e}");
+        assert!(e.to_string().starts_with("--x1: cannot read \"abc\""), "{e}");
     }
 
     #[test]

@@ -31,10 +31,10 @@ const CHUNK: usize = 250;
 /// Runs the command; returns the exit code.
 pub fn run(a: &AuditArgs) -> Result<i32, CliError> {
     if a.cases == 0 || a.cases > 10_000_000 {
-        return Err(CliError(format!(
-            "--cases: {} is out of range (1 to 10000000)",
-            a.cases
-        )));
+        return Err(super::args::bad(
+            "--cases",
+            format!("{} is out of range (1 to 10000000)", a.cases),
+        ));
     }
     let total = a.cases * KERNELS.len();
     let mut done = 0;
@@ -65,9 +65,9 @@ pub fn run(a: &AuditArgs) -> Result<i32, CliError> {
         print_table(&rows);
     }
     Ok(if rows.iter().all(KernelStats::certified_ok) {
-        0
+        super::EXIT_OK
     } else {
-        1
+        super::EXIT_REFUTED
     })
 }
 

@@ -9,11 +9,12 @@
 //! or a convolution with an ellipse
 //! (`{"convolution": {"curve": CURVE, "ellipse": [[m11, m12], [m21, m22]], "side": 1}}`).
 //!
-//! Exit codes: 0 = bounds computed (with `--tol`: certified), 1 = with `--tol`:
-//! refuted or undecided, 2 = bad input.
+//! Exit codes: 0 = with `--tol` certified, without it the gap reached; 1 = with
+//! `--tol` refuted; 3 = undecided (the budget ran out first; the bounds printed
+//! are still sound); 2 = bad input.
 
 use super::args::{bad, number};
-use super::{print_out, CliError};
+use super::{print_out, CliError, EXIT_OK, EXIT_REFUTED, EXIT_UNDECIDED};
 use lncert::certify::{hausdorff, Certificate, Config, OneSided, ShapeDesc};
 use lncert::scalar::interval_from_rational;
 use serde_json::json;
@@ -72,6 +73,9 @@ fn one_json(d: &OneSided) -> serde_json::Value {
 
 /// Runs the command; returns the exit code.
 pub fn run(a: &HausdorffArgs) -> Result<i32, CliError> {
+    if let Some(path) = &a.certificate {
+        super::args::output_file("--certificate", path)?;
+    }
     let rel = number("--rel", &a.rel)?;
     let rel_f = interval_from_rational(&rel).sup();
     if !(1e-12..=0.5).contains(&rel_f) {
@@ -106,7 +110,9 @@ pub fn run(a: &HausdorffArgs) -> Result<i32, CliError> {
         ..Config::default()
     };
     let start = std::time::Instant::now();
-    let r = hausdorff(&sa, &sb, &cfg).map_err(|e| CliError(e.to_string()))?;
+    let r = hausdorff(&sa, &sb, &cfg).map_err(|e| match e {
+        lncert::certify::CertifyError::Input { field, reason } => CliError { field, reason },
+    })?;
     let elapsed = start.elapsed();
     let verdict = tol_f.map(|t| {
         if r.hi <= t {
@@ -193,7 +199,12 @@ pub fn run(a: &HausdorffArgs) -> Result<i32, CliError> {
         print_out(&out);
     }
     Ok(match verdict {
-        None | Some("certified") => 0,
-        _ => 1,
+        Some("certified") => EXIT_OK,
+        Some("refuted") => EXIT_REFUTED,
+        Some(_) => EXIT_UNDECIDED,
+        // no claim: the bounds are all there is; incomplete when the budget
+        // stopped the search before the gap was reached
+        None if r.incomplete() => EXIT_UNDECIDED,
+        None => EXIT_OK,
     })
 }

@@ -12,9 +12,19 @@
 //! * `lncert tangency --x1 X --y1 Y --u U --center OX,OY --radius R [...]` —
 //!   quartic LN curves tangent to a circle (seed 003 §4).
 //!
-//! Exit codes: 0 = certified / the proposition agrees with the direct check,
-//! 1 = refuted / erratum / undecided, 2 = bad input (message on stderr naming
-//! the field and the reason; never a panic).
+//! Exit codes, the same for every subcommand ([`EXIT_OK`], [`EXIT_REFUTED`],
+//! [`EXIT_BAD_INPUT`], [`EXIT_UNDECIDED`]):
+//!
+//! | code | meaning | reproduce | prop | audit | hausdorff | offset | verify | tangency |
+//! |---|---|---|---|---|---|---|---|---|
+//! | 0 | proven / complete | every claim decided | agrees with the direct check | no disagreement | `d_H ≤ tol` certified, or the gap reached | every segment certified | valid | complete |
+//! | 1 | refuted | — | disagrees (an erratum) | a disagreement | `d_H > tol` proven | — | invalid (malformed JSON included), or about other shapes | — |
+//! | 2 | bad input | | | | | | the file cannot be read | |
+//! | 3 | undecided / incomplete | a claim undecided | a verdict undecided | — | budget ran out | tolerance not reached within the limits | — | undecided boxes remain |
+//!
+//! A bad input's message names the field and the reason, on stderr — and with
+//! `--json` also as `{"error": {"field", "reason"}, "exit_code": 2}` on stdout;
+//! never a panic.
 //!
 //! | module | content |
 //! |---|---|
@@ -41,8 +51,17 @@ pub mod verify;
 
 use clap::{Parser, Subcommand};
 
-/// Exit code for bad input.
+/// Exit code: proven, complete, valid, or in agreement with the direct check.
+pub const EXIT_OK: i32 = 0;
+/// Exit code: refuted — a claim proven false, an invalid certificate, a
+/// proposition that disagrees with the direct check (an erratum), an audit
+/// that found a disagreement.
+pub const EXIT_REFUTED: i32 = 1;
+/// Exit code for bad input (the message names the field and the reason).
 pub const EXIT_BAD_INPUT: i32 = 2;
+/// Exit code: undecided or incomplete — a budget or a limit ran out before
+/// the question was settled (whatever was printed is still sound).
+pub const EXIT_UNDECIDED: i32 = 3;
 
 /// Proven answers about planar curves with linear normals (LN curves).
 #[derive(Parser, Debug)]
@@ -71,13 +90,29 @@ pub enum Command {
     Tangency(Box<tangency::TangencyArgs>),
 }
 
-/// A bad-input error: the message names the field and the reason (exit code 2).
+/// A bad-input error (exit code 2): the field (a flag such as `--tol`, or a
+/// field inside an input file such as `A: arc.radius`) and the reason.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct CliError(pub String);
+pub struct CliError {
+    /// The flag or field.
+    pub field: String,
+    /// What is wrong with it.
+    pub reason: String,
+}
 
 impl std::fmt::Display for CliError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.0)
+        write!(f, "{}: {}", self.field, self.reason)
+    }
+}
+
+impl CliError {
+    /// The error as the JSON document `--json` prints on stdout.
+    pub fn to_json(&self) -> serde_json::Value {
+        serde_json::json!({
+            "error": {"field": self.field, "reason": self.reason},
+            "exit_code": EXIT_BAD_INPUT,
+        })
     }
 }
 
@@ -91,6 +126,15 @@ pub fn print_out(text: &str) {
 
 /// Runs a parsed command line and returns the process exit code.
 pub fn run(cli: Cli) -> i32 {
+    let json = match &cli.command {
+        Command::Reproduce(a) => a.json,
+        Command::Prop(a) => a.json,
+        Command::Audit(a) => a.json,
+        Command::Hausdorff(a) => a.json,
+        Command::Offset(a) => a.json,
+        Command::Verify(a) => a.json,
+        Command::Tangency(a) => a.json,
+    };
     let result = match cli.command {
         Command::Reproduce(a) => reproduce::run(&a),
         Command::Prop(a) => prop::run(&a),
@@ -104,6 +148,9 @@ pub fn run(cli: Cli) -> i32 {
         Ok(code) => code,
         Err(e) => {
             eprintln!("error: {e}");
+            if json {
+                print_out(&format!("{}\n", e.to_json()));
+            }
             EXIT_BAD_INPUT
         }
     }

@@ -12,7 +12,7 @@
 //! of the direction of travel. Arcs and circles are offset exactly (seed 004's
 //! circular precision).
 //!
-//! Exit codes: 0 = every segment certified within `T`, 1 = the tolerance was not
+//! Exit codes: 0 = every segment certified within `T`, 3 = the tolerance was not
 //! reached within the limits (the best segments are still printed, with their
 //! certified bounds), 2 = bad input.
 
@@ -102,6 +102,11 @@ fn offset_err(e: OffsetError) -> CliError {
 
 /// Runs the command; returns the exit code.
 pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
+    for (flag, path) in [("--certificate", &a.certificate), ("--svg", &a.svg)] {
+        if let Some(p) = path {
+            super::args::output_file(flag, p)?;
+        }
+    }
     let distance = number("--distance", &a.distance)?;
     let tol_q = number("--tol", &a.tol)?;
     let tol = interval_from_rational(&tol_q).inf();
@@ -223,7 +228,11 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             a.global_bounds,
         ));
     }
-    Ok(if within { 0 } else { 1 })
+    Ok(if within {
+        super::EXIT_OK
+    } else {
+        super::EXIT_UNDECIDED
+    })
 }
 
 fn text_report(

@@ -12,7 +12,7 @@
 //! certified enclosure); `agrees` is present when both are.
 //!
 //! Exit code: 1 if the proposition disagrees with the direct check (an
-//! erratum) or a verdict is undecided, else 0.
+//! erratum), 3 if a verdict is undecided, else 0.
 
 use super::args::q;
 use super::print_out;
@@ -139,12 +139,13 @@ impl Report {
         };
         self.agrees = Some(combined);
     }
-    /// The exit code: 1 on disagreement or undecided, else 0.
+    /// The exit code: 1 on disagreement, 3 when undecided, else 0.
     pub fn exit_code(&self) -> i32 {
         match self.agrees {
-            Some(Some(false)) | Some(None) => 1,
-            _ if self.undecided => 1,
-            _ => 0,
+            Some(Some(false)) => super::EXIT_REFUTED,
+            Some(None) => super::EXIT_UNDECIDED,
+            _ if self.undecided => super::EXIT_UNDECIDED,
+            _ => super::EXIT_OK,
         }
     }
     /// Prints the report (text or JSON) and returns the exit code.
@@ -225,6 +226,6 @@ mod tests {
         assert_eq!(r.exit_code(), 1);
         let mut u = Report::new("x", "t");
         u.verdict("v", None, "y", "n");
-        assert_eq!(u.exit_code(), 1);
+        assert_eq!(u.exit_code(), 3);
     }
 }

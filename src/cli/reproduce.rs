@@ -30,6 +30,9 @@ const VERDICTS: [Verdict; 4] = [
 
 /// Runs the command; returns the exit code.
 pub fn run(a: &ReproduceArgs) -> Result<i32, CliError> {
+    if let Some(dir) = &a.out {
+        super::args::output_dir("--out", dir)?;
+    }
     let claims = run_all();
     let written = match &a.out {
         Some(dir) => svg::write_fig5(dir)?,
@@ -41,7 +44,11 @@ pub fn run(a: &ReproduceArgs) -> Result<i32, CliError> {
         print_text(&claims, &written);
     }
     let undecided = claims.iter().any(|c| c.verdict == Verdict::Undecided);
-    Ok(if undecided { 1 } else { 0 })
+    Ok(if undecided {
+        super::EXIT_UNDECIDED
+    } else {
+        super::EXIT_OK
+    })
 }
 
 /// Number of claims per verdict, in the order of [`VERDICTS`].

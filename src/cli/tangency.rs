@@ -11,7 +11,7 @@
 //!
 //! Exit code: 0 if the answer is complete (every solution in the domain is
 //! reported and proven; for a raster backend: the complete solver proves the
-//! raster missed none), 1 if undecided boxes (or unhandled degenerate cases)
+//! raster missed none), 3 if undecided boxes (or unhandled degenerate cases)
 //! remain, 2 for bad input (the message names the flag).
 
 use super::args::{bad, number, point, q, required};
@@ -176,7 +176,11 @@ pub fn run(a: &TangencyArgs) -> Result<i32, CliError> {
         }
         print_out(&text);
     }
-    Ok(if complete { 0 } else { 1 })
+    Ok(if complete {
+        super::EXIT_OK
+    } else {
+        super::EXIT_UNDECIDED
+    })
 }
 
 fn word(v: Option<bool>) -> Value {
@@ -365,12 +369,12 @@ fn raster_solve(
             Err(RasterError::NoAdapter(why)) => {
                 note = Some(format!("no GPU adapter ({why}); used the CPU backend"));
                 eprintln!("note: no GPU adapter ({why}); using the CPU backend");
-                raster_cpu(&p6, &p7, &grid).map_err(|e| CliError(e.to_string()))?
+                raster_cpu(&p6, &p7, &grid).map_err(|e| bad("--grid", e))?
             }
-            Err(e) => return Err(CliError(format!("GPU raster failed: {e}"))),
+            Err(e) => return Err(bad("--backend", format!("GPU raster failed: {e}"))),
         }
     } else {
-        raster_cpu(&p6, &p7, &grid).map_err(|e| CliError(e.to_string()))?
+        raster_cpu(&p6, &p7, &grid).map_err(|e| bad("--grid", e))?
     };
     let raster_seconds = start.elapsed().as_secs_f64();
     let cells: Vec<[(f64, f64); 2]> = out
