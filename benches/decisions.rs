@@ -6,6 +6,9 @@
 //!
 //! Run: `cargo bench --bench decisions`.
 
+// `criterion_group!` defines an undocumented `pub fn benches`.
+#![allow(missing_docs)]
+
 use criterion::{criterion_group, criterion_main, Criterion};
 use lncert::ln::pair::{pair_decision, PairDecision};
 use lncert::scalar::{

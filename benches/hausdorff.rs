@@ -5,6 +5,9 @@
 //!
 //! Run: `cargo bench --bench hausdorff`.
 
+// `criterion_group!` defines an undocumented `pub fn benches`.
+#![allow(missing_docs)]
+
 use criterion::{criterion_group, criterion_main, Criterion};
 use lncert::certify::verify::verify;
 use lncert::certify::{hausdorff, Certificate, Config, ShapeDesc};

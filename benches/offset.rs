@@ -7,6 +7,9 @@
 //! Run: `cargo bench --bench offset`. The peer comparison with kurbo is
 //! `cargo run --release --example offset_compare`.
 
+// `criterion_group!` defines an undocumented `pub fn benches`.
+#![allow(missing_docs)]
+
 use criterion::{criterion_group, criterion_main, Criterion};
 use lncert::approx::{g2, lnpair, offset, OffsetMethod, OffsetOptions};
 use lncert::curve::{parse_curve, Bezier, V2};

@@ -9,6 +9,9 @@
 //!
 //! Run: `cargo bench --bench raster`.
 
+// `criterion_group!` defines an undocumented `pub fn benches`.
+#![allow(missing_docs)]
+
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use lncert::tangency::raster::{
     raster_cpu, raster_gpu, BackendUsed, DensePoly2, Grid, RasterError,

@@ -5,6 +5,9 @@
 //!
 //! Run: `cargo bench --bench tangency`.
 
+// `criterion_group!` defines an undocumented `pub fn benches`.
+#![allow(missing_docs)]
+
 use criterion::{criterion_group, criterion_main, Criterion};
 use lncert::scalar::{frac, Rational};
 use lncert::tangency::complete::SolveOptions;

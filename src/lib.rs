@@ -4,6 +4,53 @@
 //! with linear normals (LN curves) as kernels written once and run in three
 //! arithmetics: exact rationals, certified intervals and `f64`. See the
 //! [`scalar`] module for the design and [`ln`] for the propositions.
+//!
+//! # The root API
+//!
+//! The entry points a downstream crate needs are re-exported here, with one
+//! error type, [`Error`] (the field and the reason):
+//!
+//! | task | entry points |
+//! |---|---|
+//! | read curves and shapes | [`parse_curve`], [`ShapeDesc::parse`], [`parse_rational`] |
+//! | certify a Hausdorff distance or a tolerance | [`hausdorff`], [`HausdorffConfig`], [`HausdorffBounds`], [`Certificate`] |
+//! | re-check a certificate | [`verify`] |
+//! | a proven offset | [`offset`], [`OffsetOptions`], [`OffsetResult`], [`union_certificate`] |
+//! | circle tangency (seed 003 §4) | [`TangencySystem`], [`TangencyProblem`], [`solve_complete`] |
+//! | property tests of your own geometry code | `lncert::gen` (feature `proptest`: strategies; `arbitrary`: fuzz inputs) |
+//!
+//! # Using lncert as a library
+//!
+//! The certified arithmetic is [inari](https://docs.rs/inari), which needs the
+//! CPU's AVX/FMA instructions and refuses to compile without them: a crate that
+//! depends on lncert must build with `-C target-cpu=haswell` (or newer), e.g. in
+//! its `.cargo/config.toml`:
+//!
+//! ```toml
+//! [build]
+//! rustflags = ["-C", "target-cpu=haswell"]
+//! ```
+//!
+//! With `default-features = false` the library builds without the command line
+//! (`cli`: clap), the GPU raster (`gpu`: wgpu) and the fuzz generators
+//! (`arbitrary`); add `features = ["proptest"]` for the proptest strategies.
+//!
+//! # Examples
+//! ```
+//! use lncert::{hausdorff, verify, Certificate, HausdorffConfig, ShapeDesc};
+//! # fn main() -> Result<(), lncert::Error> {
+//! let a = ShapeDesc::parse("M 0 0 Q 0.5 0.5 1 0")?;
+//! let b = ShapeDesc::parse("M 0 0 L 1 0")?;
+//! // claim: d_H(a, b) ≤ 0.26 (the true distance is 1/4)
+//! let tol = lncert::parse_rational("0.26")?;
+//! let r = hausdorff(&a, &b, &HausdorffConfig { tol: Some(0.26), ..Default::default() })?;
+//! assert!(r.hi <= 0.26);
+//! let cert = Certificate::new(&a, &b, &tol, &r).expect("proven");
+//! let valid = verify(&cert.to_json_string())?;
+//! assert_eq!(valid.tol, tol);
+//! # Ok(())
+//! # }
+//! ```
 
 pub mod approx;
 #[cfg(feature = "arbitrary")]
@@ -18,3 +65,120 @@ pub mod poly;
 pub mod reproduce;
 pub mod scalar;
 pub mod tangency;
+
+pub use approx::{offset, union_certificate, OffsetMethod, OffsetOptions, OffsetResult};
+pub use certify::verify::{verify, Valid};
+pub use certify::{
+    hausdorff, sampled_estimate, Certificate, Config as HausdorffConfig, HausdorffBounds,
+    ShapeDesc,
+};
+pub use curve::io::parse_curve;
+pub use curve::{Bezier, V2};
+pub use scalar::{parse_rational, Interval, Rational};
+pub use tangency::complete::SolveOptions;
+pub use tangency::solve::{solve_complete, TangencyProblem, TangencyReport};
+pub use tangency::system::TangencySystem;
+
+/// The one error of the root API: which field of the input, and why.
+///
+/// Every error of the engine converts into it (`?` works across the root API);
+/// the module-level error types keep their variants for callers who match on
+/// them.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("invalid `{field}`: {reason}")]
+pub struct Error {
+    /// The field, e.g. `arc.radius`, `bezier[2][1]`, `tol`, `directions[0].boxes[3]`.
+    pub field: String,
+    /// What is wrong with it.
+    pub reason: String,
+}
+
+impl Error {
+    fn new(field: impl Into<String>, reason: impl Into<String>) -> Self {
+        Error {
+            field: field.into(),
+            reason: reason.into(),
+        }
+    }
+}
+
+impl From<certify::CertifyError> for Error {
+    fn from(e: certify::CertifyError) -> Self {
+        match e {
+            certify::CertifyError::Input { field, reason } => Error::new(field, reason),
+        }
+    }
+}
+
+impl From<approx::OffsetError> for Error {
+    fn from(e: approx::OffsetError) -> Self {
+        match e {
+            approx::OffsetError::Input { field, reason } => Error::new(field, reason),
+        }
+    }
+}
+
+impl From<ln::LnError> for Error {
+    fn from(e: ln::LnError) -> Self {
+        let field = match &e {
+            ln::LnError::Collinear { field }
+            | ln::LnError::InvalidParameter { field, .. }
+            | ln::LnError::NotCompatible { field, .. }
+            | ln::LnError::Undecided { field } => *field,
+        };
+        let text = e.to_string();
+        let reason = text
+            .strip_prefix(&format!("{field}: "))
+            .unwrap_or(&text)
+            .to_string();
+        Error::new(field, reason)
+    }
+}
+
+impl From<tangency::system::TangencyError> for Error {
+    fn from(e: tangency::system::TangencyError) -> Self {
+        match e {
+            tangency::system::TangencyError::InvalidParameter { field, reason } => {
+                Error::new(field, reason)
+            }
+        }
+    }
+}
+
+impl From<curve::io::CurveParseError> for Error {
+    fn from(e: curve::io::CurveParseError) -> Self {
+        use curve::io::CurveParseError as C;
+        match e {
+            C::Json { message } => Error::new("(document)", format!("malformed JSON: {message}")),
+            C::Field { field, reason } => Error::new(field, reason),
+            C::Svg { position, reason } => {
+                Error::new(format!("SVG path data, byte {position}"), reason)
+            }
+            C::Empty { what } => Error::new(what, "no curve segments"),
+            C::TooLarge { what, limit } => {
+                Error::new(what, format!("too large: exceeds the limit of {limit}"))
+            }
+        }
+    }
+}
+
+impl From<scalar::ParseNumberError> for Error {
+    fn from(e: scalar::ParseNumberError) -> Self {
+        Error::new(format!("{:?}", e.input), e.reason)
+    }
+}
+
+impl From<certify::verify::Invalid> for Error {
+    fn from(e: certify::verify::Invalid) -> Self {
+        Error::new(e.at, e.reason)
+    }
+}
+
+impl From<json::JsonError> for Error {
+    fn from(e: json::JsonError) -> Self {
+        Error::new(
+            e.path,
+            format!("{} (line {}, column {})", e.reason, e.line, e.column),
+        )
+    }
+}

@@ -428,3 +428,79 @@ fn no_certify_is_labelled_unproven() {
     assert_eq!(bad.status.code(), Some(2));
     assert!(!cert.exists());
 }
+
+/// The approximant written as a curve file and as SVG path data reads back as
+/// exactly the certified curve: the certificate verifies against both (read
+/// by the user-language reader every subcommand uses), and one ulp off does not.
+#[test]
+fn curve_out_and_path_out_read_back_as_the_certified_curve() {
+    let curve = tmp("rt_cubic.json", CUBIC);
+    let dir = std::env::temp_dir().join(format!("lncert-rt-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (cert, json_out, svg_out) = (dir.join("c.json"), dir.join("o.json"), dir.join("o.svg"));
+    let o = lncert(&[
+        "offset",
+        curve.to_str().unwrap(),
+        "--distance",
+        "-0.5",
+        "--tol",
+        "1e-3",
+        "--method",
+        "ln-pair",
+        "--certificate",
+        cert.to_str().unwrap(),
+        "--curve-out",
+        json_out.to_str().unwrap(),
+        "--path-out",
+        svg_out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let path_data = std::fs::read_to_string(&svg_out).unwrap();
+    assert!(path_data.starts_with("M ") && path_data.contains(" C "), "{path_data}");
+    let exact = tmp(
+        "rt_exact.json",
+        &format!(r#"{{"offset": {{"curve": {CUBIC}, "distance": -0.5}}}}"#),
+    );
+    for written in [&json_out, &svg_out] {
+        let v = lncert(&[
+            "verify",
+            cert.to_str().unwrap(),
+            "--against",
+            exact.to_str().unwrap(),
+            written.to_str().unwrap(),
+        ]);
+        assert_eq!(
+            v.status.code(),
+            Some(0),
+            "{}: {}",
+            written.display(),
+            String::from_utf8_lossy(&v.stdout)
+        );
+    }
+    // one control point moved by one ulp in the path data: another curve
+    let first = path_data.split_whitespace().nth(1).unwrap().to_string();
+    let x: f64 = first.parse().unwrap();
+    let moved = path_data.replacen(&first, &format!("{:?}", x.next_up()), 1);
+    let moved_file = tmp("rt_moved.svg", &moved);
+    let v = lncert(&[
+        "verify",
+        cert.to_str().unwrap(),
+        "--against",
+        exact.to_str().unwrap(),
+        moved_file.to_str().unwrap(),
+    ]);
+    assert_eq!(v.status.code(), Some(1));
+    // G2 pieces have no SVG path command: refused before any work
+    let g2 = lncert(&[
+        "offset",
+        curve.to_str().unwrap(),
+        "--distance",
+        "-0.5",
+        "--tol",
+        "1e-3",
+        "--path-out",
+        svg_out.to_str().unwrap(),
+    ]);
+    assert_eq!(g2.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&g2.stderr).contains("--path-out"));
+}

@@ -20,7 +20,9 @@ use serde_json::Value;
 /// which decides the side of the left normal.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TravelledArc {
+    /// The arc, stored counter-clockwise.
     pub arc: ArcDesc,
+    /// True when the arc is travelled clockwise (from `arc.to` to `arc.from`).
     pub clockwise: bool,
 }
 
@@ -32,7 +34,10 @@ pub enum ArcOffset {
     Arc(TravelledArc),
     /// `d` equals the radius on the concave side: the offset collapses to the
     /// centre (every point is a cusp of the offset).
-    Collapsed { center: V2<Rational> },
+    Collapsed {
+        /// The arc's centre: the whole offset is this one point.
+        center: V2<Rational>,
+    },
 }
 
 /// The exact offset at signed distance `d` (`d > 0` to the left of the travel

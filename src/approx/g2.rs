@@ -34,9 +34,13 @@ use crate::scalar::{Scalar, ScalarSqrt, Sign};
 /// at `t = 0, 1`, `alpha0`, `alpha3` the signed curvatures there (eq. (3.8)).
 #[derive(Clone, Debug, PartialEq)]
 pub struct G2Ends<S> {
+    /// Unit normal `N(0) = R T(0)` at the start.
     pub n0: V2<S>,
+    /// Unit normal `N(1) = R T(1)` at the end.
     pub n1: V2<S>,
+    /// `α₀ = κ(0)`: the signed curvature at the start.
     pub alpha0: S,
+    /// `α₃ = κ(1)`: the signed curvature at the end.
     pub alpha3: S,
 }
 

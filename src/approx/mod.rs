@@ -86,6 +86,7 @@ pub struct OffsetOptions {
     pub distance: Rational,
     /// The tolerance to prove: `d_H(offset, approximant) ≤ tol`.
     pub tol: f64,
+    /// Which construction builds the segments (default [`OffsetMethod::G2`]).
     pub method: OffsetMethod,
     /// Subdivision depth limit per input piece (default 24: segments of
     /// parameter length ≥ 2⁻²⁴).
@@ -134,8 +135,14 @@ impl OffsetOptions {
 /// Why an offset could not be computed; names the field.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum OffsetError {
+    /// An input or setting is invalid.
     #[error("invalid `{field}`: {reason}")]
-    Input { field: String, reason: String },
+    Input {
+        /// Name of the offending input or setting (e.g. `tol`, `curve`).
+        field: String,
+        /// Why it was rejected.
+        reason: String,
+    },
 }
 
 fn bad(field: impl Into<String>, reason: impl Into<String>) -> OffsetError {
@@ -209,14 +216,18 @@ pub struct SegmentProof {
 pub struct Corner {
     /// The junction is between piece `after` and the next piece (cyclically for a closed curve).
     pub after: usize,
+    /// What happens there: a join arc to add or an overlap to trim.
     pub kind: Junction,
 }
 
 /// The result of [`offset`].
 #[derive(Clone, Debug, PartialEq)]
 pub struct OffsetResult {
+    /// The construction that built the segments.
     pub method: OffsetMethod,
+    /// Signed offset distance (`> 0` to the left), exact, from the options.
     pub distance: Rational,
+    /// The tolerance to prove, from the options.
     pub tol: f64,
     /// Segments in input order.
     pub segments: Vec<OffsetSegment>,

@@ -289,14 +289,22 @@ pub enum Junction {
     /// `|d|` about the corner, from the end normal of the first piece to the start
     /// normal of the second (directions exact, not normalised).
     Join {
+        /// The corner point (end of the first piece, start of the second).
         center: V2<Rational>,
+        /// Start direction of the arc: the first piece's end normal on the
+        /// offset side (not normalised).
         from: V2<Rational>,
+        /// End direction of the arc: the second piece's start normal on the
+        /// offset side (not normalised).
         to: V2<Rational>,
         /// The arc turns clockwise from `from` to `to`.
         clockwise: bool,
     },
     /// A G⁰ corner on the inner side: the two offsets cross and must be trimmed.
-    Overlap { center: V2<Rational> },
+    Overlap {
+        /// The corner point (end of the first piece, start of the second).
+        center: V2<Rational>,
+    },
 }
 
 /// Classifies the junction between `a` (its end) and `b` (its start) for the

@@ -43,6 +43,7 @@ use serde::Serialize;
 /// Counters of one kernel family.
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct KernelStats {
+    /// Name of the kernel family, as in [`KERNELS`] (e.g. `pair`).
     pub name: &'static str,
     /// Cases run (inputs the kernel accepts in exact arithmetic).
     pub cases: u64,
@@ -75,6 +76,7 @@ pub struct KernelStats {
 }
 
 impl KernelStats {
+    /// Zeroed counters for the kernel family `name`.
     pub fn new(name: &'static str) -> Self {
         KernelStats {
             name,

@@ -13,8 +13,11 @@ use std::ops::{Add, Mul, Neg, Sub};
 /// `(f, f′, f″)` of a function of one parameter.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Jet<S> {
+    /// The value `f`.
     pub v: S,
+    /// The first derivative `f′`.
     pub d: S,
+    /// The second derivative `f″`.
     pub dd: S,
 }
 

@@ -59,6 +59,7 @@ pub enum CertifyError {
 pub struct HausdorffBounds {
     /// `lo ≤ d_H(A, B) ≤ hi`.
     pub lo: f64,
+    /// Certified upper bound on `d_H(A, B)`.
     pub hi: f64,
     /// Bounds on `h(A, B) = sup_{a∈A} dist(a, B)`.
     pub a_to_b: OneSided,

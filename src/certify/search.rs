@@ -90,6 +90,7 @@ pub struct CoverBox {
     pub target: usize,
     /// Foot map `τ(s) = t + k (s − s_c)`, `s_c = (s0 + s1)/2` (computed in f64, exact for dyadics).
     pub t: f64,
+    /// Slope `k` of the foot map `τ(s) = t + k (s − s_c)`.
     pub k: f64,
     /// Certified `sup_{s ∈ [s0, s1]} dist(A(s), B)` upper bound.
     pub bound: f64,
@@ -100,6 +101,7 @@ pub struct CoverBox {
 pub struct OneSided {
     /// `lo ≤ h(A, B) ≤ hi`.
     pub lo: f64,
+    /// Certified upper bound on `h(A, B)`.
     pub hi: f64,
     /// The witness of `lo`: piece and parameter of `A`.
     pub witness: Option<(usize, f64)>,

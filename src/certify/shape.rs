@@ -34,9 +34,13 @@ pub const MAX_COORDINATE: f64 = 1e100;
 /// (both seen from the centre).
 #[derive(Clone, Debug, PartialEq)]
 pub struct ArcDesc {
+    /// Centre of the arc's circle.
     pub center: V2<Rational>,
+    /// Radius (`> 0`).
     pub radius: Rational,
+    /// Direction from the centre to the start point (nonzero, any length).
     pub from: V2<Rational>,
+    /// Direction from the centre to the end point (nonzero, any length).
     pub to: V2<Rational>,
 }
 
@@ -50,15 +54,20 @@ pub enum ShapeDesc {
     /// The exact offset `x + r N` (left unit normal `N`, signed distance `r`) of
     /// each piece of a regular polynomial curve.
     Offset {
+        /// The pieces of the regular polynomial curve that is offset.
         curve: Vec<Bezier<Rational>>,
+        /// Signed offset distance `r ≠ 0` (`> 0` to the left).
         distance: Rational,
     },
     /// The exact convolution of each piece of a regular polynomial curve with the
     /// ellipse `{M u : |u| = 1}`: `x(t) + side · Q n/√(nᵀQn)`, `Q = M Mᵀ`,
     /// `n` the left normal (seed 001's convolution curve).
     Convolution {
+        /// The pieces of the regular polynomial curve that is convolved.
         curve: Vec<Bezier<Rational>>,
+        /// The matrix `M` by rows, `[[m11, m12], [m21, m22]]` (`det M ≠ 0`).
         ellipse: [[Rational; 2]; 2],
+        /// `+1` or `−1`: the ellipse point whose outer normal is `side · n`.
         side: i8,
     },
 }

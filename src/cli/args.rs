@@ -254,7 +254,7 @@ mod tests {
         assert_eq!(show_point(&f.bm), "(1, 1)");
         assert!(frame("--frame", "0,0;1,1;2,2")
             .unwrap_err()
-            .0
+            .to_string()
             .contains("collinear"));
         assert!(frame("--frame", "0,0;1,1").is_err());
         assert!(point("--b0", "1").is_err());

@@ -53,6 +53,14 @@ pub struct OffsetArgs {
     /// Write an SVG: curve, approximant, control polygons, curvature plot.
     #[arg(long)]
     pub svg: Option<PathBuf>,
+    /// Write the approximant as a curve file (`{"beziers": ...}`, every control
+    /// point exact) that `offset`, `hausdorff` and `verify --against` read back.
+    #[arg(long)]
+    pub curve_out: Option<PathBuf>,
+    /// Write the approximant as SVG path data (`M … C …`; pieces of degree ≤ 3
+    /// only: `--method ln-pair`), numbers that read back to the same floats.
+    #[arg(long)]
+    pub path_out: Option<PathBuf>,
     /// Also compute seed 000's error measure (8) per LN-pair segment.
     #[arg(long)]
     pub paper_error: bool,
@@ -102,7 +110,12 @@ fn offset_err(e: OffsetError) -> CliError {
 
 /// Runs the command; returns the exit code.
 pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
-    for (flag, path) in [("--certificate", &a.certificate), ("--svg", &a.svg)] {
+    for (flag, path) in [
+        ("--certificate", &a.certificate),
+        ("--svg", &a.svg),
+        ("--curve-out", &a.curve_out),
+        ("--path-out", &a.path_out),
+    ] {
         if let Some(p) = path {
             super::args::output_file(flag, p)?;
         }
@@ -116,6 +129,12 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             format!("unknown method {:?}; expected g2 or ln-pair", a.method),
         )
     })?;
+    if a.path_out.is_some() && method == OffsetMethod::G2 {
+        return Err(bad(
+            "--path-out",
+            "G2 segments have degree n + 3 ≥ 4, which SVG path data cannot store: use --method ln-pair (cubic), or --curve-out",
+        ));
+    }
     let text = read_text(&a.curve)?;
     if let Some(arcs) = parse_arc_input(&text) {
         let arcs = arcs.map_err(offset_err)?;
@@ -167,6 +186,17 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     if let Some(path) = &a.svg {
         let svg = super::offset_svg::render(&curve, &res);
         std::fs::write(path, svg).map_err(|e| bad("--svg", format!("{}: {e}", path.display())))?;
+    }
+    if let Some(path) = &a.curve_out {
+        let shape = res.approximant_shape().map_err(offset_err)?;
+        let text = format!("{}\n", shape.to_json());
+        std::fs::write(path, text)
+            .map_err(|e| bad("--curve-out", format!("{}: {e}", path.display())))?;
+    }
+    if let Some(path) = &a.path_out {
+        let text = svg_path_data(&res.segments)?;
+        std::fs::write(path, text)
+            .map_err(|e| bad("--path-out", format!("{}: {e}", path.display())))?;
     }
     // unproven: every segment within tol by its sampled estimate (res.reached())
     let within = res.reached() && (hi <= tol || !proven);
@@ -374,6 +404,9 @@ fn run_arcs(
     if a.svg.is_some() {
         eprintln!("note: --svg: no picture for an exact arc offset");
     }
+    if a.curve_out.is_some() || a.path_out.is_some() {
+        eprintln!("note: --curve-out/--path-out: the offset of an arc is an exact arc (printed above); no curve file is written");
+    }
     if a.certificate.is_some() {
         eprintln!("note: --certificate: the offset of an arc is computed exactly; no certificate is needed or written");
     }
@@ -398,4 +431,71 @@ fn run_arcs(
         print_out(&s);
     }
     Ok(0)
+}
+
+/// The segments as SVG path data: `M` at the start of each run of segments
+/// that meet exactly, then `L`/`Q`/`C` by degree. Every number is the *exact*
+/// decimal value of its float (a dyadic rational has a finite decimal
+/// expansion): lncert reads it back as the same rational, and any float reader
+/// rounds it to the same float — the path data is the certified curve.
+pub fn svg_path_data(segments: &[lncert::approx::OffsetSegment]) -> Result<String, CliError> {
+    let mut out = String::new();
+    let mut last: Option<(f64, f64)> = None;
+    for (i, s) in segments.iter().enumerate() {
+        let pts = s.bezier.points();
+        let cmd = match pts.len() {
+            2 => "L",
+            3 => "Q",
+            4 => "C",
+            n => {
+                return Err(bad(
+                    "--path-out",
+                    format!(
+                        "segment {i} has degree {}: SVG path data stores degree ≤ 3 (use --method ln-pair)",
+                        n - 1
+                    ),
+                ))
+            }
+        };
+        let p0 = (pts[0].x, pts[0].y);
+        if last != Some(p0) {
+            if !out.is_empty() {
+                out.push('\n');
+            }
+            out += &format!("M {} {}", exact_decimal(p0.0), exact_decimal(p0.1));
+        }
+        out += &format!(" {cmd}");
+        for p in &pts[1..] {
+            out += &format!(" {} {}", exact_decimal(p.x), exact_decimal(p.y));
+        }
+        last = pts.last().map(|p| (p.x, p.y));
+    }
+    out.push('\n');
+    Ok(out)
+}
+
+/// The exact decimal expansion of a finite float: `m 2^e` with `e < 0` is
+/// `m 5^-e / 10^-e`.
+pub fn exact_decimal(x: f64) -> String {
+    use num_bigint::BigInt;
+    let Some(r) = lncert::scalar::rational_from_f64(x) else {
+        return "NaN".to_string();
+    };
+    let (n, d) = (r.numer().clone(), r.denom().clone());
+    // d = 2^k
+    let k = d.bits() - 1;
+    if k == 0 {
+        return n.to_string();
+    }
+    let digits = (n.magnitude() * num_traits::pow(BigInt::from(5).magnitude().clone(), k as usize))
+        .to_string();
+    let k = k as usize;
+    let (int, frac) = if digits.len() > k {
+        (digits[..digits.len() - k].to_string(), digits[digits.len() - k..].to_string())
+    } else {
+        ("0".to_string(), format!("{}{}", "0".repeat(k - digits.len()), digits))
+    };
+    let frac = frac.trim_end_matches('0');
+    let sign = if x < 0.0 { "-" } else { "" };
+    format!("{sign}{int}.{frac}")
 }

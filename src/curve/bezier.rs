@@ -38,9 +38,11 @@ impl<S: Scalar> Bezier<S> {
             pts: c.pts.iter().map(V2::from_rational).collect(),
         }
     }
+    /// The control points, in order (at least one).
     pub fn points(&self) -> &[V2<S>] {
         &self.pts
     }
+    /// The degree: the number of control points minus one.
     pub fn degree(&self) -> usize {
         self.pts.len() - 1
     }

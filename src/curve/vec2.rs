@@ -14,14 +14,18 @@ use crate::scalar::{Rational, Scalar};
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct V2<S> {
+    /// The first coordinate.
     pub x: S,
+    /// The second coordinate.
     pub y: S,
 }
 
 impl<S: Scalar> V2<S> {
+    /// The vector `(x, y)`.
     pub fn new(x: S, y: S) -> Self {
         V2 { x, y }
     }
+    /// The zero vector `(0, 0)`.
     pub fn zero() -> Self {
         V2 {
             x: S::zero(),
@@ -35,18 +39,21 @@ impl<S: Scalar> V2<S> {
             y: S::from_rational(&p.y),
         }
     }
+    /// `self + o`.
     pub fn add(&self, o: &Self) -> Self {
         V2 {
             x: self.x.clone() + o.x.clone(),
             y: self.y.clone() + o.y.clone(),
         }
     }
+    /// `self - o`.
     pub fn sub(&self, o: &Self) -> Self {
         V2 {
             x: self.x.clone() - o.x.clone(),
             y: self.y.clone() - o.y.clone(),
         }
     }
+    /// `-self`.
     pub fn neg(&self) -> Self {
         V2 {
             x: -self.x.clone(),
@@ -64,6 +71,7 @@ impl<S: Scalar> V2<S> {
     pub fn lerp(&self, o: &Self, t: &S) -> Self {
         self.add(&o.sub(self).scale(t))
     }
+    /// `self.x * o.x + self.y * o.y`.
     pub fn dot(&self, o: &Self) -> S {
         self.x.clone() * o.x.clone() + self.y.clone() * o.y.clone()
     }

@@ -115,8 +115,11 @@ fn point(u: &mut Unstructured) -> Result<[f64; 2]> {
 /// Three points `b0, bm, b3` of a seed-000 LN frame; sometimes nearly or exactly collinear.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FrameCase {
+    /// Start point `b0`.
     pub b0: [f64; 2],
+    /// `bm`, where the end tangents meet.
     pub bm: [f64; 2],
+    /// End point `b3`.
     pub b3: [f64; 2],
 }
 
@@ -140,7 +143,9 @@ impl<'a> Arbitrary<'a> for FrameCase {
 /// A frame and a cusp parameter `τ` (seed 000 eq. (1), Prop 3.1), planted near 0, 1, 1/3, 2/3.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TauCase {
+    /// The LN frame `b0, bm, b3`.
     pub frame: FrameCase,
+    /// The cusp parameter `τ` that gives `δ0, δ1` by eq. (1).
     pub tau: f64,
 }
 
@@ -161,8 +166,11 @@ impl<'a> Arbitrary<'a> for TauCase {
 /// δ of the convolution on 0 or 1.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PairCase {
+    /// Start ratio `c0`: `∇b0ʳ = c0 ∇b0ˡ` (nonzero).
     pub c0: f64,
+    /// End ratio `c1`: `∇b1ʳ = c1 ∇b1ˡ` (same sign as `c0`).
     pub c1: f64,
+    /// `ρl = κ/λl`, the choice of κ for the left curve.
     pub rho: f64,
 }
 
@@ -195,11 +203,17 @@ impl<'a> Arbitrary<'a> for PairCase {
 /// 4/3, 2, 4}` and `a2` near `0` and `α2`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct HermiteCase {
+    /// First coordinate of the end point `[x1, y1]`.
     pub x1: f64,
+    /// Second coordinate of the end point `[x1, y1]`.
     pub y1: f64,
+    /// End of the parameter interval `[0, u]`, where the normal is `(u, 1)` (`> 0`).
     pub u: f64,
+    /// The `t²` coefficient `a2` that picks a quartic interpolant (eq. (3)).
     pub a2: f64,
+    /// Slope `m ∈ (0, u)` of the tangent line `m x + y + b = 0` (Prop 3.3).
     pub m: f64,
+    /// Intercept `b` of the tangent line `m x + y + b = 0` (Prop 3.3).
     pub b: f64,
 }
 
@@ -248,8 +262,11 @@ impl<'a> Arbitrary<'a> for HermiteCase {
 /// `κ ∈ [1/2, 2]` (seed 000 Prop 6.1), `κ` planted near `1 ± sin α`, `1/(1 ± sin α)` and 1.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ArcCase {
+    /// `cos α` of the half-angle `α`.
     pub cos_a: f64,
+    /// `sin α` of the half-angle `α`.
     pub sin_a: f64,
+    /// The parameter `κ ∈ [1/2, 2]` of the LN approximation.
     pub kappa: f64,
 }
 
@@ -287,6 +304,7 @@ impl<'a> Arbitrary<'a> for ArcCase {
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct BezierCase {
+    /// The control points `[x, y]`, in order (2 to 10).
     pub points: Vec<[f64; 2]>,
 }
 

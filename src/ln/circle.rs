@@ -29,8 +29,11 @@ use crate::scalar::{sign_a_plus_b_sqrt_c, Scalar, ScalarSqrt, Sign};
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct ArcApprox<S> {
+    /// `cos α` of the half-angle `α` (`> 0`).
     pub cos_a: S,
+    /// `sin α` of the half-angle `α` (`> 0`).
     pub sin_a: S,
+    /// The parameter `κ > 0` of the normal map `n(t) = N0 (1-t) + κ N1 t`.
     pub kappa: S,
 }
 

@@ -28,8 +28,11 @@ use crate::scalar::{frac, Scalar, ScalarSqrt, Sign};
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct LnFrame<S> {
+    /// Start point `b0` (the first control point).
     pub b0: V2<S>,
+    /// `bm`, where the end tangents meet.
     pub bm: V2<S>,
+    /// End point `b3` (the last control point).
     pub b3: V2<S>,
 }
 
@@ -37,7 +40,9 @@ pub struct LnFrame<S> {
 /// quadratic curve written as a cubic).
 #[derive(Clone, Debug, PartialEq)]
 pub enum Tau<S> {
+    /// A finite cusp parameter `τ`.
     Finite(S),
+    /// `τ = ∞`: no cusp, `δ0 = δ1 = 2/3`.
     Infinite,
 }
 

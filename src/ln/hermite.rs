@@ -41,8 +41,11 @@ pub fn normal_form<S: Scalar>(f: &Poly<S>) -> (Poly<S>, Poly<S>) {
 /// Hermite data `[x1, y1]`, end normal `(u, 1)`; `x1 ≠ 0`, `u > 0`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct HermiteData<S> {
+    /// First coordinate of the end point `[x1, y1]` (`≠ 0`).
     pub x1: S,
+    /// Second coordinate of the end point `[x1, y1]`.
     pub y1: S,
+    /// End of the parameter interval `[0, u]`, where the normal is `(u, 1)` (`> 0`).
     pub u: S,
 }
 

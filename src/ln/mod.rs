@@ -25,22 +25,32 @@ use crate::scalar::Sign;
 pub enum LnError {
     /// The three points of an LN frame are collinear (or two coincide).
     #[error("{field}: points b0, bm, b3 are collinear or coincide (cross product is 0)")]
-    Collinear { field: &'static str },
+    Collinear {
+        /// The points named, e.g. `b0,bm,b3`.
+        field: &'static str,
+    },
     /// A parameter is outside the domain of a formula.
     #[error("{field}: {reason}")]
     InvalidParameter {
+        /// The parameter that is out of the domain.
         field: &'static str,
+        /// Why it is out of the domain.
         reason: &'static str,
     },
     /// Two frames are not compatible (their end normals differ).
     #[error("{field}: curves are not compatible: {reason}")]
     NotCompatible {
+        /// The input that breaks compatibility.
         field: &'static str,
+        /// Which condition fails.
         reason: &'static str,
     },
     /// Interval arithmetic cannot decide a sign the result depends on.
     #[error("{field}: undecided in interval arithmetic (enclosure straddles a boundary)")]
-    Undecided { field: &'static str },
+    Undecided {
+        /// The quantity whose sign could not be decided.
+        field: &'static str,
+    },
 }
 
 /// Fails with `InvalidParameter` if the sign is zero, `Undecided` if unknown.
@@ -84,7 +94,9 @@ pub(crate) fn checked_div<S: crate::scalar::Scalar>(
 /// An open interval `(lo, hi)` of a parameter; empty when `lo >= hi`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct OpenRange<S> {
+    /// Lower end (excluded).
     pub lo: S,
+    /// Upper end (excluded).
     pub hi: S,
 }
 

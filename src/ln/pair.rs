@@ -35,7 +35,9 @@ use crate::scalar::{frac, Scalar, ScalarSqrt, Sign};
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct CompatiblePair<S> {
+    /// The left frame (`b0ˡ, bmˡ, b3ˡ`).
     pub left: LnFrame<S>,
+    /// The right frame (`b0ʳ, bmʳ, b3ʳ`), compatible with the left one.
     pub right: LnFrame<S>,
     /// `∇b0ʳ = c0 ∇b0ˡ`.
     pub c0: S,
@@ -61,18 +63,24 @@ pub struct LnPair<S> {
     pub rho_left: S,
     /// `ρr = κ/λr = ρl/q`.
     pub rho_right: S,
+    /// `(δ0ˡ, δ1ˡ)` of the left cubic, from `ρl` by eq. (5).
     pub deltas_left: (S, S),
+    /// `(δ0ʳ, δ1ʳ)` of the right cubic, from `ρr` by eq. (5).
     pub deltas_right: (S, S),
+    /// The left LN cubic `bl`.
     pub left: Bezier<S>,
+    /// The right LN cubic `br`.
     pub right: Bezier<S>,
 }
 
 /// The convolution `bl + br` of an [`LnPair`]: again an LN cubic (Prop 4.4).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Convolution<S> {
+    /// Its frame `(b0ˡ+b0ʳ, bmˡ+bmʳ, b3ˡ+b3ʳ)`.
     pub frame: LnFrame<S>,
     /// `δ0 = (δ0ˡ + c0 δ0ʳ) / (1 + c0)`, `δ1 = (δ1ˡ + c1 δ1ʳ) / (1 + c1)`.
     pub deltas: (S, S),
+    /// The cubic `bl + br` (control points summed).
     pub curve: Bezier<S>,
 }
 
@@ -321,8 +329,11 @@ pub fn convolution_deltas<S: Scalar>(
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct PairDecision {
+    /// Start ratio: `∇b0ʳ = c0 ∇b0ˡ`.
     pub c0: crate::scalar::Rational,
+    /// End ratio: `∇b1ʳ = c1 ∇b1ˡ`.
     pub c1: crate::scalar::Rational,
+    /// The chosen `ρl = κ/λl`.
     pub rho_left: crate::scalar::Rational,
 }
 

@@ -206,9 +206,13 @@ fn sign_changes(seq: &[Poly<Rational>], x: &Rational) -> usize {
 /// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Span {
+    /// Lower end.
     pub lo: Rational,
+    /// Upper end.
     pub hi: Rational,
+    /// True when `lo` belongs to the span (`lo <= x`), false when open (`lo < x`).
     pub lo_closed: bool,
+    /// True when `hi` belongs to the span (`x <= hi`), false when open (`x < hi`).
     pub hi_closed: bool,
 }
 
@@ -428,7 +432,9 @@ pub fn has_common_root_in(p: &Poly<Rational>, q: &Poly<Rational>, span: &Span) -
 /// ```
 #[derive(Clone, Debug)]
 pub struct RealRoot {
+    /// Lower end of the isolating interval.
     pub lo: Rational,
+    /// Upper end of the isolating interval.
     pub hi: Rational,
 }
 

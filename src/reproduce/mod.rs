@@ -24,9 +24,14 @@ use serde::Serialize;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Verdict {
+    /// The printed value or statement is proven (exactly, or as an interval
+    /// containing the printed digits).
     Certified,
+    /// A printed statement is proven false (no single corrected value).
     Refuted,
+    /// The printed value is proven wrong; the claim's `detail` gives the corrected value.
     Erratum,
+    /// The engine could not decide (never guessed).
     Undecided,
 }
 
@@ -51,6 +56,7 @@ pub struct Claim {
     pub source: String,
     /// What the paper states.
     pub statement: String,
+    /// Whether the statement was proven, refuted or corrected, or left undecided.
     pub verdict: Verdict,
     /// The engine's figures, and the correction for an erratum.
     pub detail: String,
@@ -87,8 +93,14 @@ pub(crate) fn json_rational(v: &serde_json::Value) -> Result<crate::scalar::Rati
 
 /// Built-in data (copies of `../shared/data` plus values transcribed from the seed texts).
 pub mod data {
+    /// Seed 000 §4, Fig. 5: the two worked pair examples, as printed
+    /// (`data/seed000_fig5_examples.json`).
     pub const FIG5: &str = include_str!("../../data/seed000_fig5_examples.json");
+    /// Seed 003 §6: the two normal-form cubics with a common Gauss map, as
+    /// printed (`data/seed003_sec6_example.json`).
     pub const SEC6: &str = include_str!("../../data/seed003_sec6_example.json");
+    /// Printed values transcribed from the seed texts that the other files lack
+    /// (`data/printed_text_values.json`).
     pub const TEXT: &str = include_str!("../../data/printed_text_values.json");
 }
 

@@ -15,7 +15,9 @@ use crate::scalar::{parse_rational, Scalar, ScalarSqrt, Surd};
 /// A printed expression's value: a polynomial in `t` or a vector of two.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Val {
+    /// A scalar: one polynomial in `t`.
     Scalar(Poly<Surd>),
+    /// A vector `<a, b>`: its two coordinates as polynomials in `t`.
     Vector(Poly<Surd>, Poly<Surd>),
 }
 

@@ -45,9 +45,13 @@ use std::ops::{Add, Mul, Neg, Sub};
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Sign {
+    /// Strictly negative.
     Negative,
+    /// Exactly zero.
     Zero,
+    /// Strictly positive.
     Positive,
+    /// Not decided by the arithmetic (e.g. an enclosure that contains 0).
     Unknown,
 }
 
@@ -116,9 +120,11 @@ pub trait Scalar:
     fn from_frac(p: i64, q: i64) -> Self {
         Self::from_rational(&Rational::new(p.into(), q.into()))
     }
+    /// The additive identity `0`.
     fn zero() -> Self {
         Self::from_i64(0)
     }
+    /// The multiplicative identity `1`.
     fn one() -> Self {
         Self::from_i64(1)
     }

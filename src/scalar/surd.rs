@@ -28,7 +28,14 @@ use std::ops::{Add, Mul, Neg, Sub};
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Surd {
     /// `a + b√d`.
-    Num { a: Rational, b: Rational, d: BigInt },
+    Num {
+        /// The rational part `a`.
+        a: Rational,
+        /// The coefficient `b` of `√d`.
+        b: Rational,
+        /// The radicand `d`: square-free and `> 1`, or `1` for a rational (`b = 0`).
+        d: BigInt,
+    },
     /// The result of mixing two different quadratic fields: not representable.
     Mixed,
 }

@@ -99,7 +99,10 @@ pub struct CertifiedRoot {
 pub enum UndecidedReason {
     /// Too small to bisect further; `near_double_root` when `det J` encloses 0
     /// there (a tangential / multiple zero is likely).
-    MinWidth { near_double_root: bool },
+    MinWidth {
+        /// True when `det J` encloses 0 on the box (a tangential / multiple zero is likely).
+        near_double_root: bool,
+    },
     /// The box budget ran out before the box was processed.
     Budget,
     /// A proven zero whose enclosure straddles the domain boundary.

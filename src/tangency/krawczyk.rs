@@ -176,11 +176,19 @@ pub enum KStep {
 pub enum KOutcome {
     /// Exactly one zero in `region`; every zero of the input box lies in
     /// `region`; `tight ⊆ region` is a contracted enclosure of that zero.
-    Unique { region: IBox, tight: IBox },
+    Unique {
+        /// A box holding exactly one zero, and every zero of the input box.
+        region: IBox,
+        /// Contracted enclosure of that zero (`tight ⊆ region`).
+        tight: IBox,
+    },
     /// No zero in the input box.
     NoRoot,
     /// Undecided; every zero of the input box lies in `last`.
-    Undecided { last: IBox },
+    Undecided {
+        /// The last contracted box: it holds every zero of the input box.
+        last: IBox,
+    },
 }
 
 /// A 2×2 polynomial system with enclosed coefficients.

@@ -266,28 +266,59 @@ impl<S: Scalar> Poly2<S> {
 pub enum Poly2ParseError {
     /// The text is longer than [`MAX_INPUT`] bytes.
     #[error("expression: longer than {max} bytes")]
-    TooLong { max: usize },
+    TooLong {
+        /// The limit, [`MAX_INPUT`].
+        max: usize,
+    },
     /// A character that is not part of the grammar.
     #[error("expression: unexpected {found:?} at byte {pos}")]
-    Unexpected { pos: usize, found: String },
+    Unexpected {
+        /// Byte offset of the character.
+        pos: usize,
+        /// The character found there.
+        found: String,
+    },
     /// The text ended where an operand was expected.
     #[error("expression: unexpected end of input")]
     UnexpectedEnd,
     /// A number literal that [`parse_rational`] rejects.
     #[error("expression: bad number at byte {pos}: {reason}")]
-    BadNumber { pos: usize, reason: String },
+    BadNumber {
+        /// Byte offset where the literal starts.
+        pos: usize,
+        /// Why [`parse_rational`] rejected it.
+        reason: String,
+    },
     /// An exponent that is not a small non-negative integer.
     #[error("expression: exponent at byte {pos} must be an integer 0..={max}")]
-    BadExponent { pos: usize, max: usize },
+    BadExponent {
+        /// Byte offset where the exponent starts.
+        pos: usize,
+        /// The largest accepted exponent, [`MAX_DEGREE`].
+        max: usize,
+    },
     /// Division by a non-constant or zero expression.
     #[error("expression: division at byte {pos} by {reason}")]
-    BadDivision { pos: usize, reason: &'static str },
+    BadDivision {
+        /// Byte offset of the `/`.
+        pos: usize,
+        /// What the divisor is: `"zero"` or `"a non-constant expression"`.
+        reason: &'static str,
+    },
     /// The degree in `x` or `y` exceeds [`MAX_DEGREE`].
     #[error("expression: degree in {var} exceeds {max}")]
-    DegreeTooHigh { var: &'static str, max: usize },
+    DegreeTooHigh {
+        /// The variable, `"x"` or `"y"`.
+        var: &'static str,
+        /// The limit, [`MAX_DEGREE`].
+        max: usize,
+    },
     /// Parentheses nested deeper than [`MAX_NESTING`].
     #[error("expression: nested deeper than {max}")]
-    TooDeep { max: usize },
+    TooDeep {
+        /// The limit, [`MAX_NESTING`].
+        max: usize,
+    },
 }
 
 /// Longest accepted expression.

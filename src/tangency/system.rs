@@ -30,7 +30,12 @@ use num_traits::Zero;
 pub enum TangencyError {
     /// A parameter is outside the domain of the problem.
     #[error("{field}: {reason}")]
-    InvalidParameter { field: &'static str, reason: String },
+    InvalidParameter {
+        /// The parameter that is out of the domain.
+        field: &'static str,
+        /// Why it is out of the domain.
+        reason: String,
+    },
 }
 
 impl TangencyError {

@@ -233,12 +233,12 @@ mod tests {
         assert_eq!(resolve("000:3.1").unwrap().0, "000:3.1");
         assert_eq!(resolve("003:6.1").unwrap().0, "003:6.1");
         assert_eq!(resolve("4.4").unwrap().0, "000:4.4");
-        let e = resolve("3.1").unwrap_err().0;
+        let e = resolve("3.1").unwrap_err().to_string();
         assert!(
             e.contains("ambiguous") && e.contains("000:3.1") && e.contains("003:3.1"),
             "{e}"
         );
-        assert!(resolve("9.9").unwrap_err().0.contains("unknown"));
+        assert!(resolve("9.9").unwrap_err().to_string().contains("unknown"));
         assert!(resolve("000:2.1").is_err());
     }
 }

@@ -76,10 +76,20 @@ pub const MAX_RESOLUTION: u32 = 16384;
 pub enum RasterError {
     /// A [`Grid`] field is out of range (`n`, a bound, or the bounds' order).
     #[error("grid.{field}: {reason}")]
-    InvalidGrid { field: &'static str, reason: String },
+    InvalidGrid {
+        /// The offending field (shown as `grid.{field}`): `n` or a bound.
+        field: &'static str,
+        /// Why it is out of range.
+        reason: String,
+    },
     /// A [`DensePoly2`] field is invalid (degree, coefficient count, non-finite coefficient).
     #[error("{field}: {reason}")]
-    InvalidPoly { field: &'static str, reason: String },
+    InvalidPoly {
+        /// The offending field, e.g. `p.deg_x` or `q.coeffs`.
+        field: &'static str,
+        /// Why it is invalid.
+        reason: String,
+    },
     /// No usable GPU adapter (or the crate was built without the `gpu` feature).
     #[error("no GPU adapter: {0}")]
     NoAdapter(String),
@@ -303,7 +313,12 @@ pub enum BackendUsed {
     Cpu,
     /// [`raster_gpu`] on the named adapter; `software` is true for a CPU-emulated driver
     /// (llvmpipe / lavapipe / SwiftShader, or an adapter of type `Cpu`).
-    Gpu { adapter: String, software: bool },
+    Gpu {
+        /// Name of the adapter, as the driver reports it.
+        adapter: String,
+        /// True for a CPU-emulated driver.
+        software: bool,
+    },
 }
 
 /// Candidate cells of a raster and how they were computed.
