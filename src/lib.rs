@@ -60,6 +60,8 @@ pub mod curve;
 #[cfg(feature = "arbitrary")]
 pub mod gen;
 pub mod json;
+#[cfg(feature = "kurbo")]
+pub mod kurbo_bridge;
 pub mod ln;
 pub mod poly;
 pub mod reproduce;
