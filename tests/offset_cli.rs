@@ -504,3 +504,74 @@ fn curve_out_and_path_out_read_back_as_the_certified_curve() {
     assert_eq!(g2.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&g2.stderr).contains("--path-out"));
 }
+
+/// A system font for the glyph tests: CI installs DejaVu (fonts-dejavu-core)
+/// and sets `LNCERT_REQUIRE_FONT=1`; elsewhere the tests skip without it.
+fn dejavu() -> Option<PathBuf> {
+    let p = PathBuf::from("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf");
+    if p.exists() {
+        return Some(p);
+    }
+    assert!(
+        std::env::var("LNCERT_REQUIRE_FONT").is_err(),
+        "LNCERT_REQUIRE_FONT is set but {} is missing",
+        p.display()
+    );
+    eprintln!("skipped: no DejaVu font at {}", p.display());
+    None
+}
+
+/// `--glyph`: a TrueType glyph's closed contours, exactly as stored
+/// (quadratics, font units), offset with a proven tolerance and a certificate
+/// that verifies; bad glyphs and non-fonts are bad input.
+#[test]
+fn glyph_outlines_are_offset_and_certified() {
+    let Some(font) = dejavu() else { return };
+    let data = std::fs::read(&font).unwrap();
+    let o = lncert::curve::font::glyph_outline(&data, 'o').unwrap();
+    assert!(o.iter().all(|b| b.points().len() <= 3), "TrueType: lines and quadratics");
+    // two closed contours: consecutive pieces meet, and each contour returns to its start
+    let ends = |b: &lncert::Bezier<lncert::Rational>| (b.points()[0].clone(), b.points().last().unwrap().clone());
+    let mut contours = 0;
+    let mut start = ends(&o[0]).0;
+    for (i, b) in o.iter().enumerate() {
+        let (_, e) = ends(b);
+        let next_start = o.get(i + 1).map(|n| ends(n).0);
+        if e == start {
+            contours += 1;
+            if let Some(n) = next_start {
+                start = n;
+            }
+        } else {
+            assert_eq!(Some(e), next_start, "piece {i} does not meet the next");
+        }
+    }
+    assert_eq!(contours, 2, "the outer and inner contours of 'o'");
+    let cert = std::env::temp_dir().join(format!("lncert-glyph-{}.json", std::process::id()));
+    let run = lncert(&[
+        "offset",
+        font.to_str().unwrap(),
+        "--glyph",
+        "o",
+        "--distance",
+        "20",
+        "--tol",
+        "0.5",
+        "--certificate",
+        cert.to_str().unwrap(),
+        "--json",
+    ]);
+    assert_eq!(run.status.code(), Some(0), "{}", String::from_utf8_lossy(&run.stderr));
+    let doc = json_of(&run);
+    assert_eq!(doc["verdict"], "certified");
+    let v = lncert(&["verify", cert.to_str().unwrap()]);
+    assert_eq!(v.status.code(), Some(0));
+    // no such glyph; not a font
+    let none = lncert(&["offset", font.to_str().unwrap(), "--glyph", "\u{10FFFD}", "--distance", "20", "--tol", "0.5"]);
+    assert_eq!(none.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&none.stderr).contains("--glyph"));
+    let text = tmp("not_a_font.json", CUBIC);
+    let nf = lncert(&["offset", text.to_str().unwrap(), "--glyph", "o", "--distance", "20", "--tol", "0.5"]);
+    assert_eq!(nf.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&nf.stderr).contains("font"));
+}

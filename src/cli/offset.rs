@@ -36,8 +36,13 @@ pub const GLOBAL_REL: f64 = 1e-2;
 /// Arguments of `lncert offset`.
 #[derive(clap::Args, Debug)]
 pub struct OffsetArgs {
-    /// The curve file (JSON curve/B-spline/arc/circle or SVG path data).
+    /// The curve file (JSON curve/B-spline/arc/circle or SVG path data), or
+    /// with `--glyph` a TrueType/OpenType font.
     pub curve: PathBuf,
+    /// Offset the outline of this character's glyph in the font CURVE (font
+    /// units; every contour, exactly as stored: quadratics or cubics).
+    #[arg(long)]
+    pub glyph: Option<char>,
     /// Signed offset distance, > 0 to the left of the direction of travel (read exactly).
     #[arg(long, allow_hyphen_values = true)]
     pub distance: String,
@@ -87,6 +92,9 @@ pub struct OffsetArgs {
     pub json: bool,
 }
 
+/// Largest font file read by `--glyph`.
+const MAX_FONT_BYTES: u64 = 64 << 20;
+
 fn read_text(path: &PathBuf) -> Result<String, CliError> {
     let meta =
         std::fs::metadata(path).map_err(|e| bad("CURVE", format!("{}: {e}", path.display())))?;
@@ -135,12 +143,26 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             "G2 segments have degree n + 3 ≥ 4, which SVG path data cannot store: use --method ln-pair (cubic), or --curve-out",
         ));
     }
-    let text = read_text(&a.curve)?;
-    if let Some(arcs) = parse_arc_input(&text) {
-        let arcs = arcs.map_err(offset_err)?;
-        return run_arcs(a, &arcs, &distance, tol);
-    }
-    let curve = parse_curve(&text).map_err(|e| bad("CURVE", e))?;
+    let curve = match a.glyph {
+        Some(ch) => {
+            let meta = std::fs::metadata(&a.curve)
+                .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
+            if meta.len() > MAX_FONT_BYTES {
+                return Err(bad("CURVE", format!("{}: font file too large", a.curve.display())));
+            }
+            let data = std::fs::read(&a.curve)
+                .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
+            lncert::curve::font::glyph_outline(&data, ch).map_err(|e| bad("--glyph", e))?
+        }
+        None => {
+            let text = read_text(&a.curve)?;
+            if let Some(arcs) = parse_arc_input(&text) {
+                let arcs = arcs.map_err(offset_err)?;
+                return run_arcs(a, &arcs, &distance, tol);
+            }
+            parse_curve(&text).map_err(|e| bad("CURVE", e))?
+        }
+    };
     let mut opts = OffsetOptions::new(distance, tol);
     opts.method = method;
     opts.max_depth = a.max_depth;

@@ -3,6 +3,8 @@
 
 mod bezier;
 mod bspline;
+#[cfg(feature = "font")]
+pub mod font;
 mod vec2;
 
 pub use bezier::{bernstein_product, Bezier};
