@@ -46,9 +46,16 @@ fn dir() -> PathBuf {
     d
 }
 
+/// Writes an input file. The tests run in parallel and share these names, so
+/// the file is written beside and renamed into place: a reader never sees it
+/// half written.
 fn file(name: &str, text: &str) -> String {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    static N: AtomicUsize = AtomicUsize::new(0);
     let p = dir().join(name);
-    std::fs::write(&p, text).unwrap();
+    let part = dir().join(format!("{name}.{}.part", N.fetch_add(1, Ordering::Relaxed)));
+    std::fs::write(&part, text).unwrap();
+    std::fs::rename(&part, &p).unwrap();
     p.to_str().unwrap().to_string()
 }
 
