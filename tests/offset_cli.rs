@@ -575,3 +575,30 @@ fn glyph_outlines_are_offset_and_certified() {
     assert_eq!(nf.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&nf.stderr).contains("font"));
 }
+
+/// A whole SVG document is a curve input: its paths, under their transforms.
+#[test]
+fn offset_reads_an_svg_document() {
+    let doc = tmp(
+        "doc.svg",
+        r#"<?xml version="1.0"?>
+<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 10 10">
+  <defs><path d="M 100 100 L 200 200"/></defs>
+  <g transform="translate(1 1) scale(0.5)"><path d="M -1.9 1.4 C -0.6 1 0.6 -5 1.8 -0.4"/></g>
+</svg>"#,
+    );
+    let o = lncert(&["offset", doc.to_str().unwrap(), "--distance", "0.2", "--tol", "1e-3", "--json"]);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let d = json_of(&o);
+    // the transformed start point: (−1.9, 1.4)/2 + (1, 1)
+    // the offset starts at distance 0.2 from the transformed start point
+    let p0 = &d["pieces"][0]["control_points"][0];
+    let (x, y) = (p0[0].as_f64().unwrap(), p0[1].as_f64().unwrap());
+    let start = (1.0 - 0.95, 1.0 + 0.7);
+    let r = (x - start.0).hypot(y - start.1);
+    assert!((r - 0.2).abs() < 1e-9, "{r}: {d}");
+    let bad = tmp("doc_bad.svg", r#"<svg><ellipse rx="1" ry="2"/></svg>"#);
+    let e = lncert(&["offset", bad.to_str().unwrap(), "--distance", "0.2", "--tol", "1e-3"]);
+    assert_eq!(e.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&e.stderr).contains("svg/ellipse[0]"));
+}

@@ -142,6 +142,12 @@ impl ShapeDesc {
     /// ```
     pub fn parse(text: &str) -> Result<ShapeDesc, CertifyError> {
         let trimmed = text.trim();
+        if trimmed.starts_with('<') {
+            return ShapeDesc::curve(
+                crate::curve::svgdoc::parse_svg_document(trimmed)
+                    .map_err(|e| err("svg", e.to_string()))?,
+            );
+        }
         if !trimmed.starts_with('{') {
             return ShapeDesc::curve(
                 parse_svg_path(trimmed).map_err(|e| err("path", e.to_string()))?,

@@ -908,8 +908,27 @@ pub fn parse_svg_path(d: &str) -> Result<Vec<Bezier<Rational>>, CurveParseError>
     SvgParser::new(d).run()
 }
 
-/// Reads a curve in either syntax: JSON when the text (after leading
-/// whitespace) starts with `{`, SVG path data otherwise.
+/// Reads a list of numbers in SVG syntax (separated by whitespace and/or one
+/// comma), each exactly: the arguments of an SVG `transform` function.
+pub(crate) fn svg_number_list(text: &str) -> Result<Vec<Rational>, CurveParseError> {
+    let mut p = SvgParser::new(text);
+    let mut out = Vec::new();
+    loop {
+        p.skip_wsp();
+        if !out.is_empty() && p.peek() == Some(b',') {
+            p.pos += 1;
+            p.skip_wsp();
+        }
+        if p.peek().is_none() {
+            return Ok(out);
+        }
+        out.push(p.number()?);
+    }
+}
+
+/// Reads a curve in any of its syntaxes: JSON when the text (after leading
+/// whitespace) starts with `{`, an SVG document when it starts with `<`
+/// ([`super::svgdoc`]), SVG path data otherwise.
 ///
 /// # Examples
 /// ```
@@ -928,6 +947,8 @@ pub fn parse_curve(text: &str) -> Result<Vec<Bezier<Rational>>, CurveParseError>
     }
     if trimmed.starts_with('{') {
         parse_json_curve(text)
+    } else if trimmed.starts_with('<') {
+        super::svgdoc::parse_svg_document(text)
     } else {
         parse_svg_path(text)
     }

@@ -5,6 +5,7 @@ mod bezier;
 mod bspline;
 #[cfg(feature = "font")]
 pub mod font;
+pub mod svgdoc;
 mod vec2;
 
 pub use bezier::{bernstein_product, Bezier};
