@@ -21,7 +21,9 @@
 //! with its certified lower bound.
 
 use kurbo::{BezPath, CubicBez, ParamCurve, Shape};
-use lncert::kurbo_bridge::{certify_within, offset_within, shape_from_cubic, shape_from_path, Verdict};
+use lncert::kurbo_bridge::{
+    certify_within, offset_within, shape_from_cubic, shape_from_path, Verdict,
+};
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::{Config, TestRunner};
 
@@ -36,17 +38,13 @@ struct Case {
 
 fn cases() -> impl Strategy<Value = Case> {
     let coord = -16i32..=16;
-    (
-        proptest::array::uniform8(coord),
-        proptest::bool::ANY,
-    )
-        .prop_map(|(v, left)| {
-            let p = |i: usize| (v[2 * i] as f64 / 8.0, v[2 * i + 1] as f64 / 8.0);
-            Case {
-                c: CubicBez::new(p(0), p(1), p(2), p(3)),
-                d: if left { 0.25 } else { -0.25 },
-            }
-        })
+    (proptest::array::uniform8(coord), proptest::bool::ANY).prop_map(|(v, left)| {
+        let p = |i: usize| (v[2 * i] as f64 / 8.0, v[2 * i + 1] as f64 / 8.0);
+        Case {
+            c: CubicBez::new(p(0), p(1), p(2), p(3)),
+            d: if left { 0.25 } else { -0.25 },
+        }
+    })
 }
 
 /// One claim: builds kurbo's output for a case and decides it with lncert.
@@ -81,20 +79,32 @@ fn quads_claim(k: &Case, tol: f64) -> Option<Verdict> {
         path.quad_to(q.p1, q.p2);
     }
     regular(k)?;
-    certify_within(&shape_from_cubic(k.c).ok()?, &shape_from_path(&path).ok()?, tol).ok()
+    certify_within(
+        &shape_from_cubic(k.c).ok()?,
+        &shape_from_path(&path).ok()?,
+        tol,
+    )
+    .ok()
 }
 
 fn flatten_claim(k: &Case, tol: f64) -> Option<Verdict> {
     let mut path = BezPath::new();
     kurbo::flatten(k.c.path_elements(0.1), tol, |el| path.push(el));
     regular(k)?;
-    certify_within(&shape_from_cubic(k.c).ok()?, &shape_from_path(&path).ok()?, tol).ok()
+    certify_within(
+        &shape_from_cubic(k.c).ok()?,
+        &shape_from_path(&path).ok()?,
+        tol,
+    )
+    .ok()
 }
 
 /// The same input set for every claim: regular cubics (the exact offset of
 /// the others is not a curve lncert accepts).
 fn regular(k: &Case) -> Option<()> {
-    lncert::kurbo_bridge::exact_offset(k.c, 0.25).ok().map(|_| ())
+    lncert::kurbo_bridge::exact_offset(k.c, 0.25)
+        .ok()
+        .map(|_| ())
 }
 
 fn main() {
@@ -107,8 +117,12 @@ fn main() {
         ("CubicBez::to_quads(tol)", quads_claim),
         ("flatten(c, tol)", flatten_claim),
     ];
-    println!("# kurbo 0.13 audited by lncert ({n} random regular cubics per claim and tolerance)\n");
-    println!("| claim | tol | within (proven) | exceeds (proven) | undecided | worst proven excess |");
+    println!(
+        "# kurbo 0.13 audited by lncert ({n} random regular cubics per claim and tolerance)\n"
+    );
+    println!(
+        "| claim | tol | within (proven) | exceeds (proven) | undecided | worst proven excess |"
+    );
     println!("|---|---|---|---|---|---|");
     let mut minimal = Vec::new();
     for (name, claim) in claims {
@@ -137,7 +151,11 @@ fn main() {
                     Verdict::Undecided { .. } => undecided += 1,
                 }
             }
-            let excess = if exceeds > 0 { format!("{worst:.3}× tol") } else { "—".to_string() };
+            let excess = if exceeds > 0 {
+                format!("{worst:.3}× tol")
+            } else {
+                "—".to_string()
+            };
             println!("| `{name}` | {tol:e} | {within} | {exceeds} | {undecided} | {excess} |");
             if let Some(mut tree) = first_failure {
                 // shrink: keep the simplest case whose violation is still proven

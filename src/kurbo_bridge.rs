@@ -126,12 +126,18 @@ pub fn shape_from_path(path: &BezPath) -> Result<ShapeDesc, Error> {
 
 /// A cubic, exactly.
 pub fn shape_from_cubic(c: CubicBez) -> Result<ShapeDesc, Error> {
-    Ok(ShapeDesc::curve(vec![bezier(&[c.p0, c.p1, c.p2, c.p3], "cubic")?])?)
+    Ok(ShapeDesc::curve(vec![bezier(
+        &[c.p0, c.p1, c.p2, c.p3],
+        "cubic",
+    )?])?)
 }
 
 /// A quadratic, exactly.
 pub fn shape_from_quad(q: QuadBez) -> Result<ShapeDesc, Error> {
-    Ok(ShapeDesc::curve(vec![bezier(&[q.p0, q.p1, q.p2], "quad")?])?)
+    Ok(ShapeDesc::curve(vec![bezier(
+        &[q.p0, q.p1, q.p2],
+        "quad",
+    )?])?)
 }
 
 /// A line segment, exactly.

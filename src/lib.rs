@@ -71,8 +71,7 @@ pub mod tangency;
 pub use approx::{offset, union_certificate, OffsetMethod, OffsetOptions, OffsetResult};
 pub use certify::verify::{verify, Valid};
 pub use certify::{
-    hausdorff, sampled_estimate, Certificate, Config as HausdorffConfig, HausdorffBounds,
-    ShapeDesc,
+    hausdorff, sampled_estimate, Certificate, Config as HausdorffConfig, HausdorffBounds, ShapeDesc,
 };
 pub use curve::io::parse_curve;
 pub use curve::{Bezier, V2};

@@ -322,7 +322,10 @@ fn certified_by(a: &ShapeDesc, b: &ShapeDesc, tol: &str, kind: Kind) -> Certific
         .sum::<usize>();
     match kind {
         Kind::Search => assert!(n("maps") == 0 && dir_boxes > 0),
-        Kind::Map => assert!(n("maps") == 1 && dir_boxes == 0, "the parametric path did not decide"),
+        Kind::Map => assert!(
+            n("maps") == 1 && dir_boxes == 0,
+            "the parametric path did not decide"
+        ),
     }
     cert
 }
@@ -618,7 +621,10 @@ fn semantic_checks_reject_forged_certificates() {
     assert!(forge(&|d| d["version"] = Value::from(1)).is_err());
     assert!(forge(&|d| d["version"] = Value::from(4)).is_err());
     // version 2 is still read: the same document without maps
-    assert!(forge(&|d| d["version"] = Value::from(2)).is_err(), "v2 has no maps key");
+    assert!(
+        forge(&|d| d["version"] = Value::from(2)).is_err(),
+        "v2 has no maps key"
+    );
     let v2 = forge(&|d| {
         d["version"] = Value::from(2);
         d.as_object_mut().unwrap().remove("maps");
@@ -645,7 +651,10 @@ fn semantic_checks_reject_forged_maps() {
     assert!(n >= 3, "{n}");
     let expect = |r: Result<_, lncert::certify::verify::Invalid>, at: &str, why: &str| {
         let e = r.expect_err(why);
-        assert!(e.at.starts_with(at) && e.reason.contains(why), "{at} / {why}: {e}");
+        assert!(
+            e.at.starts_with(at) && e.reason.contains(why),
+            "{at} / {why}: {e}"
+        );
     };
     // a tolerance below the proven bound
     let below = Rational::from_float(hi * 0.999).unwrap();
@@ -705,7 +714,11 @@ fn semantic_checks_reject_forged_maps() {
         "exceeds the tolerance",
     );
     // the wrong direction labels, a map and boxes for the same piece, two maps
-    expect(forge(&|d| d["maps"][0]["to"] = "b".into()), "maps[0]", "expected from");
+    expect(
+        forge(&|d| d["maps"][0]["to"] = "b".into()),
+        "maps[0]",
+        "expected from",
+    );
     let boxes_too = forge(&|d| {
         d["directions"][0]["boxes"] = serde_json::json!([
             {"piece": 0, "s": ["0", "1"], "target": 0, "t": "1/2", "k": "1"}
@@ -725,7 +738,10 @@ fn semantic_checks_reject_forged_maps() {
     let cubic = shape("M 1 0 C 1 0.5523 0.5523 1 0 1");
     let ac = certified_by(&arc, &cubic, "0.0003", Kind::Map);
     assert!(check(&ac.doc).is_ok());
-    assert_eq!(ac.doc["maps"][0]["from"], "b", "the polynomial side is the source");
+    assert_eq!(
+        ac.doc["maps"][0]["from"], "b",
+        "the polynomial side is the source"
+    );
     let mut d = ac.doc.clone();
     d["maps"][0]["from"] = "a".into();
     d["maps"][0]["to"] = "b".into();

@@ -67,10 +67,22 @@ fn fig4(extra: &[&str]) -> Vec<String> {
 fn hausdorff_exit_codes() {
     let (a, b) = (file("arc.json", ARC), file("arc_cubic.svg", ARC_CUBIC));
     // d_H ≈ 2.7607e-4
-    assert_eq!(code(&["hausdorff", &a, &b, "--tol", "3e-4"]), 0, "certified");
+    assert_eq!(
+        code(&["hausdorff", &a, &b, "--tol", "3e-4"]),
+        0,
+        "certified"
+    );
     assert_eq!(code(&["hausdorff", &a, &b, "--tol", "2e-4"]), 1, "refuted");
     assert_eq!(
-        code(&["hausdorff", &a, &b, "--tol", "2.7607e-4", "--max-boxes", "4"]),
+        code(&[
+            "hausdorff",
+            &a,
+            &b,
+            "--tol",
+            "2.7607e-4",
+            "--max-boxes",
+            "4"
+        ]),
         3,
         "budget ran out before the claim was decided"
     );
@@ -87,9 +99,21 @@ fn hausdorff_exit_codes() {
 #[test]
 fn offset_exit_codes() {
     let c = file("cubic.json", CUBIC);
-    assert_eq!(code(&["offset", &c, "--distance", "0.4", "--tol", "1e-2"]), 0);
     assert_eq!(
-        code(&["offset", &c, "--distance", "0.5", "--tol", "1e-8", "--max-depth", "1"]),
+        code(&["offset", &c, "--distance", "0.4", "--tol", "1e-2"]),
+        0
+    );
+    assert_eq!(
+        code(&[
+            "offset",
+            &c,
+            "--distance",
+            "0.5",
+            "--tol",
+            "1e-8",
+            "--max-depth",
+            "1"
+        ]),
         3,
         "not reached within the limits: undecided, not refuted"
     );
@@ -102,12 +126,23 @@ fn verify_exit_codes() {
     let cert = dir().join("contract_cert.json");
     let cert_s = cert.to_str().unwrap();
     assert_eq!(
-        code(&["hausdorff", &a, &b, "--tol", "3e-4", "--certificate", cert_s]),
+        code(&[
+            "hausdorff",
+            &a,
+            &b,
+            "--tol",
+            "3e-4",
+            "--certificate",
+            cert_s
+        ]),
         0
     );
     assert_eq!(code(&["verify", cert_s]), 0, "valid");
     let text = std::fs::read_to_string(&cert).unwrap();
-    let forged = file("contract_forged.json", &text.replace("\"3/10000\"", "\"1/10000\""));
+    let forged = file(
+        "contract_forged.json",
+        &text.replace("\"3/10000\"", "\"1/10000\""),
+    );
     assert_eq!(code(&["verify", &forged]), 1, "a false claim is invalid");
     // a document that is not a certificate is an invalid certificate
     let junk = file("contract_junk.json", "{not json");
@@ -151,15 +186,41 @@ fn output_paths_are_checked_before_any_work() {
     let d_s = d.to_str().unwrap();
     let cases: Vec<(Vec<&str>, &str)> = vec![
         (
-            vec!["offset", &c, "--distance", "0.4", "--tol", "1e-12", "--svg", missing],
+            vec![
+                "offset",
+                &c,
+                "--distance",
+                "0.4",
+                "--tol",
+                "1e-12",
+                "--svg",
+                missing,
+            ],
             "--svg",
         ),
         (
-            vec!["offset", &c, "--distance", "0.4", "--tol", "1e-12", "--certificate", d_s],
+            vec![
+                "offset",
+                &c,
+                "--distance",
+                "0.4",
+                "--tol",
+                "1e-12",
+                "--certificate",
+                d_s,
+            ],
             "--certificate",
         ),
         (
-            vec!["hausdorff", &a, &b, "--rel", "1e-12", "--certificate", missing],
+            vec![
+                "hausdorff",
+                &a,
+                &b,
+                "--rel",
+                "1e-12",
+                "--certificate",
+                missing,
+            ],
             "--certificate",
         ),
         (vec!["reproduce", "--out", "/dev/null/sub"], "--out"),
@@ -171,7 +232,10 @@ fn output_paths_are_checked_before_any_work() {
         assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
         assert!(err.contains(flag), "{args:?}: {err}");
         // no work was done: well under the run's own time
-        assert!(start.elapsed().as_secs_f64() < 5.0, "{args:?} did work first");
+        assert!(
+            start.elapsed().as_secs_f64() < 5.0,
+            "{args:?} did work first"
+        );
     }
     assert!(!std::path::Path::new(missing).exists());
     // a writable path that did not exist is not left behind by the check
@@ -197,21 +261,36 @@ fn json_errors_are_json() {
     let c = file("cubic.json", CUBIC);
     let (a, b) = (file("arc.json", ARC), file("arc_cubic.svg", ARC_CUBIC));
     let cases: Vec<(Vec<&str>, &str)> = vec![
-        (vec!["offset", &c, "--distance", "0.4", "--tol", "x"], "--tol"),
+        (
+            vec!["offset", &c, "--distance", "0.4", "--tol", "x"],
+            "--tol",
+        ),
         (vec!["hausdorff", &a, &b, "--rel", "2"], "--rel"),
         (vec!["prop", "2.1", "--x1", "abc", "--y1", "1"], "--x1"),
         (vec!["audit", "--cases", "0"], "--cases"),
-        (vec!["tangency", "--x1", "1e400", "--y1", "1", "--u", "1", "--center", "0,1", "--radius", "1"], "--x1"),
+        (
+            vec![
+                "tangency", "--x1", "1e400", "--y1", "1", "--u", "1", "--center", "0,1",
+                "--radius", "1",
+            ],
+            "--x1",
+        ),
         (vec!["reproduce", "--out", "/dev/null/sub"], "--out"),
     ];
     for (mut args, field) in cases {
         args.push("--json");
         let o = lncert(&args);
         assert_eq!(o.status.code(), Some(2), "{args:?}");
-        let doc: Value = serde_json::from_slice(&o.stdout)
-            .unwrap_or_else(|e| panic!("{args:?}: not JSON ({e}): {}", String::from_utf8_lossy(&o.stdout)));
+        let doc: Value = serde_json::from_slice(&o.stdout).unwrap_or_else(|e| {
+            panic!(
+                "{args:?}: not JSON ({e}): {}",
+                String::from_utf8_lossy(&o.stdout)
+            )
+        });
         assert_eq!(doc["error"]["field"], field, "{args:?}: {doc}");
-        assert!(doc["error"]["reason"].as_str().is_some_and(|r| !r.is_empty()));
+        assert!(doc["error"]["reason"]
+            .as_str()
+            .is_some_and(|r| !r.is_empty()));
         assert_eq!(doc["exit_code"], 2);
     }
 }
@@ -223,8 +302,23 @@ fn every_flag_has_the_one_numeric_limit() {
     let (a, b) = (file("arc.json", ARC), file("arc_cubic.svg", ARC_CUBIC));
     let too_big = "1e101";
     for args in [
-        vec!["tangency", "--x1", too_big, "--y1", "1", "--u", "1", "--center", "0,1", "--radius", "1"],
-        vec!["tangency", "--x1", "3", "--y1", "-1", "--u", "1", "--center", "15/16,-319/128", "--radius", too_big],
+        vec![
+            "tangency", "--x1", too_big, "--y1", "1", "--u", "1", "--center", "0,1", "--radius",
+            "1",
+        ],
+        vec![
+            "tangency",
+            "--x1",
+            "3",
+            "--y1",
+            "-1",
+            "--u",
+            "1",
+            "--center",
+            "15/16,-319/128",
+            "--radius",
+            too_big,
+        ],
         vec!["offset", &c, "--distance", too_big, "--tol", "1e-2"],
         vec!["hausdorff", &a, &b, "--tol", too_big],
         vec!["prop", "2.1", "--x1", too_big, "--y1", "1"],

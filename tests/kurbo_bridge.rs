@@ -99,6 +99,12 @@ fn offset_verdicts_on_an_exact_case() {
     // any two shapes
     let q = shape_from_quad(QuadBez::new((0.0, 0.0), (0.5, 0.5), (1.0, 0.0))).unwrap();
     let l = shape_from_line(Line::new((0.0, 0.0), (1.0, 0.0))).unwrap();
-    assert!(matches!(certify_within(&q, &l, 0.26).unwrap(), Verdict::Within { .. }));
-    assert!(matches!(certify_within(&q, &l, 0.24).unwrap(), Verdict::Exceeds { .. }));
+    assert!(matches!(
+        certify_within(&q, &l, 0.26).unwrap(),
+        Verdict::Within { .. }
+    ));
+    assert!(matches!(
+        certify_within(&q, &l, 0.24).unwrap(),
+        Verdict::Exceeds { .. }
+    ));
 }

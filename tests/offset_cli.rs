@@ -454,9 +454,17 @@ fn curve_out_and_path_out_read_back_as_the_certified_curve() {
         "--path-out",
         svg_out.to_str().unwrap(),
     ]);
-    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
     let path_data = std::fs::read_to_string(&svg_out).unwrap();
-    assert!(path_data.starts_with("M ") && path_data.contains(" C "), "{path_data}");
+    assert!(
+        path_data.starts_with("M ") && path_data.contains(" C "),
+        "{path_data}"
+    );
     let exact = tmp(
         "rt_exact.json",
         &format!(r#"{{"offset": {{"curve": {CUBIC}, "distance": -0.5}}}}"#),
@@ -529,9 +537,14 @@ fn glyph_outlines_are_offset_and_certified() {
     let Some(font) = dejavu() else { return };
     let data = std::fs::read(&font).unwrap();
     let o = lncert::curve::font::glyph_outline(&data, 'o').unwrap();
-    assert!(o.iter().all(|b| b.points().len() <= 3), "TrueType: lines and quadratics");
+    assert!(
+        o.iter().all(|b| b.points().len() <= 3),
+        "TrueType: lines and quadratics"
+    );
     // two closed contours: consecutive pieces meet, and each contour returns to its start
-    let ends = |b: &lncert::Bezier<lncert::Rational>| (b.points()[0].clone(), b.points().last().unwrap().clone());
+    let ends = |b: &lncert::Bezier<lncert::Rational>| {
+        (b.points()[0].clone(), b.points().last().unwrap().clone())
+    };
     let mut contours = 0;
     let mut start = ends(&o[0]).0;
     for (i, b) in o.iter().enumerate() {
@@ -561,17 +574,40 @@ fn glyph_outlines_are_offset_and_certified() {
         cert.to_str().unwrap(),
         "--json",
     ]);
-    assert_eq!(run.status.code(), Some(0), "{}", String::from_utf8_lossy(&run.stderr));
+    assert_eq!(
+        run.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
     let doc = json_of(&run);
     assert_eq!(doc["verdict"], "certified");
     let v = lncert(&["verify", cert.to_str().unwrap()]);
     assert_eq!(v.status.code(), Some(0));
     // no such glyph; not a font
-    let none = lncert(&["offset", font.to_str().unwrap(), "--glyph", "\u{10FFFD}", "--distance", "20", "--tol", "0.5"]);
+    let none = lncert(&[
+        "offset",
+        font.to_str().unwrap(),
+        "--glyph",
+        "\u{10FFFD}",
+        "--distance",
+        "20",
+        "--tol",
+        "0.5",
+    ]);
     assert_eq!(none.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&none.stderr).contains("--glyph"));
     let text = tmp("not_a_font.json", CUBIC);
-    let nf = lncert(&["offset", text.to_str().unwrap(), "--glyph", "o", "--distance", "20", "--tol", "0.5"]);
+    let nf = lncert(&[
+        "offset",
+        text.to_str().unwrap(),
+        "--glyph",
+        "o",
+        "--distance",
+        "20",
+        "--tol",
+        "0.5",
+    ]);
     assert_eq!(nf.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&nf.stderr).contains("font"));
 }
@@ -587,8 +623,21 @@ fn offset_reads_an_svg_document() {
   <g transform="translate(1 1) scale(0.5)"><path d="M -1.9 1.4 C -0.6 1 0.6 -5 1.8 -0.4"/></g>
 </svg>"#,
     );
-    let o = lncert(&["offset", doc.to_str().unwrap(), "--distance", "0.2", "--tol", "1e-3", "--json"]);
-    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = lncert(&[
+        "offset",
+        doc.to_str().unwrap(),
+        "--distance",
+        "0.2",
+        "--tol",
+        "1e-3",
+        "--json",
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
     let d = json_of(&o);
     // the transformed start point: (−1.9, 1.4)/2 + (1, 1)
     // the offset starts at distance 0.2 from the transformed start point
@@ -598,7 +647,14 @@ fn offset_reads_an_svg_document() {
     let r = (x - start.0).hypot(y - start.1);
     assert!((r - 0.2).abs() < 1e-9, "{r}: {d}");
     let bad = tmp("doc_bad.svg", r#"<svg><ellipse rx="1" ry="2"/></svg>"#);
-    let e = lncert(&["offset", bad.to_str().unwrap(), "--distance", "0.2", "--tol", "1e-3"]);
+    let e = lncert(&[
+        "offset",
+        bad.to_str().unwrap(),
+        "--distance",
+        "0.2",
+        "--tol",
+        "1e-3",
+    ]);
     assert_eq!(e.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&e.stderr).contains("svg/ellipse[0]"));
 }

@@ -834,7 +834,12 @@ pub fn union_certificate(
     };
     let mut maps = Vec::new();
     let (mut ab, mut ba) = (Vec::new(), Vec::new());
-    for (i, p) in res.segments.iter().filter_map(|s| s.proof.as_ref()).enumerate() {
+    for (i, p) in res
+        .segments
+        .iter()
+        .filter_map(|s| s.proof.as_ref())
+        .enumerate()
+    {
         match &p.map {
             Some(m) => maps.push(MapCover {
                 from_a: m.source_a,

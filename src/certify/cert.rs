@@ -174,8 +174,7 @@ impl Certificate {
             m.hi <= tol_f
                 && !m.boxes.is_empty()
                 && m.boxes.iter().all(|bx| {
-                    bx.bound <= tol_f
-                        && [bx.t.0, bx.t.1].iter().chain(&bx.c).all(|x| x.is_finite())
+                    bx.bound <= tol_f && [bx.t.0, bx.t.1].iter().chain(&bx.c).all(|x| x.is_finite())
                 })
         });
         if !boxes_ok || !maps_ok || (maps.is_empty() && (a_to_b.is_empty() || b_to_a.is_empty())) {
@@ -203,7 +202,16 @@ impl Certificate {
         };
         let mut out = String::from("{\n");
         let mut first = true;
-        let order = ["format", "version", "claim", "tol", "a", "b", "maps", "directions"];
+        let order = [
+            "format",
+            "version",
+            "claim",
+            "tol",
+            "a",
+            "b",
+            "maps",
+            "directions",
+        ];
         let ordered = order
             .iter()
             .filter_map(|k| m.get_key_value(*k))
@@ -230,7 +238,11 @@ impl Certificate {
                             out.push_str(if j == 0 { "\n      " } else { ",\n      " });
                             out.push_str(&compact(b));
                         }
-                        out.push_str(if i + 1 == items.len() { "]}\n" } else { "]},\n" });
+                        out.push_str(if i + 1 == items.len() {
+                            "]}\n"
+                        } else {
+                            "]},\n"
+                        });
                     }
                     out.push_str("  ]");
                 }

@@ -40,7 +40,10 @@ pub fn output_file(flag: &str, path: &std::path::Path) -> Result<(), CliError> {
         if !parent.is_dir() {
             return Err(bad(
                 flag,
-                format!("cannot write {shown}: the directory {} does not exist", parent.display()),
+                format!(
+                    "cannot write {shown}: the directory {} does not exist",
+                    parent.display()
+                ),
             ));
         }
     }
@@ -59,8 +62,12 @@ pub fn output_file(flag: &str, path: &std::path::Path) -> Result<(), CliError> {
 /// Checks, before any work, that `dir` is or can become an output directory
 /// (created now if missing, as the output would).
 pub fn output_dir(flag: &str, dir: &std::path::Path) -> Result<(), CliError> {
-    std::fs::create_dir_all(dir)
-        .map_err(|e| bad(flag, format!("cannot create the directory {}: {e}", dir.display())))?;
+    std::fs::create_dir_all(dir).map_err(|e| {
+        bad(
+            flag,
+            format!("cannot create the directory {}: {e}", dir.display()),
+        )
+    })?;
     let probe = dir.join(format!(".lncert-write-test-{}", std::process::id()));
     std::fs::write(&probe, b"")
         .map_err(|e| bad(flag, format!("cannot write into {}: {e}", dir.display())))?;
@@ -245,7 +252,10 @@ mod tests {
     fn numbers_are_exact_and_errors_name_the_flag() {
         assert_eq!(q(&number("--u", "0.95").unwrap()), "19/20");
         let e = number("--x1", "abc").unwrap_err();
-        assert!(e.to_string().starts_with("--x1: cannot read \"abc\""), "{e}");
+        assert!(
+            e.to_string().starts_with("--x1: cannot read \"abc\""),
+            "{e}"
+        );
     }
 
     #[test]

@@ -148,7 +148,10 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             let meta = std::fs::metadata(&a.curve)
                 .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
             if meta.len() > MAX_FONT_BYTES {
-                return Err(bad("CURVE", format!("{}: font file too large", a.curve.display())));
+                return Err(bad(
+                    "CURVE",
+                    format!("{}: font file too large", a.curve.display()),
+                ));
             }
             let data = std::fs::read(&a.curve)
                 .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
@@ -513,9 +516,15 @@ pub fn exact_decimal(x: f64) -> String {
         .to_string();
     let k = k as usize;
     let (int, frac) = if digits.len() > k {
-        (digits[..digits.len() - k].to_string(), digits[digits.len() - k..].to_string())
+        (
+            digits[..digits.len() - k].to_string(),
+            digits[digits.len() - k..].to_string(),
+        )
     } else {
-        ("0".to_string(), format!("{}{}", "0".repeat(k - digits.len()), digits))
+        (
+            "0".to_string(),
+            format!("{}{}", "0".repeat(k - digits.len()), digits),
+        )
     };
     let frac = frac.trim_end_matches('0');
     let sign = if x < 0.0 { "-" } else { "" };

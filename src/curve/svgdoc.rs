@@ -107,17 +107,26 @@ fn parse_transform(text: &str, at: &str) -> Result<Affine, CurveParseError> {
             .filter(|c| *c > open)
             .ok_or_else(|| err(at, "a transform function is not closed by ')'"))?;
         let name = rest[..open].trim().trim_start_matches(',').trim();
-        let args = svg_number_list(&rest[open + 1..close])
-            .map_err(|e| err(at, format!("{name}: {e}")))?;
+        let args =
+            svg_number_list(&rest[open + 1..close]).map_err(|e| err(at, format!("{name}: {e}")))?;
         let (o, z) = (Rational::one(), Rational::zero());
         let f = match (name, args.as_slice()) {
-            ("matrix", [a, b, c, d, e, f]) => {
-                Affine([a.clone(), b.clone(), c.clone(), d.clone(), e.clone(), f.clone()])
-            }
+            ("matrix", [a, b, c, d, e, f]) => Affine([
+                a.clone(),
+                b.clone(),
+                c.clone(),
+                d.clone(),
+                e.clone(),
+                f.clone(),
+            ]),
             ("translate", [x]) => Affine([o.clone(), z.clone(), z.clone(), o, x.clone(), z]),
-            ("translate", [x, y]) => Affine([o.clone(), z.clone(), z.clone(), o, x.clone(), y.clone()]),
+            ("translate", [x, y]) => {
+                Affine([o.clone(), z.clone(), z.clone(), o, x.clone(), y.clone()])
+            }
             ("scale", [s]) => Affine([s.clone(), z.clone(), z.clone(), s.clone(), z.clone(), z]),
-            ("scale", [sx, sy]) => Affine([sx.clone(), z.clone(), z.clone(), sy.clone(), z.clone(), z]),
+            ("scale", [sx, sy]) => {
+                Affine([sx.clone(), z.clone(), z.clone(), sy.clone(), z.clone(), z])
+            }
             ("rotate", [a, centre @ ..]) if centre.is_empty() || centre.len() == 2 => {
                 let (c, s) = quarter_turn(a).ok_or_else(|| {
                     err(at, format!("rotate({a}): only multiples of 90° are exact (cos and sin of other angles are irrational)"))
@@ -125,8 +134,16 @@ fn parse_transform(text: &str, at: &str) -> Result<Affine, CurveParseError> {
                 let r = Affine([c.clone(), s.clone(), -s, c, z.clone(), z.clone()]);
                 match centre {
                     [cx, cy] => {
-                        let to = Affine([o.clone(), z.clone(), z.clone(), o.clone(), cx.clone(), cy.clone()]);
-                        let back = Affine([o.clone(), z.clone(), z.clone(), o, -cx.clone(), -cy.clone()]);
+                        let to = Affine([
+                            o.clone(),
+                            z.clone(),
+                            z.clone(),
+                            o.clone(),
+                            cx.clone(),
+                            cy.clone(),
+                        ]);
+                        let back =
+                            Affine([o.clone(), z.clone(), z.clone(), o, -cx.clone(), -cy.clone()]);
                         to.then_inner(&r).then_inner(&back)
                     }
                     _ => r,
@@ -134,7 +151,10 @@ fn parse_transform(text: &str, at: &str) -> Result<Affine, CurveParseError> {
             }
             ("skewX" | "skewY", [a]) if a.is_zero() => Affine::identity(),
             ("skewX" | "skewY", [a]) => {
-                return Err(err(at, format!("{name}({a}): only 0° is exact (tan of other angles is irrational)")))
+                return Err(err(
+                    at,
+                    format!("{name}({a}): only 0° is exact (tan of other angles is irrational)"),
+                ))
             }
             _ => {
                 return Err(err(
@@ -214,10 +234,16 @@ fn element_pieces(
         }
         "rect" => {
             if node.attribute("rx").is_some() || node.attribute("ry").is_some() {
-                return Err(err(at, "rounded rectangles (rx, ry) are elliptical arcs: not read"));
+                return Err(err(
+                    at,
+                    "rounded rectangles (rx, ry) are elliptical arcs: not read",
+                ));
             }
             let (x, y) = (coordinate(node, "x", at)?, coordinate(node, "y", at)?);
-            let (w, h) = (coordinate(node, "width", at)?, coordinate(node, "height", at)?);
+            let (w, h) = (
+                coordinate(node, "width", at)?,
+                coordinate(node, "height", at)?,
+            );
             let pts = [
                 V2::new(x.clone(), y.clone()),
                 V2::new(&x + &w, y.clone()),
@@ -252,7 +278,10 @@ pub fn parse_svg_document(text: &str) -> Result<Vec<Bezier<Rational>>, CurvePars
     if root.tag_name().name() != "svg" {
         return Err(err(
             "(document)",
-            format!("the root element is <{}>, not <svg>", root.tag_name().name()),
+            format!(
+                "the root element is <{}>, not <svg>",
+                root.tag_name().name()
+            ),
         ));
     }
     let mut out = Vec::new();
@@ -310,7 +339,10 @@ mod tests {
     }
 
     fn pts(b: &Bezier<Rational>) -> Vec<(Rational, Rational)> {
-        b.points().iter().map(|p| (p.x.clone(), p.y.clone())).collect()
+        b.points()
+            .iter()
+            .map(|p| (p.x.clone(), p.y.clone()))
+            .collect()
     }
 
     /// Transforms compose as SVG says (the parent's applies last; a list
@@ -324,13 +356,17 @@ mod tests {
         // (1, 0) → (0, 1) → (0, 3) → (10, 3); (1/10, 2) → (−2, 1/10) → (−4, 3/10) → (6, 3/10)
         assert_eq!(pts(&p[0]), vec![(q("10"), q("3")), (q("6"), q("3/10"))]);
         // rotate about a centre, and matrix(a b c d e f) as x' = a x + c y + e
-        let doc = r#"<svg><path transform="rotate(180 1 1) matrix(1 2 3 4 5 6)" d="M 1 1 L 0 0"/></svg>"#;
+        let doc =
+            r#"<svg><path transform="rotate(180 1 1) matrix(1 2 3 4 5 6)" d="M 1 1 L 0 0"/></svg>"#;
         let p = parse_svg_document(doc).unwrap();
         // matrix: (1, 1) → (1+3+5, 2+4+6) = (9, 12); rotate 180 about (1, 1): (2−9, 2−12)
         assert_eq!(pts(&p[0])[0], (q("-7"), q("-10")));
         assert_eq!(pts(&p[0])[1], (q("-3"), q("-4")));
         // rotate(-270) = rotate(90); skewX(0) is the identity
-        let a = parse_svg_document(r#"<svg><path transform="rotate(-270) skewX(0)" d="M 1 0 L 2 0"/></svg>"#).unwrap();
+        let a = parse_svg_document(
+            r#"<svg><path transform="rotate(-270) skewX(0)" d="M 1 0 L 2 0"/></svg>"#,
+        )
+        .unwrap();
         assert_eq!(pts(&a[0])[0], (q("0"), q("1")));
     }
 
@@ -357,13 +393,31 @@ mod tests {
     #[test]
     fn unreadable_content_names_the_element() {
         for (doc, at) in [
-            (r#"<svg><g/><g><circle r="1"/></g></svg>"#, "svg/g[1]/circle[0]"),
-            (r#"<svg><path d="M 0 0 A 1 1 0 0 1 2 2"/></svg>"#, "svg/path[0].d"),
-            (r#"<svg><g transform="rotate(30)"><path d="M0 0 L1 1"/></g></svg>"#, "svg/g[0].transform"),
+            (
+                r#"<svg><g/><g><circle r="1"/></g></svg>"#,
+                "svg/g[1]/circle[0]",
+            ),
+            (
+                r#"<svg><path d="M 0 0 A 1 1 0 0 1 2 2"/></svg>"#,
+                "svg/path[0].d",
+            ),
+            (
+                r#"<svg><g transform="rotate(30)"><path d="M0 0 L1 1"/></g></svg>"#,
+                "svg/g[0].transform",
+            ),
             (r#"<svg><line x1="1px" x2="2"/></svg>"#, "svg/line[0].x1"),
-            (r#"<svg><rect rx="1" width="2" height="2"/></svg>"#, "svg/rect[0]"),
-            (r#"<svg><polygon points="0 0 1"/></svg>"#, "svg/polygon[0].points"),
-            (r#"<svg><path transform="wobble(1)" d="M0 0 L1 1"/></svg>"#, "svg/path[0].transform"),
+            (
+                r#"<svg><rect rx="1" width="2" height="2"/></svg>"#,
+                "svg/rect[0]",
+            ),
+            (
+                r#"<svg><polygon points="0 0 1"/></svg>"#,
+                "svg/polygon[0].points",
+            ),
+            (
+                r#"<svg><path transform="wobble(1)" d="M0 0 L1 1"/></svg>"#,
+                "svg/path[0].transform",
+            ),
             (r#"<svg><path d="M0 0 L1 1"/>"#, "(document)"),
             (r#"<html/>"#, "(document)"),
         ] {

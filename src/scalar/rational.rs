@@ -382,7 +382,11 @@ mod tests {
             let d = BigInt::from((next() >> (next() % 64)) | 1) * BigInt::from(3 + next() % 5);
             let shift = (next() % 2200) as usize;
             let n = if next() % 2 == 0 { -n } else { n };
-            for (nn, dd) in [(n.clone() << shift, d.clone()), (n.clone(), d.clone() << shift), (n.clone(), d.clone())] {
+            for (nn, dd) in [
+                (n.clone() << shift, d.clone()),
+                (n.clone(), d.clone() << shift),
+                (n.clone(), d.clone()),
+            ] {
                 let r = Rational::new(nn, dd);
                 if let Some(b) = normal_bracket(&r) {
                     assert_eq!(b, walk_bracket(&r), "{r}");

@@ -234,7 +234,14 @@ pub(crate) fn check_box(
             tau.sup()
         ));
     }
-    taylor_bound(src, sbox, scv, T3([tau, kv, ic(0)]), T3([tv, kv, ic(0)]), dst)
+    taylor_bound(
+        src,
+        sbox,
+        scv,
+        T3([tau, kv, ic(0)]),
+        T3([tv, kv, ic(0)]),
+        dst,
+    )
 }
 
 fn undefined() -> String {
@@ -313,7 +320,10 @@ pub(crate) fn check_map_box(
     // every number enclosed once; the rest in interval arithmetic (exact for
     // the dyadic numbers lncert writes, outward rounded for any other)
     let ci = [0, 1, 2, 3].map(|k| interval_from_rational(&c[k]));
-    if ci.iter().any(|x| !(x.inf() >= 0.0 && x.sup() <= dst_end.inf())) {
+    if ci
+        .iter()
+        .any(|x| !(x.inf() >= 0.0 && x.sup() <= dst_end.inf()))
+    {
         return Err(format!(
             "a coefficient of the map leaves the target's parameter domain [0, {}]",
             dst_end.inf()

@@ -32,9 +32,9 @@ mod read;
 use super::cert::{CLAIM, FORMAT, VERSION, VERSION_2};
 use crate::json::{parse, Json, Limits};
 use crate::scalar::{rational_from_f64, Interval, Rational};
-use rayon::prelude::*;
 use eval::{check_box, check_map_box, le_rational, reach, VShape};
 use num_traits::{Signed, Zero};
+use rayon::prelude::*;
 use read::{canonical_index, canonical_rational, exact_object, read_shape};
 
 /// Why a certificate is invalid.
@@ -119,7 +119,16 @@ fn top_level(mut e: Invalid) -> Invalid {
 mod tests;
 
 /// The keys of a version 3 certificate, all required.
-const KEYS: [&str; 8] = ["format", "version", "claim", "tol", "a", "b", "maps", "directions"];
+const KEYS: [&str; 8] = [
+    "format",
+    "version",
+    "claim",
+    "tol",
+    "a",
+    "b",
+    "maps",
+    "directions",
+];
 /// The keys of a version 2 certificate (no maps), all required.
 const KEYS_2: [&str; 7] = ["format", "version", "claim", "tol", "a", "b", "directions"];
 
@@ -377,7 +386,12 @@ fn map_head<'j>(
     let (f, t) = match (from.as_str(), to.as_str()) {
         (Some("a"), Some("b")) => (0, 1),
         (Some("b"), Some("a")) => (1, 0),
-        _ => return Err(inv(at, "expected from \"a\" to \"b\", or from \"b\" to \"a\"")),
+        _ => {
+            return Err(inv(
+                at,
+                "expected from \"a\" to \"b\", or from \"b\" to \"a\"",
+            ))
+        }
     };
     let piece = canonical_index(piece, &format!("{at}.piece"))?;
     let target = canonical_index(target, &format!("{at}.target"))?;
@@ -385,7 +399,11 @@ fn map_head<'j>(
         if i >= shapes[which].pieces.len() {
             return Err(inv(
                 format!("{at}.{field}"),
-                format!("out of range: {} has {} pieces", names[which], shapes[which].pieces.len()),
+                format!(
+                    "out of range: {} has {} pieces",
+                    names[which],
+                    shapes[which].pieces.len()
+                ),
             ));
         }
     }
@@ -406,7 +424,10 @@ fn mark_map(
         if let Some(other) = by_map[which][i] {
             return Err(inv(
                 format!("{at}.{field}"),
-                format!("piece {i} of {} is already covered by maps[{other}]", names[which]),
+                format!(
+                    "piece {i} of {} is already covered by maps[{other}]",
+                    names[which]
+                ),
             ));
         }
         by_map[which][i] = Some(index);
@@ -456,7 +477,12 @@ fn check_map(m: &Json, at: &str, shapes: &[VShape; 2], tol: &Tol) -> Result<(f64
                 }
                 out
             }
-            _ => return Err(inv(format!("{at_b}.phi"), "expected the 4 Bernstein coefficients of the map")),
+            _ => {
+                return Err(inv(
+                    format!("{at_b}.phi"),
+                    "expected the 4 Bernstein coefficients of the map",
+                ))
+            }
         };
         if t0 != cursor || t0 >= t1 || t1 > src_end {
             return Err(inv(
@@ -494,12 +520,17 @@ fn check_map(m: &Json, at: &str, shapes: &[VShape; 2], tol: &Tol) -> Result<(f64
     // φ is onto the range between its end values; the rest of the target's
     // domain, before and after, is within `sup |dst′| · length` of its ends
     let last = value.unwrap_or_default();
-    let (lo, hi) = if first <= last { (first, last) } else { (last, first) };
+    let (lo, hi) = if first <= last {
+        (first, last)
+    } else {
+        (last, first)
+    };
     let iv = crate::scalar::interval_from_rational;
     let terms = reach(dst, crate::certify::verify::eval::ic(0), iv(&lo))
         .and_then(|x| Ok(x + reach(dst, iv(&hi), dst_end)?))
         .map_err(|r| inv(at, r))?;
-    let total = (Interval::try_from((max_box, max_box)).map_err(|_| inv(at, "undefined"))? + terms).sup();
+    let total =
+        (Interval::try_from((max_box, max_box)).map_err(|_| inv(at, "undefined"))? + terms).sup();
     if !within(total, tol) {
         return Err(inv(
             at,
