@@ -4,6 +4,8 @@
 //! one numeric limit for every flag. Each case below is a small, fast input
 //! that lands on the code it names.
 
+mod common;
+use common::FIG4;
 use serde_json::Value;
 use std::path::PathBuf;
 use std::process::{Command, Output};
@@ -12,19 +14,6 @@ use std::time::Instant;
 const CUBIC: &str = r#"{"bezier": [[-0.95, 0.7], [-0.3, 0.5], [0.3, -2.5], [0.9, -0.2]]}"#;
 const ARC: &str = r#"{"arc": {"center": [0, 0], "radius": 1, "from": [1, 0], "to": [0, 1]}}"#;
 const ARC_CUBIC: &str = "M 1 0 C 1 0.5523 0.5523 1 0 1";
-/// Seed 003's Fig. 4 data (two tangent quartics, complete).
-const FIG4: [&str; 10] = [
-    "tangency",
-    "--x1",
-    "3",
-    "--y1",
-    "-1",
-    "--u",
-    "1",
-    "--center",
-    "15/16,-319/128",
-    "--radius",
-];
 
 fn lncert(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_lncert"))

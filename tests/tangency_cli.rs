@@ -2,21 +2,10 @@
 //! documented keys, exit codes 0/1/2, bad input naming the flag, the exact
 //! backend agreeing with the complete one.
 
+mod common;
+use common::FIG4;
 use serde_json::Value;
 use std::process::{Command, Output};
-
-const FIG4: [&str; 10] = [
-    "tangency",
-    "--x1",
-    "3",
-    "--y1",
-    "-1",
-    "--u",
-    "1",
-    "--center",
-    "15/16,-319/128",
-    "--radius",
-];
 
 fn lncert(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_lncert"))

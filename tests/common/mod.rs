@@ -151,3 +151,18 @@ pub mod symbolic {
         );
     }
 }
+
+/// Seed 003's Fig. 4 tangency problem on the command line, up to `--radius`
+/// (whose value the caller appends): two tangent quartics, complete.
+pub const FIG4: [&str; 10] = [
+    "tangency",
+    "--x1",
+    "3",
+    "--y1",
+    "-1",
+    "--u",
+    "1",
+    "--center",
+    "15/16,-319/128",
+    "--radius",
+];
