@@ -10,8 +10,9 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use lncert::certify::verify::verify;
-use lncert::certify::{hausdorff, Certificate, Config, ShapeDesc};
+use lncert::certify::{hausdorff, Certificate, Config};
 use lncert::scalar::{interval_from_rational, Rational};
+use lncert::shape::ShapeDesc;
 use std::hint::black_box;
 
 fn pairs() -> Vec<(&'static str, ShapeDesc, ShapeDesc)> {

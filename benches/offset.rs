@@ -12,8 +12,9 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use lncert::approx::{g2, lnpair, offset, OffsetMethod, OffsetOptions};
-use lncert::curve::{parse_curve, Bezier, V2};
+use lncert::curve::{Bezier, V2};
 use lncert::scalar::{parse_rational, Scalar};
+use lncert::shape::parse_curve;
 use std::hint::black_box;
 
 const CUBIC: &str = r#"{"bezier": [[-0.95, 0.7], [-0.3, 0.5], [0.3, -2.5], [0.9, -0.2]]}"#;

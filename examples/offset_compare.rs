@@ -63,9 +63,10 @@
 
 use kurbo::{BezPath, CubicBez, ParamCurve, ParamCurveDeriv, PathSeg, Point};
 use lncert::approx::{exact_bezier, offset, OffsetMethod, OffsetOptions, OffsetResult};
-use lncert::certify::{hausdorff, Config, HausdorffBounds, ShapeDesc};
+use lncert::certify::{hausdorff, Config, HausdorffBounds};
 use lncert::curve::{Bezier, V2};
 use lncert::scalar::{parse_rational, rational_from_f64, Rational, Scalar};
+use lncert::shape::ShapeDesc;
 use serde_json::Value;
 use std::time::Instant;
 

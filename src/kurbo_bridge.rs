@@ -29,9 +29,10 @@
 //! # use kurbo::Shape;
 //! ```
 
-use crate::certify::{hausdorff, Config, ShapeDesc};
+use crate::certify::{hausdorff, Config};
 use crate::curve::{Bezier, V2};
 use crate::scalar::{rational_from_f64, Rational};
+use crate::shape::ShapeDesc;
 use crate::Error;
 use kurbo::{BezPath, CubicBez, Line, PathEl, Point, QuadBez};
 

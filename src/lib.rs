@@ -19,6 +19,22 @@
 //! | circle tangency (seed 003 §4) | [`TangencySystem`], [`TangencyProblem`], [`solve_complete`] |
 //! | property tests of your own geometry code | `lncert::gen` (feature `proptest`: strategies; `arbitrary`: fuzz inputs) |
 //!
+//! # Modules
+//!
+//! | layer | modules |
+//! |---|---|
+//! | arithmetic | [`scalar`] (exact rationals, certified intervals, `f64`, filters) , [`poly`] (exact root isolation) |
+//! | curves and propositions | [`curve`] (Bézier, B-spline), [`ln`] (the seeds' propositions) |
+//! | the geometry model | [`shape`] (exact shapes, readers, limits) |
+//! | engines | [`certify`] (Hausdorff bounds, certificates, [`verify`]), [`approx`] (proven offsets), [`tangency`] (seed 003's circle tangency) |
+//! | bridges | `kurbo_bridge` (feature `kurbo`), `gen` (features `proptest` / `arbitrary`) |
+//!
+//! Dependencies point down the table. The engines' internals (search,
+//! parametric proofs, jets, Bernstein hulls, the piece parametrisations) are
+//! private; the modules `json`, `reproduce` and `audit` are hidden from the
+//! documentation: they serve the `lncert` binary and the fuzz targets and are
+//! not part of the API.
+//!
 //! # Using lncert as a library
 //!
 //! The certified arithmetic is [inari](https://docs.rs/inari), which needs the
@@ -53,29 +69,36 @@
 //! ```
 
 pub mod approx;
+// Internal: the self-audit behind `lncert audit` and the fuzz targets.
 #[cfg(feature = "arbitrary")]
+#[doc(hidden)]
 pub mod audit;
 pub mod certify;
 pub mod curve;
 #[cfg(feature = "arbitrary")]
 pub mod gen;
+// Internal: the bounded JSON reader shared by the readers and the binary.
+#[doc(hidden)]
 pub mod json;
 #[cfg(feature = "kurbo")]
 pub mod kurbo_bridge;
 pub mod ln;
 pub mod poly;
+// Internal: the claims of `lncert reproduce`.
+#[doc(hidden)]
 pub mod reproduce;
 pub mod scalar;
+pub mod shape;
 pub mod tangency;
 
 pub use approx::{offset, union_certificate, OffsetMethod, OffsetOptions, OffsetResult};
 pub use certify::verify::{verify, Valid};
 pub use certify::{
-    hausdorff, sampled_estimate, Certificate, Config as HausdorffConfig, HausdorffBounds, ShapeDesc,
+    hausdorff, sampled_estimate, Certificate, Config as HausdorffConfig, HausdorffBounds,
 };
-pub use curve::io::parse_curve;
 pub use curve::{Bezier, V2};
 pub use scalar::{parse_rational, Interval, Rational};
+pub use shape::{parse_curve, ArcDesc, ShapeDesc, ShapeError, TravelledArc};
 pub use tangency::complete::SolveOptions;
 pub use tangency::solve::{solve_complete, TangencyProblem, TangencyReport};
 pub use tangency::system::TangencySystem;
@@ -100,6 +123,12 @@ impl Error {
             field: field.into(),
             reason: reason.into(),
         }
+    }
+}
+
+impl From<shape::ShapeError> for Error {
+    fn from(e: shape::ShapeError) -> Self {
+        Error::new(e.field, e.reason)
     }
 }
 
@@ -146,9 +175,9 @@ impl From<tangency::system::TangencyError> for Error {
     }
 }
 
-impl From<curve::io::CurveParseError> for Error {
-    fn from(e: curve::io::CurveParseError) -> Self {
-        use curve::io::CurveParseError as C;
+impl From<shape::io::CurveParseError> for Error {
+    fn from(e: shape::io::CurveParseError) -> Self {
+        use shape::io::CurveParseError as C;
         match e {
             C::Json { message } => Error::new("(document)", format!("malformed JSON: {message}")),
             C::Field { field, reason } => Error::new(field, reason),

@@ -2,8 +2,9 @@
 //! de Boor's evaluation, continuity at the knots, the B-splines of
 //! `data/offset_test_curves.json`, and bad input (typed errors naming the field).
 
-use lncert::curve::{parse_json_curve, BSpline, Bezier, CurveParseError, MAX_SEGMENTS, V2};
+use lncert::curve::{BSpline, Bezier, V2};
 use lncert::scalar::{frac, parse_rational, Rational};
+use lncert::shape::{parse_json_curve, CurveParseError, MAX_SEGMENTS};
 use proptest::prelude::*;
 use serde_json::Value;
 

@@ -6,11 +6,12 @@ mod common;
 
 use common::{exact_dist2, q};
 use lncert::certify::verify::verify;
-use lncert::certify::{hausdorff, ArcDesc, Certificate, Config, ShapeDesc};
+use lncert::certify::{hausdorff, Certificate, Config};
 use lncert::curve::{Bezier, V2};
 use lncert::ln::circle::ArcApprox;
 use lncert::poly::{Poly, Span};
 use lncert::scalar::{interval_from_rational, parse_rational, Rational, Scalar};
+use lncert::shape::{ArcDesc, ShapeDesc};
 use proptest::prelude::*;
 use serde_json::Value;
 

@@ -9,9 +9,10 @@ use common::{exact_dist2, q};
 use lncert::approx::arc::{offset_arc, ArcOffset, TravelledArc};
 use lncert::approx::prep::Junction;
 use lncert::approx::{corners, lnpair, offset, OffsetMethod, OffsetOptions, OffsetResult};
-use lncert::certify::ArcDesc;
-use lncert::curve::{parse_curve, Bezier, V2};
+use lncert::curve::{Bezier, V2};
 use lncert::scalar::{interval_from_rational, parse_rational, Interval, Rational, Scalar};
+use lncert::shape::parse_curve;
+use lncert::shape::ArcDesc;
 use proptest::prelude::*;
 
 const TEST_CUBIC: &str = r#"{"bezier": [[-0.95, 0.7], [-0.3, 0.5], [0.3, -2.5], [0.9, -0.2]]}"#;
@@ -478,7 +479,8 @@ fn bad_input_is_a_typed_error_naming_the_field() {
 #[test]
 fn ln_pair_paper_error_does_not_bound_the_offset_error() {
     use lncert::approx::prep::unit_left_normal;
-    use lncert::certify::{hausdorff, Config, ShapeDesc};
+    use lncert::certify::{hausdorff, Config};
+    use lncert::shape::ShapeDesc;
     let c = parse_curve(TEST_CUBIC).unwrap();
     let d = parse_rational("0.5").unwrap();
     let mut o = opts("0.5", 1e-2, OffsetMethod::LnPair);

@@ -536,7 +536,7 @@ fn dejavu() -> Option<PathBuf> {
 fn glyph_outlines_are_offset_and_certified() {
     let Some(font) = dejavu() else { return };
     let data = std::fs::read(&font).unwrap();
-    let o = lncert::curve::font::glyph_outline(&data, 'o').unwrap();
+    let o = lncert::shape::glyph_outline(&data, 'o').unwrap();
     assert!(
         o.iter().all(|b| b.points().len() <= 3),
         "TrueType: lines and quadratics"

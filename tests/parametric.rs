@@ -11,9 +11,10 @@
 mod common;
 
 use common::{exact_dist2, q};
-use lncert::certify::{hausdorff, sampled_estimate, Config, ShapeDesc};
+use lncert::certify::{hausdorff, sampled_estimate, Config};
 use lncert::curve::{Bezier, V2};
 use lncert::scalar::{rational_from_f64, Rational, Scalar};
+use lncert::shape::ShapeDesc;
 use proptest::prelude::*;
 
 fn pair() -> impl Strategy<Value = (Bezier<Rational>, Bezier<Rational>)> {

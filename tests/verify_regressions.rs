@@ -14,7 +14,7 @@
 //! `lncert verify`).
 
 use lncert::certify::verify::verify;
-use lncert::certify::ShapeDesc;
+use lncert::shape::ShapeDesc;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::{Duration, Instant};

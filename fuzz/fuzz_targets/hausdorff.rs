@@ -22,7 +22,8 @@
 
 use libfuzzer_sys::arbitrary::{Result, Unstructured};
 use libfuzzer_sys::{fuzz_target, Corpus};
-use lncert::certify::{hausdorff, ArcDesc, Config, HausdorffBounds, OneSided, ShapeDesc};
+use lncert::certify::{hausdorff, Config, HausdorffBounds, OneSided};
+use lncert::shape::{ArcDesc, ShapeDesc};
 use lncert::curve::{Bezier, V2};
 use lncert::scalar::{frac, rational_from_f64, Rational};
 

@@ -1,12 +1,12 @@
 #![no_main]
-//! Fuzz target `shape`: raw bytes -> (lossy UTF-8) -> `lncert::certify::ShapeDesc::parse`.
+//! Fuzz target `shape`: raw bytes -> (lossy UTF-8) -> `lncert::shape::ShapeDesc::parse`.
 //!
 //! Must never panic on any text (SVG path data or JSON). On success the canonical
 //! JSON form (`to_json`) must read back (`from_value`) to an equal description:
 //! certificates store shapes in that form and the verifier reads them back.
 
 use libfuzzer_sys::{fuzz_target, Corpus};
-use lncert::certify::ShapeDesc;
+use lncert::shape::ShapeDesc;
 
 fuzz_target!(|data: &[u8]| -> Corpus {
     let text = String::from_utf8_lossy(data);

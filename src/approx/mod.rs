@@ -26,7 +26,7 @@
 //! # Examples
 //! ```
 //! use lncert::approx::{offset, OffsetMethod, OffsetOptions};
-//! use lncert::curve::parse_curve;
+//! use lncert::shape::parse_curve;
 //! use lncert::scalar::parse_rational;
 //! let c = parse_curve("M 0 0 C 1 1 2 1 3 0").unwrap();
 //! let opts = OffsetOptions::new(parse_rational("0.25").unwrap(), 1e-3);
@@ -42,11 +42,10 @@ pub mod g2;
 pub mod lnpair;
 pub mod prep;
 
-use crate::certify::{
-    hausdorff, Certificate, Config, CoverBox, HausdorffBounds, MapCover, ShapeDesc,
-};
+use crate::certify::{hausdorff, Certificate, Config, CoverBox, HausdorffBounds, MapCover};
 use crate::curve::{Bezier, V2};
 use crate::scalar::{interval_from_rational, rational_from_f64, Interval, Rational, Scalar};
+use crate::shape::ShapeDesc;
 use num_traits::Zero;
 use prep::{Junction, OffsetCusp};
 use rayon::prelude::*;
@@ -108,7 +107,7 @@ pub struct OffsetOptions {
     pub certify: bool,
     /// Prove every segment by the two-directional search (default false).
     /// Without it, a segment is first tried by the parametric proof
-    /// ([`crate::certify::param`]: one cover of the segment's parameter for
+    /// ([`crate::certify::Parametric`]: one cover of the segment's parameter for
     /// both directions, several times cheaper), with the search as fallback;
     /// [`SegmentProof::path`] says which proved it. Either way the proofs are
     /// kept for [`union_certificate`].
@@ -145,6 +144,15 @@ pub enum OffsetError {
     },
 }
 
+impl From<crate::shape::ShapeError> for OffsetError {
+    fn from(e: crate::shape::ShapeError) -> Self {
+        OffsetError::Input {
+            field: e.field,
+            reason: e.reason,
+        }
+    }
+}
+
 fn bad(field: impl Into<String>, reason: impl Into<String>) -> OffsetError {
     OffsetError::Input {
         field: field.into(),
@@ -178,9 +186,9 @@ pub struct OffsetSegment {
 pub enum ProofPath {
     /// The parametric proof: one cover of the segment's parameter, with a
     /// cubic map into the span's exact offset, proves both directions
-    /// ([`crate::certify::param`]). Its map is kept ([`SegmentProof::map`]).
+    /// ([`crate::certify::Parametric`]). Its map is kept ([`SegmentProof::map`]).
     Parametric,
-    /// The two-directional branch and bound ([`crate::certify::search`]).
+    /// The two-directional branch and bound (`certify::search`).
     Search,
 }
 
@@ -204,7 +212,7 @@ pub struct SegmentProof {
     /// The proof that accepted the segment.
     pub path: ProofPath,
     /// The parametric proof (its map's cover, in order), for that path.
-    pub map: Option<crate::certify::param::Parametric>,
+    pub map: Option<crate::certify::Parametric>,
     /// Cover of the span's exact offset, foot maps into the segment.
     pub exact_to_segment: Vec<CoverBox>,
     /// Cover of the segment, foot maps into the span's exact offset.
@@ -349,14 +357,8 @@ fn check_options(
     if curve.is_empty() {
         return Err(bad("curve", "no pieces"));
     }
-    let shape = ShapeDesc::offset(curve.to_vec(), opts.distance.clone()).map_err(|e| match e {
-        crate::certify::CertifyError::Input { field, reason } => OffsetError::Input {
-            field: field
-                .replace("offset.curve", "curve")
-                .replace("offset.distance", "distance"),
-            reason,
-        },
-    })?;
+    let shape =
+        crate::shape::checked_offset(curve.to_vec(), opts.distance.clone(), "curve", "distance")?;
     let scale = shape.scale();
     if !(opts.tol.is_finite() && opts.tol > 0.0) {
         return Err(bad("tol", "must be a finite number > 0"));
@@ -472,8 +474,8 @@ fn certify_segment(
     // The pieces of the span's exact offset (`ShapeDesc::Offset` of the exact
     // restriction of `x`) and of the segment, enclosed without rationals.
     let (Some(pa), Some(pb)) = (
-        crate::certify::shape::offset_span(x, task.t, &opts.distance),
-        crate::certify::shape::bezier_f64(&bez),
+        crate::certify::piece::offset_span(x, task.t, &opts.distance),
+        crate::certify::piece::bezier_f64(&bez),
     ) else {
         return (None, split, false);
     };
@@ -880,7 +882,7 @@ pub fn exact_offset_shape(
 }
 
 /// The join arcs of a result as exact arcs (radius `|d|`), for output.
-pub fn join_arcs(res: &OffsetResult) -> Vec<crate::certify::ArcDesc> {
+pub fn join_arcs(res: &OffsetResult) -> Vec<crate::shape::ArcDesc> {
     let r = if res.distance < <Rational as Zero>::zero() {
         -res.distance.clone()
     } else {
@@ -895,14 +897,14 @@ pub fn join_arcs(res: &OffsetResult) -> Vec<crate::certify::ArcDesc> {
                 to,
                 clockwise,
             } => Some(if *clockwise {
-                crate::certify::ArcDesc {
+                crate::shape::ArcDesc {
                     center: center.clone(),
                     radius: r.clone(),
                     from: to.clone(),
                     to: from.clone(),
                 }
             } else {
-                crate::certify::ArcDesc {
+                crate::shape::ArcDesc {
                     center: center.clone(),
                     radius: r.clone(),
                     from: from.clone(),

@@ -91,8 +91,8 @@ pub fn fuzz_parse(data: &[u8]) -> Result<Outcome, String> {
         }
     }
     for curves in [
-        crate::curve::parse_json_curve(text),
-        crate::curve::parse_svg_path(text),
+        crate::shape::parse_json_curve(text),
+        crate::shape::parse_svg_path(text),
     ]
     .into_iter()
     .flatten()

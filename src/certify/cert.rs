@@ -56,8 +56,9 @@
 
 use super::param::ParamBox;
 use super::search::CoverBox;
-use super::{HausdorffBounds, ShapeDesc};
+use super::HausdorffBounds;
 use crate::scalar::{rational_from_f64, Rational};
+use crate::shape::ShapeDesc;
 use serde_json::{json, Value};
 
 /// Format name in the `format` field.
@@ -99,7 +100,7 @@ fn direction(from: &str, to: &str, boxes: &[CoverBox]) -> Value {
 }
 
 /// One parametric cover for a certificate: the map from piece `piece` of the
-/// source shape onto piece `target` of the other ([`super::param`]).
+/// source shape onto piece `target` of the other ([`super::Parametric`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct MapCover {
     /// The source is shape `a` (else `b`).

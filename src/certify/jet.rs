@@ -7,7 +7,7 @@
 //! of the exact derivative formula, so every enclosure is sound. Over `f64` the
 //! same code gives the float values the search uses for its heuristics.
 
-use crate::scalar::{Interval, Scalar, ScalarSqrt};
+use crate::scalar::{Scalar, ScalarSqrt};
 use std::ops::{Add, Mul, Neg, Sub};
 
 /// `(f, f′, f″)` of a function of one parameter.
@@ -129,7 +129,9 @@ pub fn dist2<S: Scalar + Copy>(p: &JetPoint<S>, q: &JetPoint<S>) -> Jet<S> {
 }
 
 /// The jet of the parameter over the box `[lo, hi]` (value `[lo, hi]`, slope 1).
-pub fn param_box(lo: f64, hi: f64) -> Option<Jet<Interval>> {
+#[cfg(test)]
+pub(crate) fn param_box(lo: f64, hi: f64) -> Option<Jet<crate::scalar::Interval>> {
+    use crate::scalar::Interval;
     let v = Interval::try_from((lo, hi)).ok()?;
     Some(Jet::variable(v))
 }
@@ -137,6 +139,7 @@ pub fn param_box(lo: f64, hi: f64) -> Option<Jet<Interval>> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scalar::Interval;
 
     #[test]
     fn derivatives_of_a_rational_expression() {

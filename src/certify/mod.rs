@@ -6,20 +6,21 @@
 //! polynomial curves with ellipses — with both one-sided distances
 //! `h(A, B) = sup_{a∈A} dist(a, B)` and `h(B, A)` bounded separately
 //! (`d_H = max(h(A, B), h(B, A))`). Upper bounds come from interval branch and
-//! bound over the parameter domains (second-order Taylor forms, see [`search`]),
+//! bound over the parameter domains (second-order Taylor forms, see [`Config`]),
 //! lower bounds from witness points whose distance is bounded below by a second
 //! branch and bound. Nothing is sampled: every figure is an outward-rounded
 //! interval bound.
 //!
 //! When a tolerance is certified, [`Certificate`] records the inputs exactly,
-//! the claim and the proof: the parametric map ([`param`]) or the search's
+//! the claim and the proof: the parametric map ([`Parametric`]) or the search's
 //! final parameter boxes with their foot maps; [`verify`](verify::verify)
 //! re-checks it without searching, with its own evaluation code (it shares
 //! only the scalar layer with the proofs).
 //!
 //! # Examples
 //! ```
-//! use lncert::certify::{hausdorff, Config, ShapeDesc};
+//! use lncert::certify::{hausdorff, Config};
+//! use lncert::shape::ShapeDesc;
 //! // The quadratic (0,0), (1/2, 1/2), (1, 0) against the segment (0,0)-(1,0):
 //! // the farthest point is B(1/2) = (1/2, 1/4), at distance 1/4 from the segment.
 //! let a = ShapeDesc::parse(r#"{"bezier": [[0, 0], ["1/2", "1/2"], [1, 0]]}"#).unwrap();
@@ -29,17 +30,20 @@
 //! ```
 
 mod bern;
-pub mod cert;
-pub mod jet;
-pub mod param;
+mod cert;
+mod jet;
+mod param;
+pub(crate) mod piece;
 mod same;
-pub mod search;
-pub mod shape;
+mod search;
 pub mod verify;
 
+use crate::shape::ShapeDesc;
+use piece::Pieces;
+
 pub use cert::{Certificate, MapCover};
+pub use param::Parametric;
 pub use search::{Config, CoverBox, OneSided};
-pub use shape::{ArcDesc, ShapeDesc};
 
 /// Errors of the certification layer; every one names the offending field.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -52,6 +56,15 @@ pub enum CertifyError {
         /// What is wrong with it.
         reason: String,
     },
+}
+
+impl From<crate::shape::ShapeError> for CertifyError {
+    fn from(e: crate::shape::ShapeError) -> Self {
+        CertifyError::Input {
+            field: e.field,
+            reason: e.reason,
+        }
+    }
 }
 
 /// Certified bounds on the Hausdorff distance and on both one-sided distances.
@@ -115,7 +128,8 @@ fn check_config(cfg: &Config) -> Result<(), CertifyError> {
 ///
 /// # Examples
 /// ```
-/// use lncert::certify::{sampled_estimate, ShapeDesc};
+/// use lncert::certify::sampled_estimate;
+/// use lncert::shape::ShapeDesc;
 /// let a = ShapeDesc::parse("M 0 0 Q 0.5 0.5 1 0").unwrap();
 /// let b = ShapeDesc::parse("M 0 0 L 1 0").unwrap();
 /// let e = sampled_estimate(&a, &b, 32).unwrap();
@@ -153,8 +167,8 @@ pub fn hausdorff(
 /// [`hausdorff`] on pieces built by the caller (`cfg` already checked);
 /// `abs_of` gives the absolute gap, called only when it is used.
 pub(crate) fn hausdorff_pieces(
-    pa: &[shape::Piece],
-    pb: &[shape::Piece],
+    pa: &[piece::Piece],
+    pb: &[piece::Piece],
     cfg: &Config,
     abs_of: &dyn Fn() -> f64,
 ) -> HausdorffBounds {
@@ -202,7 +216,7 @@ pub(crate) fn hausdorff_pieces(
 }
 
 /// The unproven sampled estimate of [`sampled_estimate`] on pieces.
-pub(crate) fn sampled_pieces(pa: &[shape::Piece], pb: &[shape::Piece], samples: usize) -> f64 {
+pub(crate) fn sampled_pieces(pa: &[piece::Piece], pb: &[piece::Piece], samples: usize) -> f64 {
     let samples = samples.clamp(1, 4096);
     search::sampled_one_sided(pa, pb, samples).max(search::sampled_one_sided(pb, pa, samples))
 }
@@ -211,8 +225,8 @@ pub(crate) fn sampled_pieces(pa: &[shape::Piece], pb: &[shape::Piece], samples: 
 /// an exact parameter domain; see [`param`]): for `cfg.tol`, or for the
 /// relative gap `cfg.rel` with witness lower bounds.
 fn parametric_path(
-    pa: &[shape::Piece],
-    pb: &[shape::Piece],
+    pa: &[piece::Piece],
+    pb: &[piece::Piece],
     cfg: &Config,
     abs: f64,
 ) -> Option<HausdorffBounds> {

@@ -43,8 +43,8 @@
 //! does not decide: it never refutes (it has no lower bounds of its own).
 
 use super::jet::Jet;
+use super::piece::Piece;
 use super::search::{difference_bound, foot_newton, foot_slope_of, point_iv as point, ByBound};
-use super::shape::Piece;
 use crate::scalar::{Interval, Scalar};
 use std::collections::BinaryHeap;
 
@@ -90,7 +90,7 @@ pub struct Parametric {
     /// Boxes evaluated in all.
     pub evaluated: usize,
     /// The map's source (the covered parameter) is shape `A` of
-    /// [`super::hausdorff`] (else `B`); [`prove`] itself always maps `B`.
+    /// [`super::hausdorff`] (else `B`); `prove` itself always maps `B`.
     pub source_a: bool,
 }
 

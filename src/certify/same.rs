@@ -17,9 +17,9 @@
 //!
 //! Every comparison is exact (rational arithmetic).
 
-use super::{ArcDesc, ShapeDesc};
 use crate::curve::{Bezier, V2};
 use crate::scalar::Rational;
+use crate::shape::{ArcDesc, ShapeDesc};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 
@@ -56,7 +56,7 @@ impl ShapeDesc {
     ///
     /// # Examples
     /// ```
-    /// use lncert::certify::ShapeDesc;
+    /// use lncert::shape::ShapeDesc;
     /// let whole = ShapeDesc::parse("M 0 0 Q 1 2 2 0").unwrap();
     /// let halves = ShapeDesc::parse(r#"{"beziers": [[[0, 0], ["1/2", 1], [1, 1]], [[1, 1], ["3/2", 1], [2, 0]]]}"#).unwrap();
     /// assert!(whole.same_as(&halves).is_ok());

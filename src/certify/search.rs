@@ -34,7 +34,7 @@
 //! outer domain of `A`: they are the proof data of a certificate.
 
 use super::jet::{dist2, Jet, JetPoint};
-use super::shape::Piece;
+use super::piece::Piece;
 use crate::scalar::{Interval, Scalar};
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
@@ -58,7 +58,7 @@ pub struct Config {
     /// For callers that only need the verdict (the offset driver splits a refuted span).
     pub verdict_only: bool,
     /// For one piece against one piece: try the parametric proof
-    /// ([`super::param`]) first — one cover for both directions, lower bounds
+    /// ([`super::Parametric`]) first — one cover for both directions, lower bounds
     /// from witness points of one side — and run the search only if it does not
     /// reach the goal (default true).
     /// Its result has no box covers, so a [`super::Certificate`] cannot be

@@ -15,8 +15,9 @@
 
 use super::args::{bad, number};
 use super::{print_out, CliError, EXIT_OK, EXIT_REFUTED, EXIT_UNDECIDED};
-use lncert::certify::{hausdorff, Certificate, Config, OneSided, ShapeDesc};
+use lncert::certify::{hausdorff, Certificate, Config, OneSided};
 use lncert::scalar::interval_from_rational;
+use lncert::shape::ShapeDesc;
 use serde_json::json;
 use std::path::PathBuf;
 
@@ -86,7 +87,7 @@ pub fn run(a: &HausdorffArgs) -> Result<i32, CliError> {
         if num_traits::Signed::is_negative(t) {
             return Err(bad("--tol", "must be ≥ 0"));
         }
-        if interval_from_rational(t).sup() > lncert::certify::shape::MAX_COORDINATE {
+        if interval_from_rational(t).sup() > lncert::shape::MAX_COORDINATE {
             return Err(bad("--tol", "absurdly large"));
         }
     }

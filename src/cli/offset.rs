@@ -18,14 +18,15 @@
 
 use super::args::{bad, number, point_json, q};
 use super::{print_out, CliError};
-use lncert::approx::arc::{offset_arc, parse_arc_input, ArcOffset, TravelledArc};
+use lncert::approx::arc::{offset_arc, ArcOffset};
 use lncert::approx::prep::Junction;
 use lncert::approx::{
     global_bounds, join_arcs, offset, union_certificate, OffsetError, OffsetMethod, OffsetOptions,
     OffsetResult, ProofPath,
 };
-use lncert::curve::parse_curve;
 use lncert::scalar::{interval_from_rational, Rational};
+use lncert::shape::parse_curve;
+use lncert::shape::{parse_arc_input, TravelledArc};
 use serde_json::{json, Value};
 use std::path::PathBuf;
 
@@ -155,12 +156,12 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             }
             let data = std::fs::read(&a.curve)
                 .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
-            lncert::curve::font::glyph_outline(&data, ch).map_err(|e| bad("--glyph", e))?
+            lncert::shape::glyph_outline(&data, ch).map_err(|e| bad("--glyph", e))?
         }
         None => {
             let text = read_text(&a.curve)?;
             if let Some(arcs) = parse_arc_input(&text) {
-                let arcs = arcs.map_err(offset_err)?;
+                let arcs = arcs.map_err(|e| offset_err(e.into()))?;
                 return run_arcs(a, &arcs, &distance, tol);
             }
             parse_curve(&text).map_err(|e| bad("CURVE", e))?

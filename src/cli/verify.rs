@@ -6,7 +6,7 @@
 //!
 //! `--against A B` (shape files in any accepted input form) also confirms that
 //! the certificate speaks about exactly those shapes, compared as exact
-//! geometry ([`lncert::certify::ShapeDesc::same_as`]: pieces may be split,
+//! geometry ([`lncert::shape::ShapeDesc::same_as`]: pieces may be split,
 //! degrees elevated, arc directions scaled).
 //!
 //! Exit codes: 0 = valid (and, with `--against`, about those shapes);
@@ -17,8 +17,8 @@ use super::args::bad;
 use super::hausdorff::read_shape;
 use super::{print_out, CliError};
 use lncert::certify::verify::{verify, Invalid};
-use lncert::certify::ShapeDesc;
 use lncert::json::Limits;
+use lncert::shape::ShapeDesc;
 use serde_json::json;
 use std::io::Read;
 use std::path::PathBuf;

@@ -24,7 +24,7 @@ impl<S: Scalar> Bezier<S> {
     ///
     /// # Panics
     /// If `pts` is empty. Parsed input never reaches this (the parsers in
-    /// [`crate::curve::parse_curve`] reject curves with fewer than 2 points).
+    /// [`crate::shape::parse_curve`] reject curves with fewer than 2 points).
     pub fn new(pts: Vec<V2<S>>) -> Self {
         assert!(
             !pts.is_empty(),

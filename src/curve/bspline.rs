@@ -72,7 +72,7 @@
 //! assert_eq!(pieces[1].points()[2], p(6, 4));
 //! ```
 
-use super::io::field_err;
+use super::field_err;
 use super::{Bezier, CurveParseError, V2};
 use crate::scalar::{rational_to_string, Rational};
 use num_bigint::BigInt;
@@ -80,7 +80,7 @@ use num_integer::Integer;
 use num_traits::{One, Zero};
 
 /// Largest degree accepted: the degree of a Bézier segment with
-/// [`crate::curve::MAX_CONTROL_POINTS`] control points.
+/// [`crate::shape::MAX_CONTROL_POINTS`] control points.
 const MAX_DEGREE: usize = 63;
 
 /// An exact planar B-spline curve: degree, knot vector and control points,
@@ -152,7 +152,8 @@ impl BSpline {
     ///
     /// # Examples
     /// ```
-    /// use lncert::curve::{BSpline, CurveParseError, V2};
+    /// use lncert::curve::{BSpline, V2};
+    /// use lncert::shape::CurveParseError;
     /// use lncert::scalar::Rational;
     /// let k = |v: &[i64]| v.iter().map(|&x| Rational::from_integer(x.into())).collect::<Vec<_>>();
     /// let pts = vec![V2::new(k(&[0])[0].clone(), k(&[0])[0].clone()); 4];

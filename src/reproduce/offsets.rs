@@ -13,9 +13,9 @@
 use super::{json_rational, Claim, Verdict};
 use crate::approx::arc::{offset_arc, ArcOffset, TravelledArc};
 use crate::approx::{offset, OffsetMethod, OffsetOptions};
-use crate::certify::ArcDesc;
 use crate::curve::{BSpline, Bezier, V2};
 use crate::scalar::Rational;
+use crate::shape::ArcDesc;
 use serde_json::Value;
 
 /// The built-in copy of `../shared/data/offset_test_curves.json`.

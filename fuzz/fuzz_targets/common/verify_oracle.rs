@@ -1,7 +1,8 @@
 //! The oracle shared by the `verify` and `verify_struct` fuzz targets
 //! (included by each with `#[path]`).
 
-use lncert::certify::{hausdorff, Config, ShapeDesc};
+use lncert::certify::{hausdorff, Config};
+use lncert::shape::ShapeDesc;
 use lncert::scalar::{rational_from_f64, Rational};
 use serde_json::Value;
 use std::collections::BTreeMap;

@@ -2,9 +2,9 @@
 //!
 //! It shares nothing with the search but the scalar layer (inari intervals,
 //! exact rationals) and the bounded JSON reader ([`crate::json`]): its own
-//! strict reader of the canonical shapes ([`read`]), its own de Casteljau
+//! strict reader of the canonical shapes (`read`), its own de Casteljau
 //! evaluation, arc and offset formulas and its own second-order Taylor
-//! arithmetic ([`eval`]). It never searches: it walks the boxes of the
+//! arithmetic (`eval`). It never searches: it walks the boxes of the
 //! certificate, checks that they cover every parameter domain exactly (rational
 //! comparisons), that each foot map stays inside its target's domain, and that
 //! the recomputed bound of each box is ≤ the tolerance; the first failure is
@@ -136,7 +136,8 @@ const KEYS_2: [&str; 7] = ["format", "version", "claim", "tol", "a", "b", "direc
 ///
 /// # Examples
 /// ```
-/// use lncert::certify::{hausdorff, Certificate, Config, ShapeDesc};
+/// use lncert::certify::{hausdorff, Certificate, Config};
+/// use lncert::shape::ShapeDesc;
 /// use lncert::certify::verify::verify;
 /// use lncert::scalar::parse_rational;
 /// let a = ShapeDesc::parse("M 0 0 Q 0.5 0.5 1 0").unwrap();

@@ -1,14 +1,14 @@
 //! The verifier's strict reader of the canonical shape form (certificate
 //! format 2). It accepts exactly the canonical documents that
-//! [`ShapeDesc::to_json`](crate::certify::ShapeDesc::to_json) writes and
+//! [`ShapeDesc::to_json`](crate::shape::ShapeDesc::to_json) writes and
 //! nothing else; the specification is in `proofs/certify-hausdorff.md`
 //! ("The canonical shape form"). Every rejection names the field.
 
 use super::eval::{ic, VPiece, VShape};
 use super::{inv, Invalid};
-use crate::curve::io::{MAX_CONTROL_POINTS, MAX_NUMBER_CHARS, MAX_SEGMENTS};
 use crate::json::Json;
 use crate::scalar::{abs_le_pow10, interval_from_rational, Interval, Rational};
+use crate::shape::io::{MAX_CONTROL_POINTS, MAX_NUMBER_CHARS, MAX_SEGMENTS};
 use num_bigint::BigInt;
 use num_traits::{Signed, Zero};
 

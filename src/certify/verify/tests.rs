@@ -13,9 +13,10 @@
 use super::read::read_shape;
 use super::read_canonical_shape;
 use crate::certify::jet::Jet;
-use crate::certify::ShapeDesc;
+use crate::certify::piece::Pieces;
 use crate::json::{parse, Limits};
 use crate::scalar::Interval;
+use crate::shape::ShapeDesc;
 use serde_json::Value;
 
 const CORPUS: &str = include_str!("../../../tests/data/shape_corpus.json");
@@ -70,7 +71,7 @@ fn both_readers_follow_the_corpus() {
         let canon = read_canonical_shape(&text);
         let got_user = match &user {
             Ok(_) => "ok".to_string(),
-            Err(crate::certify::CertifyError::Input { field, .. }) => field.clone(),
+            Err(crate::shape::ShapeError { field, .. }) => field.clone(),
         };
         let got_canon = match &canon {
             Ok(_) => "ok".to_string(),

@@ -61,7 +61,9 @@
 //! characters per number literal (whose decimal exponent `parse_rational`
 //! bounds further).
 
-use super::{BSpline, Bezier, V2};
+pub(crate) use crate::curve::field_err;
+pub use crate::curve::CurveParseError;
+use crate::curve::{BSpline, Bezier, V2};
 use crate::scalar::{parse_rational, ParseNumberError, Rational};
 use serde_json::Value;
 
@@ -75,55 +77,6 @@ pub const MAX_SVG_BYTES: usize = 1_000_000;
 pub const MAX_BSPLINE_WORK: u128 = 50_000_000;
 /// Longest number literal accepted, in characters.
 pub const MAX_NUMBER_CHARS: usize = 4096;
-
-/// Why a curve could not be read; always says where and why.
-///
-/// # Examples
-/// ```
-/// use lncert::curve::{parse_json_curve, CurveParseError};
-/// let err = parse_json_curve(r#"{"bezier": [[1, "abc"], [0, 0]]}"#).unwrap_err();
-/// assert!(matches!(&err, CurveParseError::Field { field, .. } if field == "bezier[0][1]"));
-/// assert!(err.to_string().contains("abc"));
-/// ```
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum CurveParseError {
-    /// The text is not well-formed JSON.
-    #[error("malformed JSON: {message}")]
-    Json {
-        /// serde_json's description, with line and column.
-        message: String,
-    },
-    /// A JSON field has the wrong shape or an unreadable number.
-    #[error("invalid field `{field}`: {reason}")]
-    Field {
-        /// Path of the field, e.g. `bezier[2][1]`.
-        field: String,
-        /// What is wrong with it.
-        reason: String,
-    },
-    /// The SVG path data is malformed or unsupported at a byte offset.
-    #[error("SVG path data, at byte {position}: {reason}")]
-    Svg {
-        /// Byte offset in the path data.
-        position: usize,
-        /// What is wrong there.
-        reason: String,
-    },
-    /// Nothing to read.
-    #[error("no curve segments in {what}")]
-    Empty {
-        /// What is empty.
-        what: String,
-    },
-    /// Input over one of the limits.
-    #[error("too large: {what} exceeds the limit of {limit}")]
-    TooLarge {
-        /// What is too large.
-        what: String,
-        /// The limit.
-        limit: usize,
-    },
-}
 
 /// Reads a number literal exactly, guarding `parse_rational` against inputs
 /// that are too long or whose exponents do not fit an `i64`; the error is a
@@ -179,13 +132,6 @@ fn exact_number(text: &str) -> Result<Rational, String> {
 // ---------------------------------------------------------------------------
 // JSON
 // ---------------------------------------------------------------------------
-
-pub(crate) fn field_err(field: &str, reason: impl Into<String>) -> CurveParseError {
-    CurveParseError::Field {
-        field: field.to_string(),
-        reason: reason.into(),
-    }
-}
 
 pub(crate) fn describe(v: &Value) -> String {
     match v {
@@ -403,7 +349,7 @@ const CURVE_KEYS: [&str; 3] = ["bezier", "beziers", "bspline"];
 ///
 /// # Examples
 /// ```
-/// use lncert::curve::parse_json_curve;
+/// use lncert::shape::parse_json_curve;
 /// use lncert::scalar::parse_rational;
 /// let c = parse_json_curve(r#"{"bezier": [[-0.95, "0.7"], ["1/3", 1e-3]]}"#).unwrap();
 /// assert_eq!(c.len(), 1);
@@ -891,7 +837,7 @@ fn zero() -> Rational {
 ///
 /// # Examples
 /// ```
-/// use lncert::curve::parse_svg_path;
+/// use lncert::shape::parse_svg_path;
 /// use lncert::scalar::parse_rational;
 /// let c = parse_svg_path("M 0 0 C 1 2 3 4 5 6 S 7 8 9 10").unwrap();
 /// assert_eq!(c.len(), 2);
@@ -928,11 +874,11 @@ pub(crate) fn svg_number_list(text: &str) -> Result<Vec<Rational>, CurveParseErr
 
 /// Reads a curve in any of its syntaxes: JSON when the text (after leading
 /// whitespace) starts with `{`, an SVG document when it starts with `<`
-/// ([`super::svgdoc`]), SVG path data otherwise.
+/// ([`super::parse_svg_document`]), SVG path data otherwise.
 ///
 /// # Examples
 /// ```
-/// use lncert::curve::parse_curve;
+/// use lncert::shape::parse_curve;
 /// let a = parse_curve(r#" {"bezier": [[0, 0], ["1/2", 1], [1, 0]]}"#).unwrap();
 /// let b = parse_curve("M 0 0 Q 0.5 1 1 0").unwrap();
 /// assert_eq!(a, b);

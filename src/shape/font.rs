@@ -8,7 +8,7 @@
 //! dropped, since they are not curves.
 
 use super::io::CurveParseError;
-use super::{Bezier, V2};
+use crate::curve::{Bezier, V2};
 use crate::scalar::{rational_from_f64, Rational};
 
 fn bad(field: &str, reason: impl Into<String>) -> CurveParseError {

@@ -19,7 +19,7 @@
 //!
 //! # Examples
 //! ```
-//! use lncert::curve::svgdoc::parse_svg_document;
+//! use lncert::shape::parse_svg_document;
 //! let doc = r#"<svg xmlns="http://www.w3.org/2000/svg">
 //!   <g transform="translate(10, 0) scale(2)">
 //!     <path d="M 0 0 C 1 1 2 1 3 0"/>
@@ -34,7 +34,7 @@
 //! ```
 
 use super::io::{parse_svg_path, svg_number_list, CurveParseError, MAX_SEGMENTS};
-use super::{Bezier, V2};
+use crate::curve::{Bezier, V2};
 use crate::scalar::Rational;
 use num_traits::{One, Zero};
 

@@ -1,0 +1,483 @@
+//! The exact shape descriptions: what a shape *is* (curve, arc, offset,
+//! convolution), how it is read from JSON or SVG and written back canonically
+//! (certificates store this form), and the checks every constructor applies.
+//! How the certification engine parametrises each kind is in
+//! `certify::piece`.
+
+use super::io::{describe, json_coordinate, json_point, parse_curve, parse_svg_path};
+use super::ShapeError;
+use crate::curve::{Bezier, V2};
+use crate::poly::{has_common_root_in, Span};
+use crate::scalar::{Rational, Scalar};
+use num_traits::{Signed, Zero};
+use serde_json::{json, Value};
+
+/// Largest accepted coordinate magnitude, `10¹⁰⁰` (compared exactly): squares of
+/// distances must stay far from the f64 overflow threshold in interval arithmetic.
+pub const MAX_COORDINATE: f64 = 1e100;
+
+/// A circular arc, counter-clockwise from direction `from` to direction `to`
+/// (both seen from the centre).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ArcDesc {
+    /// Centre of the arc's circle.
+    pub center: V2<Rational>,
+    /// Radius (`> 0`).
+    pub radius: Rational,
+    /// Direction from the centre to the start point (nonzero, any length).
+    pub from: V2<Rational>,
+    /// Direction from the centre to the end point (nonzero, any length).
+    pub to: V2<Rational>,
+}
+
+/// An exactly described shape.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ShapeDesc {
+    /// A (piecewise) polynomial Bézier curve.
+    Curve(Vec<Bezier<Rational>>),
+    /// A circular arc.
+    Arc(ArcDesc),
+    /// The exact offset `x + r N` (left unit normal `N`, signed distance `r`) of
+    /// each piece of a regular polynomial curve.
+    Offset {
+        /// The pieces of the regular polynomial curve that is offset.
+        curve: Vec<Bezier<Rational>>,
+        /// Signed offset distance `r ≠ 0` (`> 0` to the left).
+        distance: Rational,
+    },
+    /// The exact convolution of each piece of a regular polynomial curve with the
+    /// ellipse `{M u : |u| = 1}`: `x(t) + side · Q n/√(nᵀQn)`, `Q = M Mᵀ`,
+    /// `n` the left normal (seed 001's convolution curve).
+    Convolution {
+        /// The pieces of the regular polynomial curve that is convolved.
+        curve: Vec<Bezier<Rational>>,
+        /// The matrix `M` by rows, `[[m11, m12], [m21, m22]]` (`det M ≠ 0`).
+        ellipse: [[Rational; 2]; 2],
+        /// `+1` or `−1`: the ellipse point whose outer normal is `side · n`.
+        side: i8,
+    },
+}
+
+/// [`ShapeDesc::arc`]'s checks, errors naming `{name}.radius`, `{name}.from`, ….
+pub(crate) fn checked_arc(a: ArcDesc, name: &str) -> Result<ArcDesc, ShapeError> {
+    check_magnitude(&a.center.x, &format!("{name}.center[0]"))?;
+    check_magnitude(&a.center.y, &format!("{name}.center[1]"))?;
+    check_magnitude(&a.radius, &format!("{name}.radius"))?;
+    if !a.radius.is_positive() {
+        return Err(err(format!("{name}.radius"), "must be > 0"));
+    }
+    for (v, f) in [(&a.from, "from"), (&a.to, "to")] {
+        let f = &format!("{name}.{f}");
+        check_magnitude(&v.x, f)?;
+        check_magnitude(&v.y, f)?;
+        if v.x.is_zero() && v.y.is_zero() {
+            return Err(err(f, "the direction vector is zero"));
+        }
+    }
+    if a.from.cross(&a.to).is_zero() && a.from.dot(&a.to).is_positive() {
+        return Err(err(
+            format!("{name}.to"),
+            format!("same direction as {name}.from: zero sweep (full circles are not supported)"),
+        ));
+    }
+    Ok(a)
+}
+
+/// [`ShapeDesc::offset`]'s checks, errors naming the fields as given.
+pub(crate) fn checked_offset(
+    curve: Vec<Bezier<Rational>>,
+    distance: Rational,
+    curve_field: &str,
+    distance_field: &str,
+) -> Result<ShapeDesc, ShapeError> {
+    check_pieces(&curve, curve_field)?;
+    check_regular(&curve, curve_field)?;
+    check_magnitude(&distance, distance_field)?;
+    if distance.is_zero() {
+        return Err(err(
+            distance_field,
+            "must be nonzero (the offset at distance 0 is the curve itself)",
+        ));
+    }
+    Ok(ShapeDesc::Offset { curve, distance })
+}
+
+pub(super) fn err(field: impl Into<String>, reason: impl Into<String>) -> ShapeError {
+    ShapeError {
+        field: field.into(),
+        reason: reason.into(),
+    }
+}
+
+fn curve_value(v: &Value, field: &str) -> Result<Vec<Bezier<Rational>>, ShapeError> {
+    let parsed = match v {
+        Value::String(s) => parse_svg_path(s),
+        Value::Object(_) => parse_curve(&v.to_string()),
+        other => {
+            return Err(err(
+                field,
+                format!(
+                    "expected a curve ({{\"bezier\": ...}}, {{\"beziers\": ...}} or SVG path data), found {}",
+                    describe(other)
+                ),
+            ))
+        }
+    };
+    parsed.map_err(|e| err(field, e.to_string()))
+}
+
+fn number(v: Option<&Value>, field: &str) -> Result<Rational, ShapeError> {
+    let v = v.ok_or_else(|| err(field, "missing"))?;
+    json_coordinate(v, field).map_err(|e| err(field, e.to_string()))
+}
+
+fn point(v: Option<&Value>, field: &str) -> Result<V2<Rational>, ShapeError> {
+    let v = v.ok_or_else(|| err(field, "missing"))?;
+    json_point(v, field).map_err(|e| err(field, e.to_string()))
+}
+
+fn check_keys(
+    map: &serde_json::Map<String, Value>,
+    field: &str,
+    keys: &[&str],
+) -> Result<(), ShapeError> {
+    match map.keys().find(|k| !keys.contains(&k.as_str())) {
+        Some(k) => Err(err(
+            if field == "(top level)" {
+                k.to_string()
+            } else {
+                format!("{field}.{k}")
+            },
+            format!("unknown field; expected one of {keys:?}"),
+        )),
+        None => Ok(()),
+    }
+}
+
+impl ShapeDesc {
+    /// Reads a shape: a curve (`{"bezier": ...}`, `{"beziers": ...}` or SVG path
+    /// data), `{"arc": {"center": [x, y], "radius": r, "from": [dx, dy], "to": [dx, dy]}}`
+    /// (counter-clockwise; add `"clockwise": true` to go the other way),
+    /// `{"offset": {"curve": CURVE, "distance": r}}` or
+    /// `{"convolution": {"curve": CURVE, "ellipse": [[m11, m12], [m21, m22]], "side": 1}}`.
+    /// Numbers are read exactly (JSON numbers by their digits, or strings like `"1/3"`).
+    ///
+    /// # Examples
+    /// ```
+    /// use lncert::shape::ShapeDesc;
+    /// let arc = ShapeDesc::parse(r#"{"arc": {"center": [0, 0], "radius": 1, "from": [1, 0], "to": [0, 1]}}"#).unwrap();
+    /// assert!(matches!(arc, ShapeDesc::Arc(_)));
+    /// let e = ShapeDesc::parse(r#"{"arc": {"center": [0, 0], "radius": -1, "from": [1, 0], "to": [0, 1]}}"#).unwrap_err();
+    /// assert!(e.to_string().contains("arc.radius"));
+    /// ```
+    pub fn parse(text: &str) -> Result<ShapeDesc, ShapeError> {
+        let trimmed = text.trim();
+        if trimmed.starts_with('<') {
+            return ShapeDesc::curve(
+                crate::shape::parse_svg_document(trimmed).map_err(|e| err("svg", e.to_string()))?,
+            );
+        }
+        if !trimmed.starts_with('{') {
+            return ShapeDesc::curve(
+                parse_svg_path(trimmed).map_err(|e| err("path", e.to_string()))?,
+            );
+        }
+        let doc =
+            crate::json::parse(trimmed, &crate::json::Limits::DEFAULT).map_err(|e| {
+                match e.kind {
+                    crate::json::ErrorKind::Syntax => err("(json)", format!("malformed JSON: {e}")),
+                    _ => err(
+                        e.path.clone(),
+                        format!("{} (line {}, column {})", e.reason, e.line, e.column),
+                    ),
+                }
+            })?;
+        Self::from_value(&doc.to_value())
+    }
+
+    /// [`ShapeDesc::parse`] on a parsed JSON value.
+    pub fn from_value(doc: &Value) -> Result<ShapeDesc, ShapeError> {
+        let Value::Object(map) = doc else {
+            return Err(err(
+                "(top level)",
+                format!("expected an object, found {}", describe(doc)),
+            ));
+        };
+        let kinds = [
+            "arc",
+            "offset",
+            "convolution",
+            "bezier",
+            "beziers",
+            "bspline",
+        ];
+        let given: Vec<&str> = kinds.into_iter().filter(|k| map.contains_key(*k)).collect();
+        if given.len() > 1 {
+            return Err(err(
+                "(top level)",
+                format!(
+                    "a shape has exactly one of the keys {kinds:?}; found {}",
+                    given.join(" and ")
+                ),
+            ));
+        }
+        if let Some(a) = map.get("arc") {
+            check_keys(map, "(top level)", &["arc"])?;
+            let Value::Object(m) = a else {
+                return Err(err(
+                    "arc",
+                    format!("expected an object, found {}", describe(a)),
+                ));
+            };
+            check_keys(m, "arc", &["center", "radius", "from", "to", "clockwise"])?;
+            let clockwise = match m.get("clockwise") {
+                None => false,
+                Some(Value::Bool(b)) => *b,
+                Some(v) => {
+                    return Err(err(
+                        "arc.clockwise",
+                        format!("expected true or false, found {}", describe(v)),
+                    ))
+                }
+            };
+            let (mut from, mut to) = (
+                point(m.get("from"), "arc.from")?,
+                point(m.get("to"), "arc.to")?,
+            );
+            if clockwise {
+                std::mem::swap(&mut from, &mut to);
+            }
+            let arc = ArcDesc {
+                center: point(m.get("center"), "arc.center")?,
+                radius: number(m.get("radius"), "arc.radius")?,
+                from,
+                to,
+            };
+            return ShapeDesc::arc(arc);
+        }
+        if let Some(o) = map.get("offset") {
+            check_keys(map, "(top level)", &["offset"])?;
+            let Value::Object(m) = o else {
+                return Err(err(
+                    "offset",
+                    format!("expected an object, found {}", describe(o)),
+                ));
+            };
+            check_keys(m, "offset", &["curve", "distance"])?;
+            let curve = curve_value(
+                m.get("curve")
+                    .ok_or_else(|| err("offset.curve", "missing"))?,
+                "offset.curve",
+            )?;
+            let distance = number(m.get("distance"), "offset.distance")?;
+            return ShapeDesc::offset(curve, distance);
+        }
+        if let Some(o) = map.get("convolution") {
+            check_keys(map, "(top level)", &["convolution"])?;
+            let Value::Object(m) = o else {
+                return Err(err(
+                    "convolution",
+                    format!("expected an object, found {}", describe(o)),
+                ));
+            };
+            check_keys(m, "convolution", &["curve", "ellipse", "side"])?;
+            let curve = curve_value(
+                m.get("curve")
+                    .ok_or_else(|| err("convolution.curve", "missing"))?,
+                "convolution.curve",
+            )?;
+            let rows = m
+                .get("ellipse")
+                .and_then(Value::as_array)
+                .filter(|r| r.len() == 2)
+                .ok_or_else(|| {
+                    err(
+                        "convolution.ellipse",
+                        "expected the 2×2 matrix [[m11, m12], [m21, m22]]",
+                    )
+                })?;
+            let r0 = point(Some(&rows[0]), "convolution.ellipse[0]")?;
+            let r1 = point(Some(&rows[1]), "convolution.ellipse[1]")?;
+            let side = match m.get("side") {
+                None => 1,
+                Some(v) if v.to_string() == "1" => 1,
+                Some(v) if v.to_string() == "-1" => -1,
+                Some(v) => {
+                    return Err(err(
+                        "convolution.side",
+                        format!("expected 1 or -1, found {}", describe(v)),
+                    ))
+                }
+            };
+            return ShapeDesc::convolution(curve, [[r0.x, r0.y], [r1.x, r1.y]], side);
+        }
+        ShapeDesc::curve(parse_curve(&doc.to_string()).map_err(|e| err("curve", e.to_string()))?)
+    }
+
+    /// A curve shape, with the coordinate-size check.
+    pub fn curve(pieces: Vec<Bezier<Rational>>) -> Result<ShapeDesc, ShapeError> {
+        check_pieces(&pieces, "curve")?;
+        Ok(ShapeDesc::Curve(pieces))
+    }
+
+    /// An arc: `radius > 0`, nonzero directions, a nonzero sweep (`from` and `to`
+    /// not the same direction; full circles are not supported).
+    pub fn arc(a: ArcDesc) -> Result<ShapeDesc, ShapeError> {
+        checked_arc(a, "arc").map(ShapeDesc::Arc)
+    }
+
+    /// An offset at signed distance `distance ≠ 0` of a regular curve.
+    pub fn offset(
+        curve: Vec<Bezier<Rational>>,
+        distance: Rational,
+    ) -> Result<ShapeDesc, ShapeError> {
+        checked_offset(curve, distance, "offset.curve", "offset.distance")
+    }
+
+    /// A convolution with the ellipse `M · unit circle`, `det M ≠ 0`, `side = ±1`.
+    pub fn convolution(
+        curve: Vec<Bezier<Rational>>,
+        m: [[Rational; 2]; 2],
+        side: i8,
+    ) -> Result<ShapeDesc, ShapeError> {
+        check_pieces(&curve, "convolution.curve")?;
+        check_regular(&curve, "convolution.curve")?;
+        for (i, row) in m.iter().enumerate() {
+            for (j, x) in row.iter().enumerate() {
+                check_magnitude(x, &format!("convolution.ellipse[{i}][{j}]"))?;
+            }
+        }
+        if (&m[0][0] * &m[1][1] - &m[0][1] * &m[1][0]).is_zero() {
+            return Err(err(
+                "convolution.ellipse",
+                "the matrix is singular (the ellipse is degenerate)",
+            ));
+        }
+        if side != 1 && side != -1 {
+            return Err(err("convolution.side", "must be 1 or -1"));
+        }
+        Ok(ShapeDesc::Convolution {
+            curve,
+            ellipse: m,
+            side,
+        })
+    }
+
+    /// The canonical JSON form (exact rational strings), as stored in certificates.
+    pub fn to_json(&self) -> Value {
+        fn q(r: &Rational) -> Value {
+            Value::String(r.to_string())
+        }
+        fn p(v: &V2<Rational>) -> Value {
+            json!([q(&v.x), q(&v.y)])
+        }
+        fn curve(c: &[Bezier<Rational>]) -> Value {
+            json!({"beziers": c.iter().map(|b| b.points().iter().map(p).collect::<Vec<_>>()).collect::<Vec<_>>()})
+        }
+        match self {
+            ShapeDesc::Curve(c) => curve(c),
+            ShapeDesc::Arc(a) => {
+                json!({"arc": {"center": p(&a.center), "radius": q(&a.radius), "from": p(&a.from), "to": p(&a.to)}})
+            }
+            ShapeDesc::Offset { curve: c, distance } => {
+                json!({"offset": {"curve": curve(c), "distance": q(distance)}})
+            }
+            ShapeDesc::Convolution {
+                curve: c,
+                ellipse,
+                side,
+            } => json!({"convolution": {
+                "curve": curve(c),
+                "ellipse": [[q(&ellipse[0][0]), q(&ellipse[0][1])], [q(&ellipse[1][0]), q(&ellipse[1][1])]],
+                "side": side}}),
+        }
+    }
+
+    /// A short human description.
+    pub fn summary(&self) -> String {
+        match self {
+            ShapeDesc::Curve(c) => format!(
+                "curve, {} Bézier piece(s) of degree ≤ {}",
+                c.len(),
+                c.iter().map(|b| b.degree()).max().unwrap_or(0)
+            ),
+            ShapeDesc::Arc(a) => format!("arc of radius {}", a.radius),
+            ShapeDesc::Offset { curve, distance } => {
+                format!("offset at {} of {} piece(s)", distance, curve.len())
+            }
+            ShapeDesc::Convolution { curve, .. } => {
+                format!("convolution of {} piece(s) with an ellipse", curve.len())
+            }
+        }
+    }
+
+    /// The largest coordinate magnitude involved (for scale-aware tolerances).
+    pub fn scale(&self) -> f64 {
+        let pts_scale = |c: &[Bezier<Rational>]| {
+            c.iter()
+                .flat_map(|b| b.points().iter())
+                .map(|p| p.x.approx().abs().max(p.y.approx().abs()))
+                .fold(0.0, f64::max)
+        };
+        match self {
+            ShapeDesc::Curve(c) => pts_scale(c),
+            ShapeDesc::Arc(a) => {
+                a.center.x.approx().abs().max(a.center.y.approx().abs()) + a.radius.approx()
+            }
+            ShapeDesc::Offset { curve, distance } => pts_scale(curve) + distance.approx().abs(),
+            ShapeDesc::Convolution { curve, ellipse, .. } => {
+                pts_scale(curve)
+                    + ellipse
+                        .iter()
+                        .flatten()
+                        .map(|x| x.approx().abs())
+                        .sum::<f64>()
+            }
+        }
+    }
+}
+
+fn check_magnitude(r: &Rational, field: &str) -> Result<(), ShapeError> {
+    // exactly |r| ≤ 10¹⁰⁰ (`MAX_COORDINATE`), the rule the verifier applies too
+    if !crate::scalar::abs_le_pow10(r, 100) {
+        return Err(err(
+            field,
+            format!("magnitude above the supported limit {MAX_COORDINATE:e}"),
+        ));
+    }
+    Ok(())
+}
+
+fn check_pieces(c: &[Bezier<Rational>], field: &str) -> Result<(), ShapeError> {
+    if c.is_empty() {
+        return Err(err(field, "no curve pieces"));
+    }
+    for (i, b) in c.iter().enumerate() {
+        for (k, p) in b.points().iter().enumerate() {
+            check_magnitude(&p.x, &format!("{field}[{i}][{k}][0]"))?;
+            check_magnitude(&p.y, &format!("{field}[{i}][{k}][1]"))?;
+        }
+    }
+    Ok(())
+}
+
+/// The offset and the convolution need a normal everywhere: `x′(t) ≠ 0` on `[0, 1]`,
+/// decided exactly (no common root of `x′` and `y′`).
+fn check_regular(c: &[Bezier<Rational>], field: &str) -> Result<(), ShapeError> {
+    for (i, b) in c.iter().enumerate() {
+        if b.degree() == 0 {
+            return Err(err(format!("{field}[{i}]"), "a single point has no normal"));
+        }
+        let (dx, dy) = b.hodograph().power_coords();
+        let (dx, dy) = (dx.trimmed(), dy.trimmed());
+        let all_zero =
+            dx.coeffs().iter().all(Zero::is_zero) && dy.coeffs().iter().all(Zero::is_zero);
+        if all_zero || has_common_root_in(&dx, &dy, &Span::unit_closed()) {
+            return Err(err(
+                format!("{field}[{i}]"),
+                "the curve is singular (its derivative vanishes) on [0, 1]: the normal is undefined there",
+            ));
+        }
+    }
+    Ok(())
+}

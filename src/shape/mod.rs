@@ -1,0 +1,84 @@
+//! The geometry model: what lncert reads, certifies and writes.
+//!
+//! This layer sits between the mathematics of [`crate::curve`] (Bézier and
+//! B-spline curves, generic over the scalar) and the engines that use shapes
+//! ([`crate::certify`], [`crate::approx`]); every dependency points down:
+//!
+//! ```text
+//!   cli, reproduce
+//!        │
+//!   certify, approx, tangency
+//!        │
+//!      shape          ← exact descriptions, readers, limits
+//!        │
+//!   curve, ln, poly, scalar
+//! ```
+//!
+//! | what | where |
+//! |---|---|
+//! | exact shapes: curve, arc, offset, convolution ([`ShapeDesc`], [`ArcDesc`]); their checks and canonical JSON | `desc` |
+//! | arcs as travelled ([`TravelledArc`]) and the `{"arc"}` / `{"circle"}` documents of `offset` | `arc` |
+//! | curves from JSON (`bezier`, `beziers`, `bspline`) and SVG path data, every number exact ([`parse_curve`]) | `io` |
+//! | whole SVG documents ([`parse_svg_document`]) | `svgdoc` |
+//! | font glyphs ([`glyph_outline`], feature `font`) | `font` |
+//!
+//! Every reader and constructor reports a [`ShapeError`] (or, for the curve
+//! readers, a [`CurveParseError`]) naming the field and the reason, and every
+//! limit is one of the constants below, shared by all subcommands.
+//!
+//! # Limits
+//!
+//! | limit | value |
+//! |---|---|
+//! | coordinate magnitude | [`MAX_COORDINATE`] = 10¹⁰⁰ (compared exactly) |
+//! | control points per Bézier piece | [`MAX_CONTROL_POINTS`] = 64 (degree ≤ 63) |
+//! | pieces per curve | [`MAX_SEGMENTS`] = 100 000 |
+//! | SVG path data | [`MAX_SVG_BYTES`] = 1 MB |
+//! | characters per number literal | [`MAX_NUMBER_CHARS`] = 4 096 |
+//! | B-spline conversion work (`points × degree³`) | [`MAX_BSPLINE_WORK`] |
+//!
+//! # Examples
+//! ```
+//! use lncert::shape::{parse_curve, ShapeDesc};
+//! let c = parse_curve("M 0 0 C 1 1 2 1 3 0").unwrap();
+//! let o = ShapeDesc::offset(c, "1/4".parse().unwrap()).unwrap();
+//! assert_eq!(o.summary(), "offset at 1/4 of 1 piece(s)");
+//! let e = ShapeDesc::parse(r#"{"offset": {"curve": "M 0 0 L 1 0", "distance": 0}}"#).unwrap_err();
+//! assert_eq!(e.field, "offset.distance");
+//! ```
+
+mod arc;
+mod desc;
+#[cfg(feature = "font")]
+mod font;
+pub(crate) mod io;
+mod svgdoc;
+
+pub use arc::{parse_arc_input, TravelledArc};
+pub(crate) use desc::checked_offset;
+pub use desc::{ArcDesc, ShapeDesc, MAX_COORDINATE};
+#[cfg(feature = "font")]
+pub use font::glyph_outline;
+pub use io::{
+    parse_curve, parse_json_curve, parse_svg_path, CurveParseError, MAX_BSPLINE_WORK,
+    MAX_CONTROL_POINTS, MAX_NUMBER_CHARS, MAX_SEGMENTS, MAX_SVG_BYTES,
+};
+pub use svgdoc::parse_svg_document;
+
+/// Why a shape could not be built or read: the field and the reason.
+///
+/// # Examples
+/// ```
+/// use lncert::shape::ShapeDesc;
+/// let e = ShapeDesc::parse(r#"{"arc": {"center": [0, 0], "radius": 0, "from": [1, 0], "to": [0, 1]}}"#)
+///     .unwrap_err();
+/// assert_eq!((e.field.as_str(), e.reason.as_str()), ("arc.radius", "must be > 0"));
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("invalid `{field}`: {reason}")]
+pub struct ShapeError {
+    /// The field, e.g. `arc.radius`, `offset.curve[0]`, `convolution.side`.
+    pub field: String,
+    /// What is wrong with it.
+    pub reason: String,
+}
