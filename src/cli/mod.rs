@@ -42,6 +42,7 @@ pub mod audit;
 pub mod hausdorff;
 pub mod offset;
 pub mod offset_svg;
+pub mod progress;
 pub mod prop;
 pub mod report;
 pub mod reproduce;
@@ -135,6 +136,16 @@ pub fn run(cli: Cli) -> i32 {
         Command::Verify(a) => a.json,
         Command::Tangency(a) => a.json,
     };
+    let name = match &cli.command {
+        Command::Reproduce(_) => "reproduce",
+        Command::Prop(_) => "prop",
+        Command::Audit(_) => "audit",
+        Command::Hausdorff(_) => "hausdorff",
+        Command::Offset(_) => "offset",
+        Command::Verify(_) => "verify",
+        Command::Tangency(_) => "tangency",
+    };
+    let progress = progress::Progress::start(name);
     let result = match cli.command {
         Command::Reproduce(a) => reproduce::run(&a),
         Command::Prop(a) => prop::run(&a),
@@ -144,6 +155,7 @@ pub fn run(cli: Cli) -> i32 {
         Command::Verify(a) => verify::run(&a),
         Command::Tangency(a) => tangency::run(&a),
     };
+    progress.finish();
     match result {
         Ok(code) => code,
         Err(e) => {
