@@ -38,6 +38,7 @@
 //! ```
 
 pub mod arc;
+pub mod conv;
 pub mod g2;
 pub mod lnpair;
 pub mod prep;
@@ -259,6 +260,27 @@ pub struct OffsetResult {
     /// every `error` is the trivial `(0, ∞)` and the segments carry an unproven
     /// `estimate` instead.
     pub proven: bool,
+    /// Set by [`convolve`]: the result approximates the convolution `x ∗ e_σ`
+    /// with this pen and side instead of an offset (`distance` is then 0,
+    /// `cusps` and `corners` are empty and the cusps are in
+    /// [`ConvSide::cusps`]).
+    pub convolution: Option<ConvSide>,
+}
+
+/// The convolution side a result of [`convolve`] approximates.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ConvSide {
+    /// The pen (exact matrix; its [`conv::Pen::margin`] is the proven distance
+    /// to the pen as the user gave it).
+    pub pen: conv::Pen,
+    /// `+1`: the pen point whose outer normal is the left normal of `x`; `−1`:
+    /// the right.
+    pub side: i8,
+    /// The cusps of the exact convolution curve on this side (exact).
+    pub cusps: Vec<conv::ConvCusp>,
+    /// The tolerance certified for the exact pen: `tol − margin` (the claim
+    /// for the pen as given is `tol`).
+    pub certified_tol: f64,
 }
 
 impl OffsetResult {
@@ -331,6 +353,44 @@ pub fn exact_bezier(b: &Bezier<f64>) -> Option<Bezier<Rational>> {
 /// the float control points of the approximant cannot resolve the offset.
 pub const MIN_REL_TOL: f64 = 1e-11;
 
+/// What the driver approximates: the offset at a distance, or the
+/// convolution with a pen on one side.
+#[derive(Clone, Debug)]
+enum Kernel {
+    Offset {
+        d: Rational,
+        df: f64,
+    },
+    Conv {
+        pen: conv::Pen,
+        qf: [f64; 3],
+        sigma: i8,
+    },
+}
+
+impl Kernel {
+    /// The exact curve's piece over the span `t` of `x`, enclosed.
+    fn span_piece(
+        &self,
+        x: &Bezier<Rational>,
+        t: (f64, f64),
+    ) -> Option<crate::certify::piece::Piece> {
+        match self {
+            Kernel::Offset { d, .. } => crate::certify::piece::offset_span(x, t, d),
+            Kernel::Conv { pen, sigma, .. } => {
+                crate::certify::piece::conv_span(x, t, pen.q_interval(), *sigma)
+            }
+        }
+    }
+    /// The size of the offset vector (for scale-aware gaps).
+    fn reach(&self) -> f64 {
+        match self {
+            Kernel::Offset { df, .. } => df.abs(),
+            Kernel::Conv { qf, .. } => qf[0].max(qf[2]).abs().sqrt(),
+        }
+    }
+}
+
 #[derive(Clone, Debug)]
 struct Task {
     piece: usize,
@@ -382,12 +442,16 @@ fn check_options(
     Ok(shape)
 }
 
-/// Initial spans of one piece: split at inflections, then halve until the
-/// Gauss map of each span turns by less than 0.9π ([`prep::MAX_TURN`]).
-fn initial_spans(x: &Bezier<Rational>) -> Vec<(f64, f64)> {
+/// Initial spans of one piece: split at inflections and at the `extra` cuts
+/// (the cusps of a convolution side), then halve until the Gauss map of each
+/// span turns by less than 0.9π ([`prep::MAX_TURN`]).
+fn initial_spans(x: &Bezier<Rational>, extra: &[f64]) -> Vec<(f64, f64)> {
     let mut cuts = vec![0.0];
     cuts.extend(prep::inflections(x));
+    cuts.extend(extra.iter().copied().filter(|t| *t > 0.0 && *t < 1.0));
     cuts.push(1.0);
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup();
     let mut out = Vec::new();
     for w in cuts.windows(2) {
         let mut stack = vec![(w[0], w[1], 0u32)];
@@ -428,9 +492,22 @@ fn construct(
     method: OffsetMethod,
     x: &Bezier<Rational>,
     t: (f64, f64),
-    d: f64,
+    kernel: &Kernel,
 ) -> Option<(Bezier<f64>, Option<lnpair::LnPairPiece>)> {
     let sub = span_f64(x, t)?;
+    let d = match kernel {
+        Kernel::Offset { df, .. } => *df,
+        Kernel::Conv { qf, sigma, .. } => {
+            // seed 001: the ends pinned to the canonical pen points
+            let e0 = conv::pen_point_at(x, t.0, *qf, *sigma)?;
+            let e1 = conv::pen_point_at(x, t.1, *qf, *sigma)?;
+            return match method {
+                OffsetMethod::G2 => conv::convolution_approximant_f64(&sub, &e0, &e1, *qf, *sigma)
+                    .map(|(c, _)| (c, None)),
+                OffsetMethod::LnPair => None,
+            };
+        }
+    };
     let n0 = prep::unit_left_normal(x, t.0)?;
     let n1 = prep::unit_left_normal(x, t.1)?;
     match method {
@@ -464,17 +541,18 @@ fn certify_segment(
     x: &Bezier<Rational>,
     task: &Task,
     opts: &OffsetOptions,
-    d: f64,
+    kernel: &Kernel,
     searches: &std::sync::atomic::AtomicUsize,
 ) -> (Option<OffsetSegment>, f64, bool) {
     let split = 0.5;
-    let Some((bez, pair)) = construct(opts.method, x, task.t, d) else {
+    let d = kernel.reach();
+    let Some((bez, pair)) = construct(opts.method, x, task.t, kernel) else {
         return (None, split_point(opts.method, x, task.t), false);
     };
     // The pieces of the span's exact offset (`ShapeDesc::Offset` of the exact
     // restriction of `x`) and of the segment, enclosed without rationals.
     let (Some(pa), Some(pb)) = (
-        crate::certify::piece::offset_span(x, task.t, &opts.distance),
+        kernel.span_piece(x, task.t),
         crate::certify::piece::bezier_f64(&bez),
     ) else {
         return (None, split, false);
@@ -528,11 +606,13 @@ fn certify_segment(
             .iter()
             .map(|p| p.x.abs().max(p.y.abs()))
             .fold(0.0, f64::max);
-        1e-10 * (1.0 + scale + d.abs())
+        1e-10 * (1.0 + scale + d)
     };
     let r = crate::certify::hausdorff_pieces(&pa, &pb, &cfg, &abs_of);
-    let paper_error = match (&pair, opts.paper_error) {
-        (Some(p), true) => sub_exact(x, task.t).and_then(|e| paper_error_of(x, task.t, &e, p, d)),
+    let paper_error = match (&pair, opts.paper_error, kernel) {
+        (Some(p), true, Kernel::Offset { df, .. }) => {
+            sub_exact(x, task.t).and_then(|e| paper_error_of(x, task.t, &e, p, *df))
+        }
         _ => None,
     };
     let proof = (r.hi <= opts.tol).then(|| SegmentProof {
@@ -623,7 +703,13 @@ pub fn offset(
                 .flat_map(|(i, x)| prep::offset_cusps(i, x, &opts.distance))
                 .collect()
         },
-        || offset_segments(curve, opts),
+        || {
+            let kernel = Kernel::Offset {
+                d: opts.distance.clone(),
+                df: opts.distance.approx(),
+            };
+            offset_segments(curve, opts, &kernel, &[])
+        },
     );
     let (segments, unreached, certified_hi, certifications, spans) = segs;
     Ok(OffsetResult {
@@ -638,6 +724,122 @@ pub fn offset(
         certifications,
         spans,
         proven: opts.certify,
+        convolution: None,
+    })
+}
+
+/// Approximates the convolution `x ∗ e_σ` of a piecewise polynomial curve with
+/// an elliptical pen on side `side` (`+1`: left of the travel direction, `−1`:
+/// right) within `opts.tol`, by seed 001's G²/C¹ method (`opts.method` must be
+/// [`OffsetMethod::G2`]; `opts.distance` is not used), proving every segment
+/// against the exact convolution (see [`conv`]). The trajectory is split first
+/// at the side's own cusps (exact), then at inflections and turns.
+///
+/// When the pen's rotation was represented approximately, the segments are
+/// certified within `tol − pen.margin` for the exact pen used, so that `tol`
+/// holds for the pen as given ([`ConvSide::certified_tol`]).
+///
+/// # Examples
+/// ```
+/// use lncert::approx::{convolve, conv::{Angle, Pen}, OffsetOptions};
+/// use lncert::shape::parse_curve;
+/// let q = |s: &str| lncert::parse_rational(s).unwrap();
+/// let x = parse_curve("M 0 0 C 1 0.2 2 1 2.4 2.5").unwrap();
+/// let pen = Pen::ellipse(&q("0.3"), &q("0.1"), &Angle::parse("pi/6").unwrap()).unwrap();
+/// let r = convolve(&x, &pen, 1, &OffsetOptions::new(q("0"), 1e-4)).unwrap();
+/// assert!(r.reached() && r.certified_hi <= 1e-4);
+/// assert_eq!(r.degree(), 6);
+/// ```
+pub fn convolve(
+    curve: &[Bezier<Rational>],
+    pen: &conv::Pen,
+    side: i8,
+    opts: &OffsetOptions,
+) -> Result<OffsetResult, OffsetError> {
+    if side != 1 && side != -1 {
+        return Err(bad("side", "must be 1 or -1"));
+    }
+    if opts.method != OffsetMethod::G2 {
+        return Err(bad(
+            "method",
+            "the convolution with an ellipse is built by seed 001's G² method (g2)",
+        ));
+    }
+    if curve.is_empty() {
+        return Err(bad("curve", "no pieces"));
+    }
+    let shape = ShapeDesc::convolution(curve.to_vec(), pen.m.clone(), side).map_err(|e| {
+        let field = e
+            .field
+            .strip_prefix("convolution.")
+            .unwrap_or(&e.field)
+            .to_string();
+        bad(field, e.reason)
+    })?;
+    let scale = shape.scale();
+    let certified_tol = opts.tol - pen.margin;
+    if !(opts.tol.is_finite() && opts.tol > 0.0) {
+        return Err(bad("tol", "must be a finite number > 0"));
+    }
+    let min = MIN_REL_TOL * (1.0 + scale);
+    if certified_tol < min {
+        return Err(bad(
+            "tol",
+            format!(
+                "{:e} (less the pen's rotation margin {:e}) is below {:e} = 1e-11 × (1 + coordinate scale)",
+                opts.tol, pen.margin, min
+            ),
+        ));
+    }
+    if opts.max_depth > 40 {
+        return Err(bad("max_depth", "must be ≤ 40"));
+    }
+    if opts.max_segments == 0 || opts.max_boxes == 0 {
+        return Err(bad("max_segments", "limits must be ≥ 1"));
+    }
+    let cusps: Vec<conv::ConvCusp> = curve
+        .par_iter()
+        .enumerate()
+        .flat_map(|(i, x)| conv::conv_cusps(i, x, pen, side))
+        .collect();
+    let cuts: Vec<Vec<f64>> = (0..curve.len())
+        .map(|i| {
+            cusps
+                .iter()
+                .filter(|c| c.piece == i)
+                .map(|c| c.t_approx)
+                .collect()
+        })
+        .collect();
+    let kernel = Kernel::Conv {
+        pen: pen.clone(),
+        qf: pen.q_f64(),
+        sigma: side,
+    };
+    let inner = OffsetOptions {
+        tol: certified_tol,
+        ..opts.clone()
+    };
+    let (segments, unreached, certified_hi, certifications, spans) =
+        offset_segments(curve, &inner, &kernel, &cuts);
+    Ok(OffsetResult {
+        method: opts.method,
+        distance: <Rational as Zero>::zero(),
+        tol: opts.tol,
+        segments,
+        unreached,
+        certified_hi,
+        cusps: Vec::new(),
+        corners: Vec::new(),
+        certifications,
+        spans,
+        proven: opts.certify,
+        convolution: Some(ConvSide {
+            pen: pen.clone(),
+            side,
+            cusps,
+            certified_tol,
+        }),
     })
 }
 
@@ -646,12 +848,13 @@ pub fn offset(
 fn offset_segments(
     curve: &[Bezier<Rational>],
     opts: &OffsetOptions,
+    kernel: &Kernel,
+    cuts: &[Vec<f64>],
 ) -> (Vec<OffsetSegment>, Vec<usize>, f64, usize, usize) {
     let mut spans = 0usize;
-    let d = opts.distance.approx();
     let mut tasks: Vec<Task> = Vec::new();
     for (i, x) in curve.iter().enumerate() {
-        for t in initial_spans(x) {
+        for t in initial_spans(x, cuts.get(i).map_or(&[][..], |c| &c[..])) {
             tasks.push(Task {
                 piece: i,
                 t,
@@ -669,7 +872,7 @@ fn offset_segments(
             .par_iter()
             .map(|task| {
                 let (segment, s, stuck) =
-                    certify_segment(&curve[task.piece], task, opts, d, &searches);
+                    certify_segment(&curve[task.piece], task, opts, kernel, &searches);
                 Outcome {
                     task: task.clone(),
                     segment,
@@ -878,7 +1081,11 @@ pub fn exact_offset_shape(
                 .ok_or_else(|| bad("segments", "a segment does not name an input span"))
         })
         .collect::<Result<Vec<_>, _>>()?;
-    ShapeDesc::offset(pieces, res.distance.clone()).map_err(|e| bad("curve", e.to_string()))
+    match &res.convolution {
+        None => ShapeDesc::offset(pieces, res.distance.clone()),
+        Some(c) => ShapeDesc::convolution(pieces, c.pen.m.clone(), c.side),
+    }
+    .map_err(|e| bad("curve", e.to_string()))
 }
 
 /// The join arcs of a result as exact arcs (radius `|d|`), for output.

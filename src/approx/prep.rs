@@ -86,7 +86,7 @@ fn bisect(sf: &Poly<Rational>, r: &RealRoot, bits: u32) -> RealRoot {
 }
 
 /// The roots of `p` in `span`, exactly isolated, refined to width `2^-bits`.
-fn roots_refined(p: &Poly<Rational>, span: &Span, bits: u32) -> Vec<RealRoot> {
+pub(crate) fn roots_refined(p: &Poly<Rational>, span: &Span, bits: u32) -> Vec<RealRoot> {
     if is_zero_poly(p) || no_root_in_unit(p) {
         return Vec::new();
     }

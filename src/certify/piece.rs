@@ -202,6 +202,21 @@ pub(crate) fn offset_span(
     t: (f64, f64),
     distance: &Rational,
 ) -> Option<Piece> {
+    let r2 = iv(&(distance * distance));
+    let sigma = if distance.is_positive() { 1 } else { -1 };
+    conv_span(x, t, (r2, Interval::zero(), r2), sigma)
+}
+
+/// The piece of the exact convolution of the span `[t₀, t₁]` of `x` with the
+/// ellipse of `Q = M Mᵀ` (given as enclosures of `q₁₁, q₁₂, q₂₂`) on side
+/// `sigma`, the same piece as `ShapeDesc::Convolution` of the exact
+/// restriction (see [`offset_span`], its special case `Q = r² I`).
+pub(crate) fn conv_span(
+    x: &Bezier<Rational>,
+    t: (f64, f64),
+    q: (Interval, Interval, Interval),
+    sigma: i8,
+) -> Option<Piece> {
     if !(t.0.is_finite() && t.1.is_finite() && t.0 < t.1) || x.points().is_empty() {
         return None;
     }
@@ -212,15 +227,13 @@ pub(crate) fn offset_span(
     let span = x.map(iv).restrict(&p0, &p1);
     let pts: Vec<(Interval, Interval)> = span.points().iter().map(|p| (p.x, p.y)).collect();
     let [pts, hod, hod2, hod3] = hodographs_iv(pts);
-    let r2 = iv(&(distance * distance));
-    let sigma = if distance.is_positive() { 1 } else { -1 };
     let data = PieceData::Conv {
         pts,
         hod,
         hod2,
         hod3,
-        q: (r2, Interval::zero(), r2),
-        sigma: Interval::from_i64(sigma),
+        q,
+        sigma: Interval::from_i64(sigma as i64),
     };
     Some(Piece::from_iv(data, (0.0, 1.0), (0.0, 1.0)))
 }
