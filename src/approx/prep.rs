@@ -39,7 +39,7 @@ fn is_zero_poly(p: &Poly<Rational>) -> bool {
 /// Bisects an isolating interval of a simple root of the square-free `sf` down to
 /// width `2^-bits` (exact sign evaluations at dyadic midpoints). `refine_root`
 /// recomputes the square-free part on every call; here it is computed once.
-fn bisect(sf: &Poly<Rational>, r: &RealRoot, bits: u32) -> RealRoot {
+pub(crate) fn bisect(sf: &Poly<Rational>, r: &RealRoot, bits: u32) -> RealRoot {
     let w = Rational::new(1.into(), num_bigint::BigInt::from(1u8) << bits);
     let (mut l, mut h) = (r.lo.clone(), r.hi.clone());
     // the sign by an interval enclosure of `sf(x)` first (the coefficients

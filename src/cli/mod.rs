@@ -39,6 +39,7 @@
 
 pub mod args;
 pub mod audit;
+pub mod convolve;
 pub mod hausdorff;
 pub mod offset;
 pub mod offset_svg;
@@ -85,6 +86,8 @@ pub enum Command {
     Hausdorff(Box<hausdorff::HausdorffArgs>),
     /// An offset approximant proven within a tolerance (seed 004 G2 or seed 000 LN pairs).
     Offset(Box<offset::OffsetArgs>),
+    /// The convolution with an elliptical pen (seed 001's G² method), proven within a tolerance on each side.
+    Convolve(Box<convolve::ConvolveArgs>),
     /// Re-check a Hausdorff tolerance certificate without searching.
     Verify(verify::VerifyArgs),
     /// Quartic LN curves tangent to a circle (seed 003 §4): all solutions, proven.
@@ -133,6 +136,7 @@ pub fn run(cli: Cli) -> i32 {
         Command::Audit(a) => a.json,
         Command::Hausdorff(a) => a.json,
         Command::Offset(a) => a.json,
+        Command::Convolve(a) => a.json,
         Command::Verify(a) => a.json,
         Command::Tangency(a) => a.json,
     };
@@ -142,6 +146,7 @@ pub fn run(cli: Cli) -> i32 {
         Command::Audit(_) => "audit",
         Command::Hausdorff(_) => "hausdorff",
         Command::Offset(_) => "offset",
+        Command::Convolve(_) => "convolve",
         Command::Verify(_) => "verify",
         Command::Tangency(_) => "tangency",
     };
@@ -152,6 +157,7 @@ pub fn run(cli: Cli) -> i32 {
         Command::Audit(a) => audit::run(&a),
         Command::Hausdorff(a) => hausdorff::run(&a),
         Command::Offset(a) => offset::run(&a),
+        Command::Convolve(a) => convolve::run(&a),
         Command::Verify(a) => verify::run(&a),
         Command::Tangency(a) => tangency::run(&a),
     };

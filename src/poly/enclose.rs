@@ -48,10 +48,6 @@ pub struct RootEnclosure {
     pub budget_exhausted: bool,
 }
 
-/// Above this degree `Poly::to_bernstein`'s `i64` binomials are not exact, so
-/// the weights are computed from big-integer binomials instead.
-const MAX_DIRECT_DEGREE: usize = 60;
-
 /// Exact binomial coefficient as a big integer (any size).
 fn big_binomial(n: usize, k: usize) -> BigInt {
     if k > n {
@@ -69,23 +65,50 @@ fn big_binomial(n: usize, k: usize) -> BigInt {
 /// `q` on `[0, 1]`: `b_i = sum_{k <= i} C(i,k)/C(n,k) q_k`.
 fn bernstein_enclosure(q: &Poly<Interval>) -> Vec<Interval> {
     let n = q.formal_degree();
-    if n <= MAX_DIRECT_DEGREE {
-        return q
-            .to_bernstein(n)
-            .expect("degree n equals the formal degree");
-    }
     let c = q.coeffs();
-    let denom: Vec<BigInt> = (0..=n).map(|k| big_binomial(n, k)).collect();
+    let w = weights(n);
     (0..=n)
         .map(|i| {
+            let row = &w[i * (i + 1) / 2..];
             let mut s = <Interval as Scalar>::zero();
             for (k, a) in c.iter().enumerate().take(i + 1) {
-                let w = Rational::new(big_binomial(i, k), denom[k].clone());
-                s += *a * interval_from_rational(&w);
+                s += *a * row[k];
             }
             s
         })
         .collect()
+}
+
+thread_local! {
+    /// Enclosures of `C(i, k)/C(n, k)`, `k ≤ i ≤ n`, per degree `n` (row `i`
+    /// starts at `i(i+1)/2`): computed once per thread and degree — the
+    /// subdivisions of a root isolation convert thousands of polynomials of the
+    /// same degree.
+    static WEIGHTS: std::cell::RefCell<std::collections::HashMap<usize, std::rc::Rc<Vec<Interval>>>> =
+        std::cell::RefCell::new(std::collections::HashMap::new());
+}
+
+/// The power → Bernstein weights of degree `n`, enclosed (exact binomials,
+/// each ratio enclosed from the exact rational).
+fn weights(n: usize) -> std::rc::Rc<Vec<Interval>> {
+    WEIGHTS.with(|cache| {
+        if let Some(w) = cache.borrow().get(&n) {
+            return w.clone();
+        }
+        let denom: Vec<BigInt> = (0..=n).map(|k| big_binomial(n, k)).collect();
+        let mut w = Vec::with_capacity((n + 1) * (n + 2) / 2);
+        for i in 0..=n {
+            for (k, d) in denom.iter().enumerate().take(i + 1) {
+                w.push(interval_from_rational(&Rational::new(
+                    big_binomial(i, k),
+                    d.clone(),
+                )));
+            }
+        }
+        let w = std::rc::Rc::new(w);
+        cache.borrow_mut().insert(n, w.clone());
+        w
+    })
 }
 
 fn point(x: f64) -> Interval {
@@ -178,6 +201,79 @@ pub fn isolate_simple_roots(
                 }
                 stack.push((m, b));
                 stack.push((a, m));
+            }
+        }
+    }
+    Some(out)
+}
+
+/// [`isolate_simple_roots`] on `[0, 1]` for a polynomial given by enclosures
+/// of its **Bernstein** coefficients of degree `bern.len() − 1` (for example
+/// the exact Bernstein coefficients of a rational polynomial, each enclosed
+/// once). Subdivision runs de Casteljau at the midpoint in interval arithmetic,
+/// which stays tight where the power basis of a high-degree polynomial with
+/// large coefficients cancels catastrophically. Each returned piece holds
+/// exactly one root (one sign variation of strictly signed coefficients, for
+/// every polynomial in the enclosures: Descartes' rule in Bernstein form) and
+/// the rest of `[0, 1]` none; `None` when some piece stays undecided within
+/// `max_pieces` (a multiple root, a root at a dyadic split point).
+///
+/// # Examples
+/// ```
+/// use lncert::poly::isolate_simple_roots_bernstein;
+/// use lncert::scalar::Interval;
+/// let c = |x: f64| Interval::try_from((x, x)).unwrap();
+/// // Bernstein form of (t − 1/4)(t − 3/4) = t² − t + 3/16: [3/16, −5/16, 3/16]
+/// let r = isolate_simple_roots_bernstein(&[c(0.1875), c(-0.3125), c(0.1875)], 1000).unwrap();
+/// assert_eq!(r.len(), 2);
+/// assert!(r[0].0 < 0.25 && 0.25 < r[0].1 && r[1].0 < 0.75 && 0.75 < r[1].1);
+/// ```
+pub fn isolate_simple_roots_bernstein(
+    bern: &[Interval],
+    max_pieces: usize,
+) -> Option<Vec<(f64, f64)>> {
+    if bern.is_empty() {
+        return None;
+    }
+    let half = point(0.5);
+    let mut out = Vec::new();
+    let mut stack = vec![(0.0f64, 1.0f64, bern.to_vec())];
+    let mut examined = 0usize;
+    while let Some((a, b, c)) = stack.pop() {
+        examined += 1;
+        if examined > max_pieces {
+            return None;
+        }
+        let signs: Option<Vec<Sign>> = c
+            .iter()
+            .map(|x| match Scalar::sign(x) {
+                s @ (Sign::Positive | Sign::Negative) => Some(s),
+                _ => None,
+            })
+            .collect();
+        match signs.map(|s| s.windows(2).filter(|w| w[0] != w[1]).count()) {
+            Some(0) => {}
+            Some(1) => out.push((a, b)),
+            _ => {
+                let m = 0.5 * a + 0.5 * b;
+                if !(a < m && m < b) {
+                    return None;
+                }
+                // de Casteljau at 1/2: the left and right coefficient lists
+                let n = c.len();
+                let mut work = c.clone();
+                let mut left = Vec::with_capacity(n);
+                let mut right = Vec::with_capacity(n);
+                for level in 0..n {
+                    left.push(work[0]);
+                    right.push(work[n - 1 - level]);
+                    for i in 0..n - 1 - level {
+                        work[i] = (work[i] + work[i + 1]) * half;
+                    }
+                }
+                right.reverse();
+                stack.push((m, b, right));
+                stack.push((a, m, left));
             }
         }
     }
@@ -321,17 +417,12 @@ pub fn certify_no_root(p: &Poly<Interval>, lo: f64, hi: f64) -> Option<bool> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::poly::{binomial, count_distinct_roots, isolate_roots, RootCount, Span};
+    use crate::poly::{count_distinct_roots, isolate_roots, RootCount, Span};
     use crate::scalar::{parse_rational, rational_from_f64, IntervalExt};
     use proptest::prelude::*;
 
     fn q(s: &str) -> Rational {
         parse_rational(s).unwrap()
-    }
-    /// `Poly::to_bernstein`'s binomials are exact up to `MAX_DIRECT_DEGREE`.
-    fn direct_path_is_exact() -> bool {
-        (0..=MAX_DIRECT_DEGREE)
-            .all(|n| (0..=n).all(|k| BigInt::from(binomial(n, k)) == big_binomial(n, k)))
     }
     fn qi(n: i64, d: i64) -> Rational {
         Rational::new(n.into(), d.into())
@@ -410,7 +501,23 @@ mod tests {
 
     #[test]
     fn weights_path_agrees() {
-        assert!(direct_path_is_exact());
+        // the cached interval weights enclose the exact Bernstein coefficients
+        for n in [3usize, 10, 48, 70] {
+            let p = Poly::new(
+                (0..=n)
+                    .map(|k| qi((k as i64 * 7919) % 23 - 11, 1 + k as i64))
+                    .collect(),
+            );
+            let exact = p.to_bernstein(n).unwrap();
+            for _ in 0..2 {
+                // twice: the second call reads the cache
+                let b = bernstein_enclosure(&to_interval(&p));
+                assert_eq!(b.len(), n + 1);
+                for (e, i) in exact.iter().zip(&b) {
+                    assert!(i.contains_rational(e), "degree {n}: {e} not in {i:?}");
+                }
+            }
+        }
         // A degree-70 polynomial goes through the big-integer path.
         let mut c = vec![interval_from_rational(&qi(1, 1)); 71];
         c[0] = interval_from_rational(&qi(-1, 3));

@@ -9,7 +9,10 @@ pub use univariate::{binomial, binomial_big, Poly};
 mod enclose;
 mod multi;
 mod roots;
-pub use enclose::{certify_no_root, enclose_roots, isolate_simple_roots, RootEnclosure};
+pub use enclose::{
+    certify_no_root, enclose_roots, isolate_simple_roots, isolate_simple_roots_bernstein,
+    RootEnclosure,
+};
 pub use multi::{identity_holds, poly_in, univariate_coeffs, MPoly, RatFunc};
 pub(crate) use roots::div_rem;
 pub use roots::{

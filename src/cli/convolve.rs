@@ -1,0 +1,435 @@
+//! `lncert convolve CURVE (--ellipse A,B [--angle θ] | --pen-matrix M11,M12,M21,M22)
+//! --tol T [--side plus|minus|both] [--method g2] [--certificate OUT] [--svg OUT]
+//! [--json]`: the convolution of a curve with an elliptical pen (the boundary of
+//! the region an elliptical nib sweeps), approximated by seed 001's G²/C¹ method
+//! and proven within `T` on each side (see [`lncert::approx::conv`]).
+//!
+//! `A ≥ B > 0` are the **semi**-axes; `θ` is `pi/6`, `30deg` or radians (exact:
+//! a rotation that is not a quarter turn is represented by an exactly rational
+//! one within a proven angle, and the tolerance certified for it is `T` less the
+//! proven distance this can make, printed as the pen's margin). Side `plus` is
+//! the pen point whose outer normal is the left normal of the trajectory.
+//!
+//! With `--certificate OUT`, each side's certificate (`d_H(exact convolution,
+//! approximant) ≤ T − margin` for the exact pen) is written: to `OUT` for one
+//! side, to `OUT.plus.json` and `OUT.minus.json` for both; `lncert verify`
+//! re-checks each.
+//!
+//! Exit codes as `offset`: 0 = every side proven within `T`, 3 = not reached
+//! within the limits, 2 = bad input.
+
+use super::args::{bad, number, q};
+use super::{print_out, CliError};
+use lncert::approx::conv::{Angle, Pen};
+use lncert::approx::{convolve, union_certificate, OffsetError, OffsetOptions, OffsetResult};
+use lncert::curve::{Bezier, V2};
+use lncert::scalar::{interval_from_rational, rational_from_f64, Rational, Scalar};
+use lncert::shape::parse_curve;
+use serde_json::json;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+/// Arguments of `lncert convolve`.
+#[derive(clap::Args, Debug)]
+pub struct ConvolveArgs {
+    /// The trajectory: a curve file (JSON Bézier / B-spline, SVG path data or an SVG document).
+    pub curve: PathBuf,
+    /// The pen's semi-axes `A,B` (`A ≥ B > 0`), exact numbers.
+    #[arg(long, conflicts_with = "pen_matrix")]
+    pub ellipse: Option<String>,
+    /// The pen's rotation: `pi/6`, `2pi/3`, `30deg`, or radians (default 0).
+    #[arg(long, allow_hyphen_values = true, requires = "ellipse")]
+    pub angle: Option<String>,
+    /// The pen as a matrix `M11,M12,M21,M22` (`E = M · unit circle`, det M ≠ 0).
+    #[arg(long, allow_hyphen_values = true)]
+    pub pen_matrix: Option<String>,
+    /// The tolerance to prove on each side.
+    #[arg(long, allow_hyphen_values = true)]
+    pub tol: String,
+    /// Which convolution curve: `plus`, `minus` or `both`.
+    #[arg(long, default_value = "both")]
+    pub side: String,
+    /// The construction: `g2` (seed 001).
+    #[arg(long, default_value = "g2")]
+    pub method: String,
+    /// Write the certificate(s) (see the module docs for the names).
+    #[arg(long)]
+    pub certificate: Option<PathBuf>,
+    /// Write a picture: trajectory, exact convolution, approximants, cusps.
+    #[arg(long)]
+    pub svg: Option<PathBuf>,
+    /// Subdivision depth limit per trajectory piece.
+    #[arg(long, default_value_t = 24)]
+    pub max_depth: u32,
+    /// Most output segments per side.
+    #[arg(long, default_value_t = 20_000)]
+    pub max_segments: usize,
+    /// Box budget per segment certification.
+    #[arg(long, default_value_t = 50_000)]
+    pub max_boxes: usize,
+    /// Build the same construction without proofs (labelled unproven).
+    #[arg(long, conflicts_with = "certificate")]
+    pub no_certify: bool,
+    /// One JSON document on stdout.
+    #[arg(long)]
+    pub json: bool,
+}
+
+fn numbers(flag: &str, text: &str, n: usize) -> Result<Vec<Rational>, CliError> {
+    let parts: Vec<&str> = text.split(',').map(str::trim).collect();
+    if parts.len() != n {
+        return Err(bad(flag, format!("expected {n} comma-separated numbers")));
+    }
+    parts.iter().map(|p| number(flag, p)).collect()
+}
+
+/// The pen; a rotation is represented within `min(1e-6, tol/1000 / (A + A²/B))`
+/// radians, so its margin costs at most a thousandth of the tolerance while the
+/// exact numbers stay small.
+fn pen_of(a: &ConvolveArgs, tol: f64) -> Result<Pen, CliError> {
+    let shape_err =
+        |flag: &str, e: lncert::shape::ShapeError| bad(flag, format!("{}: {}", e.field, e.reason));
+    match (&a.ellipse, &a.pen_matrix) {
+        (Some(e), None) => {
+            let ab = numbers("--ellipse", e, 2)?;
+            let angle = match &a.angle {
+                Some(t) => Angle::parse(t).map_err(|e| shape_err("--angle", e))?,
+                None => Angle::Radians(Rational::from_integer(0.into())),
+            };
+            let (af, bf) = (ab[0].approx(), ab[1].approx());
+            let reach = af + af * af / bf;
+            let max_angle = (tol * 1e-3 / reach).clamp(1e-12, 1e-6);
+            let max_angle = if max_angle.is_finite() {
+                max_angle
+            } else {
+                1e-12
+            };
+            Pen::ellipse_within(&ab[0], &ab[1], &angle, max_angle)
+                .map_err(|e| shape_err("--ellipse", e))
+        }
+        (None, Some(m)) => {
+            let v = numbers("--pen-matrix", m, 4)?;
+            Pen::from_matrix([[v[0].clone(), v[1].clone()], [v[2].clone(), v[3].clone()]])
+                .map_err(|e| shape_err("--pen-matrix", e))
+        }
+        _ => Err(bad(
+            "--ellipse",
+            "give the pen: --ellipse A,B [--angle θ] or --pen-matrix M11,M12,M21,M22",
+        )),
+    }
+}
+
+fn conv_err(e: OffsetError) -> CliError {
+    let OffsetError::Input { field, reason } = e;
+    let flag = match field.as_str() {
+        "tol" => "--tol".to_string(),
+        "side" => "--side".to_string(),
+        "method" => "--method".to_string(),
+        "max_depth" => "--max-depth".to_string(),
+        "max_segments" => "--max-segments".to_string(),
+        f => format!("CURVE: {f}"),
+    };
+    bad(&flag, reason)
+}
+
+fn side_path(base: &Path, side: &str, both: bool) -> PathBuf {
+    if !both {
+        return base.to_path_buf();
+    }
+    let mut s = base.as_os_str().to_owned();
+    s.push(format!(".{side}.json"));
+    PathBuf::from(s)
+}
+
+/// Runs the command; returns the exit code.
+pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
+    let sides: Vec<(i8, &str)> = match a.side.as_str() {
+        "plus" | "+" => vec![(1, "plus")],
+        "minus" | "-" => vec![(-1, "minus")],
+        "both" => vec![(1, "plus"), (-1, "minus")],
+        s => {
+            return Err(bad(
+                "--side",
+                format!("unknown side {s:?}; expected plus, minus or both"),
+            ))
+        }
+    };
+    let both = sides.len() == 2;
+    for (flag, path) in [("--certificate", &a.certificate), ("--svg", &a.svg)] {
+        if let Some(p) = path {
+            if flag == "--certificate" {
+                for (_, name) in &sides {
+                    super::args::output_file(flag, &side_path(p, name, both))?;
+                }
+            } else {
+                super::args::output_file(flag, p)?;
+            }
+        }
+    }
+    if a.method != "g2" {
+        return Err(bad(
+            "--method",
+            format!(
+                "unknown method {:?}; the elliptical pen is built by seed 001's g2 method",
+                a.method
+            ),
+        ));
+    }
+    let tol_q = number("--tol", &a.tol)?;
+    let tol = interval_from_rational(&tol_q).inf();
+    let pen = pen_of(a, tol)?;
+    let meta = std::fs::metadata(&a.curve)
+        .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
+    if meta.len() > super::hausdorff::MAX_FILE_BYTES {
+        return Err(bad(
+            "CURVE",
+            format!("{}: file too large", a.curve.display()),
+        ));
+    }
+    let text = std::fs::read_to_string(&a.curve)
+        .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
+    let curve = parse_curve(&text).map_err(|e| bad("CURVE", e))?;
+    if a.max_boxes == 0 || a.max_boxes > 50_000_000 {
+        return Err(bad("--max-boxes", "out of range (1 to 50000000)"));
+    }
+    let mut opts = OffsetOptions::new(Rational::from_integer(0.into()), tol);
+    opts.max_depth = a.max_depth;
+    opts.max_segments = a.max_segments;
+    opts.max_boxes = a.max_boxes;
+    opts.certify = !a.no_certify;
+    let start = std::time::Instant::now();
+    let mut results = Vec::new();
+    for (sigma, name) in &sides {
+        let t0 = std::time::Instant::now();
+        let r = convolve(&curve, &pen, *sigma, &opts).map_err(conv_err)?;
+        results.push((*name, r, t0.elapsed().as_secs_f64()));
+    }
+    let total = start.elapsed().as_secs_f64();
+    // certificates: the claim for the exact pen is tol − margin (as a float ≤ it)
+    let mut cert_notes = Vec::new();
+    if let Some(base) = &a.certificate {
+        for (name, r, _) in &results {
+            let path = side_path(base, name, both);
+            let claim_f = r.convolution.as_ref().map_or(tol, |c| c.certified_tol);
+            let claim = if claim_f == tol {
+                tol_q.clone()
+            } else {
+                rational_from_f64(claim_f).ok_or_else(|| bad("--tol", "not finite"))?
+            };
+            match union_certificate(&curve, r, &claim).map_err(conv_err)? {
+                Some(c) => {
+                    std::fs::write(&path, c.to_json_string())
+                        .map_err(|e| bad("--certificate", format!("{}: {e}", path.display())))?;
+                    cert_notes.push(format!("{name}: written to {}", path.display()));
+                }
+                None => cert_notes.push(format!(
+                    "{name}: not written (the tolerance is not certified)"
+                )),
+            }
+        }
+    }
+    if let Some(path) = &a.svg {
+        let svg = render(&curve, &pen, &results);
+        std::fs::write(path, svg).map_err(|e| bad("--svg", format!("{}: {e}", path.display())))?;
+    }
+    let within_all = results.iter().all(|(_, r, _)| r.reached());
+    let proven = opts.certify;
+    let verdict_of = |r: &OffsetResult| match (r.reached(), proven) {
+        (true, true) => "certified",
+        (true, false) => "unproven: within tol by a sampled estimate",
+        (false, _) => "not reached",
+    };
+    let overall = if within_all {
+        if proven {
+            "certified"
+        } else {
+            "unproven"
+        }
+    } else {
+        "not reached"
+    };
+    if a.json {
+        let doc = json!({
+            "pen": {
+                "description": pen.description,
+                "matrix": pen.m.iter().map(|r| r.iter().map(q).collect::<Vec<_>>()).collect::<Vec<_>>(),
+                "rotation_error": pen.rotation_error,
+                "margin": pen.margin,
+            },
+            "tol": a.tol,
+            "method": "g2",
+            "verdict": overall,
+            "sides": results.iter().map(|(name, r, secs)| {
+                let c = r.convolution.as_ref();
+                json!({
+                    "side": if *name == "plus" { "+" } else { "-" },
+                    "segments": r.segments.len(),
+                    "control_points": r.control_points(),
+                    "degree": r.degree(),
+                    "certified_error": if proven { json!([0.0, r.certified_hi]) } else { serde_json::Value::Null },
+                    "certified_tol": c.map(|c| c.certified_tol),
+                    "verdict": verdict_of(r),
+                    "split_points": split_points(r),
+                    "cusps": c.map(|c| c.cusps.iter().map(|k| json!({
+                        "piece": k.piece, "t": [q(&k.t.0), q(&k.t.1)], "point": [k.point.0, k.point.1],
+                    })).collect::<Vec<_>>()).unwrap_or_default(),
+                    "pieces": r.segments.iter().map(|s| json!({
+                        "piece": s.piece, "t": [s.t.0, s.t.1], "hi": s.error.1,
+                        "proof": s.proof.as_ref().map(|p| p.path.name()),
+                        "estimate": s.estimate, "paper_error": s.paper_error,
+                        "control_points": s.bezier.points().iter().map(|p| json!([p.x, p.y])).collect::<Vec<_>>(),
+                    })).collect::<Vec<_>>(),
+                    "unreached": r.unreached,
+                    "certifications": r.certifications,
+                    "seconds": secs,
+                })
+            }).collect::<Vec<_>>(),
+            "seconds": total,
+            "certificates": cert_notes,
+        });
+        print_out(&format!(
+            "{}\n",
+            serde_json::to_string_pretty(&doc).unwrap_or_default()
+        ));
+    } else {
+        let mut s = format!(
+            "convolution with the pen {} (seed 001 G², tol {}):\n",
+            pen.description, a.tol
+        );
+        if pen.margin > 0.0 {
+            s += &format!(
+                "  the rotation is represented exactly rationally within {:.1e} rad: the convolutions move by ≤ {:.1e}, certified for tol − that\n",
+                pen.rotation_error, pen.margin
+            );
+        }
+        for (name, r, secs) in &results {
+            let c = r.convolution.as_ref();
+            s += &format!(
+                "  side {name}: {} segment(s) of degree {}, {} control points; certified d_H ≤ {:.6e} — {} ({:.3} s)\n",
+                r.segments.len(),
+                r.degree(),
+                r.control_points(),
+                r.certified_hi,
+                verdict_of(r),
+                secs
+            );
+            if let Some(c) = c {
+                for k in &c.cusps {
+                    s += &format!(
+                        "    cusp of the exact convolution: piece {} at t ≈ {:.9} ({:.6}, {:.6})\n",
+                        k.piece, k.t_approx, k.point.0, k.point.1
+                    );
+                }
+            }
+            for &i in &r.unreached {
+                let g = &r.segments[i];
+                s += &format!(
+                    "    not reached: piece {} t ∈ [{}, {}], certified error ≤ {:.3e}\n",
+                    g.piece, g.t.0, g.t.1, g.error.1
+                );
+            }
+        }
+        for n in &cert_notes {
+            s += &format!("  certificate {n}\n");
+        }
+        print_out(&s);
+    }
+    Ok(if within_all {
+        super::EXIT_OK
+    } else {
+        super::EXIT_UNDECIDED
+    })
+}
+
+/// The parameters where consecutive segments meet (per piece, interior only).
+fn split_points(r: &OffsetResult) -> Vec<f64> {
+    r.segments
+        .windows(2)
+        .filter(|w| w[0].piece == w[1].piece)
+        .map(|w| w[0].t.1)
+        .collect()
+}
+
+/// The picture: trajectory (blue), exact convolution sampled (green),
+/// approximants (red: plus, magenta: minus), cusps (black dots). An
+/// illustration in floats; the proof is the printed certified bound.
+fn render(curve: &[Bezier<Rational>], pen: &Pen, results: &[(&str, OffsetResult, f64)]) -> String {
+    let qf = pen.q_f64();
+    let xs: Vec<Bezier<f64>> = curve.iter().map(|b| b.map(|v| v.approx())).collect();
+    let sample = |b: &Bezier<f64>, n: usize| -> Vec<V2<f64>> {
+        (0..=n).map(|i| b.eval(&(i as f64 / n as f64))).collect()
+    };
+    let mut exact: Vec<(i8, Vec<V2<f64>>)> = Vec::new();
+    for (name, _, _) in results {
+        let sigma = if *name == "plus" { 1 } else { -1 };
+        for b in &xs {
+            let pts = (0..=256)
+                .filter_map(|i| {
+                    let t = i as f64 / 256.0;
+                    let d = b.hodograph().eval(&t);
+                    lncert::approx::conv::pen_point(&V2::new(-d.y, d.x), qf, sigma)
+                        .map(|e| b.eval(&t).add(&e))
+                })
+                .collect();
+            exact.push((sigma, pts));
+        }
+    }
+    let mut all: Vec<V2<f64>> = xs.iter().flat_map(|b| sample(b, 64)).collect();
+    all.extend(exact.iter().flat_map(|(_, p)| p.iter().cloned()));
+    let (mut x0, mut y0, mut x1, mut y1) = (f64::MAX, f64::MAX, f64::MIN, f64::MIN);
+    for p in &all {
+        if p.x.is_finite() && p.y.is_finite() {
+            x0 = x0.min(p.x);
+            y0 = y0.min(p.y);
+            x1 = x1.max(p.x);
+            y1 = y1.max(p.y);
+        }
+    }
+    let (w, h, pad) = (720.0, 720.0, 20.0);
+    let s = ((w - 2.0 * pad) / (x1 - x0).max(1e-12)).min((h - 2.0 * pad) / (y1 - y0).max(1e-12));
+    let map = |p: &V2<f64>| (pad + (p.x - x0) * s, h - pad - (p.y - y0) * s);
+    let poly = |pts: &[V2<f64>], style: &str| -> String {
+        let mut d = String::new();
+        for (i, p) in pts.iter().enumerate() {
+            let (x, y) = map(p);
+            let _ = write!(d, "{}{x:.2},{y:.2} ", if i == 0 { "M" } else { "L" });
+        }
+        format!("<path d=\"{d}\" fill=\"none\" {style}/>\n")
+    };
+    let mut out = format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+    );
+    for (_, pts) in &exact {
+        out += &poly(
+            pts,
+            "stroke=\"#2a2\" stroke-width=\"3\" stroke-opacity=\"0.35\"",
+        );
+    }
+    for b in &xs {
+        out += &poly(&sample(b, 128), "stroke=\"#24c\" stroke-width=\"1.2\"");
+    }
+    for (name, r, _) in results {
+        let color = if *name == "plus" { "#d22" } else { "#c2c" };
+        for g in &r.segments {
+            out += &poly(
+                &sample(&g.bezier, 48),
+                &format!("stroke=\"{color}\" stroke-width=\"1\""),
+            );
+        }
+        if let Some(c) = &r.convolution {
+            for k in &c.cusps {
+                let (x, y) = map(&V2::new(k.point.0, k.point.1));
+                let _ = writeln!(
+                    out,
+                    "<circle cx=\"{x:.2}\" cy=\"{y:.2}\" r=\"3\" fill=\"black\"/>"
+                );
+            }
+        }
+    }
+    out += &format!(
+        "<text x=\"{pad}\" y=\"{}\" font-size=\"12\" font-family=\"sans-serif\">{} — red: side +, magenta: side −, green: exact (sampled), blue: trajectory</text>\n</svg>\n",
+        h - 4.0,
+        pen.description
+    );
+    out
+}
