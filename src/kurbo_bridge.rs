@@ -373,7 +373,7 @@ pub fn arc_enclosure(a: &Arc) -> Result<ArcWithin, Error> {
     let mut a0 = pt(a.start_angle) + pt(a.x_rotation);
     if r < 0.0 {
         // center + r u(φ) = center + |r| u(φ + π)
-        a0 = a0 + Interval::PI;
+        a0 += Interval::PI;
     }
     let a1 = a0 + pt(sweep);
     let too_wide = |field: &str| {
