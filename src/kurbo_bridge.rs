@@ -655,6 +655,23 @@ mod tests {
         check_ends(&Arc::new((1.0, 2.0), (3.0, 3.0), 9e4, -2.0, -9e4));
     }
 
+    /// Over the audit's arcs (angles within a few π), eps is a few ulps of r.
+    #[test]
+    fn arc_eps_is_a_few_ulps_of_the_radius() {
+        let mut worst = 0.0f64;
+        for i in 0..2000 {
+            let x = i as f64 / 2000.0;
+            let start = -PI + 2.0 * PI * x;
+            let sweep = (0.1 + 5.9 * ((i * 7919) % 2000) as f64 / 2000.0)
+                * if i % 2 == 0 { 1.0 } else { -1.0 };
+            let rad = 0.25 * (1 + i % 16) as f64;
+            let a = Arc::new((0.5, -1.0), (rad, rad), start, sweep, 0.0);
+            worst = worst.max(arc_enclosure(&a).unwrap().eps / rad);
+        }
+        eprintln!("worst eps / r = {worst:e}");
+        assert!(worst < 1e-14, "{worst:e}");
+    }
+
     #[test]
     fn arc_against_kurbo_paths() {
         for sweep in [2.5, -2.5, 0.3, -6.0] {
