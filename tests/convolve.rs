@@ -1,0 +1,353 @@
+//! The convolution with an elliptical pen (seed 001): the circle pen against
+//! `offset`, certified bounds against dense samples of the exact convolution,
+//! cusps against sign changes of a numerical derivative, the seed's printed
+//! cusp counts, the CLI contract and certificates that `verify` re-checks.
+
+mod common;
+
+use lncert::approx::conv::{conv_cusps, pen_point, Angle, Pen};
+use lncert::approx::{convolve, offset, OffsetOptions, OffsetResult};
+use lncert::curve::{Bezier, V2};
+use lncert::scalar::{parse_rational, Rational, Scalar};
+use proptest::prelude::*;
+use serde_json::Value;
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn q(s: &str) -> Rational {
+    parse_rational(s).unwrap()
+}
+
+fn nonic() -> Vec<Bezier<Rational>> {
+    let text = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data/seed000_nonic_ellipse.json"),
+    )
+    .unwrap();
+    let doc: Value = serde_json::from_str(&text).unwrap();
+    let pts = doc["skeleton_bezier_degree9"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| {
+            let c = |v: &Value| parse_rational(&v.to_string()).unwrap();
+            V2::new(c(&p[0]), c(&p[1]))
+        })
+        .collect();
+    vec![Bezier::new(pts)]
+}
+
+fn test_cubic() -> Vec<Bezier<Rational>> {
+    lncert::shape::parse_curve(
+        r#"{"bezier": [[-0.95, 0.7], [-0.3, 0.5], [0.3, -2.5], [0.9, -0.2]]}"#,
+    )
+    .unwrap()
+}
+
+/// A circle pen of radius r gives the offset at ±r: on every span of the
+/// convolution, seed 001's approximant is seed 004's offset approximant (up to
+/// float rounding), and the cusps are the offset's. (The spans themselves may
+/// differ: the convolution splits at its cusps first, as seed 001 does.)
+#[test]
+fn circle_pen_is_the_offset() {
+    let x = test_cubic();
+    let r = q("2/5");
+    let pen = Pen::from_matrix([[r.clone(), q("0")], [q("0"), r.clone()]]).unwrap();
+    for side in [1i8, -1] {
+        let d = &r * Rational::from_integer(side.into());
+        let opts = OffsetOptions::new(d.clone(), 1e-4);
+        let off = offset(&x, &opts).unwrap();
+        let conv = convolve(&x, &pen, side, &opts).unwrap();
+        assert!(off.reached() && conv.reached());
+        for s in &conv.segments {
+            let sub = lncert::approx::span_f64(&x[s.piece], s.t).unwrap();
+            let (o, _) = lncert::approx::g2::offset_approximant_f64(&sub, d.approx()).unwrap();
+            assert_eq!(o.degree(), s.bezier.degree());
+            for (p, r) in o.points().iter().zip(s.bezier.points()) {
+                assert!(
+                    (p.x - r.x).abs() < 1e-12 && (p.y - r.y).abs() < 1e-12,
+                    "{p:?} vs {r:?}"
+                );
+            }
+        }
+        let c = conv.convolution.as_ref().unwrap();
+        assert_eq!(c.cusps.len(), off.cusps.len(), "side {side}");
+        for (a, b) in c.cusps.iter().zip(&off.cusps) {
+            assert!((a.t_approx - b.t_approx).abs() < 1e-9);
+        }
+    }
+}
+
+/// The exact convolution point at `t` in floats (independent of the driver:
+/// the closed form `x + σ Q n/√(nᵀQn)`).
+fn exact_point(x: &Bezier<f64>, t: f64, qf: [f64; 3], sigma: i8) -> V2<f64> {
+    let d = x.hodograph().eval(&t);
+    x.eval(&t)
+        .add(&pen_point(&V2::new(-d.y, d.x), qf, sigma).unwrap())
+}
+
+/// Every certified bound holds at dense samples: each sample of one curve is
+/// within `hi` (plus the sampling slack of the other curve) of the other.
+fn check_against_samples(x: &[Bezier<Rational>], pen: &Pen, sigma: i8, r: &OffsetResult) {
+    let qf = pen.q_f64();
+    const N: usize = 400;
+    for s in &r.segments {
+        let xs = x[s.piece].map(|v| v.approx()).restrict(&s.t.0, &s.t.1);
+        let exact: Vec<V2<f64>> = (0..=N)
+            .map(|i| exact_point(&xs, i as f64 / N as f64, qf, sigma))
+            .collect();
+        let approx: Vec<V2<f64>> = (0..=N)
+            .map(|i| s.bezier.eval(&(i as f64 / N as f64)))
+            .collect();
+        let spacing = |v: &[V2<f64>]| {
+            v.windows(2)
+                .map(|w| w[1].sub(&w[0]).norm2().sqrt())
+                .fold(0.0, f64::max)
+        };
+        // min over samples of the other curve ≥ the true distance, and exceeds it
+        // by at most half the largest sample spacing
+        let one_sided = |from: &[V2<f64>], to: &[V2<f64>]| {
+            from.iter()
+                .map(|p| {
+                    to.iter()
+                        .map(|q| p.sub(q).norm2().sqrt())
+                        .fold(f64::INFINITY, f64::min)
+                })
+                .fold(0.0, f64::max)
+        };
+        let slack_a = spacing(&approx) / 2.0 + 1e-9;
+        let slack_e = spacing(&exact) / 2.0 + 1e-9;
+        let h1 = one_sided(&exact, &approx);
+        let h2 = one_sided(&approx, &exact);
+        assert!(
+            h1 <= s.error.1 + slack_a,
+            "exact→approx {h1} > {} + {slack_a}",
+            s.error.1
+        );
+        assert!(
+            h2 <= s.error.1 + slack_e,
+            "approx→exact {h2} > {} + {slack_e}",
+            s.error.1
+        );
+    }
+}
+
+fn cubic_strategy() -> impl Strategy<Value = Vec<Bezier<Rational>>> {
+    proptest::array::uniform8(-16i64..=16).prop_map(|v| {
+        let p = |i: usize| V2::new(common::q(v[2 * i], 8), common::q(v[2 * i + 1], 8));
+        vec![Bezier::new(vec![p(0), p(1), p(2), p(3)])]
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: common::cases().min(24), ..common::config() })]
+
+    /// Random regular cubics, random pens and sides: the certified bound of
+    /// every segment holds against dense samples of the exact convolution.
+    #[test]
+    fn certified_bounds_hold_at_samples(
+        x in cubic_strategy(),
+        a in 2i64..=8, b_frac in 1i64..=4, angle_deg in -90i64..=90, plus in any::<bool>(),
+    ) {
+        let a = common::q(a, 10);
+        let b = &a * common::q(b_frac, 4);
+        let pen = Pen::ellipse(&a, &b, &Angle::Degrees(Rational::from_integer(angle_deg.into()))).unwrap();
+        let side = if plus { 1 } else { -1 };
+        let mut opts = OffsetOptions::new(q("0"), 1e-3);
+        opts.max_segments = 400;
+        match convolve(&x, &pen, side, &opts) {
+            // a singular cubic has no normal: a typed error, not a result
+            Err(e) => prop_assert!(e.to_string().contains("singular"), "{e}"),
+            Ok(r) => check_against_samples(&x, &pen, side, &r),
+        }
+    }
+}
+
+/// The cusps of each side against an independent count: sign changes of
+/// `(x ∗ e_σ)′ · x′`, from central differences of the closed form.
+#[test]
+fn cusps_match_sign_changes_of_the_derivative() {
+    let x = nonic();
+    let xf = x[0].map(|v| v.approx());
+    let pen = Pen::ellipse(&q("0.7"), &q("0.3"), &Angle::parse("pi/6").unwrap()).unwrap();
+    let qf = pen.q_f64();
+    for sigma in [1i8, -1] {
+        let cusps = conv_cusps(0, &x[0], &pen, sigma);
+        const N: usize = 20_000;
+        let h = 1e-7;
+        let speed = |t: f64| {
+            let d = exact_point(&xf, t + h, qf, sigma).sub(&exact_point(&xf, t - h, qf, sigma));
+            d.dot(&xf.hodograph().eval(&t))
+        };
+        let mut changes = Vec::new();
+        let mut prev = speed(1e-6);
+        for i in 1..N {
+            let t = i as f64 / N as f64;
+            let s = speed(t);
+            if s.signum() != prev.signum() {
+                changes.push(t);
+            }
+            prev = s;
+        }
+        assert_eq!(cusps.len(), changes.len(), "side {sigma}: {changes:?}");
+        for (c, t) in cusps.iter().zip(&changes) {
+            assert!(
+                (c.t_approx - t).abs() < 2.0 / N as f64,
+                "{} vs {t}",
+                c.t_approx
+            );
+        }
+    }
+}
+
+/// Seed 001 §4 (and seed 000 Fig. 7(d)–(i)): the nonic's convolution curves
+/// have two and four cusps (six in all) — with 1.4 and 0.6 read as the *full*
+/// axes (semi-axes 0.7, 0.3). Read as semi-axes, the counts are four and four,
+/// which no printed figure supports (proofs/001-convolution.md).
+#[test]
+fn nonic_cusp_counts_decide_the_axes() {
+    let x = nonic();
+    let th = Angle::parse("pi/6").unwrap();
+    let count = |a: &str, b: &str, s: i8| {
+        conv_cusps(0, &x[0], &Pen::ellipse(&q(a), &q(b), &th).unwrap(), s).len()
+    };
+    assert_eq!((count("0.7", "0.3", -1), count("0.7", "0.3", 1)), (2, 4));
+    assert_eq!((count("1.4", "0.6", -1), count("1.4", "0.6", 1)), (4, 4));
+}
+
+fn lncert(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_lncert"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+fn tmp(name: &str, text: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("lncert-convolve-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+/// `lncert convolve` on the nonic at TOL 1e-2: both sides proven, the JSON
+/// document, and both certificates re-checked by `lncert verify`.
+#[test]
+fn cli_both_sides_with_certificates_that_verify() {
+    let curve = tmp(
+        "nonic.json",
+        &lncert::shape::ShapeDesc::Curve(nonic())
+            .to_json()
+            .to_string(),
+    );
+    let cert = curve.with_file_name("cert");
+    let svg = curve.with_file_name("pic.svg");
+    let o = lncert(&[
+        "convolve",
+        curve.to_str().unwrap(),
+        "--ellipse",
+        "0.7,0.3",
+        "--angle",
+        "pi/6",
+        "--tol",
+        "1e-2",
+        "--certificate",
+        cert.to_str().unwrap(),
+        "--svg",
+        svg.to_str().unwrap(),
+        "--json",
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let doc: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(doc["verdict"], "certified");
+    let sides = doc["sides"].as_array().unwrap();
+    assert_eq!(sides.len(), 2);
+    for s in sides {
+        assert!(s["certified_error"][1].as_f64().unwrap() <= 1e-2);
+        assert_eq!(s["degree"], 12);
+    }
+    assert!(std::fs::read_to_string(&svg).unwrap().starts_with("<svg"));
+    for side in ["plus", "minus"] {
+        let mut c = cert.as_os_str().to_owned();
+        c.push(format!(".{side}.json"));
+        let v = lncert(&["verify", c.to_str().unwrap()]);
+        assert_eq!(
+            v.status.code(),
+            Some(0),
+            "{side}: {}",
+            String::from_utf8_lossy(&v.stdout)
+        );
+    }
+}
+
+/// Bad pens, angles and tolerances: exit 2, the flag named, JSON errors as JSON.
+#[test]
+fn cli_bad_input_exits_2_naming_the_flag() {
+    let curve = tmp(
+        "c.json",
+        r#"{"bezier": [[0, 0], [1, 0.2], [2, 1], [2.4, 2.5]]}"#,
+    );
+    let c = curve.to_str().unwrap();
+    for (args, flag) in [
+        (vec!["--ellipse", "1,0", "--tol", "1e-3"], "--ellipse"),
+        (vec!["--ellipse", "1,2", "--tol", "1e-3"], "--ellipse"),
+        (vec!["--ellipse", "1,nan", "--tol", "1e-3"], "--ellipse"),
+        (vec!["--ellipse", "1", "--tol", "1e-3"], "--ellipse"),
+        (
+            vec!["--ellipse", "1,0.5", "--angle", "pi/0", "--tol", "1e-3"],
+            "--angle",
+        ),
+        (
+            vec!["--ellipse", "1,0.5", "--angle", "abc", "--tol", "1e-3"],
+            "--angle",
+        ),
+        (
+            vec!["--pen-matrix", "1,2,2,4", "--tol", "1e-3"],
+            "--pen-matrix",
+        ),
+        (
+            vec!["--pen-matrix", "1,2,3", "--tol", "1e-3"],
+            "--pen-matrix",
+        ),
+        (vec!["--ellipse", "1,0.5", "--tol", "0"], "--tol"),
+        (vec!["--ellipse", "1,0.5", "--tol", "inf"], "--tol"),
+        (
+            vec!["--ellipse", "1,0.5", "--tol", "1e-3", "--side", "up"],
+            "--side",
+        ),
+        (
+            vec!["--ellipse", "1,0.5", "--tol", "1e-3", "--method", "ln-pair"],
+            "--method",
+        ),
+        (vec!["--tol", "1e-3"], "--ellipse"),
+    ] {
+        let mut all = vec!["convolve", c];
+        all.extend(args.iter().copied());
+        all.push("--json");
+        let o = lncert(&all);
+        assert_eq!(
+            o.status.code(),
+            Some(2),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        let doc: Value = serde_json::from_slice(&o.stdout).unwrap_or(Value::Null);
+        assert_eq!(doc["error"]["field"], flag, "{args:?}: {doc}");
+    }
+    // a singular trajectory: the field inside the curve file
+    let sing = tmp("s.json", r#"{"bezier": [[0, 0], [1, 1], [0, 0], [1, 1]]}"#);
+    let o = lncert(&[
+        "convolve",
+        sing.to_str().unwrap(),
+        "--ellipse",
+        "1,0.5",
+        "--tol",
+        "1e-3",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("CURVE"));
+}
