@@ -353,7 +353,11 @@ fn split_points(r: &OffsetResult) -> Vec<f64> {
 /// The picture: trajectory (blue), exact convolution sampled (green),
 /// approximants (red: plus, magenta: minus), cusps (black dots). An
 /// illustration in floats; the proof is the printed certified bound.
-fn render(curve: &[Bezier<Rational>], pen: &Pen, results: &[(&str, OffsetResult, f64)]) -> String {
+pub(crate) fn render(
+    curve: &[Bezier<Rational>],
+    pen: &Pen,
+    results: &[(&str, OffsetResult, f64)],
+) -> String {
     let qf = pen.q_f64();
     let xs: Vec<Bezier<f64>> = curve.iter().map(|b| b.map(|v| v.approx())).collect();
     let sample = |b: &Bezier<f64>, n: usize| -> Vec<V2<f64>> {

@@ -35,7 +35,11 @@ pub fn run(a: &ReproduceArgs) -> Result<i32, CliError> {
     }
     let claims = run_all();
     let written = match &a.out {
-        Some(dir) => svg::write_fig5(dir)?,
+        Some(dir) => {
+            let mut w = svg::write_fig5(dir)?;
+            w.push(write_seed001_fig2a(dir)?);
+            w
+        }
         None => Vec::new(),
     };
     if a.json {
@@ -100,4 +104,19 @@ fn print_text(claims: &[Claim], written: &[PathBuf]) {
         let _ = writeln!(s, "wrote {}", p.display());
     }
     print_out(&s);
+}
+
+/// Seed 001 Fig. 2(a) / seed 000 Fig. 7(a): the nonic, its exact convolution
+/// with the pen (sampled) and both certified G² approximants at TOL 1e-2.
+fn write_seed001_fig2a(dir: &std::path::Path) -> Result<PathBuf, CliError> {
+    use lncert::reproduce::seed001;
+    let fail = |e: String| super::args::bad("--out", format!("seed 001 Fig. 2(a): {e}"));
+    let (minus, plus) = seed001::both_sides(1e-2).map_err(fail)?;
+    let x = seed001::nonic().map_err(fail)?;
+    let pen = seed001::pen(1e-12).map_err(fail)?;
+    let svg = super::convolve::render(&x, &pen, &[("minus", minus, 0.0), ("plus", plus, 0.0)]);
+    let path = dir.join("seed001_fig2a.svg");
+    std::fs::write(&path, svg)
+        .map_err(|e| super::args::bad("--out", format!("cannot write {}: {e}", path.display())))?;
+    Ok(path)
 }

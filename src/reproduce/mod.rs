@@ -16,6 +16,7 @@ pub mod offsets;
 pub mod printed;
 mod scans;
 mod seed000;
+pub mod seed001;
 mod seed003;
 
 use serde::Serialize;
@@ -119,5 +120,6 @@ pub fn run_all() -> Vec<Claim> {
     seed003::claims(&mut out);
     scans::claims(&mut out);
     offsets::claims(&mut out);
+    seed001::claims(&mut out);
     out
 }
