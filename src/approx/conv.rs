@@ -518,19 +518,9 @@ fn cusp_roots(p: &Poly<Rational>, span: &Span) -> Vec<crate::poly::RealRoot> {
     if let Some(b) = p.to_bernstein(n) {
         let bi: Vec<Interval> = b.iter().map(interval_from_rational).collect();
         if let Some(pieces) = crate::poly::isolate_simple_roots_bernstein(&bi, 4_000) {
-            let exact = |x: f64| rational_from_f64(x);
             let rs: Option<Vec<_>> = pieces
                 .into_iter()
-                .map(|(a, b)| {
-                    Some(prep::bisect(
-                        p,
-                        &crate::poly::RealRoot {
-                            lo: exact(a)?,
-                            hi: exact(b)?,
-                        },
-                        40,
-                    ))
-                })
+                .map(|(a, b)| refine(p, &bi, a, b, 40))
                 .collect();
             if let Some(rs) = rs {
                 return rs;
@@ -538,6 +528,72 @@ fn cusp_roots(p: &Poly<Rational>, span: &Span) -> Vec<crate::poly::RealRoot> {
         }
     }
     prep::roots_refined(p, span, 40)
+}
+
+/// The sign of `p(t)` at a dyadic `t`: de Casteljau on the enclosed Bernstein
+/// coefficients first (well conditioned), exactly when that is undecided.
+fn sign_at(p: &Poly<Rational>, bern: &[Interval], t: f64) -> Option<i8> {
+    let ti = Interval::try_from((t, t)).ok()?;
+    let one = Interval::try_from((1.0, 1.0)).ok()?;
+    let mut w = bern.to_vec();
+    for level in 1..w.len() {
+        for i in 0..w.len() - level {
+            w[i] = w[i] * (one - ti) + w[i + 1] * ti;
+        }
+    }
+    let v = *w.first()?;
+    if v.inf() > 0.0 {
+        return Some(1);
+    }
+    if v.sup() < 0.0 {
+        return Some(-1);
+    }
+    let e = p.eval(&rational_from_f64(t)?);
+    Some(if e.is_positive() {
+        1
+    } else if e.is_negative() {
+        -1
+    } else {
+        0
+    })
+}
+
+/// Bisects a piece `[a, b]` holding exactly one (simple) root of `p`, with
+/// strict opposite signs at its ends, to width `2^-bits` (or to an exact root).
+fn refine(
+    p: &Poly<Rational>,
+    bern: &[Interval],
+    a: f64,
+    b: f64,
+    bits: u32,
+) -> Option<crate::poly::RealRoot> {
+    let (mut lo, mut hi) = (a, b);
+    let s_lo = sign_at(p, bern, lo)?;
+    if s_lo == 0 || sign_at(p, bern, hi)? != -s_lo {
+        return None;
+    }
+    let width = (0.5f64).powi(bits as i32);
+    while hi - lo > width {
+        let m = 0.5 * lo + 0.5 * hi;
+        if !(lo < m && m < hi) {
+            break;
+        }
+        match sign_at(p, bern, m)? {
+            0 => {
+                let r = rational_from_f64(m)?;
+                return Some(crate::poly::RealRoot {
+                    lo: r.clone(),
+                    hi: r,
+                });
+            }
+            s if s == s_lo => lo = m,
+            _ => hi = m,
+        }
+    }
+    Some(crate::poly::RealRoot {
+        lo: rational_from_f64(lo)?,
+        hi: rational_from_f64(hi)?,
+    })
 }
 
 /// A cusp of the exact convolution curve `x ∗ e_σ`.
@@ -611,7 +667,17 @@ pub fn conv_cusps(piece: usize, x: &Bezier<Rational>, pen: &Pen, sigma: i8) -> V
     for r in cusp_roots(&p, &span) {
         let m = r.midpoint();
         let s = Rational::from_integer(sigma.into()) * k.eval(&m);
-        let decided = !has_root_in(&k, &Span::closed(r.lo.clone(), r.hi.clone()));
+        // k has no root on the isolating interval: by an interval enclosure of
+        // k over it (k is far from 0 at a cusp: |det Q · k| = (nᵀQn)^{3/2}),
+        // else exactly (Sturm)
+        let t_iv = Interval::try_from((
+            interval_from_rational(&r.lo).inf(),
+            interval_from_rational(&r.hi).sup(),
+        ))
+        .ok();
+        let k_iv = t_iv.map(|t| k.map(interval_from_rational).eval(&t));
+        let decided = k_iv.is_some_and(|v| v.inf() > 0.0 || v.sup() < 0.0)
+            || !has_root_in(&k, &Span::closed(r.lo.clone(), r.hi.clone()));
         if decided && !s.is_positive() {
             continue;
         }
