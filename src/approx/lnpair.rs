@@ -136,6 +136,107 @@ pub fn ln_pair(x: &Bezier<f64>, n0: &V2<f64>, n1: &V2<f64>, d: f64) -> Result<Ln
     })
 }
 
+/// Seed 000 §5: the LN pair of a trajectory segment `x` and its compatible
+/// pen segment (the pen points `e0`, `e1` at the ends, e.g. of an ellipse),
+/// with one linear normal map. `n0`, `n1` are the unit left normals of `x` at
+/// the ends (passed in, as for [`ln_pair`]). The pen segment's frame is `e0`,
+/// the intersection `em` of its end tangents (parallel to `x′` there), `e1`,
+/// with ratio `λ_q = |e1 − em|/|em − e0|` (signed parameters: the pen arc may
+/// run against `x′`); the common `κ = √(λ_p λ_q)` (the paper's geometric mean)
+/// exists iff `λ_p/λ_q ∈ [1/4, 4]` (eq. (7)); the convolution approximant is
+/// the cubic `pa + qa`. For a circle pen (`e = d N`) this is [`ln_pair`].
+///
+/// # Examples
+/// ```
+/// use lncert::approx::lnpair::{ln_pair, ln_pair_pen};
+/// use lncert::curve::{Bezier, V2};
+/// let k = 0.5523;
+/// let x = Bezier::new(vec![V2::new(1.0, 0.0), V2::new(1.0, k), V2::new(k, 1.0), V2::new(0.0, 1.0)]);
+/// let (n0, n1) = (V2::new(-1.0, 0.0), V2::new(0.0, -1.0));
+/// let a = ln_pair(&x, &n0, &n1, -0.5).unwrap();
+/// let b = ln_pair_pen(&x, &n0, &n1, &n0.scale(&-0.5), &n1.scale(&-0.5)).unwrap();
+/// for (p, q) in a.offset.points().iter().zip(b.offset.points()) {
+///     assert!((p.x - q.x).abs() < 1e-12 && (p.y - q.y).abs() < 1e-12);
+/// }
+/// ```
+pub fn ln_pair_pen(
+    x: &Bezier<f64>,
+    n0: &V2<f64>,
+    n1: &V2<f64>,
+    e0: &V2<f64>,
+    e1: &V2<f64>,
+) -> Result<LnPairPiece, NoPair> {
+    let pts = x.points();
+    let (b0, b3) = (pts[0].clone(), pts[pts.len() - 1].clone());
+    let t0 = V2::new(n0.y, -n0.x);
+    let t1 = V2::new(n1.y, -n1.x);
+    let c = b3.sub(&b0);
+    let den = t0.cross(&t1);
+    let scale = c.norm2().sqrt();
+    let third = 1.0 / 3.0;
+    let piece = if den.abs() <= 1e-12 && t0.dot(&t1) > 0.0 && c.cross(&t0).abs() <= 1e-12 * scale {
+        // straight: the segment, and the pen segment (one point when e0 = e1)
+        let pa = frame_cubic(&b0, &b0.lerp(&b3, &0.5), &b3, 2.0 * third, 2.0 * third);
+        let qa = frame_cubic(e0, &e0.lerp(e1, &0.5), e1, 2.0 * third, 2.0 * third);
+        (pa, qa, 1.0, 1.0)
+    } else {
+        if den == 0.0 {
+            return Err(NoPair::TangentsDoNotMeet);
+        }
+        let s = c.cross(&t1) / den;
+        let u = t0.cross(&c) / den;
+        if !(s > 0.0 && u > 0.0) || t0.dot(&t1) <= -1.0 + 1e-12 {
+            return Err(NoPair::TangentsDoNotMeet);
+        }
+        let bm = b0.add(&t0.scale(&s));
+        let lambda_p = u / s;
+        // the pen segment's frame: e0 + sq t0 = e1 − uq t1 (signed)
+        let cq = e1.sub(e0);
+        let (sq, uq) = (cq.cross(&t1) / den, t0.cross(&cq) / den);
+        let (em, lambda_q) = if sq == 0.0 && uq == 0.0 {
+            // a pen corner (e0 = e1): the pen segment is one point
+            (e0.clone(), 1.0)
+        } else {
+            if !(sq * uq > 0.0) {
+                return Err(NoPair::TangentsDoNotMeet);
+            }
+            (e0.add(&t0.scale(&sq)), uq / sq)
+        };
+        let ratio = lambda_p / lambda_q;
+        if !(0.25..=4.0).contains(&ratio) {
+            return Err(NoPair::LambdaOutOfRange);
+        }
+        let kappa = (lambda_p * lambda_q).sqrt();
+        let pa = frame_cubic(
+            &b0,
+            &bm,
+            &b3,
+            2.0 / 3.0 * (2.0 - lambda_p / kappa),
+            2.0 / 3.0 * (2.0 - kappa / lambda_p),
+        );
+        let qa = frame_cubic(
+            e0,
+            &em,
+            e1,
+            2.0 / 3.0 * (2.0 - lambda_q / kappa),
+            2.0 / 3.0 * (2.0 - kappa / lambda_q),
+        );
+        (pa, qa, lambda_p, kappa)
+    };
+    let (pa, ca, lambda, kappa) = piece;
+    let offset = Bezier::new(pa.points().iter().zip(ca.points()).map(|(p, q)| p.add(q)).collect());
+    if !offset.points().iter().all(|p| p.x.is_finite() && p.y.is_finite()) {
+        return Err(NoPair::NotFinite);
+    }
+    Ok(LnPairPiece {
+        pa,
+        ca,
+        offset,
+        lambda,
+        kappa,
+    })
+}
+
 /// `r · d_H(c, ca)` of eq. (8) by Prop 6.1, in interval arithmetic: the unit
 /// arc between the normals `n0`, `n1` (enclosures of the true unit normals),
 /// half-angle `α` with `cos α = √((1 + n0·n1)/2)`, `sin α = √((1 − n0·n1)/2)`,

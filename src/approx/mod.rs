@@ -504,7 +504,12 @@ fn construct(
             return match method {
                 OffsetMethod::G2 => conv::convolution_approximant_f64(&sub, &e0, &e1, *qf, *sigma)
                     .map(|(c, _)| (c, None)),
-                OffsetMethod::LnPair => None,
+                OffsetMethod::LnPair => {
+                    let n0 = prep::unit_left_normal(x, t.0)?;
+                    let n1 = prep::unit_left_normal(x, t.1)?;
+                    let pair = lnpair::ln_pair_pen(&sub, &n0, &n1, &e0, &e1).ok()?;
+                    Some((pair.offset.clone(), Some(pair)))
+                }
             };
         }
     };
@@ -730,8 +735,10 @@ pub fn offset(
 
 /// Approximates the convolution `x ∗ e_σ` of a piecewise polynomial curve with
 /// an elliptical pen on side `side` (`+1`: left of the travel direction, `−1`:
-/// right) within `opts.tol`, by seed 001's G²/C¹ method (`opts.method` must be
-/// [`OffsetMethod::G2`]; `opts.distance` is not used), proving every segment
+/// right) within `opts.tol`, by seed 001's G²/C¹ method ([`OffsetMethod::G2`],
+/// degree `n + 3`) or seed 000 §5's cubic LN pairs ([`OffsetMethod::LnPair`]:
+/// [`lnpair::ln_pair_pen`], split at the mid-angle, rule (a); `opts.distance`
+/// is not used, and the paper's error measure is not evaluated), proving every segment
 /// against the exact convolution (see [`conv`]). The trajectory is split first
 /// at the side's own cusps (exact), then at inflections and turns.
 ///
@@ -758,12 +765,6 @@ pub fn convolve(
 ) -> Result<OffsetResult, OffsetError> {
     if side != 1 && side != -1 {
         return Err(bad("side", "must be 1 or -1"));
-    }
-    if opts.method != OffsetMethod::G2 {
-        return Err(bad(
-            "method",
-            "the convolution with an ellipse is built by seed 001's G² method (g2)",
-        ));
     }
     if curve.is_empty() {
         return Err(bad("curve", "no pieces"));
@@ -802,11 +803,13 @@ pub fn convolve(
         .enumerate()
         .flat_map(|(i, x)| conv::conv_cusps(i, x, pen, side))
         .collect();
+    // seed 001 §4 splits each side at its own cusps first; seed 000 §5's LN
+    // pairs split only at inflections and turns
     let cuts: Vec<Vec<f64>> = (0..curve.len())
         .map(|i| {
             cusps
                 .iter()
-                .filter(|c| c.piece == i)
+                .filter(|c| c.piece == i && opts.method == OffsetMethod::G2)
                 .map(|c| c.t_approx)
                 .collect()
         })

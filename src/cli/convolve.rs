@@ -49,7 +49,7 @@ pub struct ConvolveArgs {
     /// Which convolution curve: `plus`, `minus` or `both`.
     #[arg(long, default_value = "both")]
     pub side: String,
-    /// The construction: `g2` (seed 001).
+    /// The construction: `g2` (seed 001, degree n + 3) or `ln-pair` (seed 000 §5, cubic).
     #[arg(long, default_value = "g2")]
     pub method: String,
     /// Write the certificate(s) (see the module docs for the names).
@@ -166,11 +166,11 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
             }
         }
     }
-    if a.method != "g2" {
+    if a.method != "g2" && a.method != "ln-pair" {
         return Err(bad(
             "--method",
             format!(
-                "unknown method {:?}; the elliptical pen is built by seed 001's g2 method",
+                "unknown method {:?}; expected g2 (seed 001) or ln-pair (seed 000 §5)",
                 a.method
             ),
         ));
@@ -193,6 +193,9 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
         return Err(bad("--max-boxes", "out of range (1 to 50000000)"));
     }
     let mut opts = OffsetOptions::new(Rational::from_integer(0.into()), tol);
+    if a.method == "ln-pair" {
+        opts.method = lncert::approx::OffsetMethod::LnPair;
+    }
     opts.max_depth = a.max_depth;
     opts.max_segments = a.max_segments;
     opts.max_boxes = a.max_boxes;
@@ -257,7 +260,7 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
                 "margin": pen.margin,
             },
             "tol": a.tol,
-            "method": "g2",
+            "method": a.method,
             "verdict": overall,
             "sides": results.iter().map(|(name, r, secs)| {
                 let c = r.convolution.as_ref();
@@ -293,8 +296,10 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
         ));
     } else {
         let mut s = format!(
-            "convolution with the pen {} (seed 001 G², tol {}):\n",
-            pen.description, a.tol
+            "convolution with the pen {} ({}, tol {}):\n",
+            pen.description,
+            if a.method == "g2" { "seed 001 G²" } else { "seed 000 §5 cubic LN pairs" },
+            a.tol
         );
         if pen.margin > 0.0 {
             s += &format!(
