@@ -52,6 +52,7 @@ mod desc;
 #[cfg(feature = "font")]
 mod font;
 pub(crate) mod io;
+pub mod svgarc;
 mod svgdoc;
 
 pub use arc::{parse_arc_input, TravelledArc};
@@ -60,10 +61,12 @@ pub use desc::{ArcDesc, ShapeDesc, MAX_COORDINATE};
 #[cfg(feature = "font")]
 pub use font::glyph_outline;
 pub use io::{
-    parse_curve, parse_json_curve, parse_svg_path, CurveParseError, MAX_BSPLINE_WORK,
-    MAX_CONTROL_POINTS, MAX_NUMBER_CHARS, MAX_SEGMENTS, MAX_SVG_BYTES,
+    parse_curve, parse_curve_reported, parse_json_curve, parse_svg_path, parse_svg_path_reported,
+    CurveParseError, MAX_BSPLINE_WORK, MAX_CONTROL_POINTS, MAX_NUMBER_CHARS, MAX_SEGMENTS,
+    MAX_SVG_BYTES,
 };
-pub use svgdoc::parse_svg_document;
+pub use svgarc::{format_up, ApproxElement, ApproxKind, InputApprox, ARC_TARGET_REL};
+pub use svgdoc::{parse_svg_document, parse_svg_document_reported};
 
 /// Why a shape could not be built or read: the field and the reason.
 ///
