@@ -201,7 +201,9 @@ pub(crate) fn mul_up(x: f64, y: f64) -> f64 {
 /// ```
 /// use lncert::shape::format_up;
 /// assert_eq!(format_up(2.01e-8), "2.1e-8");
-/// assert_eq!(format_up(2.0e-8), "2.0e-8");
+/// assert_eq!(format_up(0.25), "2.5e-1");
+/// // the float nearest 2e-8 is a little above it
+/// assert_eq!(format_up(2e-8), "2.1e-8");
 /// assert_eq!(format_up(9.96e-8), "1.0e-7");
 /// ```
 pub fn format_up(x: f64) -> String {
