@@ -39,6 +39,7 @@ use crate::curve::{bernstein_product, Bezier, V2};
 use crate::scalar::{
     abs_le_pow10, interval_from_rational, rational_from_f64, sin_cos_enclosure, Interval, Rational,
 };
+use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 use std::f64::consts::{FRAC_PI_2, TAU};
 
@@ -476,7 +477,7 @@ fn svg_frame(
             (ivr(&c), ivr(&s), z, ivr(&lam).mid(), q, scale)
         }
         None => {
-            // cos φ, sin φ to ~2⁻²⁰⁰ and Λ exactly from them: the centre's
+            // cos φ, sin φ to ~2⁻¹²⁰ and Λ exactly from them: the centre's
             // √((1 − Λ)/Λ) is ill-conditioned where Λ ≈ 1 (a half arc), so Λ
             // is enclosed far below the float resolution
             let (c, s) = rotation_enclosure(&phi);
@@ -496,7 +497,7 @@ fn svg_frame(
             } else if lam.hi < one {
                 (q2(&lam.hi).convex_hull(q2(&lam.lo)).sqrt(), point(1.0))
             } else {
-                // Λ = 1 within 2⁻¹⁹⁰: both F.6.6 branches at once (both
+                // Λ = 1 within ~2⁻¹²⁰: both F.6.6 branches at once (both
                 // formulas are continuous there)
                 let top = q2(&lam.lo).sup();
                 let q = Interval::try_from((0.0, top)).unwrap_or(Interval::ENTIRE);
@@ -596,15 +597,14 @@ pub(crate) fn axis_arc(
 }
 
 // ---------------------------------------------------------------------------
-// cos φ and sin φ to 200 bits
+// cos φ and sin φ to 120 bits
 // ---------------------------------------------------------------------------
 
 /// Bits of the fixed-point grid of [`rotation_enclosure`]'s series.
-const TRIG_BITS: usize = 200;
+const TRIG_BITS: usize = 128;
 
-/// π to 80 decimals; the truncation error is below `10⁻⁸⁰`.
-const PI_80: &str =
-    "3.14159265358979323846264338327950288419716939937510582097494459230781640628620899";
+/// π to 50 decimals; the truncation error is below `10⁻⁵⁰`.
+const PI_50: &str = "3.14159265358979323846264338327950288419716939937510";
 
 /// A closed interval `[lo, hi]` of exact rationals.
 #[derive(Clone, Debug)]
@@ -649,70 +649,59 @@ impl RatInterval {
             }
         }
     }
-    /// Multiplied by `o ⊂ [0, ∞)` (`self` of any sign).
-    fn mul_nonneg(&self, o: &RatInterval) -> RatInterval {
-        let lo = if self.lo.is_negative() {
-            &self.lo * &o.hi
-        } else {
-            &self.lo * &o.lo
-        };
-        let hi = if self.hi.is_negative() {
-            &self.hi * &o.lo
-        } else {
-            &self.hi * &o.hi
-        };
-        RatInterval { lo, hi }
-    }
-    /// Rounded outward to the grid `2^-TRIG_BITS` (keeps the series' numbers small).
-    fn rounded(&self) -> RatInterval {
-        let g = Rational::from_integer(num_bigint::BigInt::one() << TRIG_BITS);
-        RatInterval {
-            lo: (&self.lo * &g).floor() / &g,
-            hi: (&self.hi * &g).ceil() / &g,
-        }
-    }
     /// The tightest float interval containing it.
     fn interval(&self) -> Interval {
         ivr(&self.lo).convex_hull(ivr(&self.hi))
     }
 }
 
-/// `sin x` and `cos x` for `x ⊂ [0, 0.8]`: Taylor series in outward-rounded
-/// rational intervals, each with the alternating series' remainder (bounded
-/// by its next term, the terms decreasing since `x < 1`).
-fn sin_cos_series(x: &RatInterval) -> (RatInterval, RatInterval) {
-    let x2 = x.sqr().rounded();
-    let series = |first: RatInterval, start: u32| {
-        let mut term = first;
-        let mut sum = term.clone();
+/// `sin x` and `cos x` for `x ∈ [lo, hi]·2^-TRIG_BITS ⊂ [0, 0.8]` (`lo`, `hi`
+/// nonnegative integers): Taylor series in fixed point, every product
+/// rounded outward, plus the alternating series' remainder (bounded by its
+/// next term: the terms decrease since `x < 1`).
+fn sin_cos_series(lo: &BigInt, hi: &BigInt) -> (RatInterval, RatInterval) {
+    let one = BigInt::one() << TRIG_BITS;
+    // a·b·2^-P / d rounded down or up, for a, b ≥ 0
+    let down = |a: &BigInt, b: &BigInt, d: u32| ((a * b) >> TRIG_BITS) / BigInt::from(d);
+    let up = |a: &BigInt, b: &BigInt, d: u32| {
+        let p: BigInt = a * b;
+        let q: BigInt = (p + &one - 1) >> TRIG_BITS;
+        (q + BigInt::from(d - 1)) / BigInt::from(d)
+    };
+    let (x2_lo, x2_hi) = (down(lo, lo, 1), up(hi, hi, 1));
+    let series = |first: (BigInt, BigInt), start: u32| {
+        let (mut t_lo, mut t_hi) = first;
+        let (mut s_lo, mut s_hi) = (t_lo.clone(), t_hi.clone());
         let mut n = start;
-        for k in 1..=30 {
-            let d = Rational::from_integer(((n + 1) * (n + 2)).into());
-            term = term.mul_nonneg(&x2).scale(&(Rational::one() / d)).rounded();
+        for k in 1..=24 {
+            let d = (n + 1) * (n + 2);
+            t_lo = down(&t_lo, &x2_lo, d);
+            t_hi = up(&t_hi, &x2_hi, d);
             n += 2;
-            sum = if k % 2 == 1 {
-                sum.add(&term.neg())
+            if k % 2 == 1 {
+                s_lo -= &t_hi;
+                s_hi -= &t_lo;
             } else {
-                sum.add(&term)
-            };
+                s_lo += &t_lo;
+                s_hi += &t_hi;
+            }
         }
-        let d = Rational::from_integer(((n + 1) * (n + 2)).into());
-        let next = term.mul_nonneg(&x2).scale(&(Rational::one() / d)).hi;
+        let next = up(&t_hi, &x2_hi, (n + 1) * (n + 2));
+        let g = Rational::from_integer(one.clone());
         RatInterval {
-            lo: &sum.lo - &next,
-            hi: &sum.hi + &next,
+            lo: Rational::from_integer(s_lo - &next) / &g,
+            hi: Rational::from_integer(s_hi + &next) / &g,
         }
     };
-    let one = RatInterval {
-        lo: Rational::one(),
-        hi: Rational::one(),
-    };
-    (series(x.clone(), 1), series(one, 0))
+    (
+        series((lo.clone(), hi.clone()), 1),
+        series((one.clone(), one.clone()), 0),
+    )
 }
 
 /// `cos φ` and `sin φ` for `φ` in degrees, `[0, 360)`, enclosed to about
-/// `2⁻¹⁹⁰`: the quadrant and octant exactly, then [`sin_cos_series`] on
-/// `[0, π/4]` with `π` from [`PI_80`].
+/// `2⁻¹²⁰`: the quadrant and octant exactly, then [`sin_cos_series`] on
+/// `[0, π/4]` with `π` from [`PI_50`].
 fn rotation_enclosure(deg: &Rational) -> (RatInterval, RatInterval) {
     let n = |k: i64| Rational::from_integer(k.into());
     let quadrant = (deg / n(90)).floor();
@@ -722,18 +711,17 @@ fn rotation_enclosure(deg: &Rational) -> (RatInterval, RatInterval) {
     } else {
         (t, false)
     };
-    let pi = crate::scalar::parse_rational(PI_80).unwrap_or_else(|_| n(3));
-    let pi_hi = &pi + Rational::new(1.into(), num_traits::pow(num_bigint::BigInt::from(10), 80));
-    let x = RatInterval {
-        lo: &t * &pi / n(180),
-        hi: &t * &pi_hi / n(180),
-    }
-    .rounded();
-    let (s, c) = sin_cos_series(&x);
+    let pi = crate::scalar::parse_rational(PI_50).unwrap_or_else(|_| n(3));
+    let pi_hi = &pi + Rational::new(1.into(), num_traits::pow(BigInt::from(10), 50));
+    // x = t·π/180 on the grid 2^-TRIG_BITS, rounded outward
+    let g = Rational::from_integer(BigInt::one() << TRIG_BITS);
+    let x_lo = (&t * &pi / n(180) * &g).floor().to_integer();
+    let x_hi = (&t * &pi_hi / n(180) * &g).ceil().to_integer();
+    let (s, c) = sin_cos_series(&x_lo, &x_hi);
     // angle 90°·quadrant + t (or + 90° − t when swapped)
     let (s, c) = if swap { (c, s) } else { (s, c) };
-    let four = num_bigint::BigInt::from(4);
-    let q: num_bigint::BigInt = (quadrant.to_integer() % &four + &four) % &four;
+    let four = BigInt::from(4);
+    let q: BigInt = (quadrant.to_integer() % &four + &four) % &four;
     match q.to_string().as_str() {
         "0" => (c, s),
         "1" => (s.neg(), c),
@@ -835,7 +823,11 @@ fn approximate(
     let mut tries = 0;
     loop {
         let (pieces, offs) = construct(fr, n, p0, p1)?;
-        let goal = (1.25 * cubic_error_estimate(fr.sweep / n as f64)).min(tau);
+        // aim a little above the construction's error (not below τ/16:
+        // tiny arcs need no tighter bound than that)
+        let goal = (1.25 * cubic_error_estimate(fr.sweep / n as f64))
+            .max(tau / 16.0)
+            .min(tau);
         let pre = certify_chain(fr, &offs, goal)?;
         if pre <= tau || tries == 2 || 2 * n > MAX_PIECES_PER_ARC {
             let bound = (point(pre) * point(fr.norm_sup())).sup();
