@@ -863,18 +863,21 @@ impl Sector {
         };
         Sector { e0, e1, m, wide }
     }
-    /// Every point of the box `v` is nonzero with its direction inside the
-    /// sector, certified. With `H1 = {cross(e0, v) > 0}`, `H2 = {cross(v, e1) > 0}`
-    /// and `H0 = {dot(m, v) > 0}` (open half-planes, so `0` is in none):
+    /// Every point of the convex hull of `pts` (the control points of a
+    /// piece of `b`) is nonzero with its direction inside the sector,
+    /// certified. With the open half-planes (so `0` is in none)
+    /// `H1 = {cross(e0, v) > 0}`, `H2 = {cross(v, e1) > 0}`, `H0 = {dot(m, v) > 0}`:
     /// the sector contains `H1 ∩ H2` always (it *is* that for `Δ ≤ π`), and
-    /// each of `H0`, `H1`, `H2` when `Δ ≥ π`.
-    fn contains(&self, v: &IV) -> bool {
-        let h1 = pos(cross(&self.e0, v));
-        let h2 = pos(cross(v, &self.e1));
+    /// each of `H0`, `H1`, `H2` when `Δ ≥ π`; a half-plane is convex, so it
+    /// holds the hull when it holds every control point.
+    fn contains(&self, pts: &[IV]) -> bool {
+        let all = |f: &dyn Fn(&IV) -> Interval| pts.iter().all(|v| pos(f(v)));
+        let h1 = || all(&|v| cross(&self.e0, v));
+        let h2 = || all(&|v| cross(v, &self.e1));
         if self.wide {
-            h1 || h2 || pos(dot(&self.m, v))
+            h1() || h2() || all(&|v| dot(&self.m, v))
         } else {
-            h1 && h2
+            h1() && h2()
         }
     }
 }
@@ -935,8 +938,9 @@ impl PBox {
 /// a chain point `v`, at distance `||v| − 1| ≤ sup ρ`.
 ///
 /// `ρ` on a box is bounded by the hull of the Bernstein coefficients of
-/// `|b|² − 1`; the sector tests by linear forms of the box of the control
-/// points of `b` (convex hull property); every quantity is an interval
+/// `|b|² − 1`; the sector tests are open half-planes holding every control
+/// point of `b` on the box, and `|b − u0|` is at most its largest value at a
+/// control point (convex hull property); every quantity is an interval
 /// enclosure of the exact one (the exact centre, radii, `cos φ`, `sin φ`,
 /// `u0`, `u1` lie in theirs), so the conclusions hold for the exact arc.
 fn certify_chain(fr: &Frame, offs: &[[IV; 4]], goal: f64) -> Result<f64, String> {
@@ -989,8 +993,12 @@ fn certify_chain(fr: &Frame, offs: &[[IV; 4]], goal: f64) -> Result<f64, String>
         while let Some(bx) = queue.pop_front() {
             boxes += 1;
             let can_split = bx.depth < MAX_DEPTH && boxes + queue.len() < MAX_BOXES_PER_PIECE;
-            let v = V2::new(hull(&bx.x), hull(&bx.y));
-            if !widened.contains(&v) {
+            let pts: Vec<IV> =
+                bx.x.iter()
+                    .zip(&bx.y)
+                    .map(|(&x, &y)| V2::new(x, y))
+                    .collect();
+            if !widened.contains(&pts) {
                 if can_split {
                     let (l, r) = bx.split();
                     queue.extend([l, r]);
@@ -1001,10 +1009,15 @@ fn certify_chain(fr: &Frame, offs: &[[IV; 4]], goal: f64) -> Result<f64, String>
             // ρ = ||b| − 1| with |b|² ∈ 1 + hull(f)
             let norm = (hull(&bx.f) + one).max(point(0.0)).sqrt();
             let mut bound = (norm - one).abs().sup();
-            if !exact.contains(&v) {
-                let d0 = ((v.x - u0.x).sqr() + (v.y - u0.y).sqr()).sqrt().sup();
-                let d1 = ((v.x - u1.x).sqr() + (v.y - u1.y).sqr()).sqrt().sup();
-                bound = bound.max(d0.min(d1));
+            if !exact.contains(&pts) {
+                // |v − u| is convex: its largest value on the hull is at a
+                // control point
+                let far = |u: &IV| {
+                    pts.iter()
+                        .map(|v| ((v.x - u.x).sqr() + (v.y - u.y).sqr()).sqrt().sup())
+                        .fold(0.0, f64::max)
+                };
+                bound = bound.max(far(&u0).min(far(&u1)));
             }
             if (bound.is_nan() || bound > target) && can_split {
                 let (l, r) = bx.split();
