@@ -23,17 +23,20 @@
 //!   `d_H(B-chain, E-arc) ≤ ‖A‖₂ · max(sup ρ, sup_undecided min(|b − u0|, |b − u1|))`,
 //!   `ρ = | |b| − 1 |`, provided every point of the chain has its direction in
 //!   the arc's sector widened by a margin. See `proofs/svg-arcs.md` and
-//!   [`certify_chain`] for the argument.
+//!   `certify_chain` for the argument.
 //! * **Report**: every approximated element is listed in an [`InputApprox`]
 //!   with its certified bound (rounded up).
 //!
 //! `n` is chosen so that the bound meets [`ARC_TARGET_REL`]` · max(rx, ry)`
-//! (and doubled, at most twice, when the certificate misses it). The target
-//! can be missed only where the float construction itself is too coarse —
-//! ellipses with an axis ratio beyond about 10⁸, or a half arc whose radii are
-//! within rounding of the F.6.6 correction at a rotation that is not a
-//! multiple of 90° (the bound then carries a `√ε ≈ 1.5·10⁻⁸` term) — and the
-//! report then says the larger, still certified, bound.
+//! (and doubled, at most twice, when the certificate misses it): a half
+//! ellipse takes 9 pieces, certified within `3.5·10⁻⁸ · max(rx, ry)`. The
+//! target can be missed only where the float construction's rounding,
+//! magnified by the axis ratio in the pre-image, dominates — ellipses with
+//! an axis ratio beyond about 10⁹ — and the report then says the larger,
+//! still certified, bound. F.6.6's decision (are the radii too small?) is
+//! exact for rotations by multiples of 90° and for circles; otherwise `Λ` is
+//! enclosed to about `2⁻¹²⁰` (its square root, the centre's offset, to
+//! `2⁻⁶⁰`), so a half arc with its end points on a diameter costs nothing.
 
 use crate::curve::{bernstein_product, Bezier, V2};
 use crate::scalar::{
