@@ -108,6 +108,30 @@ fn hausdorff_reports_the_approximated_input() {
     let bound = ia["bound"].as_f64().unwrap();
     assert_eq!(bound, ia["b"]["bound"].as_f64().unwrap());
     assert!(d["lo"].as_f64().unwrap() <= bound);
+    // both approximated: the bound is the sum (d_H of the exact inputs is
+    // within it of d_H of the pieces)
+    let other = tmp("arc2.svg", "M 1 0 A 1.001 1.001 0 0 1 0.96 0.28");
+    let o = lncert(&[
+        "hausdorff",
+        b,
+        other.to_str().unwrap(),
+        "--rel",
+        "0.05",
+        "--json",
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let ia = json_of(&o)["input_approximation"].clone();
+    assert_eq!(ia["elements"], 2);
+    let (ba, bb) = (
+        ia["a"]["bound"].as_f64().unwrap(),
+        ia["b"]["bound"].as_f64().unwrap(),
+    );
+    assert!(ia["bound"].as_f64().unwrap() >= ba + bb);
     // both exact: null
     let o = lncert(&["hausdorff", a, a, "--rel", "0.05", "--json"]);
     assert!(json_of(&o)["input_approximation"].is_null());
@@ -186,4 +210,21 @@ fn offset_reports_the_approximated_input() {
     ]);
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("byte 14"));
+}
+
+/// Approximated shapes are plain curves: their canonical JSON (what
+/// certificates store) reads back to the same shape, and reading the same
+/// text twice gives the same pieces (so `verify --against` recognises them).
+#[test]
+fn approximated_shapes_round_trip() {
+    for text in [
+        "M 0 0 A 1 2 30 1 0 3 4 a 1 1 0 0 1 1 1 Z",
+        r#"<svg><circle r="1"/><rect width="2" height="1" rx="0.25"/></svg>"#,
+        r#"{"offset": {"curve": "M 1 0 A 1 1 0 0 1 0.6 0.8", "distance": 0.1}}"#,
+    ] {
+        let (shape, approx) = ShapeDesc::parse_reported(text).unwrap();
+        assert!(!approx.is_empty(), "{text}");
+        assert_eq!(ShapeDesc::from_value(&shape.to_json()).unwrap(), shape);
+        assert_eq!(ShapeDesc::parse(text).unwrap(), shape);
+    }
 }

@@ -86,10 +86,12 @@ fn approx_json(a: &InputApprox, b: &InputApprox) -> serde_json::Value {
     if a.is_empty() && b.is_empty() {
         return serde_json::Value::Null;
     }
-    let sum = lncert::scalar::Interval::try_from((a.bound(), a.bound()))
-        .and_then(|x| Ok(x + lncert::scalar::Interval::try_from((b.bound(), b.bound()))?))
-        .map(|x| x.sup())
-        .unwrap_or(f64::INFINITY);
+    // d_H(A, B) − d_H(A′, B′) ≤ d_H(A, A′) + d_H(B, B′): the sum, rounded up
+    use lncert::scalar::{Interval, IntervalExt};
+    let sum = match (Interval::point(a.bound()), Interval::point(b.bound())) {
+        (Some(x), Some(y)) => (x + y).sup(),
+        _ => f64::INFINITY,
+    };
     json!({
         "elements": a.elements.len() + b.elements.len(),
         "bound": sum,
