@@ -13,8 +13,8 @@
 //! Elliptical arcs are *approximated* by cubic pieces with a certified
 //! Hausdorff bound (see [`super::svgarc`]), reported per element by
 //! [`parse_svg_document_reported`]: `A`/`a` in path data; `<circle cx cy r>`
-//! and `<ellipse cx cy rx ry>` (a missing `rx` or `ry` is the other one, SVG
-//! 2's `auto`; a zero radius draws nothing) as two half arcs, starting at
+//! and `<ellipse cx cy rx ry>` (a missing or `auto` `rx` or `ry` is the other
+//! one, as in SVG 2; a zero radius draws nothing) as two half arcs, starting at
 //! `(cx + rx, cy)` and running counter-clockwise in the user coordinate
 //! system (from +x towards +y: clockwise on a y-down screen), as SVG 2 draws
 //! them; rounded `<rect rx ry>` (one given is both, each clamped to half the
@@ -240,14 +240,17 @@ fn polyline(points: &[V2<Rational>], closed: bool) -> Vec<Bezier<Rational>> {
 /// The elements whose content is not rendered.
 const NOT_RENDERED: [&str; 6] = ["defs", "clipPath", "mask", "symbol", "marker", "pattern"];
 
-/// A radius attribute: `None` when absent, an error when negative.
+/// A radius attribute: `None` when absent or `auto` (SVG 2), an error when
+/// negative.
 fn radius(
     node: roxmltree::Node,
     name: &str,
     at: &str,
 ) -> Result<Option<Rational>, CurveParseError> {
-    if node.attribute(name).is_none() {
-        return Ok(None);
+    match node.attribute(name) {
+        None => return Ok(None),
+        Some(v) if v.trim() == "auto" => return Ok(None),
+        Some(_) => {}
     }
     let r = coordinate(node, name, at)?;
     if r.is_negative() {
@@ -676,6 +679,9 @@ mod tests {
         assert!(a.elements[1].bound <= 2e-7);
         // a missing ry is rx (SVG 2's auto)
         assert_eq!(pts(&p[36])[0], (q("2"), q("0")));
+        let (p2, _) =
+            parse_svg_document_reported(r#"<svg><ellipse rx="2" ry="auto"/></svg>"#).unwrap();
+        assert_eq!(p2, p[36..].to_vec());
     }
 
     /// Rounded `<rect>`: SVG 2's path — lines and four quarter arcs from
