@@ -646,7 +646,7 @@ fn offset_reads_an_svg_document() {
     let start = (1.0 - 0.95, 1.0 + 0.7);
     let r = (x - start.0).hypot(y - start.1);
     assert!((r - 0.2).abs() < 1e-9, "{r}: {d}");
-    let bad = tmp("doc_bad.svg", r#"<svg><ellipse rx="1" ry="2"/></svg>"#);
+    let bad = tmp("doc_bad.svg", r#"<svg><ellipse rx="1" ry="-2"/></svg>"#);
     let e = lncert(&[
         "offset",
         bad.to_str().unwrap(),

@@ -9,6 +9,14 @@
 //! or a convolution with an ellipse
 //! (`{"convolution": {"curve": CURVE, "ellipse": [[m11, m12], [m21, m22]], "side": 1}}`).
 //!
+//! SVG elliptical arcs, `<circle>`, `<ellipse>` and rounded `<rect>` are read as
+//! cubic pieces within a certified bound (see [`lncert::shape::InputApprox`]); the
+//! report then says so per shape (`input A: … approximated …`) and the bounds
+//! and verdict are about the approximated shapes. With JSON:
+//! `"input_approximation": {"elements", "bound", "a", "b"}` (`null` when both
+//! shapes are exactly the input), `bound` the sum of the two shapes' bounds, so
+//! `d_H` of the exact inputs lies in `[lo − bound, hi + bound]`.
+//!
 //! Exit codes: 0 = with `--tol` certified, without it the gap reached; 1 = with
 //! `--tol` refuted; 3 = undecided (the budget ran out first; the bounds printed
 //! are still sound); 2 = bad input.
@@ -17,7 +25,7 @@ use super::args::{bad, number};
 use super::{print_out, CliError, EXIT_OK, EXIT_REFUTED, EXIT_UNDECIDED};
 use lncert::certify::{hausdorff, Certificate, Config, OneSided};
 use lncert::scalar::interval_from_rational;
-use lncert::shape::ShapeDesc;
+use lncert::shape::{InputApprox, ShapeDesc};
 use serde_json::json;
 use std::path::PathBuf;
 
@@ -48,8 +56,17 @@ pub struct HausdorffArgs {
     pub json: bool,
 }
 
-/// Reads a shape file; errors name the argument.
+/// Reads a shape file; errors name the argument. What was approximated (SVG
+/// arcs, circles, ellipses) is dropped: [`read_shape_reported`] returns it.
 pub fn read_shape(flag: &str, path: &PathBuf) -> Result<ShapeDesc, CliError> {
+    read_shape_reported(flag, path).map(|(shape, _)| shape)
+}
+
+/// [`read_shape`], with the report of what was approximated.
+pub fn read_shape_reported(
+    flag: &str,
+    path: &PathBuf,
+) -> Result<(ShapeDesc, InputApprox), CliError> {
     let meta =
         std::fs::metadata(path).map_err(|e| bad(flag, format!("{}: {e}", path.display())))?;
     if meta.len() > MAX_FILE_BYTES {
@@ -60,7 +77,27 @@ pub fn read_shape(flag: &str, path: &PathBuf) -> Result<ShapeDesc, CliError> {
     }
     let text =
         std::fs::read_to_string(path).map_err(|e| bad(flag, format!("{}: {e}", path.display())))?;
-    ShapeDesc::parse(&text).map_err(|e| bad(flag, format!("{}: {e}", path.display())))
+    ShapeDesc::parse_reported(&text).map_err(|e| bad(flag, format!("{}: {e}", path.display())))
+}
+
+/// `{"elements", "bound", "a", "b"}` of both shapes' approximations (the
+/// bound their sum, rounded up), or `null` when both are exact.
+fn approx_json(a: &InputApprox, b: &InputApprox) -> serde_json::Value {
+    if a.is_empty() && b.is_empty() {
+        return serde_json::Value::Null;
+    }
+    // d_H(A, B) − d_H(A′, B′) ≤ d_H(A, A′) + d_H(B, B′): the sum, rounded up
+    use lncert::scalar::{Interval, IntervalExt};
+    let sum = match (Interval::point(a.bound()), Interval::point(b.bound())) {
+        (Some(x), Some(y)) => (x + y).sup(),
+        _ => f64::INFINITY,
+    };
+    json!({
+        "elements": a.elements.len() + b.elements.len(),
+        "bound": sum,
+        "a": a.to_json(),
+        "b": b.to_json(),
+    })
 }
 
 fn one_json(d: &OneSided) -> serde_json::Value {
@@ -100,8 +137,8 @@ pub fn run(a: &HausdorffArgs) -> Result<i32, CliError> {
     if a.max_boxes == 0 || a.max_boxes > 50_000_000 {
         return Err(bad("--max-boxes", "out of range (1 to 50000000)"));
     }
-    let sa = read_shape("A", &a.a)?;
-    let sb = read_shape("B", &a.b)?;
+    let (sa, approx_a) = read_shape_reported("A", &a.a)?;
+    let (sb, approx_b) = read_shape_reported("B", &a.b)?;
     // The search compares f64 bounds with the largest f64 ≤ tol (sound).
     let tol_f = tol.as_ref().map(|t| interval_from_rational(t).inf());
     let cfg = Config {
@@ -151,6 +188,7 @@ pub fn run(a: &HausdorffArgs) -> Result<i32, CliError> {
             "parametric_boxes": r.parametric.as_ref().map(|p| p.boxes.len()),
             "certificate": cert_note,
             "seconds": elapsed.as_secs_f64(),
+            "input_approximation": approx_json(&approx_a, &approx_b),
         });
         print_out(&format!(
             "{}\n",
@@ -159,6 +197,11 @@ pub fn run(a: &HausdorffArgs) -> Result<i32, CliError> {
     } else {
         let mut out = String::new();
         out += &format!("A: {}\nB: {}\n", sa.summary(), sb.summary());
+        for (name, ap) in [("input A", &approx_a), ("input B", &approx_b)] {
+            if let Some(line) = super::offset::input_line(name, ap) {
+                out += &line;
+            }
+        }
         out += &format!(
             "d_H(A, B) ∈ [{:e}, {:e}]  (certified bounds, gap {:.2e})\n",
             r.lo,

@@ -7,10 +7,14 @@
 //! builds the same construction unproven (labelled so) to measure the proof's cost.
 //!
 //! `CURVE` is a file with a curve (`{"bezier": ...}`, `{"beziers": ...}`,
-//! `{"bspline": ...}` or SVG path data), an arc (`{"arc": {...}}`) or a circle
-//! (`{"circle": {"center": [x, y], "radius": r}}`). `R > 0` offsets to the left
-//! of the direction of travel. Arcs and circles are offset exactly (seed 004's
-//! circular precision).
+//! `{"bspline": ...}`, SVG path data or an SVG document), an arc (`{"arc": {...}}`)
+//! or a circle (`{"circle": {"center": [x, y], "radius": r}}`). `R > 0` offsets to
+//! the left of the direction of travel. Arcs and circles are offset exactly (seed
+//! 004's circular precision). SVG elliptical arcs, `<circle>`, `<ellipse>` and
+//! rounded `<rect>` are read as cubic pieces within a certified bound: the report
+//! says so (`input: … approximated …`, JSON `"input_approximation": {"elements",
+//! "bound"}`, `null` when the curve is exactly the input), and every result is
+//! about the approximated curve.
 //!
 //! Exit codes: 0 = every segment certified within `T`, 3 = the tolerance was not
 //! reached within the limits (the best segments are still printed, with their
@@ -25,8 +29,7 @@ use lncert::approx::{
     OffsetResult, ProofPath,
 };
 use lncert::scalar::{interval_from_rational, Rational};
-use lncert::shape::parse_curve;
-use lncert::shape::{parse_arc_input, TravelledArc};
+use lncert::shape::{parse_arc_input, parse_curve_reported, InputApprox, TravelledArc};
 use serde_json::{json, Value};
 use std::path::PathBuf;
 
@@ -144,7 +147,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             "G2 segments have degree n + 3 ≥ 4, which SVG path data cannot store: use --method ln-pair (cubic), or --curve-out",
         ));
     }
-    let curve = match a.glyph {
+    let (curve, approx) = match a.glyph {
         Some(ch) => {
             let meta = std::fs::metadata(&a.curve)
                 .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
@@ -156,7 +159,8 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             }
             let data = std::fs::read(&a.curve)
                 .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
-            lncert::shape::glyph_outline(&data, ch).map_err(|e| bad("--glyph", e))?
+            let outline = lncert::shape::glyph_outline(&data, ch).map_err(|e| bad("--glyph", e))?;
+            (outline, InputApprox::default())
         }
         None => {
             let text = read_text(&a.curve)?;
@@ -164,7 +168,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
                 let arcs = arcs.map_err(|e| offset_err(e.into()))?;
                 return run_arcs(a, &arcs, &distance, tol);
             }
-            parse_curve(&text).map_err(|e| bad("CURVE", e))?
+            parse_curve_reported(&text).map_err(|e| bad("CURVE", e))?
         }
     };
     let mut opts = OffsetOptions::new(distance, tol);
@@ -267,12 +271,16 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             "spans": res.spans,
             "seconds": {"construct_and_certify": build, "total": total, "global_bounds": a.global_bounds.then_some(total - build)},
             "certificate": cert_note,
+            "input_approximation": approx.to_json(),
         });
         print_out(&format!(
             "{}\n",
             serde_json::to_string_pretty(&doc).unwrap_or_default()
         ));
     } else {
+        if let Some(line) = input_line("input", &approx) {
+            print_out(&line);
+        }
         print_out(&text_report(
             &res,
             method,
@@ -394,6 +402,14 @@ fn text_report(
     s
 }
 
+/// `{label}: 3 SVG arc(s) approximated by … ; the results are about the
+/// approximated curve`, or `None` when the curve is exactly the input.
+pub fn input_line(label: &str, approx: &InputApprox) -> Option<String> {
+    approx
+        .summary()
+        .map(|s| format!("{label}: {s}; the results are about the approximated curve\n"))
+}
+
 fn abs(r: &Rational) -> Rational {
     if *r < Rational::from_integer(0.into()) {
         -r.clone()
@@ -441,6 +457,7 @@ fn run_arcs(
             "method": "g2", "distance": q(d), "tol": a.tol,
             "segments": outs.len(), "control_points": Value::Null, "degree": Value::Null,
             "certified_error": [0.0, 0.0], "verdict": "certified", "exact": note,
+            "input_approximation": null,
             "arcs": outs.iter().map(arc_json).collect::<Vec<_>>(),
             "cusps": if collapsed { json!(["the offset collapses to the centre"]) } else { json!([]) },
         });

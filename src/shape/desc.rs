@@ -4,8 +4,8 @@
 //! How the certification engine parametrises each kind is in
 //! `certify::piece`.
 
-use super::io::{describe, json_coordinate, json_point, parse_curve, parse_svg_path};
-use super::ShapeError;
+use super::io::{describe, json_coordinate, json_point, parse_curve, parse_svg_path_reported};
+use super::{InputApprox, ShapeError};
 use crate::curve::{Bezier, V2};
 use crate::poly::{has_common_root_in, Span};
 use crate::scalar::{Rational, Scalar};
@@ -109,9 +109,16 @@ pub(super) fn err(field: impl Into<String>, reason: impl Into<String>) -> ShapeE
     }
 }
 
-fn curve_value(v: &Value, field: &str) -> Result<Vec<Bezier<Rational>>, ShapeError> {
+fn curve_value(
+    v: &Value,
+    field: &str,
+    approx: &mut InputApprox,
+) -> Result<Vec<Bezier<Rational>>, ShapeError> {
     let parsed = match v {
-        Value::String(s) => parse_svg_path(s),
+        Value::String(s) => parse_svg_path_reported(s).map(|(pieces, a)| {
+            approx.extend_scaled(a, field, 1.0);
+            pieces
+        }),
         Value::Object(_) => parse_curve(&v.to_string()),
         other => {
             return Err(err(
@@ -171,16 +178,34 @@ impl ShapeDesc {
     /// assert!(e.to_string().contains("arc.radius"));
     /// ```
     pub fn parse(text: &str) -> Result<ShapeDesc, ShapeError> {
+        Self::parse_reported(text).map(|(shape, _)| shape)
+    }
+
+    /// [`ShapeDesc::parse`], with the report of what was approximated: SVG
+    /// arcs, circles, ellipses and rounded rectangles become cubic pieces
+    /// within a certified Hausdorff bound (see [`InputApprox`]);
+    /// [`ShapeDesc::parse`] drops the report.
+    ///
+    /// # Examples
+    /// ```
+    /// use lncert::shape::ShapeDesc;
+    /// let (shape, approx) =
+    ///     ShapeDesc::parse_reported(r#"{"offset": {"curve": "M 0 0 A 1 1 0 0 1 1 1", "distance": 0.1}}"#)
+    ///         .unwrap();
+    /// assert!(matches!(shape, ShapeDesc::Offset { .. }));
+    /// assert_eq!(approx.elements[0].at, "offset.curve, byte 6");
+    /// ```
+    pub fn parse_reported(text: &str) -> Result<(ShapeDesc, InputApprox), ShapeError> {
         let trimmed = text.trim();
         if trimmed.starts_with('<') {
-            return ShapeDesc::curve(
-                crate::shape::parse_svg_document(trimmed).map_err(|e| err("svg", e.to_string()))?,
-            );
+            let (pieces, approx) = crate::shape::parse_svg_document_reported(trimmed)
+                .map_err(|e| err("svg", e.to_string()))?;
+            return Ok((ShapeDesc::curve(pieces)?, approx));
         }
         if !trimmed.starts_with('{') {
-            return ShapeDesc::curve(
-                parse_svg_path(trimmed).map_err(|e| err("path", e.to_string()))?,
-            );
+            let (pieces, approx) =
+                parse_svg_path_reported(trimmed).map_err(|e| err("path", e.to_string()))?;
+            return Ok((ShapeDesc::curve(pieces)?, approx));
         }
         let doc =
             crate::json::parse(trimmed, &crate::json::Limits::DEFAULT).map_err(|e| {
@@ -192,11 +217,23 @@ impl ShapeDesc {
                     ),
                 }
             })?;
-        Self::from_value(&doc.to_value())
+        Self::from_value_reported(&doc.to_value())
     }
 
-    /// [`ShapeDesc::parse`] on a parsed JSON value.
+    /// [`ShapeDesc::parse`] on a parsed JSON value (SVG path data inside,
+    /// as an offset's or a convolution's curve, may have arcs: approximated,
+    /// and the report dropped; see [`ShapeDesc::parse_reported`]).
     pub fn from_value(doc: &Value) -> Result<ShapeDesc, ShapeError> {
+        Self::from_value_reported(doc).map(|(shape, _)| shape)
+    }
+
+    fn from_value_reported(doc: &Value) -> Result<(ShapeDesc, InputApprox), ShapeError> {
+        let mut approx = InputApprox::default();
+        let shape = Self::from_value_into(doc, &mut approx)?;
+        Ok((shape, approx))
+    }
+
+    fn from_value_into(doc: &Value, approx: &mut InputApprox) -> Result<ShapeDesc, ShapeError> {
         let Value::Object(map) = doc else {
             return Err(err(
                 "(top level)",
@@ -268,6 +305,7 @@ impl ShapeDesc {
                 m.get("curve")
                     .ok_or_else(|| err("offset.curve", "missing"))?,
                 "offset.curve",
+                approx,
             )?;
             let distance = number(m.get("distance"), "offset.distance")?;
             return ShapeDesc::offset(curve, distance);
@@ -285,6 +323,7 @@ impl ShapeDesc {
                 m.get("curve")
                     .ok_or_else(|| err("convolution.curve", "missing"))?,
                 "convolution.curve",
+                approx,
             )?;
             let rows = m
                 .get("ellipse")

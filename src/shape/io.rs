@@ -44,12 +44,22 @@
 //! M 0 0 C 1 2 3 4 5 6 S 7 8 9 10 L 0 0 Z
 //! ```
 //!
-//! The commands `M m L l H h V v C c S s Q q T t Z z` are understood, with the
-//! implicit repetition of parameters of the SVG specification (`M` followed by
-//! further pairs draws lines). Every drawing segment becomes one Bézier curve:
-//! lines of degree 1, quadratics of degree 2, cubics of degree 3; `Z` adds a
-//! closing line when the current point is not the subpath's start. Elliptical
-//! arcs (`A a`) are rejected, since they are not polynomial curves.
+//! The commands `M m L l H h V v C c S s Q q T t A a Z z` are understood, with
+//! the implicit repetition of parameters of the SVG specification (`M`
+//! followed by further pairs draws lines). Every drawing segment becomes one
+//! Bézier curve: lines of degree 1, quadratics of degree 2, cubics of degree
+//! 3; `Z` adds a closing line when the current point is not the subpath's
+//! start.
+//!
+//! Elliptical arcs (`A a`, SVG 1.1 F.6.5–F.6.6: flags `0`/`1`, radii made
+//! absolute and scaled up when too small, identical end points omit the arc,
+//! a zero radius draws a line) are not polynomial curves: each is
+//! *approximated* by cubic pieces whose Hausdorff distance from the exact arc
+//! is certified (target `1e-7 · max(rx, ry)`, see [`super::svgarc`]). The
+//! pieces start and end exactly at the arc's end points as read.
+//! [`parse_svg_path_reported`] and [`parse_curve_reported`] return the list
+//! of approximated commands with their bounds ([`InputApprox`]);
+//! [`parse_svg_path`] and [`parse_curve`] drop it.
 //!
 //! # Errors and limits
 //!
@@ -61,6 +71,7 @@
 //! characters per number literal (whose decimal exponent `parse_rational`
 //! bounds further).
 
+use super::svgarc::{svg_arc, ApproxElement, ApproxKind, InputApprox, SvgArc};
 pub(crate) use crate::curve::field_err;
 pub use crate::curve::CurveParseError;
 use crate::curve::{BSpline, Bezier, V2};
@@ -469,6 +480,8 @@ struct SvgParser<'a> {
     last_cubic: Option<V2<Rational>>,
     /// Control point of the previous segment if it was `Q`/`T`.
     last_quad: Option<V2<Rational>>,
+    /// The approximated arcs.
+    approx: InputApprox,
 }
 
 fn is_wsp(b: u8) -> bool {
@@ -488,6 +501,15 @@ fn params(cmd: u8) -> &'static [&'static str] {
         b'C' => &["x1", "y1", "x2", "y2", "x", "y"],
         b'S' => &["x2", "y2", "x", "y"],
         b'Q' => &["x1", "y1", "x", "y"],
+        b'A' => &[
+            "rx",
+            "ry",
+            "x-axis-rotation",
+            "large-arc-flag",
+            "sweep-flag",
+            "x",
+            "y",
+        ],
         _ => &[],
     }
 }
@@ -503,6 +525,7 @@ impl<'a> SvgParser<'a> {
             start: V2::new(zero(), zero()),
             last_cubic: None,
             last_quad: None,
+            approx: InputApprox::default(),
         }
     }
 
@@ -587,6 +610,27 @@ impl<'a> SvgParser<'a> {
                 self.pos += 1;
                 self.skip_wsp();
             }
+            if name.ends_with("-flag") {
+                // a flag is the single character 0 or 1 (SVG's path grammar:
+                // `A 1 1 0 1120 20` has the flags 1, 1 and then x = 20)
+                match self.peek() {
+                    Some(c @ (b'0' | b'1')) => {
+                        self.pos += 1;
+                        vals.push(Rational::from_integer(i64::from(c - b'0').into()));
+                        continue;
+                    }
+                    _ => {
+                        return Err(self.err(
+                            self.pos,
+                            format!(
+                                "command {} expects the flag `{name}` (0 or 1), found {}",
+                                cmd as char,
+                                self.char_at(self.pos)
+                            ),
+                        ))
+                    }
+                }
+            }
             if !self.peek().is_some_and(is_number_start) {
                 return Err(self.err(
                     self.pos,
@@ -606,14 +650,18 @@ impl<'a> SvgParser<'a> {
     }
 
     fn push(&mut self, pts: Vec<V2<Rational>>, at: usize) -> Result<(), CurveParseError> {
+        // Every caller passes at least two points.
+        self.push_bezier(Bezier::new(pts), at)
+    }
+
+    fn push_bezier(&mut self, b: Bezier<Rational>, at: usize) -> Result<(), CurveParseError> {
         if self.out.len() >= MAX_SEGMENTS {
             return Err(CurveParseError::TooLarge {
                 what: format!("the number of segments in the SVG path data (at byte {at})"),
                 limit: MAX_SEGMENTS,
             });
         }
-        // Every caller passes at least two points.
-        self.out.push(Bezier::new(pts));
+        self.out.push(b);
         Ok(())
     }
 
@@ -702,6 +750,33 @@ impl<'a> SvgParser<'a> {
                 self.cur = p;
                 quad = Some(c);
             }
+            b'A' => {
+                // (an arc resets what S and T reflect: neither `cubic` nor `quad`)
+                let p = self.point(rel, arg(5)?, arg(6)?);
+                let (large, sweep) = (
+                    !num_traits::Zero::is_zero(arg(3)?),
+                    !num_traits::Zero::is_zero(arg(4)?),
+                );
+                let arc = svg_arc(&self.cur, arg(0)?, arg(1)?, arg(2)?, large, sweep, &p)
+                    .map_err(|reason| self.err(at, reason))?;
+                match arc {
+                    SvgArc::Omitted => {}
+                    SvgArc::Line => self.line_to(p.clone(), at)?,
+                    SvgArc::Cubics { pieces, bound } => {
+                        let n = pieces.len();
+                        for b in pieces {
+                            self.push_bezier(b, at)?;
+                        }
+                        self.approx.push(ApproxElement {
+                            kind: ApproxKind::Arc,
+                            at: format!("byte {at}"),
+                            pieces: n,
+                            bound,
+                        });
+                    }
+                }
+                self.cur = p;
+            }
             _ => return Err(self.err(at, format!("unknown command {:?}", cmd as char))),
         }
         self.last_cubic = cubic;
@@ -735,7 +810,7 @@ impl<'a> SvgParser<'a> {
         Ok(())
     }
 
-    fn run(mut self) -> Result<Vec<Bezier<Rational>>, CurveParseError> {
+    fn run(mut self) -> Result<(Vec<Bezier<Rational>>, InputApprox), CurveParseError> {
         if self.bytes.len() > MAX_SVG_BYTES {
             return Err(CurveParseError::TooLarge {
                 what: format!("the SVG path data ({} bytes)", self.bytes.len()),
@@ -764,15 +839,8 @@ impl<'a> SvgParser<'a> {
             }
             self.pos += 1;
             match c {
-                b'A' | b'a' => {
-                    return Err(self.err(
-                        at,
-                        "elliptical arcs are not supported (A/a): they are not polynomial \
-                         curves; convert them to cubic Béziers (C)",
-                    ))
-                }
                 b'M' | b'm' | b'L' | b'l' | b'H' | b'h' | b'V' | b'v' | b'C' | b'c' | b'S'
-                | b's' | b'Q' | b'q' | b'T' | b't' | b'Z' | b'z' => {}
+                | b's' | b'Q' | b'q' | b'T' | b't' | b'A' | b'a' | b'Z' | b'z' => {}
                 _ => {
                     return Err(self.err(at, format!("unknown command {:?}", c as char)));
                 }
@@ -823,7 +891,7 @@ impl<'a> SvgParser<'a> {
                 what: "the SVG path data (it has only moveto commands)".to_string(),
             });
         }
-        Ok(self.out)
+        Ok((self.out, self.approx))
     }
 }
 
@@ -833,7 +901,9 @@ fn zero() -> Rational {
 
 /// Reads SVG path data (`M x y C ...`) exactly: one Bézier curve per drawing
 /// segment (lines of degree 1, `Q`/`T` of degree 2, `C`/`S` of degree 3, a
-/// closing line for `Z` when needed). Arcs `A`/`a` are rejected.
+/// closing line for `Z` when needed). Arcs `A`/`a` are *approximated* by
+/// cubic pieces within a certified bound, and this function drops the report
+/// of what was approximated: [`parse_svg_path_reported`] returns it.
 ///
 /// # Examples
 /// ```
@@ -848,9 +918,32 @@ fn zero() -> Rational {
 /// assert_eq!(square.len(), 4);
 /// assert_eq!(square[0].points()[1].x, parse_rational("11/10").unwrap());
 ///
-/// assert!(parse_svg_path("M 0 0 A 1 1 0 0 1 2 2").is_err());
+/// // a half circle: cubic pieces from (0, 0) to (2, 0), exactly
+/// let arc = parse_svg_path("M 0 0 A 1 1 0 0 1 2 0").unwrap();
+/// assert_eq!(arc[0].points()[0].x, parse_rational("0").unwrap());
+/// assert_eq!(arc.last().unwrap().points()[3].x, parse_rational("2").unwrap());
 /// ```
 pub fn parse_svg_path(d: &str) -> Result<Vec<Bezier<Rational>>, CurveParseError> {
+    parse_svg_path_reported(d).map(|(pieces, _)| pieces)
+}
+
+/// [`parse_svg_path`], with the list of the arcs it approximated (each named
+/// by the byte offset of its command, with the certified Hausdorff bound of
+/// its cubic pieces from the exact arc).
+///
+/// # Examples
+/// ```
+/// use lncert::shape::parse_svg_path_reported;
+/// let (pieces, approx) =
+///     parse_svg_path_reported("M 0 0 L 1 0 A 1 1 0 0 1 3 0 a 1 2 30 1 0 1 1").unwrap();
+/// assert_eq!(approx.elements.len(), 2);
+/// assert_eq!(approx.elements[0].at, "byte 12");
+/// assert_eq!(1 + approx.pieces(), pieces.len());
+/// assert!(approx.elements[0].bound <= 1e-7);
+/// ```
+pub fn parse_svg_path_reported(
+    d: &str,
+) -> Result<(Vec<Bezier<Rational>>, InputApprox), CurveParseError> {
     SvgParser::new(d).run()
 }
 
@@ -874,7 +967,10 @@ pub(crate) fn svg_number_list(text: &str) -> Result<Vec<Rational>, CurveParseErr
 
 /// Reads a curve in any of its syntaxes: JSON when the text (after leading
 /// whitespace) starts with `{`, an SVG document when it starts with `<`
-/// ([`super::parse_svg_document`]), SVG path data otherwise.
+/// ([`super::parse_svg_document`]), SVG path data otherwise. Elliptical arcs,
+/// circles, ellipses and rounded rectangles of SVG input are approximated
+/// within a certified bound, and this function drops the report of what was
+/// approximated: [`parse_curve_reported`] returns it.
 ///
 /// # Examples
 /// ```
@@ -885,6 +981,25 @@ pub(crate) fn svg_number_list(text: &str) -> Result<Vec<Rational>, CurveParseErr
 /// assert!(parse_curve("").is_err());
 /// ```
 pub fn parse_curve(text: &str) -> Result<Vec<Bezier<Rational>>, CurveParseError> {
+    parse_curve_reported(text).map(|(pieces, _)| pieces)
+}
+
+/// [`parse_curve`], with the report of what was approximated (empty for JSON
+/// curves and for SVG input without arcs, circles, ellipses or rounded
+/// rectangles).
+///
+/// # Examples
+/// ```
+/// use lncert::shape::parse_curve_reported;
+/// let doc = r#"<svg><circle cx="1" cy="1" r="2"/></svg>"#;
+/// let (pieces, approx) = parse_curve_reported(doc).unwrap();
+/// assert_eq!(approx.elements[0].at, "svg/circle[0]");
+/// assert_eq!(approx.pieces(), pieces.len());
+/// assert!(approx.bound() <= 2e-7);
+/// ```
+pub fn parse_curve_reported(
+    text: &str,
+) -> Result<(Vec<Bezier<Rational>>, InputApprox), CurveParseError> {
     let trimmed = text.trim();
     if trimmed.is_empty() {
         return Err(CurveParseError::Empty {
@@ -892,11 +1007,11 @@ pub fn parse_curve(text: &str) -> Result<Vec<Bezier<Rational>>, CurveParseError>
         });
     }
     if trimmed.starts_with('{') {
-        parse_json_curve(text)
+        Ok((parse_json_curve(text)?, InputApprox::default()))
     } else if trimmed.starts_with('<') {
-        super::svgdoc::parse_svg_document(text)
+        super::svgdoc::parse_svg_document_reported(text)
     } else {
-        parse_svg_path(text)
+        parse_svg_path_reported(text)
     }
 }
 
@@ -1169,12 +1284,13 @@ mod tests {
 
     #[test]
     fn svg_errors_name_the_position() {
-        let e = parse_svg_path("M 0 0 A 1 1 0 0 1 2 2").unwrap_err();
+        // an arc's parameters are checked where its command stands
+        let e = parse_svg_path("M 0 0 A 1e101 1 0 0 1 2 2").unwrap_err();
         assert_eq!(position_of(&e), 6);
-        assert!(
-            e.to_string().contains("elliptical arcs are not supported"),
-            "{e}"
-        );
+        assert!(e.to_string().contains("limit"), "{e}");
+        let e = parse_svg_path("M 0 0 A 1 1 0 0 1 2 2 2 2 0 0 7 3 3").unwrap_err();
+        assert_eq!(position_of(&e), 30);
+        assert!(e.to_string().contains("sweep-flag"), "{e}");
 
         let e = parse_svg_path("L 1 1").unwrap_err();
         assert_eq!(position_of(&e), 0);

@@ -20,11 +20,19 @@
 //! | arcs as travelled ([`TravelledArc`]) and the `{"arc"}` / `{"circle"}` documents of `offset` | `arc` |
 //! | curves from JSON (`bezier`, `beziers`, `bspline`) and SVG path data, every number exact ([`parse_curve`]) | `io` |
 //! | whole SVG documents ([`parse_svg_document`]) | `svgdoc` |
+//! | SVG elliptical arcs, circles, ellipses, rounded rects as cubic pieces with a certified Hausdorff bound, and the report of what was approximated ([`InputApprox`]) | [`svgarc`] |
 //! | font glyphs ([`glyph_outline`], feature `font`) | `font` |
 //!
 //! Every reader and constructor reports a [`ShapeError`] (or, for the curve
 //! readers, a [`CurveParseError`]) naming the field and the reason, and every
 //! limit is one of the constants below, shared by all subcommands.
+//!
+//! Everything is read exactly except elliptical arcs (SVG `A`/`a`, `<circle>`,
+//! `<ellipse>`, rounded `<rect>`), which are not polynomial curves: they are
+//! approximated within a certified bound, and the `*_reported` readers
+//! ([`parse_curve_reported`], [`parse_svg_path_reported`],
+//! [`parse_svg_document_reported`], [`ShapeDesc::parse_reported`]) say what
+//! was approximated and by how much; the plain readers drop that report.
 //!
 //! # Limits
 //!
@@ -36,6 +44,8 @@
 //! | SVG path data | [`MAX_SVG_BYTES`] = 1 MB |
 //! | characters per number literal | [`MAX_NUMBER_CHARS`] = 4 096 |
 //! | B-spline conversion work (`points × degree³`) | [`MAX_BSPLINE_WORK`] |
+//! | SVG arc radii (also after SVG's out-of-range correction) | ≤ 10¹⁰⁰ |
+//! | cubic pieces per SVG arc; proof boxes per piece | 1 024; 4 096 |
 //!
 //! # Examples
 //! ```
@@ -52,6 +62,7 @@ mod desc;
 #[cfg(feature = "font")]
 mod font;
 pub(crate) mod io;
+pub mod svgarc;
 mod svgdoc;
 
 pub use arc::{parse_arc_input, TravelledArc};
@@ -60,10 +71,12 @@ pub use desc::{ArcDesc, ShapeDesc, MAX_COORDINATE};
 #[cfg(feature = "font")]
 pub use font::glyph_outline;
 pub use io::{
-    parse_curve, parse_json_curve, parse_svg_path, CurveParseError, MAX_BSPLINE_WORK,
-    MAX_CONTROL_POINTS, MAX_NUMBER_CHARS, MAX_SEGMENTS, MAX_SVG_BYTES,
+    parse_curve, parse_curve_reported, parse_json_curve, parse_svg_path, parse_svg_path_reported,
+    CurveParseError, MAX_BSPLINE_WORK, MAX_CONTROL_POINTS, MAX_NUMBER_CHARS, MAX_SEGMENTS,
+    MAX_SVG_BYTES,
 };
-pub use svgdoc::parse_svg_document;
+pub use svgarc::{format_up, ApproxElement, ApproxKind, InputApprox, ARC_TARGET_REL};
+pub use svgdoc::{parse_svg_document, parse_svg_document_reported};
 
 /// Why a shape could not be built or read: the field and the reason.
 ///

@@ -1,0 +1,230 @@
+//! SVG elliptical arcs, circles and ellipses as input: the reported bound
+//! checked against lncert's own certified Hausdorff search between the cubic
+//! pieces and the *exact* circular arc (`{"arc"}`, an independent exact
+//! shape), and the CLI's report of what was approximated (`offset`,
+//! `hausdorff`, text and `--json`).
+
+use lncert::certify::{hausdorff, Config};
+use lncert::shape::{parse_curve_reported, ShapeDesc};
+use serde_json::Value;
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn lncert(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_lncert"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+fn tmp(name: &str, text: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("lncert-svg-arcs-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+fn json_of(o: &Output) -> Value {
+    serde_json::from_slice(&o.stdout)
+        .unwrap_or_else(|e| panic!("not JSON ({e}): {}", String::from_utf8_lossy(&o.stdout)))
+}
+
+/// Circular arcs whose end points are exact decimals on the circle
+/// (Pythagorean directions (0.96, 0.28), (0.6, 0.8)): the certified lower
+/// bound of `d_H(exact arc, pieces)` never exceeds the reported bound.
+#[test]
+fn reported_bound_holds_against_the_exact_circular_arc() {
+    let cases = [
+        // (path data, the same arc as {"arc"})
+        (
+            "M 1 0 A 1 1 0 0 1 0.96 0.28",
+            r#"{"arc": {"center": [0, 0], "radius": 1, "from": [1, 0], "to": [0.96, 0.28]}}"#,
+        ),
+        (
+            "M 0.96 0.28 A 1 1 0 0 0 1 0",
+            r#"{"arc": {"center": [0, 0], "radius": 1, "from": [0.96, 0.28], "to": [1, 0], "clockwise": true}}"#,
+        ),
+        (
+            "M 4.4 -0.3 a 2.5 2.5 0 0 1 -3.9 1.3",
+            r#"{"arc": {"center": [2, -1], "radius": 2.5, "from": [0.96, 0.28], "to": [-0.6, 0.8]}}"#,
+        ),
+    ];
+    let cfg = Config {
+        rel: 0.05,
+        ..Config::default()
+    };
+    for (path, arc) in cases {
+        let (pieces, approx) = parse_curve_reported(path).unwrap();
+        assert_eq!(approx.elements.len(), 1, "{path}");
+        let bound = approx.bound();
+        let a = ShapeDesc::parse(arc).unwrap();
+        let b = ShapeDesc::curve(pieces).unwrap();
+        let r = hausdorff(&a, &b, &cfg).unwrap();
+        assert!(
+            r.lo <= bound,
+            "{path}: the exact arc is at least {:e} away, the report says ≤ {bound:e}",
+            r.lo
+        );
+        // and the bound is tight: within 10 % of the search's upper bound
+        assert!(
+            bound <= 1.1 * r.hi,
+            "{path}: {bound:e} vs [{:e}, {:e}]",
+            r.lo,
+            r.hi
+        );
+    }
+}
+
+/// `hausdorff` says which input was approximated and by how much, in text
+/// and JSON; an exact input reports nothing (`null`).
+#[test]
+fn hausdorff_reports_the_approximated_input() {
+    let arc = tmp(
+        "arc.json",
+        r#"{"arc": {"center": [0, 0], "radius": 1, "from": [1, 0], "to": [0.96, 0.28]}}"#,
+    );
+    let path = tmp("arc.svg", "M 1 0 A 1 1 0 0 1 0.96 0.28");
+    let (a, b) = (arc.to_str().unwrap(), path.to_str().unwrap());
+    let o = lncert(&["hausdorff", a, b, "--rel", "0.05"]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        text.contains("input B: 1 SVG arc(s) approximated by 1 cubic pieces, certified within 9.7e-9; the results are about the approximated curve"),
+        "{text}"
+    );
+    assert!(!text.contains("input A"), "{text}");
+    let o = lncert(&["hausdorff", a, b, "--rel", "0.05", "--json"]);
+    let d = json_of(&o);
+    let ia = &d["input_approximation"];
+    assert_eq!(ia["elements"], 1);
+    assert!(ia["a"].is_null());
+    assert_eq!(ia["b"]["elements"], 1);
+    let bound = ia["bound"].as_f64().unwrap();
+    assert_eq!(bound, ia["b"]["bound"].as_f64().unwrap());
+    assert!(d["lo"].as_f64().unwrap() <= bound);
+    // both approximated: the bound is the sum (d_H of the exact inputs is
+    // within it of d_H of the pieces)
+    let other = tmp("arc2.svg", "M 1 0 A 1.001 1.001 0 0 1 0.96 0.28");
+    let o = lncert(&[
+        "hausdorff",
+        b,
+        other.to_str().unwrap(),
+        "--rel",
+        "0.05",
+        "--json",
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let ia = json_of(&o)["input_approximation"].clone();
+    assert_eq!(ia["elements"], 2);
+    let (ba, bb) = (
+        ia["a"]["bound"].as_f64().unwrap(),
+        ia["b"]["bound"].as_f64().unwrap(),
+    );
+    assert!(ia["bound"].as_f64().unwrap() >= ba + bb);
+    // both exact: null
+    let o = lncert(&["hausdorff", a, a, "--rel", "0.05", "--json"]);
+    assert!(json_of(&o)["input_approximation"].is_null());
+}
+
+/// `offset` says when its input was approximated: a circle element and arcs.
+#[test]
+fn offset_reports_the_approximated_input() {
+    let doc = tmp(
+        "circle.svg",
+        r#"<svg xmlns="http://www.w3.org/2000/svg"><circle cx="1" cy="1" r="2"/></svg>"#,
+    );
+    let o = lncert(&[
+        "offset",
+        doc.to_str().unwrap(),
+        "--distance",
+        "0.25",
+        "--tol",
+        "1e-4",
+        "--method",
+        "ln-pair",
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        text.starts_with("input: 1 circle(s) approximated by 18 cubic pieces, certified within "),
+        "{text}"
+    );
+    assert!(text.contains("; the results are about the approximated curve\n"));
+    let path = tmp("arcs.svg", "M 0 0 A 1 1 0 0 1 2 0 A 1 2 30 0 1 3 1");
+    let o = lncert(&[
+        "offset",
+        path.to_str().unwrap(),
+        "--distance",
+        "0.1",
+        "--tol",
+        "1e-4",
+        "--json",
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let d = json_of(&o);
+    assert_eq!(d["input_approximation"]["elements"], 2);
+    let bound = d["input_approximation"]["bound"].as_f64().unwrap();
+    assert!(bound > 0.0 && bound <= 2e-7, "{bound}");
+    // exact input: null
+    let line = tmp("line.svg", "M 0 0 L 1 0");
+    let o = lncert(&[
+        "offset",
+        line.to_str().unwrap(),
+        "--distance",
+        "0.1",
+        "--tol",
+        "1e-4",
+        "--json",
+    ]);
+    assert!(json_of(&o)["input_approximation"].is_null());
+    // a bad arc is bad input naming the byte
+    let bad = tmp("bad.svg", "M 0 0 A 1 1 0 2 1 2 0");
+    let o = lncert(&[
+        "offset",
+        bad.to_str().unwrap(),
+        "--distance",
+        "0.1",
+        "--tol",
+        "1e-4",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("byte 14"));
+}
+
+/// Approximated shapes are plain curves: their canonical JSON (what
+/// certificates store) reads back to the same shape, and reading the same
+/// text twice gives the same pieces (so `verify --against` recognises them).
+#[test]
+fn approximated_shapes_round_trip() {
+    for text in [
+        "M 0 0 A 1 2 30 1 0 3 4 a 1 1 0 0 1 1 1 Z",
+        r#"<svg><circle r="1"/><rect width="2" height="1" rx="0.25"/></svg>"#,
+        r#"{"offset": {"curve": "M 1 0 A 1 1 0 0 1 0.6 0.8", "distance": 0.1}}"#,
+    ] {
+        let (shape, approx) = ShapeDesc::parse_reported(text).unwrap();
+        assert!(!approx.is_empty(), "{text}");
+        assert_eq!(ShapeDesc::from_value(&shape.to_json()).unwrap(), shape);
+        assert_eq!(ShapeDesc::parse(text).unwrap(), shape);
+    }
+}
