@@ -1,0 +1,857 @@
+#![no_main]
+//! Fuzz target `convolve`: a small curve, an elliptical pen, a side, a
+//! tolerance and budgets built from the input -> `lncert::approx::convolve`
+//! (seed 001's G²/C¹ convolution approximant), and the result's contract. The
+//! structure follows `offset.rs` (same curves, tolerances and budgets, so an
+//! input costs a few ms to a few tens of ms).
+//!
+//! Input (one byte per choice, see [`input`]): 1-2 Bézier pieces of degree
+//! 1-4 (coordinates `k/16`, `k` an `i8`; the second piece free, joined, or
+//! closing the curve, as in `offset.rs`). A pen, either
+//! * by its matrix `M` (entries `num/den`, `num` in `-4..=4`, `den` in `1..=4`;
+//!   singular matrices included: `Pen::from_matrix` must refuse them naming
+//!   `pen.matrix`), or
+//! * by semi-axes `a`, `b` (`num/den`, `num` in `-2..=16`, `den` in `1..=8`;
+//!   `b <= 0` must be an error naming `pen.b`, else `a < b` one naming `pen.a`)
+//!   and an angle string from [`ANGLES`] (good ones, strings `Angle::parse`
+//!   must refuse naming `angle`, and ones it reads but `Pen::ellipse` must
+//!   refuse naming `pen.angle`), represented within a bound from [`MAX_ANGLES`]
+//!   (`Pen::ellipse` for 1e-12, else `Pen::ellipse_within`).
+//!
+//! A side from `{1, -1, 0, 2}` (0 and 2 must be errors naming `side`), a
+//! tolerance from [`TOLS`] (absurd values included), rarely the LN-pair method
+//! (an error naming `method`), and small budgets (`max_depth` 0..=3,
+//! `max_segments` 1..=8, `max_boxes` 8..=64).
+//!
+//! Checks (exact consequences of the contract and of the driver in
+//! src/approx/mod.rs; no sampled "expected" geometry):
+//! * no panic; an `Err` names a non-empty field and reason, both in its
+//!   `Display`; the expected field where the input decides it (above);
+//! * the pen: `q = M Mᵀ` exactly; a matrix pen is exact (`margin` and
+//!   `rotation_error` 0); an axes pen is `M = R diag(a, b)` with an exactly
+//!   rational rotation (`c² + s² = 1`), within `rotation_error` of the
+//!   requested angle (checked against f64 `cos`/`sin`), `rotation_error <=`
+//!   the requested bound, `margin >= (a + a²/b) rotation_error` and `margin = 0`
+//!   iff `rotation_error = 0`, which holds for every quarter turn;
+//! * a tolerance that is not a finite number `> 0`, or with
+//!   `tol - margin < 1e-11` (so below `1e-11 (1 + scale)`), must be an error;
+//! * the result: `tol` as given, method G2, distance 0, no offset cusps or
+//!   corners, `convolution` set with this pen and side and
+//!   `certified_tol = tol - pen.margin`;
+//! * every segment has `0 <= lo <= hi` (no NaN); `certified_hi` is the max of
+//!   the segments' `hi`; `unreached` is exactly the (sorted) indices of the
+//!   segments with `hi > certified_tol` — **not** `tol`: `convolve` runs the
+//!   offset driver with `opts.tol` replaced by `certified_tol`, and the driver
+//!   accepts a segment iff `hi <= opts.tol` of those inner options; `reached()`
+//!   iff `certified_hi <= certified_tol` (so `certified_hi` may lie in
+//!   `(certified_tol, tol]` with `reached()` false);
+//! * segments are sorted by `(piece, t0)` and tile every piece's `[0, 1]`
+//!   exactly; the segment counts of `offset.rs` (the initial spans now also
+//!   split at the side's cusps);
+//! * a segment of degree 1 is the placeholder of a span without a
+//!   construction (error `(0, inf)`, unreached); every other segment has degree
+//!   `n + 3`; consecutive constructed segments of one piece share their joint
+//!   control point exactly; the control point count as in `offset.rs`;
+//! * pinning: a constructed segment's first and last control points are within
+//!   `1e-9 (1 + scale)` of the convolution point
+//!   `C(t) = x(t) + σ Q n / √(nᵀ Q n)` (`n = x′(t)⊥`) at `t0` and `t1`, with
+//!   `x(t)`, `Q n` and `nᵀ Q n` exact and one float square root;
+//! * soundness of `hi`: `C(t)`, `t` in `{t0, (t0 + t1)/2, t1}`, lies on the
+//!   exact convolution of the span, and the approximant lies in the convex hull
+//!   of its control points, so `hi >= dist(C(t), hull)` up to float slack;
+//! * soundness of `lo`: `d_H <= max(max_j |B_j - C(t0)|, max_i |X_i - B_0| +
+//!   R)` with `R = √(q₁₁ + q₂₂) >=` the pen's major semi-axis, so `lo` is at
+//!   most that;
+//! * cusps (`convolution.cusps`): on an existing piece, the exact interval
+//!   `lo <= hi` in `[0, 1]` of width at most 2⁻⁴⁰, `t_approx` in it; the
+//!   interval holds a root of the cusp polynomial `(det Q)² k² - (nᵀQn)³`
+//!   (`k = x′ × x″`, rebuilt here from the module docs: a sign change, else
+//!   Sturm); `σ k > 0` at its midpoint (exactly) unless the interval holds a
+//!   root of `k`; `point` within `1e-9 (1 + scale)` of `C(t_approx)`.
+
+use libfuzzer_sys::arbitrary::{Result, Unstructured};
+use libfuzzer_sys::{fuzz_target, Corpus};
+use lncert::approx::conv::{Angle, Pen};
+use lncert::approx::{
+    convolve, OffsetError, OffsetMethod, OffsetOptions, OffsetResult, OffsetSegment,
+};
+use lncert::curve::{Bezier, V2};
+use lncert::poly::{has_root_in, Poly, Span};
+use lncert::scalar::{frac, rational_from_f64, Rational, Scalar};
+use lncert::ShapeError;
+
+/// Tolerances: absurd ones (must be errors, except the huge 1e9) and a few
+/// reachable ones (as `offset.rs`).
+const TOLS: [f64; 10] = [
+    0.0,
+    -1.0,
+    f64::NAN,
+    f64::INFINITY,
+    1e-300,
+    1e-1,
+    3e-2,
+    1e9,
+    1e-2,
+    1e-3,
+];
+
+/// What must happen to an angle string.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Expect {
+    /// Read by `Angle::parse` and accepted by `Pen::ellipse`.
+    Good,
+    /// Refused by `Angle::parse` (field `angle`).
+    ParseErr,
+    /// Read by `Angle::parse` (it is an exact number) but refused by
+    /// `Pen::ellipse` (field `pen.angle`): `1e400` is within the exponent
+    /// limit of `parse_rational` (|e| <= 400); the pen needs |θ| < 1e6.
+    PenErr,
+}
+
+/// Angle strings: quarter turns (exact: `margin = 0`), other angles, bad ones.
+const ANGLES: [(&str, Expect); 20] = [
+    ("pi/6", Expect::Good),
+    ("30deg", Expect::Good),
+    ("0.5", Expect::Good),
+    ("-2pi/3", Expect::Good),
+    ("90deg", Expect::Good),
+    ("0", Expect::Good),
+    ("pi", Expect::Good),
+    ("-pi/2", Expect::Good),
+    ("45deg", Expect::Good),
+    ("1/3", Expect::Good),
+    ("7pi/5", Expect::Good),
+    ("3.14159", Expect::Good),
+    ("pi/0", Expect::ParseErr),
+    ("", Expect::ParseErr),
+    ("abc", Expect::ParseErr),
+    ("1e401", Expect::ParseErr),
+    ("NaN", Expect::ParseErr),
+    ("pi*", Expect::ParseErr),
+    ("1e400", Expect::PenErr),
+    ("1e6", Expect::PenErr),
+];
+
+/// Bounds on the rotation error (`Pen::ellipse` for the first).
+const MAX_ANGLES: [f64; 3] = [1e-12, 1e-6, 1e-3];
+
+/// Sides: the two valid ones and two that must be errors.
+const SIDES: [i8; 4] = [1, -1, 0, 2];
+
+fn q(p: i64, den: i64) -> Rational {
+    frac::<Rational>(p, den)
+}
+
+fn point(u: &mut Unstructured) -> Result<V2<Rational>> {
+    let x: i8 = u.arbitrary()?;
+    let y: i8 = u.arbitrary()?;
+    Ok(V2::new(q(x.into(), 16), q(y.into(), 16)))
+}
+
+fn ratio(u: &mut Unstructured, num: (i8, i8), den: u8) -> Result<Rational> {
+    let n: i8 = u.int_in_range(num.0..=num.1)?;
+    let d: u8 = u.int_in_range(1..=den)?;
+    Ok(q(n.into(), d.into()))
+}
+
+/// How the pen is given.
+#[derive(Debug)]
+enum PenSpec {
+    Matrix([[Rational; 2]; 2]),
+    Axes {
+        a: Rational,
+        b: Rational,
+        angle: usize,
+        max_angle: f64,
+    },
+}
+
+struct Input {
+    curve: Vec<Bezier<Rational>>,
+    pen: PenSpec,
+    side: i8,
+    opts: OffsetOptions,
+}
+
+fn input(u: &mut Unstructured) -> Result<Input> {
+    let pieces: u8 = u.int_in_range(1..=2)?;
+    let mut curve: Vec<Bezier<Rational>> = Vec::new();
+    // 0: free, 1: starts at the previous end, 2: also ends at the first start
+    let link: u8 = if pieces == 2 {
+        u.int_in_range(0..=2)?
+    } else {
+        0
+    };
+    for i in 0..pieces {
+        let degree: u8 = u.int_in_range(1..=4)?;
+        let mut pts = Vec::new();
+        for k in 0..=degree {
+            let p = if i == 1 && k == 0 && link >= 1 {
+                let prev = curve[0].points();
+                prev[prev.len() - 1].clone()
+            } else if i == 1 && k == degree && link == 2 {
+                curve[0].points()[0].clone()
+            } else {
+                point(u)?
+            };
+            pts.push(p);
+        }
+        curve.push(Bezier::new(pts));
+    }
+    let pen = if u.int_in_range(0..=1u8)? == 0 {
+        let mut e = || ratio(u, (-4, 4), 4);
+        PenSpec::Matrix([[e()?, e()?], [e()?, e()?]])
+    } else {
+        let a = ratio(u, (-2, 16), 8)?;
+        let b = ratio(u, (-2, 16), 8)?;
+        let angle = usize::from(u.int_in_range(0..=(ANGLES.len() - 1) as u8)?);
+        let max_angle = MAX_ANGLES[usize::from(u.int_in_range(0..=(MAX_ANGLES.len() - 1) as u8)?)];
+        PenSpec::Axes {
+            a,
+            b,
+            angle,
+            max_angle,
+        }
+    };
+    let side = SIDES[usize::from(u.int_in_range(0..=(SIDES.len() - 1) as u8)?)];
+    let tol = TOLS[usize::from(u.int_in_range(0..=(TOLS.len() - 1) as u8)?)];
+    let mut opts = OffsetOptions::new(q(0, 1), tol);
+    // the LN pair is refused for convolutions: rarely, to check that
+    opts.method = if u.int_in_range(0..=7u8)? == 7 {
+        OffsetMethod::LnPair
+    } else {
+        OffsetMethod::G2
+    };
+    opts.max_depth = u.int_in_range(0..=3u8)?.into();
+    opts.max_segments = u.int_in_range(1..=8u8)?.into();
+    opts.max_boxes = u.int_in_range(8..=64u8)?.into();
+    opts.paper_error = false;
+    Ok(Input {
+        curve,
+        pen,
+        side,
+        opts,
+    })
+}
+
+fn f(r: &Rational) -> f64 {
+    r.approx()
+}
+
+fn fp(p: &V2<Rational>) -> (f64, f64) {
+    (f(&p.x), f(&p.y))
+}
+
+fn dist(a: (f64, f64), b: (f64, f64)) -> f64 {
+    (a.0 - b.0).hypot(a.1 - b.1)
+}
+
+fn cross(o: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
+    (a.0 - o.0) * (b.1 - o.1) - (a.1 - o.1) * (b.0 - o.0)
+}
+
+fn seg_dist(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
+    let (vx, vy) = (b.0 - a.0, b.1 - a.1);
+    let l2 = vx * vx + vy * vy;
+    if l2 == 0.0 {
+        return dist(p, a);
+    }
+    let s = (((p.0 - a.0) * vx + (p.1 - a.1) * vy) / l2).clamp(0.0, 1.0);
+    dist(p, (a.0 + s * vx, a.1 + s * vy))
+}
+
+/// Distance from `p` to the convex hull of `pts` (Andrew's monotone chain).
+fn dist_to_hull(p: (f64, f64), pts: &[(f64, f64)]) -> f64 {
+    let mut v = pts.to_vec();
+    v.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    v.dedup();
+    if v.len() == 1 {
+        return dist(p, v[0]);
+    }
+    let mut hull: Vec<(f64, f64)> = Vec::new();
+    for pass in 0..2 {
+        let start = hull.len();
+        let it: Box<dyn Iterator<Item = &(f64, f64)>> = if pass == 0 {
+            Box::new(v.iter())
+        } else {
+            Box::new(v.iter().rev())
+        };
+        for &q in it {
+            while hull.len() >= start + 2
+                && cross(hull[hull.len() - 2], hull[hull.len() - 1], q) <= 0.0
+            {
+                hull.pop();
+            }
+            hull.push(q);
+        }
+        hull.pop();
+    }
+    // counter-clockwise; 2 points for a collinear set
+    let n = hull.len();
+    let edges = (0..n).map(|i| (hull[i], hull[(i + 1) % n]));
+    if n >= 3 && edges.clone().all(|(a, b)| cross(a, b, p) >= 0.0) {
+        return 0.0;
+    }
+    edges
+        .map(|(a, b)| seg_dist(p, a, b))
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// `Q = M Mᵀ` as `[q₁₁, q₁₂, q₂₂]`, exactly.
+fn q_of(m: &[[Rational; 2]; 2]) -> [Rational; 3] {
+    [
+        &m[0][0] * &m[0][0] + &m[0][1] * &m[0][1],
+        &m[0][0] * &m[1][0] + &m[0][1] * &m[1][1],
+        &m[1][0] * &m[1][0] + &m[1][1] * &m[1][1],
+    ]
+}
+
+/// `(nᵀ Q n, Q n)` exactly for `n = d⊥ = (-d_y, d_x)`.
+fn nqn(d: &V2<Rational>, qm: &[Rational; 3]) -> (Rational, V2<Rational>) {
+    let (nx, ny) = (-d.y.clone(), d.x.clone());
+    let qn = V2::new(&qm[0] * &nx + &qm[1] * &ny, &qm[1] * &nx + &qm[2] * &ny);
+    let s = &nx * &qn.x + &ny * &qn.y;
+    (s, qn)
+}
+
+/// The exact convolution point `x(t) + σ Q n / √(nᵀ Q n)` in f64: `x(t)`,
+/// `Q n` and `nᵀ Q n` exact, then one rounding each and a float square root.
+fn conv_point(x: &Bezier<Rational>, t: f64, qm: &[Rational; 3], sigma: i8) -> (f64, f64) {
+    let tr = rational_from_f64(t).expect("finite parameter");
+    let p = fp(&x.eval(&tr));
+    let d = x.hodograph().eval(&tr);
+    let (s, qn) = nqn(&d, qm);
+    let (sf, qx, qy) = (f(&s), f(&qn.x), f(&qn.y));
+    assert!(
+        sf > 0.0 && sf.is_finite(),
+        "nᵀQn = {sf} at t = {t} on a piece the engine accepted (zero derivative?)"
+    );
+    let k = f64::from(sigma) / sf.sqrt();
+    (p.0 + qx * k, p.1 + qy * k)
+}
+
+/// `k = x′ × x″` and `nᵀ Q n` as exact power-form polynomials (the module
+/// docs' formulas), and the cusp polynomial `(det Q)² k² - (nᵀQn)³`.
+struct CuspPolys {
+    k: Poly<Rational>,
+    p: Poly<Rational>,
+}
+
+fn cusp_polys(x: &Bezier<Rational>, qm: &[Rational; 3]) -> CuspPolys {
+    let (dx, dy) = x.hodograph().power_coords();
+    let (ddx, ddy) = (dx.derivative(), dy.derivative());
+    let k = dx.mul(&ddy).sub(&dy.mul(&ddx));
+    let nqn = Poly::constant(qm[0].clone())
+        .mul(&dy.mul(&dy))
+        .sub(&Poly::constant(q(2, 1) * qm[1].clone()).mul(&dx.mul(&dy)))
+        .add(&Poly::constant(qm[2].clone()).mul(&dx.mul(&dx)));
+    let det = &qm[0] * &qm[2] - &qm[1] * &qm[1];
+    let p = Poly::constant(&det * &det)
+        .mul(&k)
+        .mul(&k)
+        .sub(&nqn.mul(&nqn).mul(&nqn));
+    CuspPolys { k, p }
+}
+
+/// `poly` has a root in `[lo, hi]`: a sign change at the ends, else Sturm.
+fn root_in(poly: &Poly<Rational>, lo: &Rational, hi: &Rational) -> bool {
+    let zero = q(0, 1);
+    let (a, b) = (poly.eval(lo), poly.eval(hi));
+    if a == zero || b == zero || (a < zero) != (b < zero) {
+        return true;
+    }
+    has_root_in(poly, &Span::closed(lo.clone(), hi.clone()))
+}
+
+fn check_fields(field: &str, reason: &str, shown: &str, what: &str) {
+    assert!(
+        !field.is_empty() && !reason.is_empty() && shown.contains(field) && shown.contains(reason),
+        "{what}: error without a field or reason: {shown:?} (field {field:?}, reason {reason:?})"
+    );
+}
+
+fn check_shape_error(e: &ShapeError, want: &str, what: &str) {
+    check_fields(&e.field, &e.reason, &e.to_string(), what);
+    assert_eq!(e.field, want, "{what}: error {e} names the wrong field");
+}
+
+fn check_error(e: &OffsetError, inp: &Input) -> String {
+    let shown = e.to_string();
+    #[allow(unreachable_patterns)]
+    let (field, reason) = match e {
+        OffsetError::Input { field, reason } => (field.clone(), reason.clone()),
+        _ => (shown.clone(), shown.clone()),
+    };
+    check_fields(
+        &field,
+        &reason,
+        &shown,
+        &format!("convolve (tol {}, side {})", inp.opts.tol, inp.side),
+    );
+    field
+}
+
+/// Builds the pen and checks its contract; `None` when it must be (and is)
+/// refused.
+fn make_pen(spec: &PenSpec) -> Option<Pen> {
+    let zero = q(0, 1);
+    match spec {
+        PenSpec::Matrix(m) => {
+            let det = &m[0][0] * &m[1][1] - &m[0][1] * &m[1][0];
+            match Pen::from_matrix(m.clone()) {
+                Err(e) => {
+                    assert!(
+                        det == zero,
+                        "Pen::from_matrix refused a regular matrix {m:?}: {e}"
+                    );
+                    check_shape_error(&e, "pen.matrix", "Pen::from_matrix");
+                    None
+                }
+                Ok(pen) => {
+                    assert!(
+                        det != zero,
+                        "Pen::from_matrix accepted a singular matrix {m:?}"
+                    );
+                    assert!(&pen.m == m, "the pen's matrix is not the one given");
+                    assert!(pen.q == q_of(m), "q != M Mᵀ for {m:?}");
+                    assert!(
+                        pen.margin == 0.0 && pen.rotation_error == 0.0,
+                        "a matrix pen is not exact: margin {}, rotation_error {}",
+                        pen.margin,
+                        pen.rotation_error
+                    );
+                    Some(pen)
+                }
+            }
+        }
+        PenSpec::Axes {
+            a,
+            b,
+            angle,
+            max_angle,
+        } => {
+            let (text, expect) = ANGLES[*angle];
+            let theta = match Angle::parse(text) {
+                Err(e) => {
+                    assert_eq!(
+                        expect,
+                        Expect::ParseErr,
+                        "Angle::parse({text:?}) refused: {e}"
+                    );
+                    check_shape_error(&e, "angle", &format!("Angle::parse({text:?})"));
+                    return None;
+                }
+                Ok(th) => {
+                    assert!(
+                        expect != Expect::ParseErr,
+                        "Angle::parse({text:?}) accepted a bad angle: {th:?}"
+                    );
+                    th
+                }
+            };
+            let res = if *max_angle == 1e-12 {
+                Pen::ellipse(a, b, &theta)
+            } else {
+                Pen::ellipse_within(a, b, &theta, *max_angle)
+            };
+            let want_field = if *b <= zero {
+                Some("pen.b")
+            } else if a < b {
+                Some("pen.a")
+            } else if expect == Expect::PenErr {
+                Some("pen.angle")
+            } else {
+                None
+            };
+            let what = format!("Pen::ellipse({a}, {b}, {text:?}, {max_angle:e})");
+            let pen = match (res, want_field) {
+                (Err(e), Some(w)) => {
+                    check_shape_error(&e, w, &what);
+                    return None;
+                }
+                (Err(e), None) => panic!("{what} refused: {e}"),
+                (Ok(p), Some(w)) => panic!("{what} accepted (must be refused naming {w}): {p:?}"),
+                (Ok(p), None) => p,
+            };
+            // M = R(θ') diag(a, b) with an exactly rational rotation
+            let c = &pen.m[0][0] / a;
+            let s = &pen.m[1][0] / a;
+            assert!(
+                &c * &c + &s * &s == q(1, 1),
+                "{what}: the rotation ({c}, {s}) is not exactly a unit vector"
+            );
+            assert!(
+                pen.m[0][1] == -(&s * b) && pen.m[1][1] == &c * b,
+                "{what}: M is not R diag(a, b): {:?}",
+                pen.m
+            );
+            assert!(pen.q == q_of(&pen.m), "{what}: q != M Mᵀ");
+            let delta = pen.rotation_error;
+            assert!(
+                delta >= 0.0 && delta <= *max_angle,
+                "{what}: rotation_error {delta} outside [0, {max_angle}]"
+            );
+            // the rational rotation against f64 cos/sin of the angle (|θ| < 4:
+            // the f64 angle and libm add well below 1e-14)
+            let th = match &theta {
+                Angle::Radians(r) => f(r),
+                Angle::Degrees(d) => f(d) / 180.0 * std::f64::consts::PI,
+                Angle::PiTimes(k) => f(k) * std::f64::consts::PI,
+            };
+            let err = (f(&c) - th.cos()).hypot(f(&s) - th.sin());
+            assert!(
+                err <= delta + 1e-14,
+                "{what}: rotation ({c}, {s}) is {err} from θ = {th}, beyond rotation_error {delta}"
+            );
+            let quarter = match &theta {
+                Angle::PiTimes(k) => (k * q(2, 1)).is_integer(),
+                Angle::Degrees(d) => (d / q(90, 1)).is_integer(),
+                Angle::Radians(r) => *r == zero,
+            };
+            if quarter {
+                assert!(
+                    delta == 0.0 && pen.margin == 0.0,
+                    "{what}: a quarter turn is not exact: rotation_error {delta}, margin {}",
+                    pen.margin
+                );
+            }
+            let (af, bf) = (f(a), f(b));
+            assert!(
+                (pen.margin == 0.0) == (delta == 0.0)
+                    && pen.margin >= (af + af * af / bf) * delta * (1.0 - 1e-12),
+                "{what}: margin {} below (a + a²/b) δ = {}",
+                pen.margin,
+                (af + af * af / bf) * delta
+            );
+            Some(pen)
+        }
+    }
+}
+
+fn check_segment_bounds(i: usize, s: &OffsetSegment) {
+    let (lo, hi) = s.error;
+    assert!(
+        !lo.is_nan() && !hi.is_nan() && lo >= 0.0 && lo <= hi,
+        "segment {i}: bad bounds [{lo}, {hi}]"
+    );
+}
+
+fn check_ok(inp: &Input, pen: &Pen, r: &OffsetResult) {
+    let curve = &inp.curve;
+    let opts = &inp.opts;
+    let tol = opts.tol;
+    let segs = &r.segments;
+    let n = segs.len();
+    let sigma = inp.side;
+    let qm = &pen.q;
+    let zero = q(0, 1);
+    assert!(r.tol == tol && r.method == OffsetMethod::G2 && r.distance == zero);
+    assert!(r.proven, "certify is on but the result is not proven");
+    assert!(
+        r.cusps.is_empty() && r.corners.is_empty(),
+        "offset cusps or corners in a convolution result"
+    );
+    let conv = r
+        .convolution
+        .as_ref()
+        .expect("convolve's result has no `convolution`");
+    assert!(conv.pen == *pen, "the result's pen is not the pen given");
+    assert_eq!(conv.side, sigma, "the result's side");
+    let ctol = conv.certified_tol;
+    assert!(
+        ctol == tol - pen.margin,
+        "certified_tol {ctol} != tol {tol} - margin {}",
+        pen.margin
+    );
+    assert!(n >= curve.len(), "{n} segments for {} pieces", curve.len());
+
+    // bounds, certified_hi, unreached (against certified_tol), reached()
+    for (i, s) in segs.iter().enumerate() {
+        check_segment_bounds(i, s);
+    }
+    let max_hi = segs.iter().map(|s| s.error.1).fold(0.0, f64::max);
+    assert!(
+        r.certified_hi == max_hi,
+        "certified_hi {} is not the max {max_hi} of the segments' bounds",
+        r.certified_hi
+    );
+    let over: Vec<usize> = (0..n).filter(|&i| segs[i].error.1 > ctol).collect();
+    assert_eq!(
+        r.unreached, over,
+        "unreached != segments with hi > certified_tol {ctol} (tol {tol})"
+    );
+    assert_eq!(r.reached(), segs.iter().all(|s| s.error.1 <= ctol));
+    assert_eq!(r.reached(), r.certified_hi <= ctol);
+
+    // order and tiling of every piece's [0, 1]
+    for (i, s) in segs.iter().enumerate() {
+        assert!(
+            s.piece < curve.len(),
+            "segment {i}: piece {} out of range",
+            s.piece
+        );
+        assert!(
+            0.0 <= s.t.0 && s.t.0 < s.t.1 && s.t.1 <= 1.0,
+            "segment {i}: bad span {:?}",
+            s.t
+        );
+        let first_of_piece = i == 0 || segs[i - 1].piece != s.piece;
+        if first_of_piece {
+            let want = if i == 0 { 0 } else { segs[i - 1].piece + 1 };
+            assert_eq!(
+                s.piece, want,
+                "segment {i}: a piece is skipped or out of order"
+            );
+            assert!(
+                s.t.0 == 0.0,
+                "segment {i}: first span of piece {} starts at {}",
+                s.piece,
+                s.t.0
+            );
+        } else {
+            assert!(
+                segs[i - 1].t.1 == s.t.0,
+                "segment {i}: gap or overlap, {:?} then {:?}",
+                segs[i - 1].t,
+                s.t
+            );
+        }
+        if i + 1 == n || segs[i + 1].piece != s.piece {
+            assert!(
+                s.t.1 == 1.0,
+                "segment {i}: last span of piece {} ends at {}",
+                s.piece,
+                s.t.1
+            );
+        }
+    }
+    assert_eq!(
+        segs[n - 1].piece,
+        curve.len() - 1,
+        "the last piece has no segment"
+    );
+
+    // counts: N = S + splits, C = S + 2 splits
+    let c = r.spans;
+    assert!(
+        c >= n && c <= 2 * n,
+        "spans {c} inconsistent with {n} segments"
+    );
+    assert!(
+        r.certifications <= c,
+        "{} certified searches for {c} spans",
+        r.certifications
+    );
+    let s0 = 2 * n - c;
+    let m = opts.max_segments;
+    assert!(
+        s0 >= curve.len(),
+        "{s0} initial spans for {} pieces (N = {n}, C = {c})",
+        curve.len()
+    );
+    assert!(
+        n <= s0 << opts.max_depth,
+        "{n} segments from {s0} initial spans at max_depth {}",
+        opts.max_depth
+    );
+    let cap = s0.max(m);
+    assert!(
+        n <= cap,
+        "{n} segments > {cap} (max_segments {m}, {s0} initial spans, C = {c})"
+    );
+
+    // degrees
+    let placeholder = |s: &OffsetSegment| s.bezier.degree() == 1;
+    for (i, s) in segs.iter().enumerate() {
+        if placeholder(s) {
+            assert!(
+                s.error.0 == 0.0 && s.error.1 == f64::INFINITY && r.unreached.contains(&i),
+                "segment {i}: degree 1 but not an unreached placeholder: {:?}",
+                s.error
+            );
+        } else {
+            assert_eq!(
+                s.bezier.degree(),
+                curve[s.piece].degree() + 3,
+                "segment {i}: degree of seed 001's approximant"
+            );
+        }
+        assert!(
+            s.paper_error.is_none() && s.estimate.is_none(),
+            "segment {i}: paper_error or estimate without the options"
+        );
+        assert_eq!(
+            s.proof.is_some(),
+            s.error.1 <= ctol,
+            "segment {i}: proof present iff hi <= certified_tol"
+        );
+    }
+    assert_eq!(
+        r.degree(),
+        segs.iter().map(|s| s.bezier.degree()).max().unwrap_or(0)
+    );
+
+    // joints and control points
+    let sum_deg: usize = segs.iter().map(|s| s.bezier.degree()).sum();
+    let mut unshared = 0;
+    for i in 1..n {
+        let (a, b) = (&segs[i - 1], &segs[i]);
+        if a.piece == b.piece && !placeholder(a) && !placeholder(b) {
+            let pa = a.bezier.points();
+            assert!(
+                pa[pa.len() - 1] == b.bezier.points()[0],
+                "segments {} and {i} of piece {} do not share the joint at t = {}: {:?} vs {:?}",
+                i - 1,
+                a.piece,
+                a.t.1,
+                pa[pa.len() - 1],
+                b.bezier.points()[0]
+            );
+        } else {
+            unshared += 1;
+        }
+    }
+    let cp = r.control_points();
+    assert!(
+        sum_deg < cp && cp <= sum_deg + 1 + unshared && cp <= sum_deg + n,
+        "control_points {cp}: sum of degrees {sum_deg}, {n} segments, {unshared} joints not shared"
+    );
+
+    // pinning and soundness spot checks
+    let in_scale = curve
+        .iter()
+        .flat_map(|b| b.points().iter())
+        .map(|p| f(&p.x).abs().max(f(&p.y).abs()))
+        .fold(0.0, f64::max);
+    // R = √(q₁₁ + q₂₂) = |M|_F >= the major semi-axis (the largest eigenvalue of Q
+    // is at most its trace), rounded up a little
+    let reach = (f(&qm[0]) + f(&qm[2])).sqrt() * (1.0 + 1e-12);
+    for (i, s) in segs.iter().enumerate() {
+        if placeholder(s) {
+            continue;
+        }
+        let x = &curve[s.piece];
+        let b: Vec<(f64, f64)> = s.bezier.points().iter().map(|p| (p.x, p.y)).collect();
+        assert!(
+            b.iter().all(|p| p.0.is_finite() && p.1.is_finite()),
+            "segment {i}: control point not finite"
+        );
+        let b_scale = b
+            .iter()
+            .map(|p| p.0.abs().max(p.1.abs()))
+            .fold(0.0, f64::max);
+        let eps = 1e-9 * (1.0 + in_scale + reach + b_scale);
+        let (t0, t1) = s.t;
+        let p0 = conv_point(x, t0, qm, sigma);
+        let p1 = conv_point(x, t1, qm, sigma);
+        let pm = conv_point(x, 0.5 * (t0 + t1), qm, sigma);
+        let (b0, b1) = (b[0], b[b.len() - 1]);
+        assert!(
+            dist(p0, b0) <= eps && dist(p1, b1) <= eps,
+            "segment {i}: ends {b0:?}, {b1:?} not pinned to the convolution points {p0:?}, {p1:?}"
+        );
+        let (lo, hi) = s.error;
+        for (t, p) in [(t0, p0), (0.5 * (t0 + t1), pm), (t1, p1)] {
+            let g = dist_to_hull(p, &b);
+            assert!(
+                g <= hi + eps,
+                "segment {i} {:?}: certified hi {hi} below the distance {g} of the convolution point at t = {t} to the approximant's hull",
+                s.t
+            );
+        }
+        let hb = b.iter().map(|&q| dist(q, p0)).fold(0.0, f64::max);
+        let ha = x
+            .points()
+            .iter()
+            .map(|q| dist(fp(q), b0))
+            .fold(0.0, f64::max)
+            + reach;
+        let up = hb.max(ha);
+        assert!(
+            lo <= up + eps,
+            "segment {i} {:?}: certified lo {lo} above the hull upper bound {up} of d_H",
+            s.t
+        );
+    }
+
+    // cusps of the convolution side
+    let np = curve.len();
+    let (one, width) = (q(1, 1), q(1, 1 << 40));
+    let mut polys: Vec<Option<CuspPolys>> = (0..np).map(|_| None).collect();
+    for cu in &conv.cusps {
+        assert!(cu.piece < np, "cusp on piece {} of {np}", cu.piece);
+        let (lo, hi) = (&cu.t.0, &cu.t.1);
+        assert!(
+            zero <= *lo && lo <= hi && *hi <= one,
+            "cusp parameter interval [{lo}, {hi}] outside [0, 1]"
+        );
+        assert!(
+            hi - lo <= width,
+            "cusp interval [{lo}, {hi}] wider than 2^-40"
+        );
+        assert!(
+            f(lo) <= cu.t_approx && cu.t_approx <= f(hi),
+            "cusp t_approx {} outside [{lo}, {hi}]",
+            cu.t_approx
+        );
+        let x = &curve[cu.piece];
+        let cp = polys[cu.piece].get_or_insert_with(|| cusp_polys(x, qm));
+        assert!(
+            root_in(&cp.p, lo, hi),
+            "cusp interval [{lo}, {hi}] on piece {} holds no root of (det Q)² k² - (nᵀQn)³",
+            cu.piece
+        );
+        let mid = (lo + hi) / q(2, 1);
+        let sk = cp.k.eval(&mid) * q(sigma.into(), 1);
+        assert!(
+            sk > zero || root_in(&cp.k, lo, hi),
+            "cusp at [{lo}, {hi}] on piece {}: σ k = {} <= 0 at the midpoint and no root of k (a cusp of the other side)",
+            cu.piece,
+            f(&sk)
+        );
+        let want = conv_point(x, cu.t_approx, qm, sigma);
+        let eps = 1e-9 * (1.0 + in_scale + reach);
+        assert!(
+            dist(want, cu.point) <= eps,
+            "cusp point {:?} is not the convolution point {want:?} at t = {}",
+            cu.point,
+            cu.t_approx
+        );
+    }
+}
+
+fuzz_target!(|data: &[u8]| -> Corpus {
+    let mut u = Unstructured::new(data);
+    let Ok(inp) = input(&mut u) else {
+        return Corpus::Reject;
+    };
+    let Some(pen) = make_pen(&inp.pen) else {
+        return Corpus::Reject;
+    };
+    let tol = inp.opts.tol;
+    let bad_side = inp.side != 1 && inp.side != -1;
+    let bad_method = inp.opts.method != OffsetMethod::G2;
+    let bad_tol = !(tol.is_finite() && tol > 0.0 && tol - pen.margin >= 1e-11);
+    match convolve(&inp.curve, &pen, inp.side, &inp.opts) {
+        Err(e) => {
+            let field = check_error(&e, &inp);
+            if bad_side {
+                assert_eq!(field, "side", "side {} refused naming {e}", inp.side);
+            } else if bad_method {
+                assert_eq!(field, "method", "LN pair refused naming {e}");
+            }
+            Corpus::Reject
+        }
+        Ok(r) => {
+            assert!(
+                !bad_side && !bad_method && !bad_tol,
+                "accepted side {} / method {:?} / tolerance {tol} with margin {} (must be errors)",
+                inp.side,
+                inp.opts.method,
+                pen.margin
+            );
+            check_ok(&inp, &pen, &r);
+            Corpus::Keep
+        }
+    }
+});
