@@ -224,8 +224,18 @@ pub fn ln_pair_pen(
         (pa, qa, lambda_p, kappa)
     };
     let (pa, ca, lambda, kappa) = piece;
-    let offset = Bezier::new(pa.points().iter().zip(ca.points()).map(|(p, q)| p.add(q)).collect());
-    if !offset.points().iter().all(|p| p.x.is_finite() && p.y.is_finite()) {
+    let offset = Bezier::new(
+        pa.points()
+            .iter()
+            .zip(ca.points())
+            .map(|(p, q)| p.add(q))
+            .collect(),
+    );
+    if !offset
+        .points()
+        .iter()
+        .all(|p| p.x.is_finite() && p.y.is_finite())
+    {
         return Err(NoPair::NotFinite);
     }
     Ok(LnPairPiece {

@@ -298,7 +298,11 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
         let mut s = format!(
             "convolution with the pen {} ({}, tol {}):\n",
             pen.description,
-            if a.method == "g2" { "seed 001 G²" } else { "seed 000 §5 cubic LN pairs" },
+            if a.method == "g2" {
+                "seed 001 G²"
+            } else {
+                "seed 000 §5 cubic LN pairs"
+            },
             a.tol
         );
         if pen.margin > 0.0 {

@@ -56,7 +56,10 @@ pub fn both_sides(tol: f64) -> Result<(OffsetResult, OffsetResult), String> {
 }
 
 /// Both sides at one tolerance by a method: `(side −, side +)`.
-pub fn both_sides_by(tol: f64, method: OffsetMethod) -> Result<(OffsetResult, OffsetResult), String> {
+pub fn both_sides_by(
+    tol: f64,
+    method: OffsetMethod,
+) -> Result<(OffsetResult, OffsetResult), String> {
     let x = nonic()?;
     let pen = pen((tol * 1e-3 / 2.5).clamp(1e-12, 1e-6))?;
     let mut opts = OffsetOptions::new(Rational::from_integer(0.into()), tol);
