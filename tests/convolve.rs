@@ -320,7 +320,7 @@ fn cli_bad_input_exits_2_naming_the_flag() {
             "--side",
         ),
         (
-            vec!["--ellipse", "1,0.5", "--tol", "1e-3", "--method", "ln-pair"],
+            vec!["--ellipse", "1,0.5", "--tol", "1e-3", "--method", "bezier"],
             "--method",
         ),
         (vec!["--tol", "1e-3"], "--ellipse"),
