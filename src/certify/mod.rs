@@ -43,6 +43,7 @@ use piece::Pieces;
 
 pub use cert::{Certificate, MapCover};
 pub use param::Parametric;
+
 pub use search::{Config, CoverBox, OneSided};
 
 /// Errors of the certification layer; every one names the offending field.
@@ -159,6 +160,88 @@ pub fn hausdorff(
             cfg.abs
         } else {
             1e-10 * (1.0 + a.scale().max(b.scale()))
+        }
+    };
+    Ok(hausdorff_pieces(&pa, &pb, cfg, &abs_of))
+}
+
+/// An elliptic arc `center + M·(the unit-circle arc counter-clockwise from the
+/// direction `from` to the direction `to`)` — the directions are those of the
+/// pre-image, of any nonzero length, not the same direction. Seed 001's pen
+/// segments are such arcs (`center` 0, `M` the pen). Not a shape of the
+/// certificate language: [`hausdorff_ellipse_arc`] bounds distances to it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EllipseArc {
+    /// The ellipse's centre.
+    pub center: crate::curve::V2<crate::scalar::Rational>,
+    /// `M` by rows (`det M ≠ 0`).
+    pub m: [[crate::scalar::Rational; 2]; 2],
+    /// The pre-image direction of the start.
+    pub from: crate::curve::V2<crate::scalar::Rational>,
+    /// The pre-image direction of the end.
+    pub to: crate::curve::V2<crate::scalar::Rational>,
+}
+
+/// Certified bounds on `d_H(arc, curve)` for an elliptic arc and a piecewise
+/// polynomial curve: the same proofs as [`hausdorff`] (the arc parametrised
+/// by `c + M u(t)`, `u(t)` the rational unit-circle parametrisation of the
+/// arcs, with the outer/inner end-parameter domains).
+///
+/// # Examples
+/// ```
+/// use lncert::certify::{hausdorff_ellipse_arc, Config, EllipseArc};
+/// use lncert::curve::{Bezier, V2};
+/// let q = |s: &str| lncert::parse_rational(s).unwrap();
+/// // the quarter of the ellipse x²/4 + y² = 1 from (2, 0) to (0, 1) against its chord
+/// let arc = EllipseArc { center: V2::new(q("0"), q("0")), m: [[q("2"), q("0")], [q("0"), q("1")]],
+///                        from: V2::new(q("1"), q("0")), to: V2::new(q("0"), q("1")) };
+/// let chord = Bezier::new(vec![V2::new(q("2"), q("0")), V2::new(q("0"), q("1"))]);
+/// let r = hausdorff_ellipse_arc(&arc, &[chord], &Config::default()).unwrap();
+/// // the farthest point of the arc from the chord: (√2, √2/2), at distance (2√2 − 2)/√5
+/// let exact = (2.0 * 2f64.sqrt() - 2.0) / 5f64.sqrt();
+/// assert!(r.lo <= exact && exact <= r.hi);
+/// ```
+pub fn hausdorff_ellipse_arc(
+    arc: &EllipseArc,
+    curve: &[crate::curve::Bezier<crate::scalar::Rational>],
+    cfg: &Config,
+) -> Result<HausdorffBounds, CertifyError> {
+    use num_traits::Zero;
+    check_config(cfg)?;
+    let m = &arc.m;
+    if (&m[0][0] * &m[1][1] - &m[0][1] * &m[1][0]).is_zero() {
+        return Err(CertifyError::Input {
+            field: "arc.m".into(),
+            reason: "the matrix is singular".into(),
+        });
+    }
+    let shape = ShapeDesc::curve(curve.to_vec())?;
+    for v in [&arc.from, &arc.to] {
+        if v.x.is_zero() && v.y.is_zero() {
+            return Err(CertifyError::Input {
+                field: "arc.from".into(),
+                reason: "a direction is zero".into(),
+            });
+        }
+    }
+    let pa = vec![piece::Piece::ellipse_arc(
+        &arc.center,
+        m,
+        &arc.from,
+        &arc.to,
+    )?];
+    let pb = shape.pieces()?;
+    let scale = {
+        use crate::scalar::Scalar;
+        let c = arc.center.x.approx().abs().max(arc.center.y.approx().abs());
+        let mm: f64 = m.iter().flatten().map(|x| x.approx().abs()).sum();
+        c + mm + shape.scale()
+    };
+    let abs_of = || {
+        if cfg.abs > 0.0 {
+            cfg.abs
+        } else {
+            1e-10 * (1.0 + scale)
         }
     };
     Ok(hausdorff_pieces(&pa, &pb, cfg, &abs_of))

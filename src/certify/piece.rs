@@ -37,6 +37,13 @@ pub(crate) enum PieceData<S> {
         r: S,
         e0: (S, S),
     },
+    /// An elliptic arc `c + M (cos φ e0 + sin φ e0⊥)` (the unit-circle arc of
+    /// the pre-image mapped by `M = [[m.0, m.1], [m.2, m.3]]`).
+    EArc {
+        c: (S, S),
+        m: (S, S, S, S),
+        e0: (S, S),
+    },
     /// The curve `pts`, its hodographs `hod` (x′), `hod2` (x″), `hod3` (x‴).
     Conv {
         pts: Vec<(S, S)>,
@@ -81,6 +88,11 @@ fn mid_data(d: &PieceData<Interval>) -> PieceData<f64> {
             r: mid(*r),
             e0: m2(e0),
         },
+        PieceData::EArc { c, m, e0 } => PieceData::EArc {
+            c: m2(c),
+            m: (mid(m.0), mid(m.1), mid(m.2), mid(m.3)),
+            e0: m2(e0),
+        },
         PieceData::Conv {
             pts,
             hod,
@@ -110,7 +122,7 @@ impl Piece {
         }
     }
 
-    fn bezier(b: &Bezier<Rational>) -> Piece {
+    pub(crate) fn bezier(b: &Bezier<Rational>) -> Piece {
         let [pts, d1, d2, _] = hodographs(b);
         Piece::from_iv(PieceData::Bez { pts, d1, d2 }, (0.0, 1.0), (0.0, 1.0))
     }
@@ -157,6 +169,44 @@ impl Piece {
         let data = PieceData::Arc {
             c: (iv(&a.center.x), iv(&a.center.y)),
             r: iv(&a.radius),
+            e0,
+        };
+        Ok(Piece::from_iv(data, (0.0, u.sup()), (0.0, u.inf())))
+    }
+
+    /// The elliptic arc `c + M·(unit-circle arc counter-clockwise from the
+    /// direction `from` to `to`)` (directions of the pre-image, any nonzero
+    /// length, not the same direction), parametrised as [`Piece::arc`].
+    pub(crate) fn ellipse_arc(
+        c: &V2<Rational>,
+        m: &[[Rational; 2]; 2],
+        from: &V2<Rational>,
+        to: &V2<Rational>,
+    ) -> Result<Piece, CertifyError> {
+        let unit = |v: &V2<Rational>| -> Option<(Interval, Interval)> {
+            let (x, y) = (iv(&v.x), iv(&v.y));
+            let n = ScalarSqrt::sqrt(&(x.sqr() + y.sqr()))?;
+            Some((x.div(&n)?, y.div(&n)?))
+        };
+        let bad = || {
+            err(
+                "arc",
+                "the directions cannot be normalised in interval arithmetic",
+            )
+        };
+        let e0 = unit(from).ok_or_else(bad)?;
+        let e1 = unit(to).ok_or_else(bad)?;
+        let u = arc_end_parameter(from, to, e0, e1)
+            .filter(|u| u.inf() > 0.0 && u.sup().is_finite())
+            .ok_or_else(|| {
+                err(
+                    "arc.to",
+                    "the sweep is too close to 0 or 2π to enclose its end parameter",
+                )
+            })?;
+        let data = PieceData::EArc {
+            c: (iv(&c.x), iv(&c.y)),
+            m: (iv(&m[0][0]), iv(&m[0][1]), iv(&m[1][0]), iv(&m[1][1])),
             e0,
         };
         Ok(Piece::from_iv(data, (0.0, u.sup()), (0.0, u.inf())))
@@ -314,6 +364,21 @@ impl<S: ScalarSqrt + Copy + Casteljau> PieceData<S> {
                 // c + r (cos φ e0 + sin φ e0⊥), e0⊥ = (−e0y, e0x)
                 let x = Jet::constant(c.0) + (cs.scale(e0.0) - sn.scale(e0.1)).scale(*r);
                 let y = Jet::constant(c.1) + (cs.scale(e0.1) + sn.scale(e0.0)).scale(*r);
+                Some((x, y))
+            }
+            PieceData::EArc { c, m, e0 } => {
+                let one = Jet::constant(S::one());
+                let t2 = t * t;
+                let a = one - t2;
+                let den = (one + t2) * (one + t2);
+                let inv = den.recip()?;
+                let cs = (a * a - t2.scale(S::from_i64(4))) * inv;
+                let sn = (t * a).scale(S::from_i64(4)) * inv;
+                // the pre-image point u = cos φ e0 + sin φ e0⊥, then c + M u
+                let u = cs.scale(e0.0) - sn.scale(e0.1);
+                let v = cs.scale(e0.1) + sn.scale(e0.0);
+                let x = Jet::constant(c.0) + u.scale(m.0) + v.scale(m.1);
+                let y = Jet::constant(c.1) + u.scale(m.2) + v.scale(m.3);
                 Some((x, y))
             }
             PieceData::Conv {
