@@ -230,3 +230,91 @@ fn equation_4_1_agrees_on_the_test_cubic_segments() {
     }
     assert_eq!(checked, res.segments.len());
 }
+
+/// (4.1) with an elliptical pen is **false**: both sides certified on every
+/// segment of a G² convolution of the test cubic (pen semi-axes 1/2, 1/5,
+/// θ = π/6), the pen arc `e` as an exact elliptic arc (`certify::EllipseArc`);
+/// on some segment the two enclosures are disjoint (a proven counterexample).
+#[test]
+fn equation_4_1_fails_with_an_ellipse() {
+    use lncert::approx::conv::{Angle, Pen};
+    use lncert::approx::{convolve, exact_bezier, OffsetOptions};
+    use lncert::certify::{hausdorff, hausdorff_ellipse_arc, Config, EllipseArc};
+    use lncert::scalar::rational_from_f64;
+    use lncert::shape::ShapeDesc;
+    let x = lncert::shape::parse_curve(
+        r#"{"bezier": [[-0.95, 0.7], [-0.3, 0.5], [0.3, -2.5], [0.9, -0.2]]}"#,
+    )
+    .unwrap();
+    let pen = Pen::ellipse_within(
+        &frac(1, 2),
+        &frac(1, 5),
+        &Angle::parse("pi/6").unwrap(),
+        1e-6,
+    )
+    .unwrap();
+    let cfg = Config {
+        rel: 1e-6,
+        ..Config::default()
+    };
+    let mut report = Vec::new();
+    for side in [1i8, -1] {
+        let res = convolve(&x, &pen, side, &OffsetOptions::new(q(0, 1), 2e-2)).unwrap();
+        for s in &res.segments {
+            let (t0, t1) = (
+                rational_from_f64(s.t.0).unwrap(),
+                rational_from_f64(s.t.1).unwrap(),
+            );
+            let xs = x[s.piece].restrict(&t0, &t1);
+            let b = exact_bezier(&s.bezier).unwrap();
+            let xe = elevate_by(&xs, b.degree() - xs.degree());
+            let ea = Bezier::new(
+                b.points()
+                    .iter()
+                    .zip(xe.points())
+                    .map(|(p, q)| p.sub(q))
+                    .collect(),
+            );
+            let m = &pen.m;
+            let sg = Rational::from_integer(side.into());
+            let dir = |t: &Rational| {
+                let d = xs.hodograph().eval(t);
+                let n = V2::new(-d.y.clone(), d.x.clone());
+                V2::new(
+                    (&m[0][0] * &n.x + &m[1][0] * &n.y) * &sg,
+                    (&m[0][1] * &n.x + &m[1][1] * &n.y) * &sg,
+                )
+            };
+            let (u0, u1) = (dir(&q(0, 1)), dir(&q(1, 1)));
+            let ccw = cross(&u0, &u1) > q(0, 1);
+            let arc = EllipseArc {
+                center: V2::new(q(0, 1), q(0, 1)),
+                m: m.clone(),
+                from: if ccw { u0.clone() } else { u1.clone() },
+                to: if ccw { u1 } else { u0 },
+            };
+            let lhs = hausdorff(
+                &ShapeDesc::convolution(vec![xs.clone()], m.clone(), side).unwrap(),
+                &ShapeDesc::curve(vec![b]).unwrap(),
+                &cfg,
+            )
+            .unwrap();
+            let rhs = hausdorff_ellipse_arc(&arc, &[ea], &cfg).unwrap();
+            report.push((side, s.t, (lhs.lo, lhs.hi), (rhs.lo, rhs.hi)));
+        }
+    }
+    let disjoint: Vec<_> = report
+        .iter()
+        .filter(|(_, _, l, r)| l.1 < r.0 || r.1 < l.0)
+        .collect();
+    for r in &disjoint {
+        eprintln!(
+            "(4.1) fails: side {}, t ∈ {:?}: d_H(x∗e, x∗eᵃ) ∈ {:?}, d_H(e, eᵃ) ∈ {:?}",
+            r.0, r.1, r.2, r.3
+        );
+    }
+    assert!(
+        !disjoint.is_empty(),
+        "no segment separates the two sides: {report:?}"
+    );
+}
