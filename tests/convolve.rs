@@ -477,3 +477,24 @@ fn ellipse_arc_distances_are_sound() {
         h.lo
     );
 }
+
+/// The cusps of the font 'H' approximant (seed 000 Fig. 7(d)–(i)): at each
+/// reported parameter the stored cubic's tangent turns back (the derivative
+/// just before and just after point in opposite directions), checked in
+/// floats independently of the exact sign-change computation; six, on six
+/// pieces (two on side −, four on side +).
+#[test]
+fn font_h_approximant_cusps_turn_back() {
+    use lncert::approx::OffsetMethod;
+    use lncert::reproduce::seed001::{both_sides_with, ln_pair_cusps};
+    let (m, p) = both_sides_with(0.1, OffsetMethod::LnPair, true).unwrap();
+    let (cm, cp) = (ln_pair_cusps(&m, -1), ln_pair_cusps(&p, 1));
+    assert_eq!((cm.len(), cp.len()), (2, 4));
+    for (r, cs) in [(&m, &cm), (&p, &cp)] {
+        for (i, s) in cs.iter() {
+            let d = r.segments[*i].bezier.hodograph();
+            let (a, b) = (d.eval(&(s - 0.02)), d.eval(&(s + 0.02)));
+            assert!(a.dot(&b) < 0.0, "segment {i} at {s}: {a:?} · {b:?} ≥ 0");
+        }
+    }
+}

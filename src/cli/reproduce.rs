@@ -38,6 +38,7 @@ pub fn run(a: &ReproduceArgs) -> Result<i32, CliError> {
         Some(dir) => {
             let mut w = svg::write_fig5(dir)?;
             w.push(write_seed001_fig2a(dir)?);
+            w.push(write_seed000_fig7a(dir)?);
             w
         }
         None => Vec::new(),
@@ -116,6 +117,22 @@ fn write_seed001_fig2a(dir: &std::path::Path) -> Result<PathBuf, CliError> {
     let pen = seed001::pen(1e-12).map_err(fail)?;
     let svg = super::convolve::render(&x, &pen, &[("minus", minus, 0.0), ("plus", plus, 0.0)]);
     let path = dir.join("seed001_fig2a.svg");
+    std::fs::write(&path, svg)
+        .map_err(|e| super::args::bad("--out", format!("cannot write {}: {e}", path.display())))?;
+    Ok(path)
+}
+
+/// Seed 000 Fig. 7(a): the font 'H' by cubic LN pairs at TOL 0.1 (the paper's
+/// acceptance), both sides, with the exact convolution (sampled).
+fn write_seed000_fig7a(dir: &std::path::Path) -> Result<PathBuf, CliError> {
+    use lncert::approx::OffsetMethod;
+    use lncert::reproduce::seed001;
+    let fail = |e: String| super::args::bad("--out", format!("seed 000 Fig. 7(a): {e}"));
+    let (minus, plus) = seed001::both_sides_with(0.1, OffsetMethod::LnPair, true).map_err(fail)?;
+    let x = seed001::nonic().map_err(fail)?;
+    let pen = seed001::pen(1e-12).map_err(fail)?;
+    let svg = super::convolve::render(&x, &pen, &[("minus", minus, 0.0), ("plus", plus, 0.0)]);
+    let path = dir.join("seed000_fig7a.svg");
     std::fs::write(&path, svg)
         .map_err(|e| super::args::bad("--out", format!("cannot write {}: {e}", path.display())))?;
     Ok(path)
