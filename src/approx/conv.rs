@@ -476,21 +476,7 @@ pub fn convolution_approximant_f64(
         alpha0: lambda_at_end(x, false, q, sigma)?,
         alpha3: lambda_at_end(x, true, q, sigma)?,
     };
-    let m = g2::moments(x);
-    let (v1, v2, v) = g2::system(&ends, &m);
-    let det = v1.cross(&v2);
-    let scale = v1.norm2().sqrt() * v2.norm2().sqrt();
-    let alpha = if det.abs() > g2::SINGULAR_SYSTEM_REL * scale {
-        g2::solve_alpha(&ends, &m)?
-    } else {
-        let s = v1.add(&v2);
-        let s2 = s.norm2();
-        let a = if s2 > 0.0 { v.dot(&s) / s2 } else { 0.0 };
-        [ends.alpha0, a, a, ends.alpha3]
-    };
-    if !alpha.iter().all(|a| a.is_finite()) {
-        return None;
-    }
+    let alpha = g2::solve_alpha_f64(&ends, &g2::moments(x))?;
     let ea = g2::normal_approximant(x, e0, &alpha);
     let xe = g2::elevate_by(x, 3);
     let mut pts: Vec<V2<f64>> = xe

@@ -265,26 +265,32 @@ pub const SINGULAR_SYSTEM_REL: f64 = 1e-9;
 /// ```
 pub fn offset_approximant_f64(x: &Bezier<f64>, d: f64) -> Option<(Bezier<f64>, [f64; 4])> {
     let e = ends(x)?;
-    let m = moments(x);
-    let (v1, v2, v) = system(&e, &m);
+    let alpha = solve_alpha_f64(&e, &moments(x))?;
+    let o = combine(x, &e.n0, &alpha, &d);
+    o.points()
+        .iter()
+        .all(|p| p.x.is_finite() && p.y.is_finite())
+        .then_some((o, alpha))
+}
+
+/// Eq. (3.4) in floats with the fallback of [`offset_approximant_f64`]: where
+/// the system is singular or ill-conditioned (`|v₁ × v₂| ≤ 1e-9 |v₁||v₂|`),
+/// `α₁ = α₂` from the least-squares solution of `(v₁ + v₂) a = v` (`0` for an
+/// exactly straight piece). `None` when a coefficient is not finite. Shared by
+/// the offsets and seed 001's convolutions (`super::conv`).
+pub fn solve_alpha_f64(e: &G2Ends<f64>, m: &[V2<f64>; 4]) -> Option<[f64; 4]> {
+    let (v1, v2, v) = system(e, m);
     let det = v1.cross(&v2);
     let scale = v1.norm2().sqrt() * v2.norm2().sqrt();
     let alpha = if det.abs() > SINGULAR_SYSTEM_REL * scale {
-        solve_alpha(&e, &m)?
+        solve_alpha(e, m)?
     } else {
         let s = v1.add(&v2);
         let s2 = s.norm2();
         let a = if s2 > 0.0 { v.dot(&s) / s2 } else { 0.0 };
         [e.alpha0, a, a, e.alpha3]
     };
-    if !alpha.iter().all(|a| a.is_finite()) {
-        return None;
-    }
-    let o = combine(x, &e.n0, &alpha, &d);
-    o.points()
-        .iter()
-        .all(|p| p.x.is_finite() && p.y.is_finite())
-        .then_some((o, alpha))
+    alpha.iter().all(|a| a.is_finite()).then_some(alpha)
 }
 
 #[cfg(test)]

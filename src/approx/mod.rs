@@ -428,16 +428,28 @@ fn check_options(
     }
     let shape =
         crate::shape::checked_offset(curve.to_vec(), opts.distance.clone(), "curve", "distance")?;
-    let scale = shape.scale();
+    check_limits(opts, shape.scale(), 0.0)?;
+    Ok(shape)
+}
+
+/// The checks shared by [`offset`] and [`convolve`]: a finite positive
+/// tolerance that, less `margin` (the pen's rotation margin; 0 for offsets),
+/// is at least [`MIN_REL_TOL`] × (1 + scale), and sane limits.
+fn check_limits(opts: &OffsetOptions, scale: f64, margin: f64) -> Result<(), OffsetError> {
     if !(opts.tol.is_finite() && opts.tol > 0.0) {
         return Err(bad("tol", "must be a finite number > 0"));
     }
     let min = MIN_REL_TOL * (1.0 + scale);
-    if opts.tol < min {
+    if opts.tol - margin < min {
+        let less = if margin > 0.0 {
+            format!(" (less the pen's rotation margin {margin:e})")
+        } else {
+            String::new()
+        };
         return Err(bad(
             "tol",
             format!(
-                "{:e} is below {:e} = 1e-11 × (1 + coordinate scale): float control points cannot resolve it",
+                "{:e}{less} is below {:e} = 1e-11 × (1 + coordinate scale): float control points cannot resolve it",
                 opts.tol, min
             ),
         ));
@@ -448,7 +460,7 @@ fn check_options(
     if opts.max_segments == 0 || opts.max_boxes == 0 {
         return Err(bad("max_segments", "limits must be ≥ 1"));
     }
-    Ok(shape)
+    Ok(())
 }
 
 /// Initial spans of one piece: split at inflections and at the `extra` cuts
@@ -852,27 +864,8 @@ pub fn convolve(
             .to_string();
         bad(field, e.reason)
     })?;
-    let scale = shape.scale();
+    check_limits(opts, shape.scale(), pen.margin)?;
     let certified_tol = opts.tol - pen.margin;
-    if !(opts.tol.is_finite() && opts.tol > 0.0) {
-        return Err(bad("tol", "must be a finite number > 0"));
-    }
-    let min = MIN_REL_TOL * (1.0 + scale);
-    if certified_tol < min {
-        return Err(bad(
-            "tol",
-            format!(
-                "{:e} (less the pen's rotation margin {:e}) is below {:e} = 1e-11 × (1 + coordinate scale)",
-                opts.tol, pen.margin, min
-            ),
-        ));
-    }
-    if opts.max_depth > 40 {
-        return Err(bad("max_depth", "must be ≤ 40"));
-    }
-    if opts.max_segments == 0 || opts.max_boxes == 0 {
-        return Err(bad("max_segments", "limits must be ≥ 1"));
-    }
     let cusps: Vec<conv::ConvCusp> = curve
         .par_iter()
         .enumerate()

@@ -141,31 +141,7 @@ impl Piece {
     }
 
     fn arc(a: &ArcDesc) -> Result<Piece, CertifyError> {
-        let unit = |v: &V2<Rational>| -> Option<(Interval, Interval)> {
-            let (x, y) = (iv(&v.x), iv(&v.y));
-            let n = ScalarSqrt::sqrt(&(x.sqr() + y.sqr()))?;
-            Some((x.div(&n)?, y.div(&n)?))
-        };
-        let bad = || {
-            err(
-                "arc",
-                "the directions cannot be normalised in interval arithmetic",
-            )
-        };
-        let e0 = unit(&a.from).ok_or_else(bad)?;
-        let e1 = unit(&a.to).ok_or_else(bad)?;
-        let u = arc_end_parameter(&a.from, &a.to, e0, e1).ok_or_else(|| {
-            err(
-                "arc.to",
-                "the sweep is too close to 0 or 2π to enclose its end parameter",
-            )
-        })?;
-        if !(u.inf() > 0.0 && u.sup().is_finite()) {
-            return Err(err(
-                "arc.to",
-                "the sweep is too close to 0 or 2π to enclose its end parameter",
-            ));
-        }
+        let (e0, u) = arc_frame(&a.from, &a.to)?;
         let data = PieceData::Arc {
             c: (iv(&a.center.x), iv(&a.center.y)),
             r: iv(&a.radius),
@@ -183,27 +159,7 @@ impl Piece {
         from: &V2<Rational>,
         to: &V2<Rational>,
     ) -> Result<Piece, CertifyError> {
-        let unit = |v: &V2<Rational>| -> Option<(Interval, Interval)> {
-            let (x, y) = (iv(&v.x), iv(&v.y));
-            let n = ScalarSqrt::sqrt(&(x.sqr() + y.sqr()))?;
-            Some((x.div(&n)?, y.div(&n)?))
-        };
-        let bad = || {
-            err(
-                "arc",
-                "the directions cannot be normalised in interval arithmetic",
-            )
-        };
-        let e0 = unit(from).ok_or_else(bad)?;
-        let e1 = unit(to).ok_or_else(bad)?;
-        let u = arc_end_parameter(from, to, e0, e1)
-            .filter(|u| u.inf() > 0.0 && u.sup().is_finite())
-            .ok_or_else(|| {
-                err(
-                    "arc.to",
-                    "the sweep is too close to 0 or 2π to enclose its end parameter",
-                )
-            })?;
+        let (e0, u) = arc_frame(from, to)?;
         let data = PieceData::EArc {
             c: (iv(&c.x), iv(&c.y)),
             m: (iv(&m[0][0]), iv(&m[0][1]), iv(&m[1][0]), iv(&m[1][1])),
@@ -211,6 +167,50 @@ impl Piece {
         };
         Ok(Piece::from_iv(data, (0.0, u.sup()), (0.0, u.inf())))
     }
+}
+
+/// The unit start direction `e0` (enclosed) and the end parameter
+/// `tan(Θ/4)` (enclosed, `> 0` and finite) of the counter-clockwise arc from
+/// the direction `from` to `to`: shared by circular and elliptic arcs.
+fn arc_frame(
+    from: &V2<Rational>,
+    to: &V2<Rational>,
+) -> Result<((Interval, Interval), Interval), CertifyError> {
+    let unit = |v: &V2<Rational>| -> Option<(Interval, Interval)> {
+        let (x, y) = (iv(&v.x), iv(&v.y));
+        let n = ScalarSqrt::sqrt(&(x.sqr() + y.sqr()))?;
+        Some((x.div(&n)?, y.div(&n)?))
+    };
+    let bad = || {
+        err(
+            "arc",
+            "the directions cannot be normalised in interval arithmetic",
+        )
+    };
+    let e0 = unit(from).ok_or_else(bad)?;
+    let e1 = unit(to).ok_or_else(bad)?;
+    let u = arc_end_parameter(from, to, e0, e1)
+        .filter(|u| u.inf() > 0.0 && u.sup().is_finite())
+        .ok_or_else(|| {
+            err(
+                "arc.to",
+                "the sweep is too close to 0 or 2π to enclose its end parameter",
+            )
+        })?;
+    Ok((e0, u))
+}
+
+/// `(cos φ, sin φ)` of `φ = 4 atan t` as jets: the rational parametrisation
+/// of the unit circle that circular and elliptic arcs share.
+fn unit_arc<S: ScalarSqrt + Copy>(t: Jet<S>) -> Option<(Jet<S>, Jet<S>)> {
+    let one = Jet::constant(S::one());
+    let t2 = t * t;
+    let a = one - t2;
+    let inv = ((one + t2) * (one + t2)).recip()?;
+    Some((
+        (a * a - t2.scale(S::from_i64(4))) * inv,
+        (t * a).scale(S::from_i64(4)) * inv,
+    ))
 }
 
 /// Enclosures of the control points of `b` and of its first three hodographs:
@@ -354,26 +354,14 @@ impl<S: ScalarSqrt + Copy + Casteljau> PieceData<S> {
                 Some(chain(p, p1, p2, t))
             }
             PieceData::Arc { c, r, e0 } => {
-                let one = Jet::constant(S::one());
-                let t2 = t * t;
-                let a = one - t2;
-                let den = (one + t2) * (one + t2);
-                let inv = den.recip()?;
-                let cs = (a * a - t2.scale(S::from_i64(4))) * inv;
-                let sn = (t * a).scale(S::from_i64(4)) * inv;
+                let (cs, sn) = unit_arc(t)?;
                 // c + r (cos φ e0 + sin φ e0⊥), e0⊥ = (−e0y, e0x)
                 let x = Jet::constant(c.0) + (cs.scale(e0.0) - sn.scale(e0.1)).scale(*r);
                 let y = Jet::constant(c.1) + (cs.scale(e0.1) + sn.scale(e0.0)).scale(*r);
                 Some((x, y))
             }
             PieceData::EArc { c, m, e0 } => {
-                let one = Jet::constant(S::one());
-                let t2 = t * t;
-                let a = one - t2;
-                let den = (one + t2) * (one + t2);
-                let inv = den.recip()?;
-                let cs = (a * a - t2.scale(S::from_i64(4))) * inv;
-                let sn = (t * a).scale(S::from_i64(4)) * inv;
+                let (cs, sn) = unit_arc(t)?;
                 // the pre-image point u = cos φ e0 + sin φ e0⊥, then c + M u
                 let u = cs.scale(e0.0) - sn.scale(e0.1);
                 let v = cs.scale(e0.1) + sn.scale(e0.0);
