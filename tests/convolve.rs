@@ -276,15 +276,98 @@ fn cli_both_sides_with_certificates_that_verify() {
         assert_eq!(s["degree"], 12);
     }
     assert!(std::fs::read_to_string(&svg).unwrap().starts_with("<svg"));
-    for side in ["plus", "minus"] {
-        let mut c = cert.as_os_str().to_owned();
-        c.push(format!(".{side}.json"));
-        let v = lncert(&["verify", c.to_str().unwrap()]);
-        assert_eq!(
-            v.status.code(),
-            Some(0),
-            "{side}: {}",
-            String::from_utf8_lossy(&v.stdout)
+    // one certificate covers both sides: A is the union of the two exact
+    // convolutions, B the union of the two splines
+    let v = lncert(&["verify", cert.to_str().unwrap()]);
+    let text = String::from_utf8_lossy(&v.stdout);
+    assert_eq!(v.status.code(), Some(0), "{text}");
+    assert!(text.contains("the union of 2 shapes"), "{text}");
+    assert!(
+        text.contains("(side +1)") && text.contains("(side -1)"),
+        "{text}"
+    );
+    // a side re-labelled in the certificate is a false claim: refused
+    let doc = std::fs::read_to_string(&cert).unwrap();
+    let forged = doc.replacen("\"side\":1}", "\"side\":-1}", 1);
+    assert_ne!(forged, doc);
+    let f = cert.with_file_name("forged.json");
+    std::fs::write(&f, forged).unwrap();
+    let v = lncert(&["verify", f.to_str().unwrap()]);
+    assert_eq!(
+        v.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&v.stdout)
+    );
+}
+
+/// Seed 000 §5's subdivision rules (a), (b), (c) all end in certified
+/// results, and the k-piece Gauss-map split leaves every initial span turning
+/// by less than π, with equal turns, against an independent unwrapped angle
+/// from 8 192 samples.
+#[test]
+fn subdivision_rules_and_the_k_piece_split() {
+    use lncert::approx::lnpair::{k_piece_split, Subdivision};
+    use lncert::approx::OffsetMethod;
+    let x = nonic();
+    let pen = Pen::ellipse(&q("0.7"), &q("0.3"), &Angle::Degrees(q("30"))).unwrap();
+    let mut counts = Vec::new();
+    for rule in [
+        Subdivision::MidAngle,
+        Subdivision::Chord,
+        Subdivision::Weighted,
+    ] {
+        let mut opts = OffsetOptions::new(q("0"), 1e-2);
+        opts.method = OffsetMethod::LnPair;
+        opts.subdivision = rule;
+        let r = convolve(&x, &pen, 1, &opts).unwrap();
+        assert!(
+            r.reached() && r.certified_hi <= 1e-2,
+            "rule {}",
+            rule.name()
+        );
+        check_against_samples(&x, &pen, 1, &r);
+        counts.push(r.segments.len());
+    }
+    // the rules split differently (they are not one rule under three names)
+    assert!(
+        counts[0] != counts[1] || counts[1] != counts[2],
+        "{counts:?}"
+    );
+    // the k-piece split of the span after the inflection
+    let xf = x[0].map(|v| v.approx());
+    let infl = lncert::approx::prep::inflections(&x[0]);
+    assert_eq!(infl.len(), 1);
+    let (a, b) = (infl[0], 1.0);
+    let sub = xf.restrict(&a, &b);
+    let h = sub.hodograph();
+    let angle = |t: f64| {
+        // unwrapped turn from 0 to t over fine samples
+        let n = 8192;
+        let mut acc = 0.0f64;
+        let mut prev = h.eval(&0.0);
+        for j in 1..=n {
+            let v = h.eval(&(t * j as f64 / n as f64));
+            acc += prev.cross(&v).atan2(prev.dot(&v));
+            prev = v;
+        }
+        acc
+    };
+    let total = angle(1.0).abs();
+    assert!(total > std::f64::consts::PI, "the span turns by {total}");
+    let ts = k_piece_split(&sub, std::f64::consts::PI);
+    let k = ts.len() + 1;
+    assert_eq!(k, (total / std::f64::consts::PI).floor() as usize + 1);
+    let mut ends = vec![0.0];
+    ends.extend(ts.iter().copied());
+    ends.push(1.0);
+    for w in ends.windows(2) {
+        let turn = (angle(w[1]) - angle(w[0])).abs();
+        assert!(turn < std::f64::consts::PI, "{w:?} turns by {turn}");
+        assert!(
+            (turn - total / k as f64).abs() < 1e-3,
+            "{w:?}: {turn} vs {}",
+            total / k as f64
         );
     }
 }
@@ -329,6 +412,15 @@ fn cli_bad_input_exits_2_naming_the_flag() {
             "--method",
         ),
         (vec!["--tol", "1e-3"], "--ellipse"),
+        (
+            vec!["--ellipse", "1,0.5", "--tol", "1e-3", "--subdivision", "d"],
+            "--subdivision",
+        ),
+        (
+            // the rules are for LN pairs; G² spans are halved
+            vec!["--ellipse", "1,0.5", "--tol", "1e-3", "--subdivision", "c"],
+            "--subdivision",
+        ),
     ] {
         let mut all = vec!["convolve", c];
         all.extend(args.iter().copied());

@@ -58,6 +58,12 @@ const EXPECTED: &[(&str, &str, &str)] = &[
     // well-formed certificates of false claims: the recomputation refuses them
     ("false_tol.json", "directions[0].boxes[1]", "exceeds the tolerance"),
     ("box_deleted.json", "directions[0].boxes[2]", "gap or overlap"),
+    // 6. unions: strict reading, and the pieces proven against their own sides
+    ("union_empty.json", "a.union", "1 or more"),
+    ("union_nested.json", "a.union[0].union", "unknown key"),
+    ("union_member_deleted.json", "maps[1].piece", "out of range"),
+    ("union_members_swapped.json", "maps[0].boxes[0]", "exceeds the tolerance"),
+    ("union_side_flipped.json", "maps[0].boxes[0]", "exceeds the tolerance"),
 ];
 
 fn dir() -> PathBuf {

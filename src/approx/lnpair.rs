@@ -285,24 +285,62 @@ pub fn paper_error(dh_p_pa: f64, arc: f64) -> f64 {
     }
 }
 
-/// Subdivision point (a) of seed 000 §5: the parameter where the tangent
-/// direction bisects the end directions, `arg p′(t) = (arg p′(0) + arg p′(1))/2`,
-/// found by bisection on `p′(t) × d` (float; any split is sound). Falls back to
-/// `1/2` when the sign does not change. Rounded to a multiple of `2⁻²⁰` in
-/// `[1/8, 7/8]` so that the exact pieces stay small.
-pub fn mid_angle_param(x: &Bezier<f64>) -> f64 {
+/// Seed 000 §5's subdivision rules for an LN-pair span that missed the
+/// tolerance: where to split it. Every rule is a float heuristic (any split is
+/// sound: the halves are certified afresh); the split parameter is rounded to
+/// a multiple of `2⁻²⁰` in `[1/8, 7/8]` of the span, so that the exact pieces
+/// stay small and the recursion always makes progress.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Subdivision {
+    /// (a) where the tangent bisects the end directions,
+    /// `arg p′(t) = (arg p′(t₀) + arg p′(t₁))/2` ([`mid_angle_param`]).
+    #[default]
+    MidAngle,
+    /// (b) where the tangent is parallel to the approximant's chord,
+    /// `arg p′(t) = arg(p(t₁) − p(t₀) + q(s₁) − q(s₀))` ([`chord_param`]).
+    Chord,
+    /// (c) the angles where `d_H(p, pa)` and `d_H(q, qa)` occur, weighted by
+    /// the two distances ([`weighted_param`]); the rule the paper used for the
+    /// font 'H'.
+    Weighted,
+}
+
+impl Subdivision {
+    /// The CLI name: `a`, `b` or `c`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Subdivision::MidAngle => "a",
+            Subdivision::Chord => "b",
+            Subdivision::Weighted => "c",
+        }
+    }
+    /// Parses a CLI name (`a`, `b`, `c`, or `mid-angle`, `chord`, `weighted`).
+    pub fn parse(s: &str) -> Option<Self> {
+        match s {
+            "a" | "mid-angle" => Some(Subdivision::MidAngle),
+            "b" | "chord" => Some(Subdivision::Chord),
+            "c" | "weighted" => Some(Subdivision::Weighted),
+            _ => None,
+        }
+    }
+}
+
+fn unit(v: &V2<f64>) -> V2<f64> {
+    let l = v.norm2().sqrt();
+    V2::new(v.x / l, v.y / l)
+}
+
+/// The parameter in `[0, 1]` where `x′(t)` is parallel to `dir` (either
+/// orientation), by bisection on `x′(t) × dir`; `None` when the sign does not
+/// change across the span (or a value is not finite). Rounded as
+/// [`Subdivision`] says.
+pub fn angle_param(x: &Bezier<f64>, dir: &V2<f64>) -> Option<f64> {
     let h = x.hodograph();
-    let hp = h.points();
-    let unit = |v: &V2<f64>| {
-        let l = v.norm2().sqrt();
-        V2::new(v.x / l, v.y / l)
-    };
-    let dir = unit(&unit(&hp[0]).add(&unit(&hp[hp.len() - 1])));
-    let f = |t: f64| h.eval(&t).cross(&dir);
+    let f = |t: f64| h.eval(&t).cross(dir);
     let (mut a, mut b) = (0.0, 1.0);
     let (fa, fb) = (f(a), f(b));
     if !(fa.is_finite() && fb.is_finite()) || fa * fb >= 0.0 {
-        return 0.5;
+        return None;
     }
     for _ in 0..60 {
         let m = 0.5 * (a + b);
@@ -312,6 +350,175 @@ pub fn mid_angle_param(x: &Bezier<f64>) -> f64 {
             b = m;
         }
     }
-    let t = (0.5 * (a + b)).clamp(0.125, 0.875);
+    Some(round_split(0.5 * (a + b)))
+}
+
+fn round_split(t: f64) -> f64 {
+    let t = t.clamp(0.125, 0.875);
     (t * 1048576.0).round() / 1048576.0
+}
+
+/// Subdivision point (a) of seed 000 §5: the parameter where the tangent
+/// direction bisects the end directions, `arg p′(t) = (arg p′(0) + arg p′(1))/2`
+/// ([`angle_param`]); `1/2` when the sign does not change.
+pub fn mid_angle_param(x: &Bezier<f64>) -> f64 {
+    let hp = x.hodograph().points().to_vec();
+    let dir = unit(&unit(&hp[0]).add(&unit(&hp[hp.len() - 1])));
+    angle_param(x, &dir).unwrap_or(0.5)
+}
+
+/// Subdivision point (b) of seed 000 §5: where the tangent of `x` is parallel
+/// to the chord of the approximant `pa + qa` (`p(t₁) − p(t₀) + q(s₁) − q(s₀)`,
+/// the sum of the chords of the curve and of its pen or offset-circle
+/// segment); rule (a) when that chord is zero or no tangent is parallel to it.
+pub fn chord_param(x: &Bezier<f64>, pair: &LnPairPiece) -> f64 {
+    let p = pair.offset.points();
+    let chord = p[p.len() - 1].sub(&p[0]);
+    if !(chord.norm2() > 0.0) {
+        return mid_angle_param(x);
+    }
+    angle_param(x, &chord).unwrap_or_else(|| mid_angle_param(x))
+}
+
+/// Samples of the one-sided distance from `pts` to the curve `b`: the largest
+/// distance from a point of `pts` to the polygon through 129 points of `b`,
+/// and its index. A float estimate (a heuristic for where to split).
+fn farthest(pts: &[V2<f64>], b: &Bezier<f64>) -> (f64, usize) {
+    let poly: Vec<V2<f64>> = (0..=128).map(|j| b.eval(&(j as f64 / 128.0))).collect();
+    let dist = |p: &V2<f64>| {
+        poly.windows(2)
+            .map(|w| {
+                let e = w[1].sub(&w[0]);
+                let l2 = e.norm2();
+                let s = if l2 > 0.0 {
+                    (p.sub(&w[0]).dot(&e) / l2).clamp(0.0, 1.0)
+                } else {
+                    0.0
+                };
+                p.sub(&w[0].add(&e.scale(&s))).norm2()
+            })
+            .fold(f64::INFINITY, f64::min)
+            .sqrt()
+    };
+    pts.iter()
+        .enumerate()
+        .map(|(i, p)| (dist(p), i))
+        .fold((0.0, 0), |m, d| if d.0 > m.0 { d } else { m })
+}
+
+/// Subdivision point (c) of seed 000 §5, the paper's rule for the font 'H':
+/// the tangent angle `(d_p θ(t_p) + d_q θ(t_q)) / (d_p + d_q)`, where `d_p`
+/// is the distance from `p` to `pa` attained at `t_p`, `d_q` the distance from
+/// the pen (or offset-circle) segment `q` to `qa` attained at the pen point
+/// compatible with `t_q`, and `θ(t)` the angle of `p′(t)` measured from
+/// `p′(0)`. `q(t)` is the exact pen point compatible with `x(t)` (`d N(t)` for
+/// an offset). The distances are float estimates over 33 samples of `p` and
+/// `q` (one direction), a heuristic; rule (a) when both are zero.
+pub fn weighted_param(
+    x: &Bezier<f64>,
+    pair: &LnPairPiece,
+    q: &dyn Fn(f64) -> Option<V2<f64>>,
+) -> f64 {
+    let ts: Vec<f64> = (0..=32).map(|k| k as f64 / 32.0).collect();
+    let ps: Vec<V2<f64>> = ts.iter().map(|t| x.eval(t)).collect();
+    let Some(qs) = ts.iter().map(|t| q(*t)).collect::<Option<Vec<_>>>() else {
+        return mid_angle_param(x);
+    };
+    let (dp, ip) = farthest(&ps, &pair.pa);
+    let (dq, iq) = farthest(&qs, &pair.ca);
+    let w = dp + dq;
+    if !(w > 0.0 && w.is_finite()) {
+        return mid_angle_param(x);
+    }
+    let h = x.hodograph();
+    let h0 = unit(&h.eval(&0.0));
+    let theta = |t: f64| {
+        let v = h.eval(&t);
+        h0.cross(&v).atan2(h0.dot(&v))
+    };
+    let target = (dp * theta(ts[ip]) + dq * theta(ts[iq])) / w;
+    let dir = V2::new(
+        h0.x * target.cos() - h0.y * target.sin(),
+        h0.x * target.sin() + h0.y * target.cos(),
+    );
+    angle_param(x, &dir).unwrap_or_else(|| mid_angle_param(x))
+}
+
+const N: usize = 256;
+
+/// The hodograph at `N + 1` equally spaced parameters and the cumulative
+/// signed turn of `x′` at each (floats); `None` when `x′` vanishes or is not
+/// finite at a sample.
+fn turn_samples(x: &Bezier<f64>) -> Option<(Vec<V2<f64>>, Vec<f64>)> {
+    let h = x.hodograph();
+    let vs: Vec<V2<f64>> = (0..=N).map(|j| h.eval(&(j as f64 / N as f64))).collect();
+    if vs
+        .iter()
+        .any(|v| !(v.norm2() > 0.0 && v.norm2().is_finite()))
+    {
+        return None;
+    }
+    let mut cum = vec![0.0f64];
+    for w in vs.windows(2) {
+        let last = cum[cum.len() - 1];
+        cum.push(last + w[0].cross(&w[1]).atan2(w[0].dot(&w[1])));
+    }
+    Some((vs, cum))
+}
+
+/// The signed total turn `arg x′(1) − arg x′(0)` of a span without
+/// inflections, summed over 256 samples of the hodograph (a float estimate).
+pub fn total_turn(x: &Bezier<f64>) -> Option<f64> {
+    turn_samples(x).map(|(_, c)| c[N])
+}
+
+/// Seed 000 §5's k-piece split of a convex span (no inflection) whose Gauss
+/// map is longer than `max_turn`: `k` the smallest integer with
+/// `Δ/k < max_turn` (`Δ` the total turn of `x′`), and the split parameters
+/// `tᵢ` with `arg x′(tᵢ) = arg x′(0) + (i/k) Δ`, `i = 1 … k − 1`, in `(0, 1)`
+/// (floats: a heuristic; the spans are certified afterwards). The turn is
+/// summed over 256 samples of the hodograph. Empty when `Δ < max_turn` or a
+/// value is not finite.
+pub fn k_piece_split(x: &Bezier<f64>, max_turn: f64) -> Vec<f64> {
+    let h = x.hodograph();
+    let Some((vs, cum)) = turn_samples(x) else {
+        return Vec::new();
+    };
+    let total = cum[N];
+    if !(total.abs() >= max_turn) || !total.is_finite() {
+        return Vec::new();
+    }
+    let k = (total.abs() / max_turn).floor() as usize + 1;
+    let mut out = Vec::new();
+    for i in 1..k {
+        let target = total * i as f64 / k as f64;
+        // the sample cell where the cumulative turn passes the target
+        let Some(j) = (0..N).find(|&j| (cum[j] - target) * (cum[j + 1] - target) <= 0.0) else {
+            continue;
+        };
+        // inside the cell the turn is below π: bisect on the angle from vs[j]
+        let rest = target - cum[j];
+        let dir = V2::new(
+            vs[j].x * rest.cos() - vs[j].y * rest.sin(),
+            vs[j].x * rest.sin() + vs[j].y * rest.cos(),
+        );
+        let f = |t: f64| h.eval(&t).cross(&dir);
+        let (mut a, mut b) = (j as f64 / N as f64, (j + 1) as f64 / N as f64);
+        let fa = f(a);
+        if fa * f(b) < 0.0 {
+            for _ in 0..60 {
+                let m = 0.5 * (a + b);
+                if f(m) * fa > 0.0 {
+                    a = m;
+                } else {
+                    b = m;
+                }
+            }
+        }
+        let t = ((0.5 * (a + b)) * 1048576.0).round() / 1048576.0;
+        if t > 0.0 && t < 1.0 && out.last().is_none_or(|l| t > *l) {
+            out.push(t);
+        }
+    }
+    out
 }

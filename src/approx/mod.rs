@@ -121,6 +121,10 @@ pub struct OffsetOptions {
     /// [`SegmentProof::path`] says which proved it. Either way the proofs are
     /// kept for [`union_certificate`].
     pub search_only: bool,
+    /// Where an LN-pair span that missed the tolerance is split: seed 000
+    /// §5's rule (a), (b) or (c) ([`lnpair::Subdivision`]; default (a), the
+    /// mid-angle). G² spans are halved.
+    pub subdivision: lnpair::Subdivision,
 }
 
 impl OffsetOptions {
@@ -137,6 +141,7 @@ impl OffsetOptions {
             accept_paper: false,
             certify: true,
             search_only: false,
+            subdivision: lnpair::Subdivision::MidAngle,
         }
     }
 }
@@ -464,9 +469,12 @@ fn check_limits(opts: &OffsetOptions, scale: f64, margin: f64) -> Result<(), Off
 }
 
 /// Initial spans of one piece: split at inflections and at the `extra` cuts
-/// (the cusps of a convolution side), then halve until the Gauss map of each
-/// span turns by less than 0.9π ([`prep::MAX_TURN`]).
-fn initial_spans(x: &Bezier<Rational>, extra: &[f64]) -> Vec<(f64, f64)> {
+/// (the cusps of a convolution side); then, for G², halve until the Gauss map
+/// of each span turns by less than 0.9π ([`prep::MAX_TURN`]), and for LN
+/// pairs split a span turning by `Δ ≥ π` into the `k` pieces of equal turn
+/// of seed 000 §5 ([`lnpair::k_piece_split`], `k` the smallest integer with
+/// `Δ/k < π`).
+fn initial_spans(x: &Bezier<Rational>, extra: &[f64], method: OffsetMethod) -> Vec<(f64, f64)> {
     let mut cuts = vec![0.0];
     cuts.extend(prep::inflections(x));
     cuts.extend(extra.iter().copied().filter(|t| *t > 0.0 && *t < 1.0));
@@ -475,6 +483,20 @@ fn initial_spans(x: &Bezier<Rational>, extra: &[f64]) -> Vec<(f64, f64)> {
     cuts.dedup();
     let mut out = Vec::new();
     for w in cuts.windows(2) {
+        if method == OffsetMethod::LnPair {
+            let mut ends = vec![w[0]];
+            if let Some(sub) = span_f64(x, (w[0], w[1])) {
+                let k = lnpair::k_piece_split(&sub, std::f64::consts::PI);
+                ends.extend(k.iter().map(|u| w[0] + (w[1] - w[0]) * u));
+            }
+            ends.push(w[1]);
+            out.extend(
+                ends.windows(2)
+                    .filter(|e| e[0] < e[1])
+                    .map(|e| (e[0], e[1])),
+            );
+            continue;
+        }
         let mut stack = vec![(w[0], w[1], 0u32)];
         while let Some((a, b, depth)) = stack.pop() {
             let sub = span_f64(x, (a, b));
@@ -573,7 +595,7 @@ fn certify_segment(
     let split = 0.5;
     let d = kernel.reach();
     let Some((bez, pair)) = construct(opts.method, x, task.t, kernel) else {
-        return (None, split_point(opts.method, x, task.t), false);
+        return (None, split_point(opts, x, task.t, kernel, None), false);
     };
     // The pieces of the span's exact offset (`ShapeDesc::Offset` of the exact
     // restriction of `x`) and of the segment, enclosed without rationals.
@@ -600,7 +622,7 @@ fn certify_segment(
         let e = crate::certify::sampled_pieces(&pa, &pb, 32);
         return (
             Some(unproven(Some(e))),
-            split_point(opts.method, x, task.t),
+            split_point(opts, x, task.t, kernel, pair.as_ref()),
             false,
         );
     }
@@ -614,7 +636,7 @@ fn certify_segment(
     {
         return (
             Some(unproven(None)),
-            split_point(opts.method, x, task.t),
+            split_point(opts, x, task.t, kernel, pair.as_ref()),
             false,
         );
     }
@@ -667,13 +689,49 @@ fn certify_segment(
         estimate: None,
     };
     let stuck = r.incomplete() && r.hi > opts.tol && r.lo * 64.0 < opts.tol;
-    (Some(seg), split_point(opts.method, x, task.t), stuck)
+    (
+        Some(seg),
+        split_point(opts, x, task.t, kernel, pair.as_ref()),
+        stuck,
+    )
 }
 
-fn split_point(method: OffsetMethod, x: &Bezier<Rational>, t: (f64, f64)) -> f64 {
-    match method {
-        OffsetMethod::G2 => 0.5,
-        OffsetMethod::LnPair => span_f64(x, t).map_or(0.5, |s| lnpair::mid_angle_param(&s)),
+/// Where to split a span that missed the tolerance, as a fraction of it: the
+/// middle for G², the LN-pair rule of `opts.subdivision` (its pair when one was
+/// built; rule (a) otherwise).
+fn split_point(
+    opts: &OffsetOptions,
+    x: &Bezier<Rational>,
+    t: (f64, f64),
+    kernel: &Kernel,
+    pair: Option<&lnpair::LnPairPiece>,
+) -> f64 {
+    if opts.method == OffsetMethod::G2 {
+        return 0.5;
+    }
+    let Some(s) = span_f64(x, t) else {
+        return 0.5;
+    };
+    match (opts.subdivision, pair) {
+        (lnpair::Subdivision::Chord, Some(p)) => lnpair::chord_param(&s, p),
+        (lnpair::Subdivision::Weighted, Some(p)) => {
+            // the exact pen (or offset-circle) point compatible with s(u)
+            let h = s.hodograph();
+            let q = |u: f64| {
+                let d = h.eval(&u);
+                let l = d.norm2().sqrt();
+                if !(l > 0.0 && l.is_finite()) {
+                    return None;
+                }
+                let n = V2::new(-d.y / l, d.x / l);
+                match kernel {
+                    Kernel::Offset { df, .. } => Some(n.scale(df)),
+                    Kernel::Conv { qf, sigma, .. } => conv::pen_point(&n, *qf, *sigma),
+                }
+            };
+            lnpair::weighted_param(&s, p, &q)
+        }
+        _ => lnpair::mid_angle_param(&s),
     }
 }
 
@@ -925,7 +983,7 @@ fn offset_segments(
     let mut spans = 0usize;
     let mut tasks: Vec<Task> = Vec::new();
     for (i, x) in curve.iter().enumerate() {
-        for t in initial_spans(x, cuts.get(i).map_or(&[][..], |c| &c[..])) {
+        for t in initial_spans(x, cuts.get(i).map_or(&[][..], |c| &c[..]), opts.method) {
             tasks.push(Task {
                 piece: i,
                 t,
@@ -1132,6 +1190,87 @@ pub fn union_certificate(
             }
         }
     }
+    Ok(Certificate::assemble(&a, &b, tol, &maps, &ab, &ba))
+}
+
+/// One certificate for several results of the same curve (the two sides of
+/// a convolution, or offsets at several distances): `d_H(A, B) ≤ tol` with
+/// `A` the union of the exact curves ([`exact_offset_shape`] of each result)
+/// and `B` the union of the approximants, each a member of a
+/// [`ShapeDesc::Union`] in the order given, with every piece proven against
+/// its own span as in [`union_certificate`]. `None` when a result is not
+/// reached or a segment has no proof; an error when `results` is empty.
+///
+/// # Examples
+/// ```
+/// use lncert::approx::{convolve, union_certificate_all, conv::Pen, OffsetOptions};
+/// use lncert::shape::parse_curve;
+/// let q = |s: &str| lncert::parse_rational(s).unwrap();
+/// let x = parse_curve("M 0 0 C 1 0.2 2 1 2.4 2.5").unwrap();
+/// let pen = Pen::from_matrix([[q("0.3"), q("0")], [q("0.1"), q("0.2")]]).unwrap();
+/// let opts = OffsetOptions::new(q("0"), 1e-3);
+/// let plus = convolve(&x, &pen, 1, &opts).unwrap();
+/// let minus = convolve(&x, &pen, -1, &opts).unwrap();
+/// let cert = union_certificate_all(&x, &[&plus, &minus], &q("1/1000")).unwrap().unwrap();
+/// let valid = lncert::verify(&cert.to_json_string()).unwrap();
+/// assert!(valid.a.starts_with("the union of 2 shapes"));
+/// ```
+pub fn union_certificate_all(
+    curve: &[Bezier<Rational>],
+    results: &[&OffsetResult],
+    tol: &Rational,
+) -> Result<Option<Certificate>, OffsetError> {
+    if results.is_empty() {
+        return Err(bad("results", "no results"));
+    }
+    if results
+        .iter()
+        .any(|r| !r.reached() || r.segments.iter().any(|s| s.proof.is_none()))
+    {
+        return Ok(None);
+    }
+    let mut a_members = Vec::new();
+    let mut b_members = Vec::new();
+    let mut maps = Vec::new();
+    let (mut ab, mut ba) = (Vec::new(), Vec::new());
+    let mut base = 0usize;
+    for res in results {
+        a_members.push(exact_offset_shape(curve, res)?);
+        b_members.push(res.approximant_shape()?);
+        for (k, p) in res
+            .segments
+            .iter()
+            .filter_map(|s| s.proof.as_ref())
+            .enumerate()
+        {
+            let i = base + k;
+            match &p.map {
+                Some(m) => maps.push(MapCover {
+                    from_a: m.source_a,
+                    piece: i,
+                    target: i,
+                    boxes: m.boxes.clone(),
+                    hi: m.hi,
+                }),
+                None => {
+                    let renumber = |bs: &[CoverBox]| {
+                        bs.iter()
+                            .map(|bx| CoverBox {
+                                piece: i,
+                                target: i,
+                                ..bx.clone()
+                            })
+                            .collect::<Vec<_>>()
+                    };
+                    ab.extend(renumber(&p.exact_to_segment));
+                    ba.extend(renumber(&p.segment_to_exact));
+                }
+            }
+        }
+        base += res.segments.len();
+    }
+    let a = ShapeDesc::union(a_members)?;
+    let b = ShapeDesc::union(b_members)?;
     Ok(Certificate::assemble(&a, &b, tol, &maps, &ab, &ba))
 }
 

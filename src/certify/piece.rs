@@ -486,6 +486,13 @@ impl Pieces for ShapeDesc {
                     .map(|b| Piece::conv(b, [&q11, &q12, &q22], *side))
                     .collect())
             }
+            ShapeDesc::Union(m) => {
+                let mut out = Vec::new();
+                for s in m {
+                    out.extend(s.pieces()?);
+                }
+                Ok(out)
+            }
         }
     }
 }

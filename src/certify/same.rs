@@ -78,6 +78,15 @@ impl ShapeDesc {
                 same_curve(x, &rev).map_err(|_| e)
             }),
             (ShapeDesc::Arc(a), ShapeDesc::Arc(b)) => same_arc(a, b),
+            (ShapeDesc::Union(x), ShapeDesc::Union(y)) => {
+                if x.len() != y.len() {
+                    return Err(format!("unions of {} and {} members", x.len(), y.len()));
+                }
+                for (i, (a, b)) in x.iter().zip(y).enumerate() {
+                    a.same_as(b).map_err(|e| format!("member {i}: {e}"))?;
+                }
+                Ok(())
+            }
             _ => match (conv_form(self), conv_form(other)) {
                 (Some((cx, qx, sx)), Some((cy, qy, sy))) => {
                     if qx != qy {

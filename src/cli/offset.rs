@@ -56,6 +56,11 @@ pub struct OffsetArgs {
     /// Construction: g2 (seed 004, degree n+3, G2/C1) or ln-pair (seed 000 §6, cubic, G1).
     #[arg(long, default_value = "g2")]
     pub method: String,
+    /// Where an LN-pair span that missed TOL is split: seed 000 §5's rule `a`
+    /// (mid-angle), `b` (the approximant's chord) or `c` (the angles of the two
+    /// distances, weighted).
+    #[arg(long, default_value = "a")]
+    pub subdivision: String,
     /// Write a certificate of d_H ≤ TOL (re-check it with `lncert verify`).
     #[arg(long)]
     pub certificate: Option<PathBuf>,
@@ -173,6 +178,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     };
     let mut opts = OffsetOptions::new(distance, tol);
     opts.method = method;
+    opts.subdivision = super::args::subdivision(&a.subdivision, &a.method)?;
     opts.max_depth = a.max_depth;
     opts.max_segments = a.max_segments;
     if a.max_boxes == 0 || a.max_boxes > 50_000_000 {

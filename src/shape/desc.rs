@@ -56,6 +56,11 @@ pub enum ShapeDesc {
         /// `+1` or `−1`: the ellipse point whose outer normal is `side · n`.
         side: i8,
     },
+    /// The union of the point sets of its members (none a union itself), its
+    /// pieces numbered member after member: both sides of a stroke, or an
+    /// outline that mixes arcs and curves. At most [`super::MAX_SEGMENTS`]
+    /// pieces in all.
+    Union(Vec<ShapeDesc>),
 }
 
 /// [`ShapeDesc::arc`]'s checks, errors naming `{name}.radius`, `{name}.from`, ….
@@ -244,6 +249,7 @@ impl ShapeDesc {
             "arc",
             "offset",
             "convolution",
+            "union",
             "bezier",
             "beziers",
             "bspline",
@@ -257,6 +263,41 @@ impl ShapeDesc {
                     given.join(" and ")
                 ),
             ));
+        }
+        if let Some(u) = map.get("union") {
+            check_keys(map, "(top level)", &["union"])?;
+            let Value::Array(members) = u else {
+                return Err(err(
+                    "union",
+                    format!("expected a list of shapes, found {}", describe(u)),
+                ));
+            };
+            let members = members
+                .iter()
+                .enumerate()
+                .map(|(i, m)| {
+                    if m.get("union").is_some() {
+                        return Err(err(
+                            format!("union[{i}]"),
+                            "a union's members are not unions",
+                        ));
+                    }
+                    if let Value::String(_) = m {
+                        // SVG path data: a curve, as at the top level
+                        return curve_value(m, &format!("union[{i}]"), approx)
+                            .and_then(ShapeDesc::curve);
+                    }
+                    Self::from_value_into(m, approx).map_err(|e| {
+                        let field = if e.field == "(top level)" {
+                            format!("union[{i}]")
+                        } else {
+                            format!("union[{i}].{}", e.field)
+                        };
+                        err(field, e.reason)
+                    })
+                })
+                .collect::<Result<Vec<_>, _>>()?;
+            return ShapeDesc::union(members);
         }
         if let Some(a) = map.get("arc") {
             check_keys(map, "(top level)", &["arc"])?;
@@ -402,6 +443,51 @@ impl ShapeDesc {
         })
     }
 
+    /// The union of `members` (at least one, none a union, at most
+    /// [`super::MAX_SEGMENTS`] pieces in all; each member already checked by
+    /// its own constructor).
+    ///
+    /// # Examples
+    /// ```
+    /// use lncert::shape::ShapeDesc;
+    /// let u = ShapeDesc::parse(r#"{"union": ["M 0 0 L 1 0", {"arc": {"center": [1, 1], "radius": 1, "from": [0, -1], "to": [1, 0]}}]}"#).unwrap();
+    /// assert_eq!(u.piece_count(), 2);
+    /// let e = ShapeDesc::parse(r#"{"union": [{"arc": {"center": [0, 0], "radius": 0, "from": [1, 0], "to": [0, 1]}}]}"#).unwrap_err();
+    /// assert_eq!(e.field, "union[0].arc.radius");
+    /// ```
+    pub fn union(members: Vec<ShapeDesc>) -> Result<ShapeDesc, ShapeError> {
+        if members.is_empty() {
+            return Err(err("union", "no members"));
+        }
+        if let Some(i) = members
+            .iter()
+            .position(|m| matches!(m, ShapeDesc::Union(_)))
+        {
+            return Err(err(
+                format!("union[{i}]"),
+                "a union's members are not unions",
+            ));
+        }
+        let n: usize = members.iter().map(ShapeDesc::piece_count).sum();
+        if n > super::MAX_SEGMENTS {
+            return Err(err(
+                "union",
+                format!("{n} pieces in all, above the limit {}", super::MAX_SEGMENTS),
+            ));
+        }
+        Ok(ShapeDesc::Union(members))
+    }
+
+    /// How many pieces the shape has (a union: all its members').
+    pub fn piece_count(&self) -> usize {
+        match self {
+            ShapeDesc::Curve(c) => c.len(),
+            ShapeDesc::Arc(_) => 1,
+            ShapeDesc::Offset { curve, .. } | ShapeDesc::Convolution { curve, .. } => curve.len(),
+            ShapeDesc::Union(m) => m.iter().map(ShapeDesc::piece_count).sum(),
+        }
+    }
+
     /// The canonical JSON form (exact rational strings), as stored in certificates.
     pub fn to_json(&self) -> Value {
         fn q(r: &Rational) -> Value {
@@ -429,6 +515,9 @@ impl ShapeDesc {
                 "curve": curve(c),
                 "ellipse": [[q(&ellipse[0][0]), q(&ellipse[0][1])], [q(&ellipse[1][0]), q(&ellipse[1][1])]],
                 "side": side}}),
+            ShapeDesc::Union(m) => {
+                json!({"union": m.iter().map(ShapeDesc::to_json).collect::<Vec<_>>()})
+            }
         }
     }
 
@@ -447,6 +536,13 @@ impl ShapeDesc {
             ShapeDesc::Convolution { curve, .. } => {
                 format!("convolution of {} piece(s) with an ellipse", curve.len())
             }
+            ShapeDesc::Union(m) => format!(
+                "union of {}",
+                m.iter()
+                    .map(ShapeDesc::summary)
+                    .collect::<Vec<_>>()
+                    .join(" and ")
+            ),
         }
     }
 
@@ -472,6 +568,7 @@ impl ShapeDesc {
                         .map(|x| x.approx().abs())
                         .sum::<f64>()
             }
+            ShapeDesc::Union(m) => m.iter().map(ShapeDesc::scale).fold(0.0, f64::max),
         }
     }
 }

@@ -255,8 +255,52 @@ fn conv_shape(bs: &[Vec<[Rational; 2]>], q: [Rational; 3], sigma: i64, text: Str
     }
 }
 
-/// Reads one canonical shape (the value of `a` or `b`).
+/// Reads one canonical shape (the value of `a` or `b`): one of the four
+/// kinds, or `{"union": [SHAPE, …]}` of 1 or more members of those kinds
+/// (no nested unions), at most `MAX_SEGMENTS` pieces in all, its pieces
+/// numbered member after member.
 pub(crate) fn read_shape(v: &Json, at: &str) -> Result<VShape, Invalid> {
+    if let Some([(k, members)]) = v.as_object() {
+        if &**k == "union" {
+            let at = join(at, "union");
+            let list = members
+                .as_array()
+                .filter(|l| !l.is_empty())
+                .ok_or_else(|| inv(&at, "expected a list of 1 or more shapes"))?;
+            let mut out = VShape {
+                pieces: Vec::new(),
+                ends: Vec::new(),
+                text: String::new(),
+            };
+            let mut texts = Vec::new();
+            for (i, m) in list.iter().enumerate() {
+                let at_i = format!("{at}[{i}]");
+                let s = read_member(m, &at_i)?;
+                if out.pieces.len() + s.pieces.len() > MAX_SEGMENTS {
+                    return Err(inv(
+                        &at_i,
+                        format!("more than {MAX_SEGMENTS} pieces in all"),
+                    ));
+                }
+                texts.push(format!(
+                    "({}) pieces {}–{}: {}",
+                    i + 1,
+                    out.pieces.len(),
+                    out.pieces.len() + s.pieces.len() - 1,
+                    s.text
+                ));
+                out.pieces.extend(s.pieces);
+                out.ends.extend(s.ends);
+            }
+            out.text = format!("the union of {} shapes: {}", list.len(), texts.join("; "));
+            return Ok(out);
+        }
+    }
+    read_member(v, at)
+}
+
+/// One shape of the four kinds (not a union).
+fn read_member(v: &Json, at: &str) -> Result<VShape, Invalid> {
     let kinds = ["beziers", "arc", "offset", "convolution"];
     let m = v.as_object().ok_or_else(|| {
         inv(
