@@ -30,7 +30,7 @@ use serde_json::Value;
 use std::fmt::Write;
 use std::sync::OnceLock;
 
-const SEED_TEXTS: [&str; 10] = [
+const SEED_TEXTS: [&str; 11] = [
     include_str!("../seeds/verify/cert_quad_seg.json"),
     include_str!("../seeds/verify/cert_quad_seg_tol1.json"),
     include_str!("../seeds/verify/cert_box_deleted.json"),
@@ -41,6 +41,7 @@ const SEED_TEXTS: [&str; 10] = [
     include_str!("../seeds/verify/cert_map_quad_seg.json"),
     include_str!("../seeds/verify/cert_map_arc_cubic.json"),
     include_str!("../seeds/verify/cert_map_offset_quad.json"),
+    include_str!("../seeds/verify/cert_union_conv_sides.json"),
 ];
 
 fn seeds() -> &'static [Value] {
@@ -55,11 +56,11 @@ fn seeds() -> &'static [Value] {
 
 /// Keys a forger may add: every key of the formats, and the classic extras.
 #[rustfmt::skip]
-const KEYS: [&str; 30] = [
+const KEYS: [&str; 31] = [
     "clockwise", "bounds", "bound", "digest", "beziers", "bezier", "arc", "offset",
     "convolution", "side", "ellipse", "curve", "distance", "radius", "center", "from", "to",
     "piece", "target", "s", "t", "k", "tol", "claim", "extra", "format", "version", "directions",
-    "maps", "phi",
+    "maps", "phi", "union",
 ];
 
 /// A value to put somewhere.
