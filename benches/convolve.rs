@@ -13,7 +13,8 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use lncert::approx::conv::conv_cusps;
-use lncert::approx::{convolve, OffsetOptions};
+use lncert::approx::lnpair::Subdivision;
+use lncert::approx::{convolve, OffsetMethod, OffsetOptions};
 use lncert::reproduce::seed001::{nonic, pen};
 use lncert::scalar::Rational;
 use std::hint::black_box;
@@ -45,6 +46,50 @@ fn bench(c: &mut Criterion) {
                 proven,
                 unproven,
                 proven / unproven
+            );
+        }
+        println!("{line}");
+    }
+    // seed 000 §5's LN pairs: segments per subdivision rule, and the paper's
+    // measure d_H(p, pa) + d_H(q, qa) against the certified true error per piece
+    for tol in [1e-1, 1e-2, 1e-3] {
+        let mut line = format!("LN pairs, TOL {tol:e}:");
+        for rule in [
+            Subdivision::MidAngle,
+            Subdivision::Chord,
+            Subdivision::Weighted,
+        ] {
+            let mut o = opts(tol, true);
+            o.method = OffsetMethod::LnPair;
+            o.subdivision = rule;
+            o.paper_error = true;
+            let t = std::time::Instant::now();
+            let rs: Vec<_> = [-1i8, 1]
+                .iter()
+                .map(|s| convolve(&x, &p, *s, &o).unwrap())
+                .collect();
+            let secs = t.elapsed().as_secs_f64();
+            let pieces: Vec<_> = rs.iter().flat_map(|r| r.segments.iter()).collect();
+            // pieces whose measure (an upper bound) is below the true error (a lower bound)
+            let under = pieces
+                .iter()
+                .filter(|g| g.paper_error.is_some_and(|m| m < g.error.0))
+                .count();
+            let ratio = pieces
+                .iter()
+                .filter_map(|g| g.paper_error.map(|m| m / g.error.1))
+                .fold((f64::INFINITY, 0.0f64), |(lo, hi), r| {
+                    (lo.min(r), hi.max(r))
+                });
+            line += &format!(
+                " rule ({}): {} / {} segments, {:.2} s both sides, measure < true error on {under} of {} pieces, measure/true-error ∈ [{:.2}, {:.2}];",
+                rule.name(),
+                rs[0].segments.len(),
+                rs[1].segments.len(),
+                secs,
+                pieces.len(),
+                ratio.0,
+                ratio.1
             );
         }
         println!("{line}");
