@@ -71,6 +71,7 @@
 
 use libfuzzer_sys::arbitrary::{Result, Unstructured};
 use libfuzzer_sys::{fuzz_target, Corpus};
+use lncert::approx::lnpair::Subdivision;
 use lncert::approx::conv::{Angle, Pen};
 use lncert::approx::{
     convolve, OffsetError, OffsetMethod, OffsetOptions, OffsetResult, OffsetSegment,
@@ -222,6 +223,11 @@ fn input(u: &mut Unstructured) -> Result<Input> {
     } else {
         OffsetMethod::G2
     };
+    // and seed 000 §5's subdivision rule (a), (b) or (c) for them
+    if opts.method == OffsetMethod::LnPair {
+        opts.subdivision = [Subdivision::MidAngle, Subdivision::Chord, Subdivision::Weighted]
+            [usize::from(u.int_in_range(0..=2u8)?)];
+    }
     opts.max_depth = u.int_in_range(0..=3u8)?.into();
     opts.max_segments = u.int_in_range(1..=8u8)?.into();
     opts.max_boxes = u.int_in_range(8..=64u8)?.into();

@@ -55,6 +55,7 @@
 
 use libfuzzer_sys::arbitrary::{Result, Unstructured};
 use libfuzzer_sys::{fuzz_target, Corpus};
+use lncert::approx::lnpair::Subdivision;
 use lncert::approx::prep::Junction;
 use lncert::approx::{
     corners, join_arcs, offset, OffsetError, OffsetMethod, OffsetOptions, OffsetResult,
@@ -128,6 +129,10 @@ fn input(u: &mut Unstructured) -> Result<Input> {
     } else {
         OffsetMethod::G2
     };
+    if opts.method == OffsetMethod::LnPair {
+        opts.subdivision = [Subdivision::MidAngle, Subdivision::Chord, Subdivision::Weighted]
+            [usize::from(u.int_in_range(0..=2u8)?)];
+    }
     opts.max_depth = u.int_in_range(0..=3u8)?.into();
     opts.max_segments = u.int_in_range(1..=8u8)?.into();
     opts.max_boxes = u.int_in_range(8..=64u8)?.into();
