@@ -83,6 +83,7 @@ pub mod json;
 #[cfg(feature = "kurbo")]
 pub mod kurbo_bridge;
 pub mod ln;
+pub mod outline;
 pub mod poly;
 // Internal: the claims of `lncert reproduce`.
 #[doc(hidden)]

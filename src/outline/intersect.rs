@@ -1,0 +1,604 @@
+//! Certified intersections of polynomial Bézier pieces: the crossings between
+//! pieces and the self-intersections of a piece, complete over the whole
+//! parameter domain.
+//!
+//! # Method
+//!
+//! Pieces `A(s)`, `B(t)` (exact rational control points) meet where
+//! `A(s) − B(t) = 0`, a 2×2 polynomial system in `(s, t) ∈ [0, 1]²`, solved by
+//! the complete interval solver of the tangency module
+//! ([`crate::tangency::complete::solve`]: Krawczyk's operator proves each
+//! transversal crossing unique in a box, and every other box is excluded by an
+//! enclosure or by Krawczyk; what is left is reported undecided). A piece meets
+//! itself where the divided difference `(A(s) − A(t))/(s − t) = 0` with
+//! `s < t` (the diagonal `s = t` of that system is where `A′ = 0`: a singular
+//! point, reported undecided when a box there cannot be excluded).
+//!
+//! Pairs whose control-point boxes are disjoint cannot meet (convex hull
+//! property, compared exactly). Pieces that share an end point exactly (the
+//! joints of a spline, the closing point of a contour) meet there by
+//! construction; that contact is proven to be the **only** one in a corner
+//! `[s₀ ± ε] × [t₀ ± ε]` of the domain by a projection: with a rational
+//! direction `d`, `d · A` strictly decreases and `d · B` strictly increases as
+//! the parameters leave the shared point (the exact Bernstein coefficients of
+//! `d · A′`, `d · B′` over the corner have one strict sign), so `A(s) = B(t)`
+//! there forces `s = s₀`, `t = t₀`. The rest of the domain is solved as above.
+//! A joint where the two pieces leave in the same direction (a tangential
+//! contact or an overlap) is reported undecided.
+//!
+//! `complete` is true when nothing is undecided: the crossings listed are then
+//! all the intersections of the pieces besides their shared end points, each
+//! in a box `s × t` holding exactly one.
+
+use crate::curve::{Bezier, V2};
+use crate::scalar::{interval_from_rational, rational_from_f64, Interval, Rational, Scalar};
+use crate::tangency::complete::{solve, RationalBox, SolveOptions, UndecidedReason};
+use crate::tangency::krawczyk::{IBox, System2};
+use crate::tangency::poly2::Poly2;
+use num_traits::{One, Signed, Zero};
+
+/// One proven transversal crossing: exactly one point with `A_i(s) = A_j(t)`
+/// and `(s, t)` in the enclosures (`i < j`, or `i = j` with `s < t` for a
+/// self-intersection).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Crossing {
+    /// The two pieces (`pieces.0 ≤ pieces.1`).
+    pub pieces: (usize, usize),
+    /// Enclosure of the parameter on the first piece.
+    pub s: (f64, f64),
+    /// Enclosure of the parameter on the second piece.
+    pub t: (f64, f64),
+    /// The crossing point, enclosed (the first piece at `s`).
+    pub point: ((f64, f64), (f64, f64)),
+}
+
+/// A region of a pair's parameter domain that may hold intersections not
+/// listed as crossings.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Undecided {
+    /// The two pieces.
+    pub pieces: (usize, usize),
+    /// Parameter range on the first piece.
+    pub s: (f64, f64),
+    /// Parameter range on the second piece.
+    pub t: (f64, f64),
+    /// Why: `"tangential"` (a multiple or tangential contact is likely),
+    /// `"singular"` (a point where the piece's derivative may vanish),
+    /// `"joint"` (a shared end point where the pieces leave in one direction),
+    /// `"budget"`, `"boundary"` (a root on the edge of a sub-domain) or
+    /// `"ambiguous"`.
+    pub reason: &'static str,
+}
+
+/// A shared end point proven to be the only contact of the two pieces near it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Joint {
+    /// The two pieces.
+    pub pieces: (usize, usize),
+    /// Which ends meet: the parameter (0 or 1) on each piece.
+    pub at: (u8, u8),
+}
+
+/// The result of [`intersections`].
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Intersections {
+    /// Proven crossings, each unique in its box, sorted by pieces and `s`.
+    pub crossings: Vec<Crossing>,
+    /// Shared end points proven isolated.
+    pub joints: Vec<Joint>,
+    /// Regions left undecided (empty when `complete`).
+    pub undecided: Vec<Undecided>,
+    /// True when nothing is undecided: `crossings` and `joints` are then all
+    /// the points where the pieces meet.
+    pub complete: bool,
+    /// Pairs (and single pieces) examined by the solver.
+    pub pairs_solved: usize,
+    /// Pairs excluded by their control-point boxes.
+    pub pairs_excluded: usize,
+    /// Solver boxes processed in all.
+    pub boxes: usize,
+}
+
+/// Settings of [`intersections`].
+#[derive(Clone, Copy, Debug)]
+pub struct IntersectOptions {
+    /// Solver boxes per pair (default 20 000); beyond it the rest of the pair's
+    /// domain is reported undecided.
+    pub max_boxes_per_pair: usize,
+    /// Include self-intersections of each piece (default true).
+    pub self_intersections: bool,
+}
+
+impl Default for IntersectOptions {
+    fn default() -> Self {
+        IntersectOptions {
+            max_boxes_per_pair: 20_000,
+            self_intersections: true,
+        }
+    }
+}
+
+fn q(n: i64, d: i64) -> Rational {
+    Rational::new(n.into(), d.into())
+}
+
+/// The coordinates of a piece in the power basis, exactly.
+fn power(b: &Bezier<Rational>) -> (Vec<Rational>, Vec<Rational>) {
+    let (x, y) = b.power_coords();
+    (x.coeffs().to_vec(), y.coeffs().to_vec())
+}
+
+/// `a(s) − b(t)` as a bivariate polynomial (`x = s`, `y = t`).
+fn difference(a: &[Rational], b: &[Rational]) -> Poly2<Rational> {
+    let (da, db) = (a.len().max(1) - 1, b.len().max(1) - 1);
+    let mut c = vec![<Rational as Zero>::zero(); (da + 1) * (db + 1)];
+    for (i, ai) in a.iter().enumerate() {
+        c[i * (db + 1)] += ai;
+    }
+    for (j, bj) in b.iter().enumerate() {
+        c[j] -= bj;
+    }
+    Poly2::from_coeffs(da, db, c).unwrap_or_else(Poly2::zero)
+}
+
+/// `(a(s) − a(t))/(s − t) = Σ_k a_k Σ_{i+j=k−1} s^i t^j`.
+fn divided_difference(a: &[Rational]) -> Poly2<Rational> {
+    let n = a.len().max(2) - 2; // degree of the result in each variable
+    let mut c = vec![<Rational as Zero>::zero(); (n + 1) * (n + 1)];
+    for (k, ak) in a.iter().enumerate().skip(1) {
+        for i in 0..k {
+            let j = k - 1 - i;
+            c[i * (n + 1) + j] += ak;
+        }
+    }
+    Poly2::from_coeffs(n, n, c).unwrap_or_else(Poly2::zero)
+}
+
+/// The exact control-point bounding box.
+fn bbox(b: &Bezier<Rational>) -> [(Rational, Rational); 2] {
+    let p = b.points();
+    let mut lo = [p[0].x.clone(), p[0].y.clone()];
+    let mut hi = lo.clone();
+    for v in p {
+        for (k, c) in [&v.x, &v.y].into_iter().enumerate() {
+            if c < &lo[k] {
+                lo[k] = c.clone();
+            }
+            if c > &hi[k] {
+                hi[k] = c.clone();
+            }
+        }
+    }
+    [
+        (lo[0].clone(), hi[0].clone()),
+        (lo[1].clone(), hi[1].clone()),
+    ]
+}
+
+fn boxes_disjoint(a: &[(Rational, Rational); 2], b: &[(Rational, Rational); 2]) -> bool {
+    (0..2).any(|k| a[k].1 < b[k].0 || b[k].1 < a[k].0)
+}
+
+/// The end point of a piece at parameter `e` (0 or 1).
+fn end(b: &Bezier<Rational>, e: u8) -> &V2<Rational> {
+    let p = b.points();
+    if e == 0 {
+        &p[0]
+    } else {
+        &p[p.len() - 1]
+    }
+}
+
+/// The part of `[0, 1]` of width `eps` at end `e`.
+fn corner_range(e: u8, eps: &Rational) -> (Rational, Rational) {
+    if e == 0 {
+        (<Rational as Zero>::zero(), eps.clone())
+    } else {
+        (<Rational as One>::one() - eps, <Rational as One>::one())
+    }
+}
+
+/// The direction leaving the end `e` of `b` into the piece (`±b′` there), in floats.
+fn away(b: &Bezier<Rational>, e: u8) -> Option<V2<f64>> {
+    let h = b.hodograph();
+    let hp = h.points();
+    // the first nonzero control point of the hodograph from that end
+    let it: Box<dyn Iterator<Item = &V2<Rational>>> = if e == 0 {
+        Box::new(hp.iter())
+    } else {
+        Box::new(hp.iter().rev())
+    };
+    let v = it
+        .map(|v| v.map(Scalar::approx))
+        .find(|v| v.norm2() > 0.0)?;
+    let l = v.norm2().sqrt();
+    let v = V2::new(v.x / l, v.y / l);
+    Some(if e == 0 { v } else { V2::new(-v.x, -v.y) })
+}
+
+/// Proves that on the corner `e`-range of width `eps` the derivative of
+/// `d · b`, oriented away from the end, has the strict sign `sign`: every
+/// Bernstein coefficient of `(d · b)′` over the range, times the orientation,
+/// has that sign (exact).
+fn monotone(b: &Bezier<Rational>, e: u8, eps: &Rational, d: &V2<Rational>, sign: i8) -> bool {
+    let (lo, hi) = corner_range(e, eps);
+    let h = b.restrict(&lo, &hi).hodograph();
+    let orient = if e == 0 { 1 } else { -1 };
+    h.points().iter().all(|c| {
+        let v = d.dot(c);
+        let s = if v.is_positive() {
+            1
+        } else if v.is_negative() {
+            -1
+        } else {
+            0
+        };
+        s * orient == sign
+    })
+}
+
+/// Proves the shared end point `(ea, eb)` of `a`, `b` the only contact in the
+/// corner of width `eps` (see the module docs); returns the width proven.
+fn isolate_joint(a: &Bezier<Rational>, ea: u8, b: &Bezier<Rational>, eb: u8) -> Option<Rational> {
+    let (u, v) = (away(a, ea)?, away(b, eb)?);
+    // d · u < 0 and d · v > 0 with d = v − u (fails only when u = v)
+    let df = V2::new(v.x - u.x, v.y - u.y);
+    if df.norm2() < 1e-24 {
+        return None;
+    }
+    let d = V2::new(rational_from_f64(df.x)?, rational_from_f64(df.y)?);
+    let mut eps = q(1, 8);
+    for _ in 0..24 {
+        if monotone(a, ea, &eps, &d, -1) && monotone(b, eb, &eps, &d, 1) {
+            return Some(eps);
+        }
+        eps /= Rational::from_integer(4.into());
+    }
+    None
+}
+
+fn reason_name(r: UndecidedReason) -> &'static str {
+    match r {
+        UndecidedReason::MinWidth {
+            near_double_root: true,
+        } => "tangential",
+        UndecidedReason::MinWidth { .. } => "ambiguous",
+        UndecidedReason::Budget => "budget",
+        UndecidedReason::DomainBoundary => "boundary",
+        UndecidedReason::Ambiguous | UndecidedReason::Unresolved => "ambiguous",
+    }
+}
+
+fn range(i: Interval) -> (f64, f64) {
+    (i.inf(), i.sup())
+}
+
+/// The sub-domains of `[0, 1]²` left after cutting out the proven corners:
+/// a list of rational boxes covering the rest.
+fn minus_corners(corners: &[((u8, u8), Rational)]) -> Vec<RationalBox> {
+    // cut the s-range into [0, e₀], [e₀, 1 − e₁], [1 − e₁, 1] strips, and in
+    // the end strips remove the t-corner ranges
+    let zero = <Rational as Zero>::zero();
+    let one = <Rational as One>::one();
+    let eps_at = |es: u8| {
+        corners
+            .iter()
+            .filter(|((a, _), _)| *a == es)
+            .map(|(_, e)| e.clone())
+            .fold(zero.clone(), |m, e| if e > m { e } else { m })
+    };
+    let (e0, e1) = (eps_at(0), eps_at(1));
+    let mut out = Vec::new();
+    let mid = (e0.clone(), &one - &e1);
+    if mid.0 < mid.1 {
+        out.push(RationalBox {
+            x: mid,
+            y: (zero.clone(), one.clone()),
+        });
+    }
+    for (es, e) in [(0u8, &e0), (1u8, &e1)] {
+        if e.is_zero() {
+            continue;
+        }
+        let srange = corner_range(es, e);
+        // the t-ranges cut out at this s end
+        let mut cuts: Vec<(Rational, Rational)> = corners
+            .iter()
+            .filter(|((a, _), _)| *a == es)
+            .map(|((_, b), w)| corner_range(*b, w))
+            .collect();
+        cuts.sort();
+        let mut t = zero.clone();
+        for (lo, hi) in cuts {
+            if lo > t {
+                out.push(RationalBox {
+                    x: srange.clone(),
+                    y: (t.clone(), lo.clone()),
+                });
+            }
+            if hi > t {
+                t = hi;
+            }
+        }
+        if t < one {
+            out.push(RationalBox {
+                x: srange.clone(),
+                y: (t, one.clone()),
+            });
+        }
+    }
+    out
+}
+
+/// All intersections of the pieces (see the module docs). Pieces are given
+/// exactly; a degree-0 piece (a point) is skipped.
+///
+/// # Examples
+/// ```
+/// use lncert::outline::intersect::{intersections, IntersectOptions};
+/// use lncert::shape::parse_curve;
+/// // a cubic with a loop, and a line across it
+/// let loopy = parse_curve("M 0 0 C 3 2 -1 2 2 0").unwrap();
+/// let line = parse_curve("M -1 0.5 L 3 0.5").unwrap();
+/// let pieces = [loopy[0].clone(), line[0].clone()];
+/// let r = intersections(&pieces, &IntersectOptions::default());
+/// assert!(r.complete);
+/// // one self-crossing of the loop; the line crosses the cubic twice (y = 6s(1 − s) = 1/2)
+/// assert_eq!(r.crossings.iter().filter(|c| c.pieces == (0, 0)).count(), 1);
+/// assert_eq!(r.crossings.iter().filter(|c| c.pieces == (0, 1)).count(), 2);
+/// ```
+pub fn intersections(pieces: &[Bezier<Rational>], opts: &IntersectOptions) -> Intersections {
+    let mut out = Intersections::default();
+    let powers: Vec<_> = pieces.iter().map(power).collect();
+    let boxes: Vec<_> = pieces.iter().map(bbox).collect();
+    let sopts = SolveOptions {
+        max_boxes: opts.max_boxes_per_pair,
+        ..SolveOptions::default()
+    };
+    // sweep over the x-ranges: candidate pairs only
+    let mut order: Vec<usize> = (0..pieces.len())
+        .filter(|&i| pieces[i].degree() > 0)
+        .collect();
+    order.sort_by(|&i, &j| boxes[i][0].0.cmp(&boxes[j][0].0));
+    let mut pairs = Vec::new();
+    for (k, &i) in order.iter().enumerate() {
+        for &j in &order[k + 1..] {
+            if boxes[j][0].0 > boxes[i][0].1 {
+                break;
+            }
+            if boxes_disjoint(&boxes[i], &boxes[j]) {
+                out.pairs_excluded += 1;
+            } else {
+                pairs.push((i.min(j), i.max(j)));
+            }
+        }
+    }
+    let n_active = order.len();
+    out.pairs_excluded += (n_active * n_active.saturating_sub(1) / 2)
+        .saturating_sub(pairs.len() + out.pairs_excluded);
+    pairs.sort();
+    use rayon::prelude::*;
+    let results: Vec<Intersections> = pairs
+        .par_iter()
+        .map(|&(i, j)| pair(pieces, &powers, i, j, &sopts))
+        .chain(
+            order
+                .par_iter()
+                .filter(|_| opts.self_intersections)
+                .map(|&i| self_pair(pieces, &powers, i, &sopts)),
+        )
+        .collect();
+    for r in results {
+        out.crossings.extend(r.crossings);
+        out.joints.extend(r.joints);
+        out.undecided.extend(r.undecided);
+        out.pairs_solved += r.pairs_solved;
+        out.boxes += r.boxes;
+    }
+    out.crossings
+        .sort_by(|a, b| a.pieces.cmp(&b.pieces).then(a.s.0.total_cmp(&b.s.0)));
+    out.joints
+        .sort_by(|a, b| a.pieces.cmp(&b.pieces).then(a.at.cmp(&b.at)));
+    out.complete = out.undecided.is_empty();
+    out
+}
+
+fn crossing_of(pieces: &[Bezier<Rational>], i: usize, j: usize, e: &IBox) -> Crossing {
+    let b = pieces[i].map(interval_from_rational);
+    let p = b.eval(&e[0]);
+    Crossing {
+        pieces: (i, j),
+        s: range(e[0]),
+        t: range(e[1]),
+        point: (range(p.x), range(p.y)),
+    }
+}
+
+/// Two different pieces.
+fn pair(
+    pieces: &[Bezier<Rational>],
+    powers: &[(Vec<Rational>, Vec<Rational>)],
+    i: usize,
+    j: usize,
+    sopts: &SolveOptions,
+) -> Intersections {
+    let mut out = Intersections {
+        pairs_solved: 1,
+        ..Intersections::default()
+    };
+    let (a, b) = (&pieces[i], &pieces[j]);
+    // shared end points: prove each the only contact in its corner
+    let mut corners = Vec::new();
+    for ea in [0u8, 1] {
+        for eb in [0u8, 1] {
+            if end(a, ea) != end(b, eb) {
+                continue;
+            }
+            match isolate_joint(a, ea, b, eb) {
+                Some(w) => {
+                    out.joints.push(Joint {
+                        pieces: (i, j),
+                        at: (ea, eb),
+                    });
+                    corners.push(((ea, eb), w));
+                }
+                None => {
+                    let w = q(1, 1 << 20);
+                    let (s, t) = (corner_range(ea, &w), corner_range(eb, &w));
+                    out.undecided.push(Undecided {
+                        pieces: (i, j),
+                        s: (s.0.approx(), s.1.approx()),
+                        t: (t.0.approx(), t.1.approx()),
+                        reason: "joint",
+                    });
+                    corners.push(((ea, eb), w));
+                }
+            }
+        }
+    }
+    let sys = System2::new(
+        &difference(&powers[i].0, &powers[j].0),
+        &difference(&powers[i].1, &powers[j].1),
+    );
+    for dom in minus_corners(&corners) {
+        let sol = solve(&sys, &dom, sopts);
+        out.boxes += sol.boxes;
+        for r in &sol.roots {
+            out.crossings.push(crossing_of(pieces, i, j, &r.enclosure));
+        }
+        for u in &sol.undecided {
+            out.undecided.push(Undecided {
+                pieces: (i, j),
+                s: range(u.bx[0]),
+                t: range(u.bx[1]),
+                reason: reason_name(u.reason),
+            });
+        }
+    }
+    out
+}
+
+/// The self-intersections of one piece: the divided-difference system on
+/// `[0, 1]²`, roots with `s < t` (their mirror images dropped); a box on the
+/// diagonal that cannot be excluded is a possible singular point.
+fn self_pair(
+    pieces: &[Bezier<Rational>],
+    powers: &[(Vec<Rational>, Vec<Rational>)],
+    i: usize,
+    sopts: &SolveOptions,
+) -> Intersections {
+    let mut out = Intersections {
+        pairs_solved: 1,
+        ..Intersections::default()
+    };
+    if pieces[i].degree() < 2 {
+        return out; // a segment does not meet itself
+    }
+    let sys = System2::new(
+        &divided_difference(&powers[i].0),
+        &divided_difference(&powers[i].1),
+    );
+    let dom = RationalBox {
+        x: (<Rational as Zero>::zero(), <Rational as One>::one()),
+        y: (<Rational as Zero>::zero(), <Rational as One>::one()),
+    };
+    let sol = solve(&sys, &dom, sopts);
+    out.boxes += sol.boxes;
+    for r in &sol.roots {
+        let (s, t) = (r.enclosure[0], r.enclosure[1]);
+        if s.sup() < t.inf() {
+            out.crossings.push(crossing_of(pieces, i, i, &r.enclosure));
+        } else if t.sup() < s.inf() {
+            // the mirror image of a root with s < t, which is listed too
+        } else {
+            // on the diagonal: A′(s) = 0
+            out.undecided.push(Undecided {
+                pieces: (i, i),
+                s: range(s),
+                t: range(t),
+                reason: "singular",
+            });
+        }
+    }
+    for u in &sol.undecided {
+        // keep one of each mirrored pair: the part with s ≤ t
+        if u.bx[0].inf() > u.bx[1].sup() {
+            continue;
+        }
+        let on_diagonal = !u.bx[0].disjoint(u.bx[1]);
+        out.undecided.push(Undecided {
+            pieces: (i, i),
+            s: range(u.bx[0]),
+            t: range(u.bx[1]),
+            reason: if on_diagonal {
+                "singular"
+            } else {
+                reason_name(u.reason)
+            },
+        });
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn pc(s: &str) -> Vec<Bezier<Rational>> {
+        crate::shape::parse_curve(s).unwrap()
+    }
+
+    #[test]
+    fn divided_difference_is_exact() {
+        // x(s) = s³: (s³ − t³)/(s − t) = s² + st + t²
+        let a = vec![q(0, 1), q(0, 1), q(0, 1), q(1, 1)];
+        let p = divided_difference(&a);
+        for (s, t) in [(q(1, 3), q(2, 5)), (q(-1, 2), q(3, 7))] {
+            let want = &s * &s + &s * &t + &t * &t;
+            assert_eq!(p.eval(&s, &t), want);
+        }
+    }
+
+    #[test]
+    fn spline_joints_are_isolated_and_crossings_found() {
+        // two quadratics joined at (1, 0) with a corner, and a closed contour
+        let c = pc("M 0 0 Q 0.5 1 1 0 Q 1.5 -1 2 0");
+        let r = intersections(&c, &IntersectOptions::default());
+        assert!(r.complete, "{r:?}");
+        assert!(r.crossings.is_empty());
+        assert_eq!(r.joints.len(), 1);
+        // a figure eight made of two cubics closing on itself: one crossing
+        let e = pc("M 0 0 C 1 1 2 -1 3 0 C 2 1 1 -1 0 0");
+        let r = intersections(&e, &IntersectOptions::default());
+        assert!(r.complete, "{r:?}");
+        assert_eq!(r.joints.len(), 2, "{r:?}");
+        assert_eq!(r.crossings.len(), 1, "{r:?}");
+    }
+
+    #[test]
+    fn a_tangential_contact_is_undecided_not_dropped() {
+        // y = x² touches y = 0 at the origin
+        let c = pc("M -1 1 Q 0 -1 1 1 M -1 0 L 1 0");
+        let r = intersections(&c, &IntersectOptions::default());
+        assert!(!r.complete);
+        assert!(r.undecided.iter().any(|u| u.pieces == (0, 1)), "{r:?}");
+    }
+
+    #[test]
+    fn minus_corners_covers_the_rest() {
+        let e = q(1, 8);
+        let boxes = minus_corners(&[((1, 0), e.clone()), ((0, 1), e.clone())]);
+        // sample points: covered unless in a cut corner
+        for k in 0..=16 {
+            for l in 0..=16 {
+                let (s, t) = (q(k, 16), q(l, 16));
+                let in_corner = (s >= <Rational as One>::one() - &e && t <= e)
+                    || (s <= e && t >= <Rational as One>::one() - &e);
+                let covered = boxes
+                    .iter()
+                    .any(|b| s >= b.x.0 && s <= b.x.1 && t >= b.y.0 && t <= b.y.1);
+                assert!(covered || in_corner, "({s}, {t}) not covered");
+            }
+        }
+    }
+}
