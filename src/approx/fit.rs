@@ -8,7 +8,7 @@
 //! | [`Output`] | segment | ends | inner control points |
 //! |---|---|---|---|
 //! | `Native` | the construction of [`super::OffsetMethod`] (degree `n + 3` or LN-pair cubic) | canonical | the construction's |
-//! | `Cubic` | cubic | canonical | on the exact end tangents; magnitudes from the G² Hermite system ([`g2_hermite_cubics`]), least squares ([`least_squares_cubic`]) or thirds of the chord, the one with the smallest sampled error |
+//! | `Cubic` | cubic | canonical | on the exact end tangents; handle lengths from the G² Hermite system ([`g2_hermite_cubics`]), least squares ([`least_squares_cubic`]) or thirds of the chord, the one with the smallest sampled error, then lowered by a Nelder–Mead search on the sampled max error |
 //! | `Quadratic` | quadratic | canonical | the intersection of the exact end tangents ([`tangent_quadratic`]); none when they do not meet ahead (the span is split) |
 //!
 //! *Canonical* end points are those of the native path: `x(tᵢ) + d Nᵢ` with
@@ -443,32 +443,92 @@ fn samples(sub: &Bezier<f64>, reach: Reach, m: usize) -> Option<Vec<V2<f64>>> {
         .collect()
 }
 
-/// A sampled two-sided distance (polyline against polyline; a float estimate,
-/// used only to choose among candidates).
+/// A sampled one-sided distance from the exact curve's samples to the cubic
+/// (each sample projected by Newton steps; a float estimate, used only to
+/// choose and refine candidates).
 fn sampled_error(exact: &[DVec2], c: &Bezier<f64>) -> f64 {
     const N: usize = 48;
     let cs: Vec<DVec2> = (0..=N).map(|i| c.eval_fast(i as f64 / N as f64)).collect();
-    let one = |ps: &[DVec2], poly: &[DVec2]| {
-        ps.iter()
-            .map(|p| {
-                poly.windows(2)
-                    .map(|w| seg_dist(*p, w[0], w[1]))
-                    .fold(f64::INFINITY, f64::min)
-            })
-            .fold(0.0, f64::max)
-    };
-    one(exact, &cs).max(one(&cs, exact))
+    // exact samples onto the cubic: nearest sample, then Newton (one-sided:
+    // the curves are close, and the proofs check both directions)
+    exact
+        .iter()
+        .map(|p| {
+            let (i, _) = cs
+                .iter()
+                .enumerate()
+                .map(|(i, q)| (i, (*q - *p).length_squared()))
+                .fold((0, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
+            let u = project(c, *p, i as f64 / N as f64);
+            (c.eval_fast(u) - *p).length()
+        })
+        .fold(0.0, f64::max)
 }
 
-fn seg_dist(p: DVec2, a: DVec2, b: DVec2) -> f64 {
-    let ab = b - a;
-    let l2 = ab.length_squared();
-    let t = if l2 > 0.0 {
-        ((p - a).dot(ab) / l2).clamp(0.0, 1.0)
-    } else {
-        0.0
+/// Evaluations of the sampled error spent by [`refine_minimax`].
+const REFINE_EVALS: usize = 40;
+
+/// Lowers the sampled (max) error of a cubic on the end tangents by a
+/// Nelder–Mead search over the two handle lengths (in log space), starting at
+/// `start`: the least squares and Hermite candidates minimise other measures.
+fn refine_minimax(e: &FitEnds, dense: &[DVec2], start: (f64, Bezier<f64>)) -> Bezier<f64> {
+    let handle =
+        |c: &Bezier<f64>, i: usize, j: usize| (dv(&c.points()[i]) - dv(&c.points()[j])).length();
+    let (a0, b0) = (handle(&start.1, 1, 0), handle(&start.1, 3, 2));
+    if !(a0 > 0.0 && b0 > 0.0) {
+        return start.1;
+    }
+    let eval = |p: [f64; 2]| {
+        let c = hermite(e, p[0].exp(), p[1].exp());
+        let err = sampled_error(dense, &c);
+        (if err.is_finite() { err } else { f64::INFINITY }, c)
     };
-    (p - (a + ab * t)).length()
+    let (la, lb) = (a0.ln(), b0.ln());
+    let mut simplex: Vec<([f64; 2], f64)> = vec![([la, lb], start.0)];
+    for p in [[la + 0.2, lb], [la, lb + 0.2]] {
+        simplex.push((p, eval(p).0));
+    }
+    let mut evals = 2;
+    while evals < REFINE_EVALS {
+        simplex.sort_by(|x, y| x.1.total_cmp(&y.1));
+        let (best, worst) = (simplex[0].0, simplex[2].0);
+        let c = [
+            (best[0] + simplex[1].0[0]) / 2.0,
+            (best[1] + simplex[1].0[1]) / 2.0,
+        ];
+        let at = |k: f64| [c[0] + k * (worst[0] - c[0]), c[1] + k * (worst[1] - c[1])];
+        let r = at(-1.0);
+        let fr = eval(r).0;
+        evals += 1;
+        if fr < simplex[0].1 {
+            let x = at(-2.0);
+            let fx = eval(x).0;
+            evals += 1;
+            simplex[2] = if fx < fr { (x, fx) } else { (r, fr) };
+        } else if fr < simplex[1].1 {
+            simplex[2] = (r, fr);
+        } else {
+            let k = at(0.5);
+            let fk = eval(k).0;
+            evals += 1;
+            if fk < simplex[2].1 {
+                simplex[2] = (k, fk);
+            } else {
+                // shrink towards the best
+                for v in simplex.iter_mut().skip(1) {
+                    v.0 = [(v.0[0] + best[0]) / 2.0, (v.0[1] + best[1]) / 2.0];
+                    v.1 = eval(v.0).0;
+                    evals += 1;
+                }
+            }
+        }
+    }
+    simplex.sort_by(|x, y| x.1.total_cmp(&y.1));
+    if simplex[0].1 < start.0 {
+        eval(simplex[0].0).1
+    } else {
+        start.1
+    }
 }
 
 /// Interior samples for the least squares fit.
@@ -515,12 +575,12 @@ pub(super) fn construct(
                 .chain(samples(&sub, reach, CHOICE_SAMPLES)?.iter().map(dv))
                 .chain(std::iter::once(dv(&e.p1)))
                 .collect();
-            cands
+            let best = cands
                 .into_iter()
                 .map(|c| (sampled_error(&dense, &c), c))
                 .filter(|(err, _)| err.is_finite())
-                .min_by(|a, b| a.0.total_cmp(&b.0))
-                .map(|(_, c)| c)
+                .min_by(|a, b| a.0.total_cmp(&b.0))?;
+            Some(refine_minimax(&e, &dense, best))
         }
     }
 }
