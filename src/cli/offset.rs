@@ -26,7 +26,7 @@ use lncert::approx::arc::{offset_arc, ArcOffset};
 use lncert::approx::prep::Junction;
 use lncert::approx::{
     global_bounds, join_arcs, offset, union_certificate, OffsetError, OffsetMethod, OffsetOptions,
-    OffsetResult, ProofPath,
+    OffsetResult, Output, ProofPath,
 };
 use lncert::scalar::{interval_from_rational, Rational};
 use lncert::shape::{parse_arc_input, parse_curve_reported, InputApprox, TravelledArc};
@@ -56,6 +56,14 @@ pub struct OffsetArgs {
     /// Construction: g2 (seed 004, degree n+3, G2/C1) or ln-pair (seed 000 §6, cubic, G1).
     #[arg(long, default_value = "g2")]
     pub method: String,
+    /// Output curves: native (the method's own segments), cubic or quadratic
+    /// (Béziers fitted to the exact offset of each span, proven the same way).
+    #[arg(long, default_value = "native")]
+    pub output: String,
+    /// Round every output control point to a multiple of this exact dyadic
+    /// grid (e.g. 1/2048) and prove the rounded curve.
+    #[arg(long, allow_hyphen_values = true)]
+    pub grid: Option<String>,
     /// Write a certificate of d_H ≤ TOL (re-check it with `lncert verify`).
     #[arg(long)]
     pub certificate: Option<PathBuf>,
@@ -115,9 +123,45 @@ fn offset_err(e: OffsetError) -> CliError {
         "tol" => "--tol".to_string(),
         "max_depth" => "--max-depth".to_string(),
         "max_segments" => "--max-segments".to_string(),
+        "grid" => "--grid".to_string(),
         f => format!("CURVE: {f}"),
     };
     bad(&flag, reason)
+}
+
+/// Parses `--output` and `--grid` (shared with `convolve`).
+pub fn output_and_grid(
+    output: &str,
+    grid: Option<&str>,
+) -> Result<(Output, Option<Rational>), CliError> {
+    let out = Output::parse(output).ok_or_else(|| {
+        bad(
+            "--output",
+            format!("unknown output {output:?}; expected native, cubic or quadratic"),
+        )
+    })?;
+    let grid = match grid {
+        None => None,
+        Some(text) => {
+            let g = number("--grid", text)?;
+            if g <= Rational::from_integer(0.into()) {
+                return Err(bad("--grid", format!("{text} must be > 0")));
+            }
+            Some(g)
+        }
+    };
+    Ok((out, grid))
+}
+
+/// The line saying how the tolerance is split between the fit and the rounding.
+pub fn grid_line(grid: &Option<Rational>, tol: f64) -> Option<String> {
+    grid.as_ref().map(|g| {
+        let mv = lncert::approx::fit::rounding_move(g);
+        format!(
+            "grid {g}: control points rounded to multiples of {g}; the tolerance is split as fit ≤ {:.6e} (sampled pre-check) + rounding ≤ {mv:.6e} (grid·√2/2); the rounded curve is what is proven",
+            tol - mv
+        )
+    })
 }
 
 /// Runs the command; returns the exit code.
@@ -141,10 +185,11 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             format!("unknown method {:?}; expected g2 or ln-pair", a.method),
         )
     })?;
-    if a.path_out.is_some() && method == OffsetMethod::G2 {
+    let (output, grid) = output_and_grid(&a.output, a.grid.as_deref())?;
+    if a.path_out.is_some() && method == OffsetMethod::G2 && output == Output::Native {
         return Err(bad(
             "--path-out",
-            "G2 segments have degree n + 3 ≥ 4, which SVG path data cannot store: use --method ln-pair (cubic), or --curve-out",
+            "G2 segments have degree n + 3 ≥ 4, which SVG path data cannot store: use --output cubic, --method ln-pair (cubic), or --curve-out",
         ));
     }
     let (curve, approx) = match a.glyph {
@@ -173,6 +218,8 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     };
     let mut opts = OffsetOptions::new(distance, tol);
     opts.method = method;
+    opts.output = output;
+    opts.grid = grid.clone();
     opts.max_depth = a.max_depth;
     opts.max_segments = a.max_segments;
     if a.max_boxes == 0 || a.max_boxes > 50_000_000 {
@@ -238,6 +285,12 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     if a.json {
         let doc = json!({
             "method": method.name(),
+            "output": output.name(),
+            "grid": grid.as_ref().map(|g| json!({
+                "grid": q(g),
+                "rounding_move": lncert::approx::fit::rounding_move(g),
+                "fit_tol": tol - lncert::approx::fit::rounding_move(g),
+            })),
             "distance": q(&res.distance),
             "tol": a.tol,
             "segments": res.segments.len(),
@@ -281,9 +334,12 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
         if let Some(line) = input_line("input", &approx) {
             print_out(&line);
         }
+        if let Some(line) = grid_line(&grid, tol) {
+            print_out(&format!("{line}\n"));
+        }
         print_out(&text_report(
             &res,
-            method,
+            (method, output),
             &a.tol,
             (lo, hi),
             verdict,
@@ -301,7 +357,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
 
 fn text_report(
     res: &OffsetResult,
-    method: OffsetMethod,
+    (method, output): (OffsetMethod, Output),
     tol_text: &str,
     (lo, hi): (f64, f64),
     verdict: &str,
@@ -310,9 +366,13 @@ fn text_report(
     global: bool,
 ) -> String {
     let mut s = format!(
-        "offset at {} ({}, tol {}): {} segment(s) of degree {}, {} control points\n",
+        "offset at {} ({}{}, tol {}): {} segment(s) of degree {}, {} control points\n",
         res.distance,
         method.name(),
+        match output {
+            Output::Native => String::new(),
+            o => format!(", output {}", o.name()),
+        },
         tol_text,
         res.segments.len(),
         res.degree(),
