@@ -17,6 +17,15 @@
 //! | `G2` | 004 | degree `n + 3` from the approximated normal field ([`g2`]) | G², C¹ at the joints |
 //! | `LnPair` | 000 §6 | a cubic `pa + ca` from a pair of LN cubics ([`lnpair`]) | G¹ |
 //!
+//! | [`Output`] | segment | continuity |
+//! |---|---|---|
+//! | `Native` (default) | the construction of the method above | as above |
+//! | `Cubic` | a cubic fitted to the exact offset of the span ([`fit`]) | G¹, shared end points |
+//! | `Quadratic` | the tangent-intersection quadratic ([`fit`]) | G¹, shared end points |
+//!
+//! With [`OffsetOptions::grid`] every control point is rounded to a dyadic
+//! grid and the rounded segment is what is proven.
+//!
 //! The constructions run in `f64` and are heuristics; only the certification
 //! decides. Preprocessing ([`prep`]) splits the input at inflections and
 //! where its Gauss map turns by 0.9π or more, reports the cusps of the exact offset (where
