@@ -258,7 +258,7 @@ fn solve_ls(e: &FitEnds, q: &[DVec2], u: &[f64]) -> Option<Bezier<f64>> {
         r2 -= b2 * t1.dot(r);
     }
     let det = m11 * m22 - m12 * m12;
-    if !(det.abs() > 1e-300) {
+    if det.abs().partial_cmp(&1e-300) != Some(std::cmp::Ordering::Greater) {
         return None;
     }
     let a = (r1 * m22 - m12 * r2) / det;
@@ -282,7 +282,7 @@ fn project(c: &Bezier<f64>, p: DVec2, mut u: f64) -> f64 {
             + (pts[3] - pts[2] * 2.0 + pts[1]) * (6.0 * u);
         let r = b - p;
         let den = d1.dot(d1) + r.dot(d2);
-        if !(den > 0.0) {
+        if den.is_nan() || den <= 0.0 {
             break;
         }
         let next = (u - r.dot(d1) / den).clamp(0.0, 1.0);
@@ -667,7 +667,7 @@ pub fn check_grid(grid: &Rational, tol: f64, scale: f64) -> Result<f64, OffsetEr
         )));
     }
     let mv = rounding_move(grid);
-    if !(mv < tol) {
+    if mv.is_nan() || tol.is_nan() || mv >= tol {
         return Err(bad(format!(
             "rounding to {grid} moves the curve by up to {mv:e} (grid·√2/2) ≥ the tolerance {tol:e}: \
              it cannot be reached; use a finer grid"
