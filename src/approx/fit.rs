@@ -725,13 +725,22 @@ mod tests {
 
     #[test]
     fn g2_hermite_reproduces_end_curvatures() {
+        // an arc of the ellipse (2 cos θ, sin θ), θ ∈ [0.2, 1.1]
+        let (a, b) = (2.0f64, 1.0f64);
+        let at = |th: f64| {
+            let p = V2::new(a * th.cos(), b * th.sin());
+            let d = DVec2::new(-a * th.sin(), b * th.cos());
+            let k = a * b / (d.length().powi(3));
+            (p, v2(d.normalize()), k)
+        };
+        let ((p0, t0, k0), (p1, t1, k1)) = (at(0.2), at(1.1));
         let e = FitEnds {
-            p0: V2::new(0.0, 0.0),
-            p1: V2::new(2.0, 0.3),
-            t0: V2::new(0.8, 0.6),
-            t1: V2::new(0.8, -0.6),
-            k0: -0.7,
-            k1: -0.4,
+            p0,
+            p1,
+            t0,
+            t1,
+            k0,
+            k1,
         };
         let cs = g2_hermite_cubics(&e);
         assert!(!cs.is_empty());
