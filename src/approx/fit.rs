@@ -124,7 +124,7 @@ fn hermite(e: &FitEnds, a: f64, b: f64) -> Bezier<f64> {
 /// ```
 /// use lncert::approx::fit::{g2_hermite_cubics, FitEnds};
 /// use lncert::curve::V2;
-/// // a quarter of the unit circle: one solution, a = b ≈ 0.5519 (the classical 0.5523)
+/// // a quarter of the unit circle: a = b = (√7 − 1)/3 ≈ 0.5486 (3a²/2 + a − 1 = 0)
 /// let e = FitEnds {
 ///     p0: V2::new(1.0, 0.0), p1: V2::new(0.0, 1.0),
 ///     t0: V2::new(0.0, 1.0), t1: V2::new(-1.0, 0.0), k0: 1.0, k1: 1.0,
@@ -132,7 +132,7 @@ fn hermite(e: &FitEnds, a: f64, b: f64) -> Bezier<f64> {
 /// let c = g2_hermite_cubics(&e);
 /// assert!(!c.is_empty());
 /// let a = c[0].points()[1].y;
-/// assert!((a - 0.5519).abs() < 1e-3, "{a}");
+/// assert!((a - (7f64.sqrt() - 1.0) / 3.0).abs() < 1e-9, "{a}");
 /// ```
 pub fn g2_hermite_cubics(e: &FitEnds) -> Vec<Bezier<f64>> {
     let (p0, p1, t0, t1) = (dv(&e.p0), dv(&e.p1), dv(&e.t0), dv(&e.t1));
