@@ -17,6 +17,15 @@
 //! | `G2` | 004 | degree `n + 3` from the approximated normal field ([`g2`]) | G², C¹ at the joints |
 //! | `LnPair` | 000 §6 | a cubic `pa + ca` from a pair of LN cubics ([`lnpair`]) | G¹ |
 //!
+//! | [`Output`] | segment | continuity |
+//! |---|---|---|
+//! | `Native` (default) | the construction of the method above | as above |
+//! | `Cubic` | a cubic fitted to the exact offset of the span ([`fit`]) | G¹, shared end points |
+//! | `Quadratic` | the tangent-intersection quadratic ([`fit`]) | G¹, shared end points |
+//!
+//! With [`OffsetOptions::grid`] every control point is rounded to a dyadic
+//! grid and the rounded segment is what is proven.
+//!
 //! The constructions run in `f64` and are heuristics; only the certification
 //! decides. Preprocessing ([`prep`]) splits the input at inflections and
 //! where its Gauss map turns by 0.9π or more, reports the cusps of the exact offset (where
@@ -39,6 +48,7 @@
 
 pub mod arc;
 pub mod conv;
+pub mod fit;
 pub mod g2;
 pub mod lnpair;
 pub mod prep;
@@ -50,6 +60,8 @@ use crate::shape::ShapeDesc;
 use num_traits::Zero;
 use prep::{Junction, OffsetCusp};
 use rayon::prelude::*;
+
+pub use fit::Output;
 
 /// Which construction builds the segments.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -125,6 +137,20 @@ pub struct OffsetOptions {
     /// §5's rule (a), (b) or (c) ([`lnpair::Subdivision`]; default (a), the
     /// mid-angle). G² spans are halved.
     pub subdivision: lnpair::Subdivision,
+    /// What the segments are (default [`Output::Native`]: the construction's
+    /// own). `Cubic` / `Quadratic` fit cubics / quadratics to the exact curve
+    /// of each span ([`fit`]) instead of running the construction of `method`;
+    /// `method` still chooses the split rule (G2: halves, LN pair: the
+    /// mid-angle) and, for convolutions, whether the sides are cut at their
+    /// cusps first (G2). The paper's error measure belongs to native LN pairs
+    /// and is not evaluated for fitted segments.
+    pub output: Output,
+    /// Round every output control point to the nearest multiple of this exact
+    /// dyadic grid (default none; see [`fit::check_grid`]) and prove the
+    /// rounded segment. The construction is pre-checked (sampled) within
+    /// `tol − grid·√2/2` ([`fit::rounding_move`]), the rest of the tolerance
+    /// is left to the rounding; the certification decides.
+    pub grid: Option<Rational>,
 }
 
 impl OffsetOptions {
@@ -142,6 +168,8 @@ impl OffsetOptions {
             certify: true,
             search_only: false,
             subdivision: lnpair::Subdivision::MidAngle,
+            output: Output::Native,
+            grid: None,
         }
     }
 }
@@ -465,6 +493,9 @@ fn check_limits(opts: &OffsetOptions, scale: f64, margin: f64) -> Result<(), Off
     if opts.max_segments == 0 || opts.max_boxes == 0 {
         return Err(bad("max_segments", "limits must be ≥ 1"));
     }
+    if let Some(g) = &opts.grid {
+        fit::check_grid(g, opts.tol - margin, scale)?;
+    }
     Ok(())
 }
 
@@ -533,10 +564,14 @@ pub fn span_f64(x: &Bezier<Rational>, t: (f64, f64)) -> Option<Bezier<f64>> {
 /// normals (so neighbours share end points exactly).
 fn construct(
     method: OffsetMethod,
+    output: Output,
     x: &Bezier<Rational>,
     t: (f64, f64),
     kernel: &Kernel,
 ) -> Option<(Bezier<f64>, Option<lnpair::LnPairPiece>)> {
+    if output != Output::Native {
+        return fit::construct(output, x, t, kernel).map(|b| (b, None));
+    }
     let sub = span_f64(x, t)?;
     let d = match kernel {
         Kernel::Offset { df, .. } => *df,
@@ -594,8 +629,17 @@ fn certify_segment(
 ) -> (Option<OffsetSegment>, f64, bool) {
     let split = 0.5;
     let d = kernel.reach();
-    let Some((bez, pair)) = construct(opts.method, x, task.t, kernel) else {
+    let Some((built, pair)) = construct(opts.method, opts.output, x, task.t, kernel) else {
         return (None, split_point(opts, x, task.t, kernel, None), false);
+    };
+    // with a grid: the written (rounded) numbers are proven; the construction
+    // is pre-checked within `tol − rounding move`
+    let (bez, unrounded, fit_tol) = match &opts.grid {
+        None => (built, None, opts.tol),
+        Some(g) => match fit::round_to_grid(&built, g) {
+            Some(r) => (r, Some(built), opts.tol - fit::rounding_move(g)),
+            None => return (None, split_point(opts, x, task.t, kernel, pair.as_ref()), false),
+        },
     };
     // The pieces of the span's exact offset (`ShapeDesc::Offset` of the exact
     // restriction of `x`) and of the segment, enclosed without rationals.
@@ -630,9 +674,13 @@ fn certify_segment(
     // split without a proof: only acceptance needs one, and refuting the span
     // with a certified lower bound costs more than the rest of its search. At
     // the depth limit the span is bounded anyway, to report it.
+    let pre = |pb: &[crate::certify::piece::Piece]| crate::certify::sampled_pieces(&pa, pb, 8);
     if !opts.accept_paper
         && task.depth < opts.max_depth
-        && crate::certify::sampled_pieces(&pa, &pb, 8) > opts.tol
+        && match &unrounded {
+            None => pre(&pb) > fit_tol,
+            Some(u) => crate::certify::piece::bezier_f64(u).is_none_or(|p| pre(&[p]) > fit_tol),
+        }
     {
         return (
             Some(unproven(None)),
@@ -844,23 +892,27 @@ pub fn offset(
     opts: &OffsetOptions,
 ) -> Result<OffsetResult, OffsetError> {
     check_options(curve, opts)?;
-    // the exact cusp isolation does not depend on the segments: beside them
-    let (cusps, segs) = rayon::join(
-        || {
-            curve
-                .iter()
-                .enumerate()
-                .flat_map(|(i, x)| prep::offset_cusps(i, x, &opts.distance))
-                .collect()
-        },
-        || {
-            let kernel = Kernel::Offset {
-                d: opts.distance.clone(),
-                df: opts.distance.approx(),
-            };
-            offset_segments(curve, opts, &kernel, &[])
-        },
-    );
+    let find_cusps = || -> Vec<OffsetCusp> {
+        curve
+            .iter()
+            .enumerate()
+            .flat_map(|(i, x)| prep::offset_cusps(i, x, &opts.distance))
+            .collect()
+    };
+    let kernel = Kernel::Offset {
+        d: opts.distance.clone(),
+        df: opts.distance.approx(),
+    };
+    let (cusps, segs) = if opts.output == Output::Native {
+        // the exact cusp isolation does not depend on the segments: beside them
+        rayon::join(find_cusps, || offset_segments(curve, opts, &kernel, &[]))
+    } else {
+        // a fitted cubic or quadratic cannot turn back: cut at the cusps first
+        let cusps = find_cusps();
+        let cuts = cusp_cuts(curve.len(), fit::cusps_to_cut(&cusps, opts.tol).into_iter());
+        let segs = offset_segments(curve, opts, &kernel, &cuts);
+        (cusps, segs)
+    };
     let (segments, unreached, certified_hi, certifications, spans) = segs;
     Ok(OffsetResult {
         method: opts.method,
@@ -935,7 +987,10 @@ pub fn convolve(
         .map(|i| {
             cusps
                 .iter()
-                .filter(|c| c.piece == i && opts.method == OffsetMethod::G2)
+                .filter(|c| {
+                    c.piece == i
+                        && (opts.method == OffsetMethod::G2 || opts.output != Output::Native)
+                })
                 .map(|c| c.t_approx)
                 .collect()
         })
@@ -1090,6 +1145,17 @@ fn offset_segments(
         searches.into_inner(),
         spans,
     )
+}
+
+/// Per piece, the parameters `(piece, t)` to cut the initial spans at.
+fn cusp_cuts(pieces: usize, at: impl Iterator<Item = (usize, f64)>) -> Vec<Vec<f64>> {
+    let mut cuts = vec![Vec::new(); pieces];
+    for (i, t) in at {
+        if let Some(c) = cuts.get_mut(i) {
+            c.push(t);
+        }
+    }
+    cuts
 }
 
 /// The junctions of consecutive pieces that need a join arc or trimming, and the

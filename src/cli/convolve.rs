@@ -61,6 +61,14 @@ pub struct ConvolveArgs {
     /// two distances, weighted; the paper's choice for the font 'H').
     #[arg(long, default_value = "a")]
     pub subdivision: String,
+    /// Output curves: native, cubic or quadratic (fitted to the exact
+    /// convolution of each span, proven the same way).
+    #[arg(long, default_value = "native")]
+    pub output: String,
+    /// Round every output control point to a multiple of this exact dyadic
+    /// grid (e.g. 1/2048) and prove the rounded curve.
+    #[arg(long, allow_hyphen_values = true)]
+    pub grid: Option<String>,
     /// Also compute seed 000 §5's error measure d_H(p, pa) + d_H(q, qa) per
     /// LN-pair segment (certified upper bounds; reported, not used).
     #[arg(long)]
@@ -145,6 +153,7 @@ fn conv_err(e: OffsetError) -> CliError {
         "method" => "--method".to_string(),
         "max_depth" => "--max-depth".to_string(),
         "max_segments" => "--max-segments".to_string(),
+        "grid" => "--grid".to_string(),
         f => format!("CURVE: {f}"),
     };
     bad(&flag, reason)
@@ -177,6 +186,7 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
             ),
         ));
     }
+    let (output, grid) = super::offset::output_and_grid(&a.output, a.grid.as_deref())?;
     let tol_q = number("--tol", &a.tol)?;
     let tol = interval_from_rational(&tol_q).inf();
     let pen = pen_of(a, tol)?;
@@ -199,6 +209,8 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
         opts.method = lncert::approx::OffsetMethod::LnPair;
     }
     opts.subdivision = super::args::subdivision(&a.subdivision, &a.method)?;
+    opts.output = output;
+    opts.grid = grid.clone();
     opts.paper_error = a.paper_error;
     opts.accept_paper = match a.accept.as_str() {
         "certified" => false,
@@ -306,6 +318,12 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
             },
             "tol": a.tol,
             "method": a.method,
+            "output": output.name(),
+            "grid": grid.as_ref().map(|g| json!({
+                "grid": q(g),
+                "rounding_move": lncert::approx::fit::rounding_move(g),
+                "fit_tol": tol - pen.margin - lncert::approx::fit::rounding_move(g),
+            })),
             "verdict": overall,
             "sides": results.iter().map(|(name, r, secs)| {
                 let c = r.convolution.as_ref();
@@ -344,13 +362,17 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
         let mut s = format!(
             "convolution with the pen {} ({}, tol {}):\n",
             pen.description,
-            if a.method == "g2" {
-                "seed 001 G²"
-            } else {
-                "seed 000 §5 cubic LN pairs"
+            match (output, a.method.as_str()) {
+                (lncert::approx::Output::Cubic, _) => "fitted cubics",
+                (lncert::approx::Output::Quadratic, _) => "fitted quadratics",
+                (_, "g2") => "seed 001 G²",
+                _ => "seed 000 §5 cubic LN pairs",
             },
             a.tol
         );
+        if let Some(line) = super::offset::grid_line(&grid, tol - pen.margin) {
+            s += &format!("  {line}\n");
+        }
         if pen.margin > 0.0 {
             s += &format!(
                 "  the rotation is represented exactly rationally within {:.1e} rad: the convolutions move by ≤ {:.1e}, certified for tol − that\n",

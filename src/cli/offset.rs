@@ -26,7 +26,7 @@ use lncert::approx::arc::{offset_arc, ArcOffset};
 use lncert::approx::prep::Junction;
 use lncert::approx::{
     global_bounds, join_arcs, offset, union_certificate, OffsetError, OffsetMethod, OffsetOptions,
-    OffsetResult, ProofPath,
+    OffsetResult, Output, ProofPath,
 };
 use lncert::scalar::{interval_from_rational, Rational};
 use lncert::shape::{parse_arc_input, parse_curve_reported, InputApprox, TravelledArc};
@@ -61,6 +61,14 @@ pub struct OffsetArgs {
     /// distances, weighted).
     #[arg(long, default_value = "a")]
     pub subdivision: String,
+    /// Output curves: native (the method's own segments), cubic or quadratic
+    /// (Béziers fitted to the exact offset of each span, proven the same way).
+    #[arg(long, default_value = "native")]
+    pub output: String,
+    /// Round every output control point to a multiple of this exact dyadic
+    /// grid (e.g. 1/2048) and prove the rounded curve.
+    #[arg(long, allow_hyphen_values = true)]
+    pub grid: Option<String>,
     /// Write a certificate of d_H ≤ TOL (re-check it with `lncert verify`).
     #[arg(long)]
     pub certificate: Option<PathBuf>,
@@ -120,9 +128,45 @@ fn offset_err(e: OffsetError) -> CliError {
         "tol" => "--tol".to_string(),
         "max_depth" => "--max-depth".to_string(),
         "max_segments" => "--max-segments".to_string(),
+        "grid" => "--grid".to_string(),
         f => format!("CURVE: {f}"),
     };
     bad(&flag, reason)
+}
+
+/// Parses `--output` and `--grid` (shared with `convolve`).
+pub fn output_and_grid(
+    output: &str,
+    grid: Option<&str>,
+) -> Result<(Output, Option<Rational>), CliError> {
+    let out = Output::parse(output).ok_or_else(|| {
+        bad(
+            "--output",
+            format!("unknown output {output:?}; expected native, cubic or quadratic"),
+        )
+    })?;
+    let grid = match grid {
+        None => None,
+        Some(text) => {
+            let g = number("--grid", text)?;
+            if g <= Rational::from_integer(0.into()) {
+                return Err(bad("--grid", format!("{text} must be > 0")));
+            }
+            Some(g)
+        }
+    };
+    Ok((out, grid))
+}
+
+/// The line saying how the tolerance is split between the fit and the rounding.
+pub fn grid_line(grid: &Option<Rational>, tol: f64) -> Option<String> {
+    grid.as_ref().map(|g| {
+        let mv = lncert::approx::fit::rounding_move(g);
+        format!(
+            "grid {g}: control points rounded to multiples of {g}; the tolerance is split as fit ≤ {:.6e} (sampled pre-check) + rounding ≤ {mv:.6e} (grid·√2/2); the rounded curve is what is proven",
+            tol - mv
+        )
+    })
 }
 
 /// Runs the command; returns the exit code.
@@ -146,10 +190,11 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             format!("unknown method {:?}; expected g2 or ln-pair", a.method),
         )
     })?;
-    if a.path_out.is_some() && method == OffsetMethod::G2 {
+    let (output, grid) = output_and_grid(&a.output, a.grid.as_deref())?;
+    if a.path_out.is_some() && method == OffsetMethod::G2 && output == Output::Native {
         return Err(bad(
             "--path-out",
-            "G2 segments have degree n + 3 ≥ 4, which SVG path data cannot store: use --method ln-pair (cubic), or --curve-out",
+            "G2 segments have degree n + 3 ≥ 4, which SVG path data cannot store: use --output cubic, --method ln-pair (cubic), or --curve-out",
         ));
     }
     let (curve, approx) = match a.glyph {
@@ -179,6 +224,8 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     let mut opts = OffsetOptions::new(distance, tol);
     opts.method = method;
     opts.subdivision = super::args::subdivision(&a.subdivision, &a.method)?;
+    opts.output = output;
+    opts.grid = grid.clone();
     opts.max_depth = a.max_depth;
     opts.max_segments = a.max_segments;
     if a.max_boxes == 0 || a.max_boxes > 50_000_000 {
@@ -244,6 +291,12 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     if a.json {
         let doc = json!({
             "method": method.name(),
+            "output": output.name(),
+            "grid": grid.as_ref().map(|g| json!({
+                "grid": q(g),
+                "rounding_move": lncert::approx::fit::rounding_move(g),
+                "fit_tol": tol - lncert::approx::fit::rounding_move(g),
+            })),
             "distance": q(&res.distance),
             "tol": a.tol,
             "segments": res.segments.len(),
@@ -287,9 +340,12 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
         if let Some(line) = input_line("input", &approx) {
             print_out(&line);
         }
+        if let Some(line) = grid_line(&grid, tol) {
+            print_out(&format!("{line}\n"));
+        }
         print_out(&text_report(
             &res,
-            method,
+            (method, output),
             &a.tol,
             (lo, hi),
             verdict,
@@ -307,7 +363,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
 
 fn text_report(
     res: &OffsetResult,
-    method: OffsetMethod,
+    (method, output): (OffsetMethod, Output),
     tol_text: &str,
     (lo, hi): (f64, f64),
     verdict: &str,
@@ -316,9 +372,13 @@ fn text_report(
     global: bool,
 ) -> String {
     let mut s = format!(
-        "offset at {} ({}, tol {}): {} segment(s) of degree {}, {} control points\n",
+        "offset at {} ({}{}, tol {}): {} segment(s) of degree {}, {} control points\n",
         res.distance,
         method.name(),
+        match output {
+            Output::Native => String::new(),
+            o => format!(", output {}", o.name()),
+        },
         tol_text,
         res.segments.len(),
         res.degree(),

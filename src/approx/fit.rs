@@ -1,0 +1,773 @@
+//! Fitted output: the cubic or quadratic Bézier segments users store (CFF,
+//! SVG, PDF: cubics; TrueType: quadratics), fitted to the **exact** offset or
+//! convolution of a span and then proven against it like any other segment.
+//!
+//! The fit is a float heuristic: only the certification of the written numbers
+//! decides (see `proofs/offset-fit.md`). Per span `[t₀, t₁]`:
+//!
+//! | [`Output`] | segment | ends | inner control points |
+//! |---|---|---|---|
+//! | `Native` | the construction of [`super::OffsetMethod`] (degree `n + 3` or LN-pair cubic) | canonical | the construction's |
+//! | `Cubic` | cubic | canonical | on the exact end tangents; handle lengths from the G² Hermite system ([`g2_hermite_cubics`]), least squares ([`least_squares_cubic`]) or thirds of the chord, the one with the smallest sampled error, then lowered by a Nelder–Mead search on the sampled max error |
+//! | `Quadratic` | quadratic | canonical | the intersection of the exact end tangents ([`tangent_quadratic`]); none when they do not meet ahead (the span is split) |
+//!
+//! *Canonical* end points are those of the native path: `x(tᵢ) + d Nᵢ` with
+//! [`super::prep::unit_left_normal`] (or the pen point
+//! [`super::conv::pen_point_at`] of a convolution), computed with the same
+//! float operations, so neighbouring segments share their end points bit for
+//! bit. The exact curve's tangent at a parameter is `(1 + λ) x′`
+//! (`λ = −d κ` for an offset, `κ` the signed curvature of `x`: past a cusp of
+//! the offset, `1 − d κ < 0`, its tangent is reversed) and its signed
+//! curvature along its own parameter is `κ / |1 + λ|`.
+//!
+//! [`round_to_grid`] rounds control points to multiples of a dyadic grid
+//! ([`check_grid`]); the driver proves the rounded segment.
+
+use super::{conv, prep, Kernel, OffsetError};
+use crate::curve::{Bezier, V2};
+use crate::scalar::{interval_from_rational, rational_from_f64, Rational, Scalar};
+use glam::DVec2;
+use num_traits::Signed;
+
+/// Which curves the output consists of.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Output {
+    /// The construction's own segments ([`super::OffsetMethod`]: degree `n + 3`
+    /// for G2, cubic LN pairs) — today's behaviour.
+    #[default]
+    Native,
+    /// Cubic Béziers fitted to the exact curve (G¹ at the joints: shared end
+    /// points and tangent directions).
+    Cubic,
+    /// Quadratic Béziers (tangent-intersection control point, G¹).
+    Quadratic,
+}
+
+impl Output {
+    /// The CLI name: `native`, `cubic` or `quadratic`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Output::Native => "native",
+            Output::Cubic => "cubic",
+            Output::Quadratic => "quadratic",
+        }
+    }
+    /// Parses a CLI name.
+    ///
+    /// # Examples
+    /// ```
+    /// use lncert::approx::Output;
+    /// assert_eq!(Output::parse("cubic"), Some(Output::Cubic));
+    /// assert_eq!(Output::parse("quintic"), None);
+    /// ```
+    pub fn parse(s: &str) -> Option<Self> {
+        match s {
+            "native" => Some(Output::Native),
+            "cubic" => Some(Output::Cubic),
+            "quadratic" | "quad" => Some(Output::Quadratic),
+            _ => None,
+        }
+    }
+}
+
+/// The end data of a fit: end points, unit tangents in the direction of
+/// travel (from the first end to the second), signed curvatures along it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FitEnds {
+    /// Start point.
+    pub p0: V2<f64>,
+    /// End point.
+    pub p1: V2<f64>,
+    /// Unit tangent at the start.
+    pub t0: V2<f64>,
+    /// Unit tangent at the end.
+    pub t1: V2<f64>,
+    /// Signed curvature at the start (`> 0` turning left); may be non-finite.
+    pub k0: f64,
+    /// Signed curvature at the end.
+    pub k1: f64,
+}
+
+fn dv(p: &V2<f64>) -> DVec2 {
+    DVec2::new(p.x, p.y)
+}
+
+fn v2(p: DVec2) -> V2<f64> {
+    V2::new(p.x, p.y)
+}
+
+/// The cubic `p0, p0 + a t0, p1 − b t1, p1`.
+fn hermite(e: &FitEnds, a: f64, b: f64) -> Bezier<f64> {
+    let (p0, p1, t0, t1) = (dv(&e.p0), dv(&e.p1), dv(&e.t0), dv(&e.t1));
+    Bezier::new(vec![
+        e.p0.clone(),
+        v2(p0 + t0 * a),
+        v2(p1 - t1 * b),
+        e.p1.clone(),
+    ])
+}
+
+/// The G² cubic Hermite interpolants (de Boor, Höllig, Sabin 1987): the cubics
+/// `p0, p0 + a t0, p1 − b t1, p1` with `a, b > 0` whose end curvatures are
+/// `k0`, `k1`, from
+///
+/// ```text
+/// (3/2) k0 a² = t0 × c − (t0 × t1) b,    (3/2) k1 b² = c × t1 − (t0 × t1) a
+/// ```
+///
+/// (`c = p1 − p0`): eliminating `b` leaves a quartic in `a`, whose roots in
+/// `(0, 3|c|]` are found by sign changes on a grid and bisection. Parallel end
+/// tangents give the decoupled `a = √(2 (t0 × c)/(3 k0))` and likewise `b`.
+/// Empty when there is no positive solution (the caller falls back).
+///
+/// # Examples
+/// ```
+/// use lncert::approx::fit::{g2_hermite_cubics, FitEnds};
+/// use lncert::curve::V2;
+/// // a quarter of the unit circle: a = b = (√7 − 1)/3 ≈ 0.5486 (3a²/2 + a − 1 = 0)
+/// let e = FitEnds {
+///     p0: V2::new(1.0, 0.0), p1: V2::new(0.0, 1.0),
+///     t0: V2::new(0.0, 1.0), t1: V2::new(-1.0, 0.0), k0: 1.0, k1: 1.0,
+/// };
+/// let c = g2_hermite_cubics(&e);
+/// assert!(!c.is_empty());
+/// let a = c[0].points()[1].y;
+/// assert!((a - (7f64.sqrt() - 1.0) / 3.0).abs() < 1e-9, "{a}");
+/// ```
+pub fn g2_hermite_cubics(e: &FitEnds) -> Vec<Bezier<f64>> {
+    let (p0, p1, t0, t1) = (dv(&e.p0), dv(&e.p1), dv(&e.t0), dv(&e.t1));
+    let c = p1 - p0;
+    let len = c.length();
+    let (k0, k1) = (e.k0, e.k1);
+    if !(len > 0.0 && k0.is_finite() && k1.is_finite()) {
+        return Vec::new();
+    }
+    let aa = t0.perp_dot(c);
+    let bb = c.perp_dot(t1);
+    let cr = t0.perp_dot(t1);
+    let ok = |a: f64, b: f64| a > 0.0 && b > 0.0 && a < 3.0 * len && b < 3.0 * len;
+    let mut out = Vec::new();
+    if cr.abs() < 1e-9 {
+        if k0 == 0.0 || k1 == 0.0 {
+            return out;
+        }
+        let (a2, b2) = (2.0 * aa / (3.0 * k0), 2.0 * bb / (3.0 * k1));
+        if a2 > 0.0 && b2 > 0.0 && ok(a2.sqrt(), b2.sqrt()) {
+            out.push(hermite(e, a2.sqrt(), b2.sqrt()));
+        }
+        return out;
+    }
+    // b(a) = (aa − 1.5 k0 a²)/cr;  f(a) = 1.5 k1 b(a)² + cr a − bb = 0
+    let b_of = |a: f64| (aa - 1.5 * k0 * a * a) / cr;
+    let f = |a: f64| {
+        let b = b_of(a);
+        1.5 * k1 * b * b + cr * a - bb
+    };
+    const GRID: usize = 240;
+    let hi = 3.0 * len;
+    let mut prev = (0.0, f(0.0));
+    for i in 1..=GRID {
+        let a = hi * i as f64 / GRID as f64;
+        let fa = f(a);
+        if prev.1 == 0.0 || prev.1.signum() != fa.signum() {
+            let (mut lo, mut up, flo) = (prev.0, a, prev.1);
+            for _ in 0..60 {
+                let m = 0.5 * (lo + up);
+                if f(m).signum() == flo.signum() && flo != 0.0 {
+                    lo = m;
+                } else {
+                    up = m;
+                }
+            }
+            let a = 0.5 * (lo + up);
+            let b = b_of(a);
+            if ok(a, b) {
+                out.push(hermite(e, a, b));
+            }
+        }
+        prev = (a, fa);
+    }
+    out
+}
+
+/// The cubic `p0, p0 + a t0, p1 − b t1, p1` closest in least squares to the
+/// interior `samples` (in order along the curve), parametrised by chord length
+/// and then `passes` times by projecting each sample onto the current cubic
+/// (a linear 2 × 2 problem in `a`, `b` per pass). `None` when `a` or `b` comes
+/// out non-positive or the system is singular.
+///
+/// # Examples
+/// ```
+/// use lncert::approx::fit::{least_squares_cubic, FitEnds};
+/// use lncert::curve::V2;
+/// let s: Vec<V2<f64>> = (1..16)
+///     .map(|j| { let u = std::f64::consts::FRAC_PI_2 * j as f64 / 16.0; V2::new(u.cos(), u.sin()) })
+///     .collect();
+/// let e = FitEnds {
+///     p0: V2::new(1.0, 0.0), p1: V2::new(0.0, 1.0),
+///     t0: V2::new(0.0, 1.0), t1: V2::new(-1.0, 0.0), k0: 1.0, k1: 1.0,
+/// };
+/// let c = least_squares_cubic(&e, &s, 2).unwrap();
+/// assert!((c.points()[1].y - 0.552).abs() < 5e-3);
+/// ```
+pub fn least_squares_cubic(e: &FitEnds, samples: &[V2<f64>], passes: usize) -> Option<Bezier<f64>> {
+    let (p0, p1) = (dv(&e.p0), dv(&e.p1));
+    let q: Vec<DVec2> = samples.iter().map(dv).collect();
+    if q.is_empty() {
+        return None;
+    }
+    // chord-length parameters (the ends at 0 and 1)
+    let mut u = Vec::with_capacity(q.len());
+    let mut acc = 0.0;
+    let mut last = p0;
+    for p in &q {
+        acc += (*p - last).length();
+        u.push(acc);
+        last = *p;
+    }
+    let total = acc + (p1 - last).length();
+    if !(total > 0.0 && total.is_finite()) {
+        return None;
+    }
+    for x in &mut u {
+        *x /= total;
+    }
+    let mut best = solve_ls(e, &q, &u)?;
+    for _ in 0..passes {
+        for (p, t) in q.iter().zip(u.iter_mut()) {
+            *t = project(&best, *p, *t);
+        }
+        best = solve_ls(e, &q, &u)?;
+    }
+    Some(best)
+}
+
+fn solve_ls(e: &FitEnds, q: &[DVec2], u: &[f64]) -> Option<Bezier<f64>> {
+    let (p0, p1, t0, t1) = (dv(&e.p0), dv(&e.p1), dv(&e.t0), dv(&e.t1));
+    let (mut m11, mut m12, mut m22, mut r1, mut r2) = (0.0, 0.0, 0.0, 0.0, 0.0);
+    let tt = t0.dot(t1);
+    for (p, &s) in q.iter().zip(u) {
+        let w = 1.0 - s;
+        let (b0, b1, b2, b3) = (w * w * w, 3.0 * w * w * s, 3.0 * w * s * s, s * s * s);
+        // p − (b0 + b1) p0 − (b2 + b3) p1 = a b1 t0 − b b2 t1
+        let r = *p - p0 * (b0 + b1) - p1 * (b2 + b3);
+        m11 += b1 * b1;
+        m12 -= b1 * b2 * tt;
+        m22 += b2 * b2;
+        r1 += b1 * t0.dot(r);
+        r2 -= b2 * t1.dot(r);
+    }
+    let det = m11 * m22 - m12 * m12;
+    if det.abs().partial_cmp(&1e-300) != Some(std::cmp::Ordering::Greater) {
+        return None;
+    }
+    let a = (r1 * m22 - m12 * r2) / det;
+    let b = (m11 * r2 - m12 * r1) / det;
+    (a > 0.0 && b > 0.0 && a.is_finite() && b.is_finite()).then(|| hermite(e, a, b))
+}
+
+/// The parameter of the point of the cubic nearest `p`, by Newton steps from `u`.
+fn project(c: &Bezier<f64>, p: DVec2, mut u: f64) -> f64 {
+    let pts: Vec<DVec2> = c.points().iter().map(dv).collect();
+    for _ in 0..4 {
+        let w = 1.0 - u;
+        let b = pts[0] * (w * w * w)
+            + pts[1] * (3.0 * w * w * u)
+            + pts[2] * (3.0 * w * u * u)
+            + pts[3] * (u * u * u);
+        let d1 = (pts[1] - pts[0]) * (3.0 * w * w)
+            + (pts[2] - pts[1]) * (6.0 * w * u)
+            + (pts[3] - pts[2]) * (3.0 * u * u);
+        let d2 = (pts[2] - pts[1] * 2.0 + pts[0]) * (6.0 * w)
+            + (pts[3] - pts[2] * 2.0 + pts[1]) * (6.0 * u);
+        let r = b - p;
+        let den = d1.dot(d1) + r.dot(d2);
+        if den.is_nan() || den <= 0.0 {
+            break;
+        }
+        let next = (u - r.dot(d1) / den).clamp(0.0, 1.0);
+        if !next.is_finite() {
+            break;
+        }
+        u = next;
+    }
+    u
+}
+
+/// The quadratic whose control point is the intersection of the end tangent
+/// lines `p0 + a t0`, `p1 − b t1` (`a, b > 0`: the tangents meet ahead), the G¹
+/// quadratic of the ends; for collinear ends on a line, the midpoint. `None`
+/// otherwise.
+///
+/// # Examples
+/// ```
+/// use lncert::approx::fit::{tangent_quadratic, FitEnds};
+/// use lncert::curve::V2;
+/// let e = FitEnds {
+///     p0: V2::new(1.0, 0.0), p1: V2::new(0.0, 1.0),
+///     t0: V2::new(0.0, 1.0), t1: V2::new(-1.0, 0.0), k0: 1.0, k1: 1.0,
+/// };
+/// assert_eq!(tangent_quadratic(&e).unwrap().points()[1], V2::new(1.0, 1.0));
+/// ```
+pub fn tangent_quadratic(e: &FitEnds) -> Option<Bezier<f64>> {
+    let (p0, p1, t0, t1) = (dv(&e.p0), dv(&e.p1), dv(&e.t0), dv(&e.t1));
+    let c = p1 - p0;
+    let len = c.length();
+    let cr = t0.perp_dot(t1);
+    let (aa, bb) = (t0.perp_dot(c), c.perp_dot(t1));
+    if cr.abs() <= 1e-12 {
+        // parallel tangents: only a straight span along them has a quadratic
+        let straight = aa.abs() <= 1e-12 * len && bb.abs() <= 1e-12 * len;
+        return (len > 0.0 && straight && t0.dot(c) > 0.0 && t1.dot(c) > 0.0)
+            .then(|| Bezier::new(vec![e.p0.clone(), v2((p0 + p1) * 0.5), e.p1.clone()]));
+    }
+    // a t0 + b t1 = c
+    let a = bb / cr;
+    let b = aa / cr;
+    (a > 0.0 && b > 0.0 && a.is_finite() && b.is_finite())
+        .then(|| Bezier::new(vec![e.p0.clone(), v2(p0 + t0 * a), e.p1.clone()]))
+}
+
+/// The exact curve's offset vector in floats: `d N` or the pen point.
+#[derive(Clone, Copy)]
+enum Reach {
+    Offset(f64),
+    Pen([f64; 3], i8),
+}
+
+impl Reach {
+    fn of(kernel: &Kernel) -> Reach {
+        match kernel {
+            Kernel::Offset { df, .. } => Reach::Offset(*df),
+            Kernel::Conv { qf, sigma, .. } => Reach::Pen(*qf, *sigma),
+        }
+    }
+    /// The offset vector for the (not necessarily unit) derivative `v`.
+    fn vector(self, v: DVec2) -> Option<DVec2> {
+        let l = v.length();
+        if !(l > 0.0 && l.is_finite()) {
+            return None;
+        }
+        let n = DVec2::new(-v.y / l, v.x / l);
+        match self {
+            Reach::Offset(d) => Some(n * d),
+            Reach::Pen(q, s) => conv::pen_point(&v2(n), q, s).map(|p| dv(&p)),
+        }
+    }
+    /// `λ` with `e′ = λ x′` (`v = x′`, `k = x′ × x″`).
+    fn lambda(self, v: DVec2, k: f64) -> f64 {
+        match self {
+            Reach::Offset(d) => -d * k / v.length().powi(3),
+            Reach::Pen(q, s) => {
+                let n = DVec2::new(-v.y, v.x);
+                let qn = q[0] * n.x * n.x + 2.0 * q[1] * n.x * n.y + q[2] * n.y * n.y;
+                let det = q[0] * q[2] - q[1] * q[1];
+                -f64::from(s) * k * det / (qn * qn.sqrt())
+            }
+        }
+    }
+}
+
+/// The canonical end point at `t` (the bits of the native path).
+fn end_point(
+    sub: &Bezier<f64>,
+    x: &Bezier<Rational>,
+    t: f64,
+    first: bool,
+    kernel: &Kernel,
+) -> Option<V2<f64>> {
+    let p = sub.points();
+    let base = if first { &p[0] } else { &p[p.len() - 1] };
+    match kernel {
+        Kernel::Offset { df, .. } => {
+            let n = prep::unit_left_normal(x, t)?;
+            Some(base.add(&n.scale(df)))
+        }
+        Kernel::Conv { qf, sigma, .. } => Some(base.add(&conv::pen_point_at(x, t, *qf, *sigma)?)),
+    }
+}
+
+/// Tangent (unit, direction of travel of the exact curve) and signed
+/// curvature of the exact curve at one end of the span.
+fn end_frame(
+    sub: &Bezier<f64>,
+    x: &Bezier<Rational>,
+    t: f64,
+    first: bool,
+    reach: Reach,
+) -> Option<(V2<f64>, f64)> {
+    let n = prep::unit_left_normal(x, t)?;
+    let tan = DVec2::new(n.y, -n.x);
+    let h = sub.hodograph();
+    let s = if first { 0.0 } else { 1.0 };
+    let v = h.eval_fast(s);
+    let a = if h.degree() == 0 {
+        DVec2::ZERO
+    } else {
+        h.hodograph().eval_fast(s)
+    };
+    let k = v.perp_dot(a);
+    let f = 1.0 + reach.lambda(v, k);
+    if !f.is_finite() || f == 0.0 {
+        return None;
+    }
+    let kappa = k / v.length().powi(3) / f.abs();
+    // at (or next to) a cusp of the exact curve `f` is ≈ 0 and its sign is
+    // noise: the direction of travel is that just inside the span
+    let sign = if f.abs() < 1e-3 {
+        let s = if first { 1.0 / 32.0 } else { 31.0 / 32.0 };
+        let (v, a) = (
+            h.eval_fast(s),
+            if h.degree() == 0 {
+                DVec2::ZERO
+            } else {
+                h.hodograph().eval_fast(s)
+            },
+        );
+        (1.0 + reach.lambda(v, v.perp_dot(a))).signum()
+    } else {
+        f.signum()
+    };
+    Some((v2(tan * sign), kappa))
+}
+
+/// Samples of the exact curve at `m − 1` interior parameters `j/m` of the span.
+fn samples(sub: &Bezier<f64>, reach: Reach, m: usize) -> Option<Vec<V2<f64>>> {
+    let h = sub.hodograph();
+    (1..m)
+        .map(|j| {
+            let s = j as f64 / m as f64;
+            let p = sub.eval_fast(s) + reach.vector(h.eval_fast(s))?;
+            (p.is_finite()).then(|| v2(p))
+        })
+        .collect()
+}
+
+/// A sampled one-sided distance from the exact curve's samples to the cubic
+/// (each sample projected by Newton steps; a float estimate, used only to
+/// choose and refine candidates).
+fn sampled_error(exact: &[DVec2], c: &Bezier<f64>) -> f64 {
+    const N: usize = 48;
+    let cs: Vec<DVec2> = (0..=N).map(|i| c.eval_fast(i as f64 / N as f64)).collect();
+    // exact samples onto the cubic: nearest sample, then Newton (one-sided:
+    // the curves are close, and the proofs check both directions)
+    exact
+        .iter()
+        .map(|p| {
+            let (i, _) = cs
+                .iter()
+                .enumerate()
+                .map(|(i, q)| (i, (*q - *p).length_squared()))
+                .fold((0, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
+            let u = project(c, *p, i as f64 / N as f64);
+            (c.eval_fast(u) - *p).length()
+        })
+        .fold(0.0, f64::max)
+}
+
+/// Evaluations of the sampled error spent by [`refine_minimax`].
+const REFINE_EVALS: usize = 40;
+
+/// Lowers the sampled (max) error of a cubic on the end tangents by a
+/// Nelder–Mead search over the two handle lengths (in log space), starting at
+/// `start`: the least squares and Hermite candidates minimise other measures.
+fn refine_minimax(e: &FitEnds, dense: &[DVec2], start: (f64, Bezier<f64>)) -> Bezier<f64> {
+    let handle =
+        |c: &Bezier<f64>, i: usize, j: usize| (dv(&c.points()[i]) - dv(&c.points()[j])).length();
+    let (a0, b0) = (handle(&start.1, 1, 0), handle(&start.1, 3, 2));
+    if !(a0 > 0.0 && b0 > 0.0) {
+        return start.1;
+    }
+    let eval = |p: [f64; 2]| {
+        let c = hermite(e, p[0].exp(), p[1].exp());
+        let err = sampled_error(dense, &c);
+        (if err.is_finite() { err } else { f64::INFINITY }, c)
+    };
+    let (la, lb) = (a0.ln(), b0.ln());
+    let mut simplex: Vec<([f64; 2], f64)> = vec![([la, lb], start.0)];
+    for p in [[la + 0.2, lb], [la, lb + 0.2]] {
+        simplex.push((p, eval(p).0));
+    }
+    let mut evals = 2;
+    while evals < REFINE_EVALS {
+        simplex.sort_by(|x, y| x.1.total_cmp(&y.1));
+        let (best, worst) = (simplex[0].0, simplex[2].0);
+        let c = [
+            (best[0] + simplex[1].0[0]) / 2.0,
+            (best[1] + simplex[1].0[1]) / 2.0,
+        ];
+        let at = |k: f64| [c[0] + k * (worst[0] - c[0]), c[1] + k * (worst[1] - c[1])];
+        let r = at(-1.0);
+        let fr = eval(r).0;
+        evals += 1;
+        if fr < simplex[0].1 {
+            let x = at(-2.0);
+            let fx = eval(x).0;
+            evals += 1;
+            simplex[2] = if fx < fr { (x, fx) } else { (r, fr) };
+        } else if fr < simplex[1].1 {
+            simplex[2] = (r, fr);
+        } else {
+            let k = at(0.5);
+            let fk = eval(k).0;
+            evals += 1;
+            if fk < simplex[2].1 {
+                simplex[2] = (k, fk);
+            } else {
+                // shrink towards the best
+                for v in simplex.iter_mut().skip(1) {
+                    v.0 = [(v.0[0] + best[0]) / 2.0, (v.0[1] + best[1]) / 2.0];
+                    v.1 = eval(v.0).0;
+                    evals += 1;
+                }
+            }
+        }
+    }
+    simplex.sort_by(|x, y| x.1.total_cmp(&y.1));
+    if simplex[0].1 < start.0 {
+        eval(simplex[0].0).1
+    } else {
+        start.1
+    }
+}
+
+/// Interior samples for the least squares fit.
+const LS_SAMPLES: usize = 16;
+/// Interior samples (dense) for choosing among candidates.
+const CHOICE_SAMPLES: usize = 48;
+
+/// The fitted segment of one span (`output` Cubic or Quadratic): `None` when
+/// no candidate exists (the driver splits the span).
+pub(super) fn construct(
+    output: super::Output,
+    x: &Bezier<Rational>,
+    t: (f64, f64),
+    kernel: &Kernel,
+) -> Option<Bezier<f64>> {
+    let sub = super::span_f64(x, t)?;
+    let reach = Reach::of(kernel);
+    let p0 = end_point(&sub, x, t.0, true, kernel)?;
+    let p1 = end_point(&sub, x, t.1, false, kernel)?;
+    let (t0, k0) = end_frame(&sub, x, t.0, true, reach)?;
+    let (t1, k1) = end_frame(&sub, x, t.1, false, reach)?;
+    let e = FitEnds {
+        p0,
+        p1,
+        t0,
+        t1,
+        k0,
+        k1,
+    };
+    match output {
+        Output::Quadratic => tangent_quadratic(&e),
+        Output::Native | Output::Cubic => {
+            let ls = samples(&sub, reach, LS_SAMPLES)?;
+            let mut cands = g2_hermite_cubics(&e);
+            cands.extend(least_squares_cubic(&e, &ls, 2));
+            let len = (dv(&e.p1) - dv(&e.p0)).length();
+            if len > 0.0 {
+                cands.push(hermite(&e, len / 3.0, len / 3.0));
+            }
+            if cands.len() == 1 {
+                return cands.pop();
+            }
+            let dense: Vec<DVec2> = std::iter::once(dv(&e.p0))
+                .chain(samples(&sub, reach, CHOICE_SAMPLES)?.iter().map(dv))
+                .chain(std::iter::once(dv(&e.p1)))
+                .collect();
+            let best = cands
+                .into_iter()
+                .map(|c| (sampled_error(&dense, &c), c))
+                .filter(|(err, _)| err.is_finite())
+                .min_by(|a, b| a.0.total_cmp(&b.0))?;
+            Some(refine_minimax(&e, &dense, best))
+        }
+    }
+}
+
+/// The cusps of an offset at which a fitted output cuts its initial spans:
+/// `(piece, t)` of each cusp except those whose nearest other cusp is within
+/// `tol` (a swallowtail smaller than the tolerance is spanned by one segment,
+/// cutting it would only add segments). Heuristic; the proofs decide.
+pub(super) fn cusps_to_cut(cusps: &[prep::OffsetCusp], tol: f64) -> Vec<(usize, f64)> {
+    cusps
+        .iter()
+        .enumerate()
+        .filter(|(i, c)| {
+            !cusps.iter().enumerate().any(|(j, o)| {
+                j != *i && (c.point.0 - o.point.0).hypot(c.point.1 - o.point.1) <= tol
+            })
+        })
+        .map(|(_, c)| (c.piece, c.t_approx))
+        .collect()
+}
+
+/// An upper bound (rounded up) of how far rounding to the grid moves a
+/// Bézier curve: each control point moves by at most `grid/2` per coordinate,
+/// `grid·√2/2` in all, and a Bézier curve (a convex combination of its control
+/// points) by no more.
+///
+/// # Examples
+/// ```
+/// use lncert::approx::fit::rounding_move;
+/// let m = rounding_move(&lncert::parse_rational("1/2048").unwrap());
+/// assert!(m >= 2f64.sqrt() / 4096.0 && m < 3.46e-4);
+/// ```
+pub fn rounding_move(grid: &Rational) -> f64 {
+    let g = interval_from_rational(grid);
+    let two = interval_from_rational(&Rational::from_integer(2.into()));
+    let half_sqrt2 = crate::scalar::ScalarSqrt::sqrt(&two)
+        .map(|s| s * interval_from_rational(&Rational::new(1.into(), 2.into())));
+    match half_sqrt2 {
+        Some(h) => (g * h).sup(),
+        None => f64::INFINITY,
+    }
+}
+
+/// Checks a grid for the driver: an exact positive **dyadic** rational
+/// (`p/2ᵏ`: `1/2048`, `1/64`, `1/2`, `1`, `10`), so that every multiple in the
+/// coordinate range (`8 (1 + scale)`) is an exact `f64` — the certified numbers
+/// are the stored floats; and a rounding move below `tol` (the tolerance left
+/// after the pen margin). Returns the rounding move ([`rounding_move`]).
+///
+/// A decimal grid such as `1/1000` is refused: its multiples (`37/1000`) are
+/// not dyadic, no `f64` holds them, and the proof must cover exactly the
+/// numbers written out. Scale the input instead (e.g. units of `1/1024`).
+///
+/// # Examples
+/// ```
+/// use lncert::approx::fit::check_grid;
+/// let q = |s: &str| lncert::parse_rational(s).unwrap();
+/// assert!(check_grid(&q("1/2048"), 1e-3, 10.0).is_ok());
+/// assert!(check_grid(&q("1/1000"), 1e-3, 10.0).is_err());
+/// assert!(check_grid(&q("1/64"), 1e-3, 10.0).is_err()); // moves by 1.1e-2 > tol
+/// assert!(check_grid(&q("0"), 1e-3, 10.0).is_err());
+/// ```
+pub fn check_grid(grid: &Rational, tol: f64, scale: f64) -> Result<f64, OffsetError> {
+    let bad = |reason: String| super::bad("grid", reason);
+    if !grid.is_positive() {
+        return Err(bad(format!("{grid} must be > 0")));
+    }
+    let den = grid.denom();
+    let k = den.bits().saturating_sub(1);
+    if den.trailing_zeros() != Some(k) {
+        return Err(bad(format!(
+            "{grid} is not a dyadic rational p/2^k (e.g. 1/2048, 1/64, 1, 10): the control \
+             points are stored and certified as f64 numbers, and multiples of a non-dyadic \
+             grid (such as 37/1000) are not; scale the input instead"
+        )));
+    }
+    // every multiple m·grid with |m·grid| ≤ bound is m·p/2ᵏ, exact when |m·p| < 2⁵³
+    let bound = 8.0 * (1.0 + scale);
+    let p = Rational::from_integer(grid.numer().clone()).approx().abs();
+    let range = bound * 2f64.powi(k.min(2000) as i32) + p;
+    if !(range.is_finite() && range < 2f64.powi(52)) {
+        return Err(bad(format!(
+            "{grid} is too fine for coordinates up to {bound:e}: its multiples are not exact f64 numbers"
+        )));
+    }
+    let mv = rounding_move(grid);
+    if mv.is_nan() || tol.is_nan() || mv >= tol {
+        return Err(bad(format!(
+            "rounding to {grid} moves the curve by up to {mv:e} (grid·√2/2) ≥ the tolerance {tol:e}: \
+             it cannot be reached; use a finer grid"
+        )));
+    }
+    Ok(mv)
+}
+
+/// Rounds every control point to the nearest multiple of `grid` (ties away
+/// from zero, exactly in rationals: deterministic, so shared end points stay
+/// shared). `None` when a rounded coordinate is not an exact `f64` (see
+/// [`check_grid`]).
+///
+/// # Examples
+/// ```
+/// use lncert::approx::fit::round_to_grid;
+/// use lncert::curve::{Bezier, V2};
+/// let b = Bezier::new(vec![V2::new(0.3, -0.26), V2::new(1.0, 0.5)]);
+/// let r = round_to_grid(&b, &lncert::parse_rational("1/4").unwrap()).unwrap();
+/// assert_eq!(r.points(), &[V2::new(0.25, -0.25), V2::new(1.0, 0.5)]);
+/// ```
+pub fn round_to_grid(b: &Bezier<f64>, grid: &Rational) -> Option<Bezier<f64>> {
+    let round = |x: f64| -> Option<f64> {
+        let m = (rational_from_f64(x)? / grid).round();
+        let v = m * grid;
+        let f = v.approx();
+        (rational_from_f64(f)? == v).then_some(f)
+    };
+    let pts = b
+        .points()
+        .iter()
+        .map(|p| Some(V2::new(round(p.x)?, round(p.y)?)))
+        .collect::<Option<Vec<_>>>()?;
+    Some(Bezier::new(pts))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The tangent of the exact offset reverses past its cusp: a circle of
+    /// radius 1 offset by 2 to the left (inwards) runs backwards.
+    #[test]
+    fn lambda_sign_past_the_cusp() {
+        let v = DVec2::new(0.0, 1.0); // travelling up at (1, 0) on the ccw unit circle
+        let a = DVec2::new(-1.0, 0.0);
+        let k = v.perp_dot(a);
+        assert!(k > 0.0);
+        assert!(1.0 + Reach::Offset(0.5).lambda(v, k) > 0.0);
+        assert!(1.0 + Reach::Offset(2.0).lambda(v, k) < 0.0);
+        // a circular pen of radius 2 agrees with the offset
+        let l_pen = Reach::Pen([4.0, 0.0, 4.0], 1).lambda(v, k);
+        assert!((l_pen - Reach::Offset(2.0).lambda(v, k)).abs() < 1e-12);
+    }
+
+    #[test]
+    fn g2_hermite_reproduces_end_curvatures() {
+        // an arc of the ellipse (2 cos θ, sin θ), θ ∈ [0.2, 1.1]
+        let (a, b) = (2.0f64, 1.0f64);
+        let at = |th: f64| {
+            let p = V2::new(a * th.cos(), b * th.sin());
+            let d = DVec2::new(-a * th.sin(), b * th.cos());
+            let k = a * b / (d.length().powi(3));
+            (p, v2(d.normalize()), k)
+        };
+        let ((p0, t0, k0), (p1, t1, k1)) = (at(0.2), at(1.1));
+        let e = FitEnds {
+            p0,
+            p1,
+            t0,
+            t1,
+            k0,
+            k1,
+        };
+        let cs = g2_hermite_cubics(&e);
+        assert!(!cs.is_empty());
+        for c in cs {
+            let p: Vec<DVec2> = c.points().iter().map(dv).collect();
+            let kap0 =
+                2.0 / 3.0 * (p[1] - p[0]).perp_dot(p[2] - p[1]) / (p[1] - p[0]).length().powi(3);
+            let kap1 =
+                2.0 / 3.0 * (p[2] - p[1]).perp_dot(p[3] - p[2]) / (p[3] - p[2]).length().powi(3);
+            assert!(
+                (kap0 - e.k0).abs() < 1e-9 && (kap1 - e.k1).abs() < 1e-9,
+                "{kap0} {kap1}"
+            );
+        }
+    }
+
+    #[test]
+    fn quadratic_refuses_tangents_that_do_not_meet_ahead() {
+        // an S: the tangents meet behind
+        let e = FitEnds {
+            p0: V2::new(0.0, 0.0),
+            p1: V2::new(2.0, 0.0),
+            t0: V2::new(0.6, 0.8),
+            t1: V2::new(0.6, 0.8),
+            k0: 0.0,
+            k1: 0.0,
+        };
+        assert!(tangent_quadratic(&e).is_none());
+    }
+}
