@@ -658,3 +658,99 @@ fn offset_reads_an_svg_document() {
     assert_eq!(e.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&e.stderr).contains("svg/ellipse[0]"));
 }
+
+/// Join arcs at G⁰ corners are inside the proof and follow the direction of
+/// travel: the certificate's shapes are unions ending with the exact arcs, it
+/// verifies against `--exact-out` and `--curve-out`, the JSON arc (read by the
+/// shape language, `clockwise` included) starts at the end of the piece before
+/// the corner, and a certificate whose arc is removed from `b` is refused.
+#[test]
+fn join_arcs_are_certified_and_travel_with_the_contour() {
+    let svg = "M 0 0 C 1 0 2 0.5 2 0 L 2 -1 L 1 -2";
+    let curve = tmp("corner.svg", svg);
+    let dir = std::env::temp_dir().join(format!("lncert-joins-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (cert, b, a) = (dir.join("c.json"), dir.join("b.json"), dir.join("a.json"));
+    let o = lncert(&[
+        "offset",
+        curve.to_str().unwrap(),
+        "--distance",
+        "0.1",
+        "--tol",
+        "1e-4",
+        "--certificate",
+        cert.to_str().unwrap(),
+        "--curve-out",
+        b.to_str().unwrap(),
+        "--exact-out",
+        a.to_str().unwrap(),
+        "--json",
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let doc = json_of(&o);
+    let joins = doc["joins"].as_array().unwrap();
+    assert_eq!(joins.len(), 1, "{doc}"); // the cubic joins the first line smoothly
+                                         // each arc, read as the shape language reads it, starts where the piece
+                                         // before the corner ends: at corner + d·(its end normal) = the travelled `from`
+    let pieces = lncert::shape::parse_curve(svg).unwrap();
+    for j in joins {
+        let after = j["after_piece"].as_u64().unwrap() as usize;
+        let end = pieces[after].points().last().unwrap().clone();
+        let center =
+            lncert::shape::ShapeDesc::parse(&serde_json::json!({"arc": j["arc"]}).to_string())
+                .unwrap();
+        let lncert::shape::ShapeDesc::Arc(arc) = center else {
+            panic!("not an arc: {j}")
+        };
+        assert_eq!(arc.center, end);
+        // clockwise travel is stored canonically with from/to swapped
+        let travelled_from = if j["arc"]["clockwise"] == true {
+            &arc.to
+        } else {
+            &arc.from
+        };
+        let n = pieces[after].hodograph().points().last().unwrap().clone();
+        // the travelled start direction is the left normal (−n.y, n.x) of the piece's end
+        let left = lncert::V2::new(-n.y.clone(), n.x.clone());
+        assert_eq!(
+            travelled_from.cross(&left),
+            lncert::Rational::from_integer(0.into()),
+            "{j}"
+        );
+        assert!(
+            travelled_from.dot(&left) > lncert::Rational::from_integer(0.into()),
+            "{j}"
+        );
+    }
+    let v = lncert(&[
+        "verify",
+        cert.to_str().unwrap(),
+        "--against",
+        a.to_str().unwrap(),
+        b.to_str().unwrap(),
+    ]);
+    let text = String::from_utf8_lossy(&v.stdout);
+    assert_eq!(v.status.code(), Some(0), "{text}");
+    assert!(
+        text.contains("the union of 2 shapes") && text.contains("circular arc"),
+        "{text}"
+    );
+    // the arcs removed from b: the corner points are not covered any more
+    let c: Value = serde_json::from_str(&std::fs::read_to_string(&cert).unwrap()).unwrap();
+    let mut forged = c.clone();
+    forged["b"]["union"].as_array_mut().unwrap().truncate(1);
+    let f = dir.join("forged.json");
+    std::fs::write(&f, forged.to_string()).unwrap();
+    let v = lncert(&["verify", f.to_str().unwrap()]);
+    assert_eq!(
+        v.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&v.stdout)
+    );
+}

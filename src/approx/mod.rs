@@ -368,6 +368,44 @@ impl OffsetResult {
         }
         n
     }
+    /// The approximant with its join arcs ([`join_arcs`]) as one exact shape:
+    /// the curve of the segments, or the union of it and the arcs when there are
+    /// join arcs (the shape `b` of [`union_certificate`], so a file written from
+    /// it is what `lncert verify --against` compares).
+    pub fn outline_shape(&self) -> Result<ShapeDesc, OffsetError> {
+        let curve = self.approximant_shape()?;
+        let arcs = join_arcs(self);
+        if arcs.is_empty() {
+            return Ok(curve);
+        }
+        let mut members = vec![curve];
+        for a in arcs {
+            members.push(ShapeDesc::arc(a)?);
+        }
+        Ok(ShapeDesc::union(members)?)
+    }
+    /// The exact curve the result approximates, as one shape over the input's
+    /// own pieces: the offset (or convolution) of `curve`, and with join arcs
+    /// the union of it and the arcs (the shape `a` of [`union_certificate`], up
+    /// to how the pieces are split, which `verify --against` accepts).
+    pub fn exact_outline_shape(
+        &self,
+        curve: &[Bezier<Rational>],
+    ) -> Result<ShapeDesc, OffsetError> {
+        let exact = match &self.convolution {
+            None => ShapeDesc::offset(curve.to_vec(), self.distance.clone()),
+            Some(c) => ShapeDesc::convolution(curve.to_vec(), c.pen.m.clone(), c.side),
+        }?;
+        let arcs = join_arcs(self);
+        if arcs.is_empty() {
+            return Ok(exact);
+        }
+        let mut members = vec![exact];
+        for a in arcs {
+            members.push(ShapeDesc::arc(a)?);
+        }
+        Ok(ShapeDesc::union(members)?)
+    }
     /// The approximant as an exact shape (every float control point is an exact
     /// dyadic rational).
     pub fn approximant_shape(&self) -> Result<ShapeDesc, OffsetError> {
@@ -638,7 +676,13 @@ fn certify_segment(
         None => (built, None, opts.tol),
         Some(g) => match fit::round_to_grid(&built, g) {
             Some(r) => (r, Some(built), opts.tol - fit::rounding_move(g)),
-            None => return (None, split_point(opts, x, task.t, kernel, pair.as_ref()), false),
+            None => {
+                return (
+                    None,
+                    split_point(opts, x, task.t, kernel, pair.as_ref()),
+                    false,
+                )
+            }
         },
     };
     // The pieces of the span's exact offset (`ShapeDesc::Offset` of the exact
@@ -1214,48 +1258,105 @@ pub fn global_bounds(
 /// `i`). Sound because `h(∪Aᵢ, ∪Bᵢ) ≤ maxᵢ h(Aᵢ, Bᵢ)`
 /// (a point of `Aᵢ` within `tol` of `Bᵢ` is within `tol` of `∪B`), and
 /// [`crate::certify::verify::verify`] re-checks every box against the whole
-/// shapes.
+/// shapes. When the result has join arcs at G⁰ corners ([`join_arcs`]), both
+/// shapes are unions ending with those exact arcs (the same in both, each
+/// covered by its own search), so the certificate covers the whole offset
+/// with its round joins.
 pub fn union_certificate(
     curve: &[Bezier<Rational>],
     res: &OffsetResult,
     tol: &Rational,
 ) -> Result<Option<Certificate>, OffsetError> {
-    if !res.reached() || res.segments.iter().any(|s| s.proof.is_none()) {
+    assemble(curve, &[res], tol, false)
+}
+
+/// The certificate of [`union_certificate`] (one result) or
+/// [`union_certificate_all`] (several; always a union): the exact curves and
+/// approximants, then the join arcs of every result ([`join_arcs`], the same
+/// exact arc in both shapes, proven by its own cover). Without join arcs, one
+/// result keeps the plain shapes.
+fn assemble(
+    curve: &[Bezier<Rational>],
+    results: &[&OffsetResult],
+    tol: &Rational,
+    always_union: bool,
+) -> Result<Option<Certificate>, OffsetError> {
+    if results.is_empty() {
+        return Err(bad("results", "no results"));
+    }
+    if results
+        .iter()
+        .any(|r| !r.reached() || r.segments.iter().any(|s| s.proof.is_none()))
+    {
         return Ok(None);
     }
-    let a = exact_offset_shape(curve, res)?;
-    let b = res.approximant_shape()?;
+    let mut a_members = Vec::new();
+    let mut b_members = Vec::new();
+    let mut maps = Vec::new();
+    let (mut ab, mut ba) = (Vec::new(), Vec::new());
     let renumber = |i: usize, bs: &[CoverBox]| {
         bs.iter()
-            .map(move |bx| CoverBox {
+            .map(|bx| CoverBox {
                 piece: i,
                 target: i,
                 ..bx.clone()
             })
             .collect::<Vec<_>>()
     };
-    let mut maps = Vec::new();
-    let (mut ab, mut ba) = (Vec::new(), Vec::new());
-    for (i, p) in res
-        .segments
-        .iter()
-        .filter_map(|s| s.proof.as_ref())
-        .enumerate()
-    {
-        match &p.map {
-            Some(m) => maps.push(MapCover {
-                from_a: m.source_a,
-                piece: i,
-                target: i,
-                boxes: m.boxes.clone(),
-                hi: m.hi,
-            }),
-            None => {
-                ab.extend(renumber(i, &p.exact_to_segment));
-                ba.extend(renumber(i, &p.segment_to_exact));
+    let mut base = 0usize;
+    for res in results {
+        a_members.push(exact_offset_shape(curve, res)?);
+        b_members.push(res.approximant_shape()?);
+        for (k, p) in res
+            .segments
+            .iter()
+            .filter_map(|s| s.proof.as_ref())
+            .enumerate()
+        {
+            let i = base + k;
+            match &p.map {
+                Some(m) => maps.push(MapCover {
+                    from_a: m.source_a,
+                    piece: i,
+                    target: i,
+                    boxes: m.boxes.clone(),
+                    hi: m.hi,
+                }),
+                None => {
+                    ab.extend(renumber(i, &p.exact_to_segment));
+                    ba.extend(renumber(i, &p.segment_to_exact));
+                }
             }
         }
+        base += res.segments.len();
     }
+    // the join arcs: the same exact arc on both sides, covered by a search
+    let tol_f = interval_from_rational(tol).inf();
+    for res in results {
+        for arc in join_arcs(res) {
+            let shape = ShapeDesc::arc(arc)?;
+            let cfg = Config {
+                tol: Some(tol_f),
+                ..Config::default()
+            };
+            let Ok(h) = hausdorff(&shape, &shape, &cfg) else {
+                return Ok(None);
+            };
+            if h.hi > tol_f || h.a_to_b.boxes.is_empty() || h.b_to_a.boxes.is_empty() {
+                return Ok(None);
+            }
+            ab.extend(renumber(base, &h.a_to_b.boxes));
+            ba.extend(renumber(base, &h.b_to_a.boxes));
+            a_members.push(shape.clone());
+            b_members.push(shape);
+            base += 1;
+        }
+    }
+    let (a, b) = if a_members.len() == 1 && !always_union {
+        (a_members.remove(0), b_members.remove(0))
+    } else {
+        (ShapeDesc::union(a_members)?, ShapeDesc::union(b_members)?)
+    };
     Ok(Certificate::assemble(&a, &b, tol, &maps, &ab, &ba))
 }
 
@@ -1286,58 +1387,7 @@ pub fn union_certificate_all(
     results: &[&OffsetResult],
     tol: &Rational,
 ) -> Result<Option<Certificate>, OffsetError> {
-    if results.is_empty() {
-        return Err(bad("results", "no results"));
-    }
-    if results
-        .iter()
-        .any(|r| !r.reached() || r.segments.iter().any(|s| s.proof.is_none()))
-    {
-        return Ok(None);
-    }
-    let mut a_members = Vec::new();
-    let mut b_members = Vec::new();
-    let mut maps = Vec::new();
-    let (mut ab, mut ba) = (Vec::new(), Vec::new());
-    let mut base = 0usize;
-    for res in results {
-        a_members.push(exact_offset_shape(curve, res)?);
-        b_members.push(res.approximant_shape()?);
-        for (k, p) in res
-            .segments
-            .iter()
-            .filter_map(|s| s.proof.as_ref())
-            .enumerate()
-        {
-            let i = base + k;
-            match &p.map {
-                Some(m) => maps.push(MapCover {
-                    from_a: m.source_a,
-                    piece: i,
-                    target: i,
-                    boxes: m.boxes.clone(),
-                    hi: m.hi,
-                }),
-                None => {
-                    let renumber = |bs: &[CoverBox]| {
-                        bs.iter()
-                            .map(|bx| CoverBox {
-                                piece: i,
-                                target: i,
-                                ..bx.clone()
-                            })
-                            .collect::<Vec<_>>()
-                    };
-                    ab.extend(renumber(&p.exact_to_segment));
-                    ba.extend(renumber(&p.segment_to_exact));
-                }
-            }
-        }
-        base += res.segments.len();
-    }
-    let a = ShapeDesc::union(a_members)?;
-    let b = ShapeDesc::union(b_members)?;
-    Ok(Certificate::assemble(&a, &b, tol, &maps, &ab, &ba))
+    assemble(curve, results, tol, true)
 }
 
 /// The exact offset of the input, as the union of the exact offsets of the

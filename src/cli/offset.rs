@@ -25,7 +25,7 @@ use super::{print_out, CliError};
 use lncert::approx::arc::{offset_arc, ArcOffset};
 use lncert::approx::prep::Junction;
 use lncert::approx::{
-    global_bounds, join_arcs, offset, union_certificate, OffsetError, OffsetMethod, OffsetOptions,
+    global_bounds, offset, union_certificate, OffsetError, OffsetMethod, OffsetOptions,
     OffsetResult, Output, ProofPath,
 };
 use lncert::scalar::{interval_from_rational, Rational};
@@ -76,9 +76,15 @@ pub struct OffsetArgs {
     #[arg(long)]
     pub svg: Option<PathBuf>,
     /// Write the approximant as a curve file (`{"beziers": ...}`, every control
-    /// point exact) that `offset`, `hausdorff` and `verify --against` read back.
+    /// point exact; with join arcs the union of the curve and the arcs) that
+    /// `offset`, `hausdorff` and `verify --against` read back.
     #[arg(long)]
     pub curve_out: Option<PathBuf>,
+    /// Write the exact curve approximated (`{"offset": ...}`; with join arcs
+    /// the union of the exact offset and the arcs): the shape `A` of the
+    /// certificate, for `verify --against`.
+    #[arg(long)]
+    pub exact_out: Option<PathBuf>,
     /// Write the approximant as SVG path data (`M … C …`; pieces of degree ≤ 3
     /// only: `--method ln-pair`), numbers that read back to the same floats.
     #[arg(long)]
@@ -175,6 +181,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
         ("--certificate", &a.certificate),
         ("--svg", &a.svg),
         ("--curve-out", &a.curve_out),
+        ("--exact-out", &a.exact_out),
         ("--path-out", &a.path_out),
     ] {
         if let Some(p) = path {
@@ -271,10 +278,16 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
         std::fs::write(path, svg).map_err(|e| bad("--svg", format!("{}: {e}", path.display())))?;
     }
     if let Some(path) = &a.curve_out {
-        let shape = res.approximant_shape().map_err(offset_err)?;
+        let shape = res.outline_shape().map_err(offset_err)?;
         let text = format!("{}\n", shape.to_json());
         std::fs::write(path, text)
             .map_err(|e| bad("--curve-out", format!("{}: {e}", path.display())))?;
+    }
+    if let Some(path) = &a.exact_out {
+        let shape = res.exact_outline_shape(&curve).map_err(offset_err)?;
+        let text = format!("{}\n", shape.to_json());
+        std::fs::write(path, text)
+            .map_err(|e| bad("--exact-out", format!("{}: {e}", path.display())))?;
     }
     if let Some(path) = &a.path_out {
         let text = svg_path_data(&res.segments)?;
@@ -319,9 +332,18 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             "cusps": res.cusps.iter().map(|c| json!({
                 "piece": c.piece, "t": [q(&c.t.0), q(&c.t.1)], "point": [c.point.0, c.point.1],
             })).collect::<Vec<_>>(),
-            "joins": join_arcs(&res).iter().map(|j| json!({"arc": {
-                "center": point_json(&j.center), "radius": q(&j.radius),
-                "from": point_json(&j.from), "to": point_json(&j.to)}})).collect::<Vec<_>>(),
+            // in the direction of travel: from the end of the piece before the
+            // corner to the start of the next (the shape language's `clockwise`)
+            "joins": res.corners.iter().filter_map(|c| match &c.kind {
+                Junction::Join { center, from, to, clockwise } => Some(json!({
+                    "after_piece": c.after,
+                    "arc": {
+                        "center": point_json(center), "radius": q(&num_traits::Signed::abs(&res.distance)),
+                        "from": point_json(from), "to": point_json(to), "clockwise": clockwise,
+                    },
+                })),
+                _ => None,
+            }).collect::<Vec<_>>(),
             "overlaps": res.corners.iter().filter_map(|c| match &c.kind {
                 Junction::Overlap { center } => Some(json!({"after_piece": c.after, "at": point_json(center)})),
                 _ => None,
@@ -512,8 +534,8 @@ fn run_arcs(
     if a.svg.is_some() {
         eprintln!("note: --svg: no picture for an exact arc offset");
     }
-    if a.curve_out.is_some() || a.path_out.is_some() {
-        eprintln!("note: --curve-out/--path-out: the offset of an arc is an exact arc (printed above); no curve file is written");
+    if a.curve_out.is_some() || a.path_out.is_some() || a.exact_out.is_some() {
+        eprintln!("note: --curve-out/--path-out/--exact-out: the offset of an arc is an exact arc (printed above); no curve file is written");
     }
     if a.certificate.is_some() {
         eprintln!("note: --certificate: the offset of an arc is computed exactly; no certificate is needed or written");
