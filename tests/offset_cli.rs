@@ -754,3 +754,54 @@ fn join_arcs_are_certified_and_travel_with_the_contour() {
         String::from_utf8_lossy(&v.stdout)
     );
 }
+
+/// A certificate between two identical arcs verifies: the foot of the arc's end
+/// point is the end point itself, so the search must keep its foot maps inside
+/// the verifier's own enclosure of the end parameter (a join arc is the same arc
+/// in both shapes of an offset certificate).
+#[test]
+fn identical_arc_certificates_verify() {
+    // coarse tolerances too: one box covers the whole arc, its foot map reaching the end
+    let dirs = [
+        ("[1, 0]", "[0, 1]"),
+        ("[3, 1]", "[-1, 2]"),
+        ("[2, 7]", "[-5, -3]"),
+        ("[5, -3]", "[1, 1]"),
+        // a join arc of DejaVu Sans 'R' offset by 20 (centre (1147, 0), radius 20)
+        ("[-383, -191]", "[0, -217]"),
+    ];
+    for ((from, to), tol) in dirs
+        .into_iter()
+        .flat_map(|d| ["1e-5", "1e-2", "1/2"].map(move |t| (d, t)))
+    {
+        let arc = tmp(
+            "same_arc.json",
+            &format!(
+                r#"{{"arc": {{"center": [1147, 0], "radius": 20, "from": {from}, "to": {to}}}}}"#
+            ),
+        );
+        let cert = arc.with_file_name("same_arc_cert.json");
+        let o = lncert(&[
+            "hausdorff",
+            arc.to_str().unwrap(),
+            arc.to_str().unwrap(),
+            "--tol",
+            tol,
+            "--certificate",
+            cert.to_str().unwrap(),
+        ]);
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        let v = lncert(&["verify", cert.to_str().unwrap()]);
+        assert_eq!(
+            v.status.code(),
+            Some(0),
+            "{from} {to} {tol}: {}",
+            String::from_utf8_lossy(&v.stdout)
+        );
+    }
+}

@@ -147,7 +147,7 @@ impl Piece {
             r: iv(&a.radius),
             e0,
         };
-        Ok(Piece::from_iv(data, (0.0, u.sup()), (0.0, u.inf())))
+        Ok(Piece::from_iv(data, (0.0, u.sup()), (0.0, inner_end(u))))
     }
 
     /// The elliptic arc `c + M·(unit-circle arc counter-clockwise from the
@@ -165,8 +165,18 @@ impl Piece {
             m: (iv(&m[0][0]), iv(&m[0][1]), iv(&m[1][0]), iv(&m[1][1])),
             e0,
         };
-        Ok(Piece::from_iv(data, (0.0, u.sup()), (0.0, u.inf())))
+        Ok(Piece::from_iv(data, (0.0, u.sup()), (0.0, inner_end(u))))
     }
+}
+
+/// The end of an arc's inner domain: `u⁻ (1 − 10⁻¹²) ≤ u⁻`, a margin below the
+/// enclosure of the end parameter, so that a foot map the search keeps inside
+/// it stays inside the verifier's own (separately computed) enclosure too —
+/// for identical arcs the foot of the end point is the end point itself.
+/// Any value `≤ u⁻` is sound: every parameter of the inner domain is a true
+/// point of the arc.
+fn inner_end(u: Interval) -> f64 {
+    u.inf() * (1.0 - 1e-12)
 }
 
 /// The unit start direction `e0` (enclosed) and the end parameter
