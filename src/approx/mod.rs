@@ -537,15 +537,23 @@ fn check_limits(opts: &OffsetOptions, scale: f64, margin: f64) -> Result<(), Off
     Ok(())
 }
 
-/// Initial spans of one piece: split at inflections and at the `extra` cuts
-/// (the cusps of a convolution side); then, for G², halve until the Gauss map
+/// Initial spans of one piece: split at inflections (unless `inflections` is
+/// false: fitted cubics, which may inflect) and at the `extra` cuts (the cusps
+/// of a convolution side, or of a fitted offset); then, for G², halve until the Gauss map
 /// of each span turns by less than 0.9π ([`prep::MAX_TURN`]), and for LN
 /// pairs split a span turning by `Δ ≥ π` into the `k` pieces of equal turn
 /// of seed 000 §5 ([`lnpair::k_piece_split`], `k` the smallest integer with
 /// `Δ/k < π`).
-fn initial_spans(x: &Bezier<Rational>, extra: &[f64], method: OffsetMethod) -> Vec<(f64, f64)> {
+fn initial_spans(
+    x: &Bezier<Rational>,
+    extra: &[f64],
+    method: OffsetMethod,
+    inflections: bool,
+) -> Vec<(f64, f64)> {
     let mut cuts = vec![0.0];
-    cuts.extend(prep::inflections(x));
+    if inflections {
+        cuts.extend(prep::inflections(x));
+    }
     cuts.extend(extra.iter().copied().filter(|t| *t > 0.0 && *t < 1.0));
     cuts.push(1.0);
     cuts.sort_by(f64::total_cmp);
@@ -1082,7 +1090,15 @@ fn offset_segments(
     let mut spans = 0usize;
     let mut tasks: Vec<Task> = Vec::new();
     for (i, x) in curve.iter().enumerate() {
-        for t in initial_spans(x, cuts.get(i).map_or(&[][..], |c| &c[..]), opts.method) {
+        // a fitted cubic may have an inflection: the native constructions (and
+        // a quadratic) need the input cut there
+        let inflections = opts.output != Output::Cubic;
+        for t in initial_spans(
+            x,
+            cuts.get(i).map_or(&[][..], |c| &c[..]),
+            opts.method,
+            inflections,
+        ) {
             tasks.push(Task {
                 piece: i,
                 t,
