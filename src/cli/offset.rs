@@ -290,7 +290,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             .map_err(|e| bad("--exact-out", format!("{}: {e}", path.display())))?;
     }
     if let Some(path) = &a.path_out {
-        let text = svg_path_data(&res.segments)?;
+        let text = svg_path_data(&res.segments, &join_commands(&res))?;
         std::fs::write(path, text)
             .map_err(|e| bad("--path-out", format!("{}: {e}", path.display())))?;
     }
@@ -569,9 +569,52 @@ fn run_arcs(
 /// decimal value of its float (a dyadic rational has a finite decimal
 /// expansion): lncert reads it back as the same rational, and any float reader
 /// rounds it to the same float — the path data is the certified curve.
-pub fn svg_path_data(segments: &[lncert::approx::OffsetSegment]) -> Result<String, CliError> {
+/// The join arcs of a result for path data: `(piece after which it comes,
+/// radius as a decimal, SVG sweep flag)` — sweep 1 for a
+/// counter-clockwise turn (the positive angle direction of the path's own
+/// coordinates), 0 for clockwise.
+fn join_commands(res: &OffsetResult) -> Vec<(usize, String, u8)> {
+    // the shortest decimal of the nearest float: an SVG arc is defined by its
+    // end points, the radius only picks the circle through them
+    let radius = format!(
+        "{}",
+        lncert::scalar::Scalar::approx(&num_traits::Signed::abs(&res.distance))
+    );
+    res.corners
+        .iter()
+        .filter_map(|c| match &c.kind {
+            Junction::Join { clockwise, .. } => {
+                Some((c.after, radius.clone(), if *clockwise { 0 } else { 1 }))
+            }
+            _ => None,
+        })
+        .collect()
+}
+
+/// SVG path data of the segments (`L`, `Q`, `C`; every number the exact
+/// decimal value of its float), with the join arcs as `A` commands from the
+/// end of the piece before the corner to the start of the next (their end
+/// points are the segments' float end points, within rounding of the exact
+/// arc's; a reader approximates them, as lncert's reader does with a
+/// certified bound).
+pub fn svg_path_data(
+    segments: &[lncert::approx::OffsetSegment],
+    joins: &[(usize, String, u8)],
+) -> Result<String, CliError> {
     let mut out = String::new();
     let mut last: Option<(f64, f64)> = None;
+    let arc_to = |out: &mut String, after: usize, to: (f64, f64)| {
+        if let Some((_, r, sweep)) = joins.iter().find(|j| j.0 == after) {
+            *out += &format!(
+                " A {r} {r} 0 0 {sweep} {} {}",
+                exact_decimal(to.0),
+                exact_decimal(to.1)
+            );
+            true
+        } else {
+            false
+        }
+    };
     for (i, s) in segments.iter().enumerate() {
         let pts = s.bezier.points();
         let cmd = match pts.len() {
@@ -589,6 +632,15 @@ pub fn svg_path_data(segments: &[lncert::approx::OffsetSegment]) -> Result<Strin
             }
         };
         let p0 = (pts[0].x, pts[0].y);
+        // a join arc from the previous piece's end to this piece's start
+        let joined = i > 0
+            && segments[i - 1].piece != s.piece
+            && last.is_some()
+            && last != Some(p0)
+            && arc_to(&mut out, segments[i - 1].piece, p0);
+        if joined {
+            last = Some(p0);
+        }
         if last != Some(p0) {
             if !out.is_empty() {
                 out.push('\n');
@@ -600,6 +652,13 @@ pub fn svg_path_data(segments: &[lncert::approx::OffsetSegment]) -> Result<Strin
             out += &format!(" {} {}", exact_decimal(p.x), exact_decimal(p.y));
         }
         last = pts.last().map(|p| (p.x, p.y));
+    }
+    // the closing corner of a closed curve: back to the first segment's start
+    if let (Some(first), Some(end), Some(l)) = (segments.first(), last, segments.last()) {
+        let p0 = first.bezier.points()[0].clone();
+        if end != (p0.x, p0.y) {
+            arc_to(&mut out, l.piece, (p0.x, p0.y));
+        }
     }
     out.push('\n');
     Ok(out)
