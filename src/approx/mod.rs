@@ -638,7 +638,13 @@ fn certify_segment(
         None => (built, None, opts.tol),
         Some(g) => match fit::round_to_grid(&built, g) {
             Some(r) => (r, Some(built), opts.tol - fit::rounding_move(g)),
-            None => return (None, split_point(opts, x, task.t, kernel, pair.as_ref()), false),
+            None => {
+                return (
+                    None,
+                    split_point(opts, x, task.t, kernel, pair.as_ref()),
+                    false,
+                )
+            }
         },
     };
     // The pieces of the span's exact offset (`ShapeDesc::Offset` of the exact
