@@ -1,7 +1,7 @@
 //! Proven stroke outlines for a circular pen (issue 13): closure, simplicity,
 //! orientation, and an independent dense-sampling check of claims (a), (b).
 
-use lncert::curve::{Bezier, V2};
+use lncert::curve::Bezier;
 use lncert::outline::trim::{stroke, Cap, Orientation, Piece, Stroke, StrokeOptions};
 use lncert::parse_rational;
 use lncert::scalar::{Rational, Scalar};
@@ -218,4 +218,78 @@ fn test_cubic_swallowtail_is_trimmed() {
     assert!(!s.crossings.is_empty(), "the swallowtail must be cut");
     assert!(s.classified.removed > 0);
     sampled_check(&x, &s, 0.4, tol, 5e-3);
+}
+
+/// A closed rounded square (G¹ quarter-circle-like cubics joined by straight
+/// sides), radius larger than its corner radius: the inner offset's loops go.
+fn rounded_square() -> Vec<Bezier<Rational>> {
+    // side 2, corner radius 0.3 (cubic quarter circles, k = 0.55)
+    parse_curve(
+        "M -0.7 -1 L 0.7 -1 C 0.865 -1 1 -0.865 1 -0.7 L 1 0.7 C 1 0.865 0.865 1 0.7 1 \
+         L -0.7 1 C -0.865 1 -1 0.865 -1 0.7 L -1 -0.7 C -1 -0.865 -0.865 -1 -0.7 -1 Z",
+    )
+    .unwrap()
+}
+
+#[test]
+fn closed_rounded_square_inner_loops_go() {
+    let x = rounded_square();
+    let tol = 1e-3;
+    let t0 = std::time::Instant::now();
+    let s = stroke(&x, &StrokeOptions::new(q("0.4"), tol)).unwrap();
+    eprintln!(
+        "rounded square: {} raw pieces, {} crossings, {} output pieces, {} contours, {:?}, {:?}",
+        s.raw_pieces,
+        s.crossings.len(),
+        s.pieces(),
+        s.contours.len(),
+        s.classified,
+        t0.elapsed()
+    );
+    assert!(s.closed_curve);
+    assert!(s.proven(), "{:?} {:?} {:?} {:?}", s.a, s.b, s.c, s.notes);
+    check_closed_simple(&s);
+    // the outer contour (ccw) and the hole (cw), the hole's corner loops cut away
+    assert_eq!(s.contours.len(), 2);
+    let ccw = s
+        .contours
+        .iter()
+        .filter(|c| c.orientation == Orientation::CounterClockwise)
+        .count();
+    let cw = s
+        .contours
+        .iter()
+        .filter(|c| c.orientation == Orientation::Clockwise)
+        .count();
+    assert_eq!((ccw, cw), (1, 1));
+    assert!(s.crossings.len() >= 4, "each inner corner is cut");
+    sampled_check(&x, &s, 0.4, tol, 5e-3);
+}
+
+#[test]
+fn bad_inputs_are_typed_errors() {
+    let x = parse_curve("M 0 0 L 2 0").unwrap();
+    let e = stroke(&x, &StrokeOptions::new(q("0"), 1e-3)).unwrap_err();
+    assert_eq!(e.field, "radius");
+    let e = stroke(&x, &StrokeOptions::new(q("-1"), 1e-3)).unwrap_err();
+    assert_eq!(e.field, "radius");
+    let e = stroke(&x, &StrokeOptions::new(q("1"), f64::NAN)).unwrap_err();
+    assert_eq!(e.field, "tol");
+    let e = stroke(&[], &StrokeOptions::new(q("1"), 1e-3)).unwrap_err();
+    assert_eq!(e.field, "curve");
+}
+
+#[test]
+fn butt_caps_close_but_make_no_distance_claims() {
+    let x = parse_curve("M 0 0 C 1 1 2 1 3 0").unwrap();
+    let mut o = StrokeOptions::new(q("1/4"), 1e-3);
+    o.cap = Cap::Butt;
+    let s = stroke(&x, &o).unwrap();
+    assert!(s.c.proven, "{:?} {:?}", s.c, s.notes);
+    assert!(!s.a.proven && !s.b.proven);
+    assert_eq!(s.contours.len(), 1);
+    assert!(s.contours[0]
+        .pieces
+        .iter()
+        .all(|p| matches!(p, Piece::Bezier(_))));
 }

@@ -97,6 +97,35 @@ pub fn in_ccw_range<S: Scalar>(a: &V2<S>, b: &V2<S>, v: &V2<S>) -> Option<bool> 
     }
 }
 
+/// The range test from the signs of `a × v` and `v × b`, for a range below
+/// π (`minor`) or of π or more.
+fn in_ccw_range_signs(
+    minor: bool,
+    av: crate::scalar::Sign,
+    vb: crate::scalar::Sign,
+) -> Option<bool> {
+    use crate::scalar::Sign;
+    let nonneg = |s: Sign| match s {
+        Sign::Positive | Sign::Zero => Some(true),
+        Sign::Negative => Some(false),
+        Sign::Unknown => None,
+    };
+    let (av, vb) = (nonneg(av), nonneg(vb));
+    if minor {
+        match (av, vb) {
+            (Some(false), _) | (_, Some(false)) => Some(false),
+            (Some(true), Some(true)) => Some(true),
+            _ => None,
+        }
+    } else {
+        match (av, vb) {
+            (Some(true), _) | (_, Some(true)) => Some(true),
+            (Some(false), Some(false)) => Some(false),
+            _ => None,
+        }
+    }
+}
+
 impl Arc {
     /// The counter-clockwise start and end directions (from the centre).
     pub fn ccw_dirs(&self) -> (V2<Rational>, V2<Rational>) {
@@ -110,7 +139,19 @@ impl Arc {
     /// Whether the direction `v` from the centre is within the arc.
     pub fn contains_dir<S: Scalar>(&self, v: &V2<S>) -> Option<bool> {
         let (a, b) = self.ccw_dirs();
-        in_ccw_range(&a.map(S::from_rational), &b.map(S::from_rational), v)
+        // the shape of the range is decided exactly, only `v` is uncertain
+        let ab = a.cross(&b);
+        let (af, bf) = (a.map(S::from_rational), b.map(S::from_rational));
+        if ab.is_positive() {
+            let av = af.cross(v).sign();
+            let vb = v.cross(&bf).sign();
+            return in_ccw_range_signs(true, av, vb);
+        }
+        if ab.is_zero() && a.dot(&b).is_positive() {
+            // a degenerate (zero) arc: not produced by the outline code
+            return None;
+        }
+        in_ccw_range_signs(false, af.cross(v).sign(), v.cross(&bf).sign())
     }
     /// The same arc travelled the other way.
     pub fn reversed(&self) -> Arc {
@@ -289,6 +330,50 @@ pub fn circle_poly(b: &Bezier<Rational>, c: &V2<Rational>, r: &Rational) -> Poly
     Poly::from_bernstein(&g)
 }
 
+fn no_circle_point_iv(b: &Bezier<Rational>, c: &V2<Rational>, r: &Rational) -> bool {
+    let (x, y) = b.map(interval_from_rational).coords();
+    let ci = c.map(interval_from_rational);
+    let r2 = interval_from_rational(&(r * r));
+    let dx: Vec<Interval> = x.iter().map(|v| *v - ci.x).collect();
+    let dy: Vec<Interval> = y.iter().map(|v| *v - ci.y).collect();
+    let g: Vec<Interval> = bernstein_product(&dx, &dx)
+        .into_iter()
+        .zip(bernstein_product(&dy, &dy))
+        .map(|(p, q)| p + q - r2)
+        .collect();
+    one_sign(g, 10)
+}
+
+/// Every Bernstein coefficient of every part of a subdivision has one strict
+/// sign (neighbouring parts share their end coefficient, so the sign is the
+/// same everywhere): the polynomial has no root on `[0, 1]`.
+fn one_sign(g: Vec<Interval>, depth: u32) -> bool {
+    let pos = g.iter().all(|v| v.inf() > 0.0);
+    let neg = g.iter().all(|v| v.sup() < 0.0);
+    if pos || neg {
+        return true;
+    }
+    if depth == 0 || g[0].contains(0.0) || g[g.len() - 1].contains(0.0) {
+        return false;
+    }
+    let half = Interval::try_from((0.5, 0.5)).expect("half");
+    let n = g.len();
+    let mut p = g;
+    let mut left = Vec::with_capacity(n);
+    let mut right = Vec::with_capacity(n);
+    left.push(p[0]);
+    right.push(p[n - 1]);
+    for k in 1..n {
+        for i in 0..n - k {
+            p[i] = (p[i] + p[i + 1]) * half;
+        }
+        left.push(p[0]);
+        right.push(p[n - 1 - k]);
+    }
+    right.reverse();
+    one_sign(left, depth - 1) && one_sign(right, depth - 1)
+}
+
 /// All points where the Bézier piece meets the arc: the real roots of
 /// `|B(t) − c|² − r²` on `[0, 1]` (exact isolation), each kept when its point
 /// is in the arc's angle range (decided on an interval enclosure of the point
@@ -303,6 +388,11 @@ pub fn bezier_arc(b: &Bezier<Rational>, arc: &Arc) -> ArcMeet {
     let miny = p.iter().map(|v| &v.y).min().expect("nonempty");
     let maxy = p.iter().map(|v| &v.y).max().expect("nonempty");
     if maxx < &(&c.x - r) || minx > &(&c.x + r) || maxy < &(&c.y - r) || miny > &(&c.y + r) {
+        return out;
+    }
+    // interval filter: the Bernstein coefficients of |B − c|² − r² of one
+    // strict sign on every part of a subdivision: no point on the circle
+    if no_circle_point_iv(b, c, r) {
         return out;
     }
     let g = circle_poly(b, c, r);
@@ -327,6 +417,19 @@ pub fn bezier_arc(b: &Bezier<Rational>, arc: &Arc) -> ArcMeet {
                     &Span::closed(root.lo.clone(), root.hi.clone()),
                 )
         };
+        if root.is_exact() {
+            // decide exactly at a rational root (e.g. a shared end point)
+            let v = b.eval(&root.lo).sub(c);
+            match arc.contains_dir(&v) {
+                Some(true) => out.hits.push(ArcHit {
+                    t: (root.lo.clone(), root.hi.clone()),
+                    multiple,
+                }),
+                Some(false) => {}
+                None => out.undecided.push((root.lo.clone(), root.hi.clone())),
+            }
+            continue;
+        }
         let mut rt = root.clone();
         let mut decided = None;
         for w in [40, 60, 90] {

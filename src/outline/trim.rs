@@ -256,6 +256,9 @@ pub struct Stroke {
     pub tol: f64,
     /// The curve is closed.
     pub closed_curve: bool,
+    /// What was left undecided on the way (raw regions, sub-pieces, offsets);
+    /// informational: the claims are decided on the output itself.
+    pub notes: Vec<String>,
 }
 
 impl Stroke {
@@ -274,8 +277,10 @@ impl Stroke {
 enum Kind {
     /// Approximates an exact part of a candidate boundary (offset span, cap, join).
     Boundary,
-    /// A concave-corner chord or butt cap: no exact counterpart.
+    /// A concave-corner chord: no exact counterpart, inside `S`.
     Connector,
+    /// A butt cap: always part of the outline (no distance claims).
+    Butt,
 }
 
 #[derive(Clone, Debug)]
@@ -499,12 +504,11 @@ fn cap_piece(
             let e = dist_hi_iv(&p1, &ex1).max(dist_hi_iv(&p2, &ex2));
             let e_in =
                 (dist_hi(&p1, &c).max(dist_hi(&p2, &c)) - r.approx()).max(0.0) * (1.0 + 1e-12);
-            let _ = e;
             Ok(Raw {
                 piece: Piece::Bezier(Bezier::new(vec![p1, p2])),
-                e: f64::INFINITY,
+                e,
                 e_in,
-                kind: Kind::Connector,
+                kind: Kind::Butt,
             })
         }
         Cap::Round => {
@@ -685,6 +689,24 @@ fn outside_piece(x: &Bezier<Rational>, w: &V2<Rational>, r2: &Rational) -> bool 
     if &d2 > r2 {
         return true;
     }
+    // interval filter first (rigorous enclosures), exact only when it cannot decide
+    {
+        let xi = x.map(interval_from_rational);
+        let wi = w.map(interval_from_rational);
+        let (xs, ys) = xi.coords();
+        let dx: Vec<Interval> = xs.iter().map(|v| *v - wi.x).collect();
+        let dy: Vec<Interval> = ys.iter().map(|v| *v - wi.y).collect();
+        let r2i = interval_from_rational(r2);
+        let g: Vec<Interval> = bernstein_product(&dx, &dx)
+            .into_iter()
+            .zip(bernstein_product(&dy, &dy))
+            .map(|(a, b)| a + b - r2i)
+            .collect();
+        match positive_bernstein_iv(g, 14) {
+            Some(v) => return v,
+            None => {}
+        }
+    }
     let (xs, ys) = x.coords();
     let dx: Vec<Rational> = xs.iter().map(|v| v - &w.x).collect();
     let dy: Vec<Rational> = ys.iter().map(|v| v - &w.y).collect();
@@ -694,6 +716,39 @@ fn outside_piece(x: &Bezier<Rational>, w: &V2<Rational>, r2: &Rational) -> bool 
         .map(|(a, b)| a + b - r2)
         .collect();
     positive_bernstein(g, 14)
+}
+
+/// [`positive_bernstein`] on interval coefficients: `Some(true)` proven
+/// positive, `Some(false)` proven not (an end value ≤ 0), `None` undecided.
+fn positive_bernstein_iv(g: Vec<Interval>, depth: u32) -> Option<bool> {
+    if g.iter().all(|c| c.inf() > 0.0) {
+        return Some(true);
+    }
+    if g[0].sup() <= 0.0 || g[g.len() - 1].sup() <= 0.0 {
+        return Some(false);
+    }
+    if depth == 0 {
+        return None;
+    }
+    let half = Interval::try_from((0.5, 0.5)).ok()?;
+    let n = g.len();
+    let mut p = g;
+    let mut left = Vec::with_capacity(n);
+    let mut right = Vec::with_capacity(n);
+    left.push(p[0]);
+    right.push(p[n - 1]);
+    for r in 1..n {
+        for i in 0..n - r {
+            p[i] = (p[i] + p[i + 1]) * half;
+        }
+        left.push(p[0]);
+        right.push(p[n - 1 - r]);
+    }
+    right.reverse();
+    match positive_bernstein_iv(left, depth - 1)? {
+        false => Some(false),
+        true => positive_bernstein_iv(right, depth - 1),
+    }
 }
 
 /// All of a Bernstein polynomial on `[0, 1]` is `> 0`: coefficients positive,
@@ -1028,7 +1083,12 @@ fn mid_rational(lo: f64, hi: f64) -> Option<Rational> {
 pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke, StrokeError> {
     let closed = check(curve, opts)?;
     let r = &opts.radius;
+    let dbg = std::env::var("LNCERT_TRIM_DEBUG").is_ok();
+    let t0 = std::time::Instant::now();
     let (raw_contours, mut notes) = raw_contours(curve, opts, closed)?;
+    if dbg {
+        eprintln!("offsets: {:?}", t0.elapsed());
+    }
     let raws: Vec<Raw> = raw_contours.into_iter().flatten().collect();
     let curve_f: Vec<Bezier<f64>> = curve.iter().map(|b| b.map(Scalar::approx)).collect();
 
@@ -1051,11 +1111,36 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
         })
         .collect();
     let inter = intersections(&bez, &iopts);
+    if dbg {
+        eprintln!(
+            "raw intersections: {:?} {} boxes",
+            t0.elapsed(),
+            inter.boxes
+        );
+        for (k, r) in raws.iter().enumerate() {
+            eprintln!(
+                "raw {k}: {:?} e={:.3e} {:?}",
+                r.kind,
+                r.e,
+                match &r.piece {
+                    Piece::Bezier(b) => format!(
+                        "bez deg {} {:?}",
+                        b.degree(),
+                        b.map(Scalar::approx).points()
+                    ),
+                    Piece::Arc(a) => format!("arc {:?}", a.desc()),
+                }
+            );
+        }
+        for u in &inter.undecided {
+            eprintln!("undecided {:?}", u);
+        }
+    }
     let mut raw_complete = inter.complete;
     let mut splits: Vec<Vec<Split>> = vec![Vec::new(); raws.len()];
     let mut crossings = Vec::new();
     let fail = |notes: &mut Vec<String>, s: String| {
-        if notes.len() < 20 {
+        if notes.len() < 20 && !notes.contains(&s) {
             notes.push(s);
         }
     };
@@ -1099,6 +1184,9 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
                 continue;
             };
             let m = bezier_arc(b, arc);
+            if dbg && (!m.hits.is_empty() || !m.undecided.is_empty()) {
+                eprintln!("bez {bi} arc {ai}: {:?}", m);
+            }
             if !m.undecided.is_empty() {
                 raw_complete = false;
                 fail(
@@ -1185,6 +1273,9 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
         }
     }
 
+    if dbg {
+        eprintln!("arcs: {:?}", t0.elapsed());
+    }
     // --- split
     let mut subs: Vec<Sub> = Vec::new();
     for (i, raw) in raws.iter().enumerate() {
@@ -1211,6 +1302,9 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
         .map(|(s, est)| {
             let raw = &raws[s.raw];
             let e_in = raw.e_in + s.delta;
+            if raw.kind == Kind::Butt {
+                return Some(e_in);
+            }
             if *est < rf - 4.0 * e_in.max(tol / 8.0) {
                 return None;
             }
@@ -1238,7 +1332,7 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
         .zip(&kept_bounds)
         .map(|(s, k)| {
             let raw = &raws[s.raw];
-            if k.is_some() || raw.kind == Kind::Connector {
+            if k.is_some() || raw.kind != Kind::Boundary {
                 return None;
             }
             prove_removed(curve, &curve_f, &s.pre, raw.e, r, &near, &lambda)
@@ -1288,6 +1382,9 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
         }
     }
 
+    if dbg {
+        eprintln!("classified: {:?}", t0.elapsed());
+    }
     // --- chain
     let out_pieces: Vec<Piece> = subs
         .iter()
@@ -1299,6 +1396,15 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
 
     // --- claim (c)
     let (c_ok, c_complete, c_note) = check_simple(&contours, &iopts);
+    if dbg {
+        eprintln!("checked: {:?}", t0.elapsed());
+        for (k, s) in subs.iter().enumerate() {
+            eprintln!(
+                "sub {k}: raw {} keep {} kept {:?} removed {:?} est {:.6} delta {:.2e}",
+                s.raw, keep[k], kept_bounds[k], removed[k], estimates[k], s.delta
+            );
+        }
+    }
     let offsets_ok = notes.iter().all(|n| !n.contains("did not reach"));
     let butt = !closed && opts.cap == Cap::Butt;
     let a = Claim {
@@ -1330,16 +1436,7 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
         bound: 0.0,
         note: c_note,
     };
-    let mut all_notes = notes;
-    all_notes.truncate(20);
-    let c = Claim {
-        note: if all_notes.is_empty() {
-            c.note
-        } else {
-            format!("{}; {}", c.note, all_notes.join("; "))
-        },
-        ..c
-    };
+
     Ok(Stroke {
         contours,
         crossings,
@@ -1352,6 +1449,7 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
         classified,
         tol,
         closed_curve: closed,
+        notes,
     })
 }
 
