@@ -293,3 +293,81 @@ fn butt_caps_close_but_make_no_distance_claims() {
         .iter()
         .all(|p| matches!(p, Piece::Bezier(_))));
 }
+
+#[test]
+fn cli_stroke_json_path_and_exit_codes() {
+    let dir = std::env::temp_dir().join(format!("lncert-stroke-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let curve = dir.join("seg.txt");
+    std::fs::write(&curve, "M 0 0 L 2 0").unwrap();
+    let path_out = dir.join("seg.path");
+    let bin = env!("CARGO_BIN_EXE_lncert");
+    let out = std::process::Command::new(bin)
+        .args([
+            "stroke",
+            curve.to_str().unwrap(),
+            "--pen",
+            "circle:1/2",
+            "--tol",
+            "1e-3",
+        ])
+        .args([
+            "--output",
+            "cubic",
+            "--json",
+            "--path-out",
+            path_out.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(doc["verdict"], "proven");
+    let contours = doc["outline"]["contours"].as_array().unwrap();
+    assert_eq!(contours.len(), 1);
+    assert_eq!(contours[0]["closed"], true);
+    assert_eq!(contours[0]["orientation"], "ccw");
+    let pieces = contours[0]["pieces"].as_array().unwrap();
+    assert_eq!(pieces.iter().filter(|p| p.get("arc").is_some()).count(), 2);
+    assert_eq!(
+        pieces
+            .iter()
+            .filter(|p| p.get("control_points").is_some())
+            .count(),
+        2
+    );
+    assert_eq!(doc["outline"]["claims"]["c"]["proven"], true);
+    let d = std::fs::read_to_string(&path_out).unwrap();
+    assert!(
+        d.starts_with("M ") && d.contains(" A 1/2 1/2 ") && d.trim_end().ends_with('Z'),
+        "{d}"
+    );
+    // bad input: exit 2, naming the flag
+    for (pen, tol) in [
+        ("ellipse:1,2", "1e-3"),
+        ("circle:NaN", "1e-3"),
+        ("circle:0", "1e-3"),
+        ("circle:1", "0"),
+    ] {
+        let out = std::process::Command::new(bin)
+            .args([
+                "stroke",
+                curve.to_str().unwrap(),
+                "--pen",
+                pen,
+                "--tol",
+                tol,
+            ])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2), "{pen} {tol}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains("--pen") || err.contains("--tol"), "{err}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

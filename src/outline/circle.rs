@@ -245,7 +245,7 @@ impl Arc {
         let poly = self.center.cross(&self.to.sub(&self.from)) * half();
         let mut phi = Interval::try_from((0.0, 0.0)).ok()?;
         for p in self.minor_parts()? {
-            phi = phi + minor_angle(&p)?;
+            phi += minor_angle(&p)?;
         }
         let r2 = interval_from_rational(&(&self.radius * &self.radius * half()));
         let sector = r2 * phi;
@@ -543,7 +543,7 @@ mod tests {
             let phi = v.y.atan2(v.x);
             let d = (phi - th).rem_euclid(2.0 * std::f64::consts::PI);
             assert!(
-                d < 1e-9 || d > 2.0 * std::f64::consts::PI - 1e-9,
+                !(1e-9..=2.0 * std::f64::consts::PI - 1e-9).contains(&d),
                 "{th} {phi}"
             );
         }

@@ -76,6 +76,9 @@ pub struct StrokeOptions {
     pub cap: Cap,
     /// Solver boxes per pair for the intersection searches (default 20 000).
     pub max_boxes_per_pair: usize,
+    /// The offset segments' form (default native: degree `n + 3`; `Cubic` /
+    /// `Quadratic` for SVG-expressible output, see [`crate::approx::fit`]).
+    pub output: crate::approx::Output,
 }
 
 impl StrokeOptions {
@@ -86,6 +89,7 @@ impl StrokeOptions {
             tol,
             cap: Cap::Round,
             max_boxes_per_pair: 20_000,
+            output: crate::approx::Output::Native,
         }
     }
 }
@@ -109,6 +113,7 @@ fn bad(field: &str, reason: impl Into<String>) -> StrokeError {
 
 /// One output piece: a Bézier of any degree or an exact arc.
 #[derive(Clone, Debug, PartialEq)]
+#[allow(clippy::large_enum_variant)]
 pub enum Piece {
     /// Exact control points.
     Bezier(Bezier<Rational>),
@@ -581,7 +586,9 @@ fn raw_contours(
     let r = &opts.radius;
     let tol_off = opts.tol / 8.0;
     let run = |d: Rational| {
-        offset(curve, &OffsetOptions::new(d, tol_off)).map_err(|e| bad("curve", e.to_string()))
+        let mut o = OffsetOptions::new(d, tol_off);
+        o.output = opts.output;
+        offset(curve, &o).map_err(|e| bad("curve", e.to_string()))
     };
     let (minus, plus) = rayon::join(|| run(-r.clone()), || run(r.clone()));
     let (minus, plus) = (minus?, plus?);
@@ -702,9 +709,8 @@ fn outside_piece(x: &Bezier<Rational>, w: &V2<Rational>, r2: &Rational) -> bool 
             .zip(bernstein_product(&dy, &dy))
             .map(|(a, b)| a + b - r2i)
             .collect();
-        match positive_bernstein_iv(g, 14) {
-            Some(v) => return v,
-            None => {}
+        if let Some(v) = positive_bernstein_iv(g, 14) {
+            return v;
         }
     }
     let (xs, ys) = x.coords();
@@ -787,6 +793,7 @@ fn outside(curve: &[Bezier<Rational>], w: &V2<Rational>, r2: &Rational) -> bool 
 
 /// A part of a sub-piece: its hull points and how to split it.
 #[derive(Clone, Debug)]
+#[allow(clippy::large_enum_variant)]
 enum Part {
     Bez(Bezier<Rational>),
     Arc(Arc),
@@ -1466,7 +1473,7 @@ fn chain(pieces: Vec<Piece>) -> Vec<Contour> {
         let mut cur = vec![pieces[s].clone()];
         loop {
             let end = cur.last().expect("nonempty").end().clone();
-            if &end == cur[0].start() && cur.len() > 0 {
+            if &end == cur[0].start() {
                 break;
             }
             let next = (0..n).find(|&k| !used[k] && pieces[k].start() == &end);
