@@ -7,6 +7,8 @@
 //!   Hausdorff bounds and tolerance certificates;
 //! * `lncert offset CURVE --distance R --tol T [--method g2|ln-pair] [--certificate OUT] [--svg OUT]
 //!   [--global-bounds] [--no-certify] [--json]` — an offset approximant proven within a tolerance;
+//! * `lncert stroke CURVE --pen circle:R --tol T [--cap round|butt] [--svg OUT] [--path-out OUT]
+//!   [--json]` — the proven outline of a circular pen's stroke;
 //! * `lncert verify CERT [--against A B] [--json]` — the independent certificate check, and
 //!   whether it speaks about the shapes `A`, `B`.
 //! * `lncert tangency --x1 X --y1 Y --u U --center OX,OY --radius R [...]` —
@@ -47,6 +49,7 @@ pub mod progress;
 pub mod prop;
 pub mod report;
 pub mod reproduce;
+pub mod stroke;
 pub mod svg;
 pub mod tangency;
 pub mod verify;
@@ -88,6 +91,8 @@ pub enum Command {
     Offset(Box<offset::OffsetArgs>),
     /// The convolution with an elliptical pen (seed 001's G² method), proven within a tolerance on each side.
     Convolve(Box<convolve::ConvolveArgs>),
+    /// The proven outline of a circular pen's stroke: closed, simple contours with exact arcs.
+    Stroke(Box<stroke::StrokeArgs>),
     /// Re-check a Hausdorff tolerance certificate without searching.
     Verify(verify::VerifyArgs),
     /// Quartic LN curves tangent to a circle (seed 003 §4): all solutions, proven.
@@ -137,6 +142,7 @@ pub fn run(cli: Cli) -> i32 {
         Command::Hausdorff(a) => a.json,
         Command::Offset(a) => a.json,
         Command::Convolve(a) => a.json,
+        Command::Stroke(a) => a.json,
         Command::Verify(a) => a.json,
         Command::Tangency(a) => a.json,
     };
@@ -147,6 +153,7 @@ pub fn run(cli: Cli) -> i32 {
         Command::Hausdorff(_) => "hausdorff",
         Command::Offset(_) => "offset",
         Command::Convolve(_) => "convolve",
+        Command::Stroke(_) => "stroke",
         Command::Verify(_) => "verify",
         Command::Tangency(_) => "tangency",
     };
@@ -158,6 +165,7 @@ pub fn run(cli: Cli) -> i32 {
         Command::Hausdorff(a) => hausdorff::run(&a),
         Command::Offset(a) => offset::run(&a),
         Command::Convolve(a) => convolve::run(&a),
+        Command::Stroke(a) => stroke::run(&a),
         Command::Verify(a) => verify::run(&a),
         Command::Tangency(a) => tangency::run(&a),
     };

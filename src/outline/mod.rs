@@ -1,6 +1,8 @@
 //! Outlines: what turns offset and convolution approximants into the boundary
-//! of a swept region. So far: certified intersections of polynomial pieces
-//! ([`intersect`]), complete over the parameter domain, the first step of
-//! trimming.
+//! of a swept region: certified intersections of polynomial pieces
+//! ([`intersect`]), exact circular arcs and their crossings with Bézier pieces
+//! ([`circle`]), and proven stroke outlines for a circular pen ([`trim`]).
 
+pub mod circle;
 pub mod intersect;
+pub mod trim;

@@ -1,0 +1,355 @@
+//! `lncert stroke CURVE --pen circle:R --tol T [--cap round|butt] [--svg OUT]
+//! [--path-out OUT] [--json]`: the proven outline of the region a circular pen
+//! of radius `R` sweeps along the curve ([`lncert::outline::trim::stroke`]):
+//! closed contours of exact Bézier pieces and exact arcs, the crossings where
+//! the offsets were cut, and claims (a) output ⊂ TOL-neighbourhood of the
+//! exact boundary, (b) exact boundary ⊂ TOL-neighbourhood of the output,
+//! (c) closed, simple, oriented (see `proofs/trimming.md`).
+//!
+//! Exit codes: 0 = all three claims proven, 3 = something undecided, 2 = bad
+//! input (`--pen ellipse:…` is not supported yet).
+
+use super::args::{bad, number, point_json, q};
+use super::{print_out, CliError};
+use lncert::outline::trim::{stroke, Cap, Claim, Piece, Stroke, StrokeOptions};
+use lncert::scalar::{interval_from_rational, Rational, Scalar};
+use lncert::shape::parse_curve;
+use serde_json::json;
+use std::fmt::Write as _;
+use std::path::PathBuf;
+
+/// Arguments of `lncert stroke`.
+#[derive(clap::Args, Debug)]
+pub struct StrokeArgs {
+    /// The curve: a curve file (JSON Bézier / B-spline, SVG path data).
+    pub curve: PathBuf,
+    /// The pen: `circle:R` (`R > 0`, exact).
+    #[arg(long)]
+    pub pen: String,
+    /// The tolerance to prove for claims (a) and (b).
+    #[arg(long, allow_hyphen_values = true)]
+    pub tol: String,
+    /// End caps of an open curve: `round` or `butt`.
+    #[arg(long, default_value = "round")]
+    pub cap: String,
+    /// Offset segments: native (degree n + 3), cubic or quadratic (fitted, proven;
+    /// needed for `--path-out` when the native degree is above 3).
+    #[arg(long, default_value = "native")]
+    pub output: String,
+    /// Write a picture: the filled outline over the skeleton.
+    #[arg(long)]
+    pub svg: Option<PathBuf>,
+    /// Write the outline as SVG path data (arcs as `A` commands with the exact radius).
+    #[arg(long)]
+    pub path_out: Option<PathBuf>,
+    /// One JSON document on stdout.
+    #[arg(long)]
+    pub json: bool,
+}
+
+fn pen_radius(text: &str) -> Result<Rational, CliError> {
+    if let Some(r) = text.strip_prefix("circle:") {
+        let r = number("--pen", r)?;
+        if r <= Rational::from_integer(0.into()) {
+            return Err(bad("--pen", "the radius must be > 0"));
+        }
+        return Ok(r);
+    }
+    if text.starts_with("ellipse:") {
+        return Err(bad(
+            "--pen",
+            "ellipse pens are not yet supported by `stroke` (use `lncert convolve`)",
+        ));
+    }
+    Err(bad("--pen", format!("expected circle:R, got {text:?}")))
+}
+
+fn claim_json(c: &Claim) -> serde_json::Value {
+    json!({
+        "proven": c.proven,
+        "bound": if c.bound.is_finite() { json!(c.bound) } else { json!(null) },
+        "note": c.note,
+    })
+}
+
+fn piece_json(p: &Piece) -> serde_json::Value {
+    match p {
+        Piece::Bezier(b) => {
+            json!({"control_points": b.points().iter().map(point_json).collect::<Vec<_>>()})
+        }
+        Piece::Arc(a) => json!({"arc": {
+            "center": point_json(&a.center),
+            "radius": q(&a.radius),
+            "from": point_json(&a.from.sub(&a.center)),
+            "to": point_json(&a.to.sub(&a.center)),
+            "clockwise": a.clockwise,
+        }}),
+    }
+}
+
+fn f(r: &Rational) -> f64 {
+    r.approx()
+}
+
+/// SVG path data; Béziers above degree 3 have no SVG command and are written
+/// as `C` cubics only when they are cubics: higher degrees are refused.
+pub fn path_data(s: &Stroke) -> Result<String, CliError> {
+    let mut d = String::new();
+    for c in &s.contours {
+        let p0 = c.pieces[0].start();
+        let _ = write!(d, "M {} {} ", f(&p0.x), f(&p0.y));
+        for p in &c.pieces {
+            match p {
+                Piece::Bezier(b) => {
+                    let pts: Vec<String> = b.points()[1..]
+                        .iter()
+                        .map(|v| format!("{} {}", f(&v.x), f(&v.y)))
+                        .collect();
+                    let cmd = match b.degree() {
+                        1 => "L",
+                        2 => "Q",
+                        3 => "C",
+                        n => {
+                            return Err(bad(
+                                "--path-out",
+                                format!(
+                                "a degree-{n} piece has no SVG path command (use --output cubic)"
+                            ),
+                            ))
+                        }
+                    };
+                    let _ = write!(d, "{cmd} {} ", pts.join(" "));
+                }
+                Piece::Arc(a) => {
+                    let (u, v) = (a.from.sub(&a.center), a.to.sub(&a.center));
+                    let cross = u.cross(&v);
+                    let zero = Rational::from_integer(0.into());
+                    // large-arc: the travelled angle exceeds π
+                    let large = if a.clockwise {
+                        cross > zero
+                    } else {
+                        cross < zero
+                    };
+                    let sweep = if a.clockwise { 0 } else { 1 };
+                    let _ = write!(
+                        d,
+                        "A {} {} 0 {} {} {} {} ",
+                        q(&a.radius),
+                        q(&a.radius),
+                        large as u8,
+                        sweep,
+                        f(&a.to.x),
+                        f(&a.to.y)
+                    );
+                }
+            }
+        }
+        d.push_str("Z ");
+    }
+    Ok(d.trim_end().to_string())
+}
+
+fn svg(s: &Stroke, curve: &[lncert::curve::Bezier<Rational>], path: &str) -> String {
+    let mut lo = (f64::INFINITY, f64::INFINITY);
+    let mut hi = (f64::NEG_INFINITY, f64::NEG_INFINITY);
+    for c in &s.contours {
+        for p in &c.pieces {
+            for v in [p.start(), p.end()] {
+                lo = (lo.0.min(f(&v.x)), lo.1.min(f(&v.y)));
+                hi = (hi.0.max(f(&v.x)), hi.1.max(f(&v.y)));
+            }
+            if let Piece::Arc(a) = p {
+                let r = f(&a.radius);
+                lo = (lo.0.min(f(&a.center.x) - r), lo.1.min(f(&a.center.y) - r));
+                hi = (hi.0.max(f(&a.center.x) + r), hi.1.max(f(&a.center.y) + r));
+            }
+        }
+    }
+    let w = (hi.0 - lo.0).max(1e-9);
+    let h = (hi.1 - lo.1).max(1e-9);
+    let m = 0.05 * w.max(h);
+    let mut skel = String::new();
+    for b in curve {
+        let p = b.points();
+        let _ = write!(skel, "M {} {} ", f(&p[0].x), f(&p[0].y));
+        let pts: Vec<String> = p[1..]
+            .iter()
+            .map(|v| format!("{} {}", f(&v.x), f(&v.y)))
+            .collect();
+        let cmd = match b.degree() {
+            1 => "L",
+            2 => "Q",
+            _ => "C",
+        };
+        if b.degree() <= 3 {
+            let _ = write!(skel, "{cmd} {} ", pts.join(" "));
+        } else {
+            let _ = write!(skel, "L {} ", pts.join(" L "));
+        }
+    }
+    format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"{} {} {} {}\" width=\"800\">\n\
+         <g transform=\"scale(1,-1)\">\n\
+         <path d=\"{path}\" fill=\"#9cc3e6\" fill-rule=\"nonzero\" stroke=\"#1f4e79\" stroke-width=\"{}\"/>\n\
+         <path d=\"{skel}\" fill=\"none\" stroke=\"#c00000\" stroke-width=\"{}\"/>\n\
+         </g>\n</svg>\n",
+        lo.0 - m,
+        -hi.1 - m,
+        w + 2.0 * m,
+        h + 2.0 * m,
+        w.max(h) / 400.0,
+        w.max(h) / 300.0,
+    )
+}
+
+/// Runs `lncert stroke`.
+pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
+    let r = pen_radius(&a.pen)?;
+    let tol_q = number("--tol", &a.tol)?;
+    let tol = interval_from_rational(&tol_q).inf();
+    if !(tol.is_finite() && tol > 0.0) {
+        return Err(bad("--tol", "must be a positive number"));
+    }
+    let cap = match a.cap.as_str() {
+        "round" => Cap::Round,
+        "butt" => Cap::Butt,
+        c => return Err(bad("--cap", format!("expected round or butt, got {c:?}"))),
+    };
+    for (flag, path) in [("--svg", &a.svg), ("--path-out", &a.path_out)] {
+        if let Some(p) = path {
+            super::args::output_file(flag, p)?;
+        }
+    }
+    let meta = std::fs::metadata(&a.curve)
+        .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
+    if meta.len() > super::hausdorff::MAX_FILE_BYTES {
+        return Err(bad("CURVE", "file too large"));
+    }
+    let text = std::fs::read_to_string(&a.curve)
+        .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
+    let curve = parse_curve(&text).map_err(|e| bad("CURVE", e))?;
+    let mut opts = StrokeOptions::new(r, tol);
+    opts.cap = cap;
+    opts.output = match a.output.as_str() {
+        "native" => lncert::approx::Output::Native,
+        "cubic" => lncert::approx::Output::Cubic,
+        "quadratic" => lncert::approx::Output::Quadratic,
+        o => {
+            return Err(bad(
+                "--output",
+                format!("expected native, cubic or quadratic, got {o:?}"),
+            ))
+        }
+    };
+    let t0 = std::time::Instant::now();
+    let s = stroke(&curve, &opts).map_err(|e| {
+        bad(
+            match e.field.as_str() {
+                "radius" => "--pen",
+                "tol" => "--tol",
+                _ => "CURVE",
+            },
+            e.reason,
+        )
+    })?;
+    let secs = t0.elapsed().as_secs_f64();
+    let code = if s.proven() {
+        super::EXIT_OK
+    } else {
+        super::EXIT_UNDECIDED
+    };
+    let verdict = if s.proven() { "proven" } else { "undecided" };
+    let path = path_data(&s);
+    if let Some(p) = &a.path_out {
+        let d = path.clone()?;
+        std::fs::write(p, d + "\n").map_err(|e| bad("--path-out", e))?;
+    }
+    if let Some(p) = &a.svg {
+        // the picture draws higher-degree pieces as their control polygons' chords
+        let d = path.clone().unwrap_or_else(|_| fallback_path(&s));
+        std::fs::write(p, svg(&s, &curve, &d)).map_err(|e| bad("--svg", e))?;
+    }
+    if a.json {
+        let doc = json!({
+            "outline": {
+                "contours": s.contours.iter().map(|c| json!({
+                    "closed": c.closed,
+                    "orientation": c.orientation.name(),
+                    "pieces": c.pieces.iter().map(piece_json).collect::<Vec<_>>(),
+                })).collect::<Vec<_>>(),
+                "intersections": s.crossings.iter().map(|c| json!({
+                    "pieces": [c.pieces.0, c.pieces.1],
+                    "s": [c.s.0, c.s.1],
+                    "t": [c.t.0, c.t.1],
+                    "certified": true,
+                })).collect::<Vec<_>>(),
+                "complete": s.complete,
+                "claims": {"a": claim_json(&s.a), "b": claim_json(&s.b), "c": claim_json(&s.c)},
+                "notes": s.notes,
+            },
+            "raw_pieces": s.raw_pieces,
+            "pieces": s.pieces(),
+            "seconds": secs,
+            "tol": a.tol,
+            "verdict": verdict,
+        });
+        print_out(&format!("{doc}\n"));
+    } else {
+        let mut out = String::new();
+        let _ = writeln!(
+            out,
+            "stroke: {} contours, {} pieces ({} raw, {} crossings cut), {:.2} s",
+            s.contours.len(),
+            s.pieces(),
+            s.raw_pieces,
+            s.crossings.len(),
+            secs
+        );
+        for (k, c) in s.contours.iter().enumerate() {
+            let _ = writeln!(
+                out,
+                "  contour {k}: {} pieces, {}, {}",
+                c.pieces.len(),
+                if c.closed { "closed" } else { "open" },
+                c.orientation.name()
+            );
+        }
+        for (name, c) in [("a", &s.a), ("b", &s.b), ("c", &s.c)] {
+            let _ = writeln!(
+                out,
+                "  ({name}) {}: {}",
+                if c.proven { "proven" } else { "undecided" },
+                c.note
+            );
+        }
+        for n in &s.notes {
+            let _ = writeln!(out, "  note: {n}");
+        }
+        let _ = writeln!(out, "verdict: {verdict}");
+        print_out(&out);
+    }
+    Ok(code)
+}
+
+fn fallback_path(s: &Stroke) -> String {
+    let mut d = String::new();
+    for c in &s.contours {
+        let p0 = c.pieces[0].start();
+        let _ = write!(d, "M {} {} ", f(&p0.x), f(&p0.y));
+        for p in &c.pieces {
+            if let Piece::Bezier(b) = p {
+                let n = 16;
+                let bf = b.map(Scalar::approx);
+                for k in 1..=n {
+                    let v = bf.eval_fast(k as f64 / n as f64);
+                    let _ = write!(d, "L {} {} ", v.x, v.y);
+                }
+            } else {
+                let e = p.end();
+                let _ = write!(d, "L {} {} ", f(&e.x), f(&e.y));
+            }
+        }
+        d.push_str("Z ");
+    }
+    d
+}

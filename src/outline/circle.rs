@@ -1,0 +1,610 @@
+//! Exact circular arcs for outlines: rational points exactly on a circle,
+//! angle-range tests, the crossings of a Bézier piece with an arc, and the
+//! exact area term of an arc.
+//!
+//! An [`Arc`] has a rational centre and radius and **rational end points that
+//! lie exactly on its circle**: `|from − c|² = r²` holds in exact arithmetic.
+//! Such points come from the rational parametrisation of the circle,
+//! `c + r ((1 − u²)/(1 + u²), 2u/(1 + u²))` with rational `u` ([`snap`]), so
+//! an arc can be split and joined to polynomial pieces at exact shared points.
+
+use crate::curve::{bernstein_product, Bezier, V2};
+use crate::poly::{isolate_roots, refine_root, Poly, Span};
+use crate::scalar::{interval_from_rational, rational_from_f64, Interval, Rational, Scalar};
+use num_traits::{One, Signed, Zero};
+
+/// A circular arc with exact end points on its circle.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Arc {
+    /// Centre.
+    pub center: V2<Rational>,
+    /// Radius (`> 0`).
+    pub radius: Rational,
+    /// Start point (exactly on the circle).
+    pub from: V2<Rational>,
+    /// End point (exactly on the circle).
+    pub to: V2<Rational>,
+    /// Travels clockwise from `from` to `to`.
+    pub clockwise: bool,
+}
+
+fn half() -> Rational {
+    Rational::new(1.into(), 2.into())
+}
+
+/// A rational point exactly on the circle `(c, r)` near the ray from `c` in
+/// the (approximate) direction `dir`: the rational parametrisation at a
+/// tangent of the half angle rounded to `2⁻⁴⁰`. `None` for a zero or
+/// non-finite direction.
+pub fn snap(c: &V2<Rational>, r: &Rational, dir: (f64, f64)) -> Option<V2<Rational>> {
+    let th = dir.1.atan2(dir.0);
+    if !th.is_finite() || (dir.0 == 0.0 && dir.1 == 0.0) {
+        return None;
+    }
+    // use the half-turn on the left side so that |u| ≤ tan(π/4) = 1
+    let (th, flip) = if th.abs() <= std::f64::consts::FRAC_PI_2 {
+        (th, false)
+    } else if th > 0.0 {
+        (th - std::f64::consts::PI, true)
+    } else {
+        (th + std::f64::consts::PI, true)
+    };
+    let u = ((th / 2.0).tan() * 2f64.powi(40)).round() / 2f64.powi(40);
+    let u = rational_from_f64(u)?;
+    let one = <Rational as One>::one();
+    let den = &one + &u * &u;
+    let cx = (&one - &u * &u) / &den;
+    let sy = (&u + &u) / &den;
+    let (cx, sy) = if flip { (-cx, -sy) } else { (cx, sy) };
+    Some(V2::new(&c.x + r * cx, &c.y + r * sy))
+}
+
+/// True when `p` lies exactly on the circle.
+pub fn on_circle(c: &V2<Rational>, r: &Rational, p: &V2<Rational>) -> bool {
+    p.sub(c).norm2() == r * r
+}
+
+/// Whether the direction `v` (from the centre) lies in the closed angle range
+/// swept counter-clockwise from `a` to `b` (`a`, `b` nonzero); `None` when the
+/// signs cannot be decided (interval input).
+pub fn in_ccw_range<S: Scalar>(a: &V2<S>, b: &V2<S>, v: &V2<S>) -> Option<bool> {
+    use crate::scalar::Sign;
+    let nonneg = |s: Sign| match s {
+        Sign::Positive | Sign::Zero => Some(true),
+        Sign::Negative => Some(false),
+        Sign::Unknown => None,
+    };
+    let ab = a.cross(b).sign();
+    let dab = a.dot(b).sign();
+    let av = nonneg(a.cross(v).sign());
+    let vb = nonneg(v.cross(b).sign());
+    match (ab, dab) {
+        (Sign::Positive, _) => Some(av? && vb?),
+        (Sign::Zero, Sign::Positive) => {
+            // a zero arc: only the direction of a
+            Some(v.cross(a).sign() == Sign::Zero && v.dot(a).sign() == Sign::Positive)
+        }
+        (Sign::Unknown, _) | (Sign::Zero, Sign::Unknown) => None,
+        _ => {
+            // the arc is π or more: v is in it unless strictly inside the
+            // complementary (< π) range from b to a
+            match (av, vb) {
+                (Some(true), _) | (_, Some(true)) => Some(true),
+                (Some(false), Some(false)) => Some(false),
+                _ => None,
+            }
+        }
+    }
+}
+
+/// The range test from the signs of `a × v` and `v × b`, for a range below
+/// π (`minor`) or of π or more.
+fn in_ccw_range_signs(
+    minor: bool,
+    av: crate::scalar::Sign,
+    vb: crate::scalar::Sign,
+) -> Option<bool> {
+    use crate::scalar::Sign;
+    let nonneg = |s: Sign| match s {
+        Sign::Positive | Sign::Zero => Some(true),
+        Sign::Negative => Some(false),
+        Sign::Unknown => None,
+    };
+    let (av, vb) = (nonneg(av), nonneg(vb));
+    if minor {
+        match (av, vb) {
+            (Some(false), _) | (_, Some(false)) => Some(false),
+            (Some(true), Some(true)) => Some(true),
+            _ => None,
+        }
+    } else {
+        match (av, vb) {
+            (Some(true), _) | (_, Some(true)) => Some(true),
+            (Some(false), Some(false)) => Some(false),
+            _ => None,
+        }
+    }
+}
+
+impl Arc {
+    /// The counter-clockwise start and end directions (from the centre).
+    pub fn ccw_dirs(&self) -> (V2<Rational>, V2<Rational>) {
+        let (a, b) = (self.from.sub(&self.center), self.to.sub(&self.center));
+        if self.clockwise {
+            (b, a)
+        } else {
+            (a, b)
+        }
+    }
+    /// Whether the direction `v` from the centre is within the arc.
+    pub fn contains_dir<S: Scalar>(&self, v: &V2<S>) -> Option<bool> {
+        let (a, b) = self.ccw_dirs();
+        // the shape of the range is decided exactly, only `v` is uncertain
+        let ab = a.cross(&b);
+        let (af, bf) = (a.map(S::from_rational), b.map(S::from_rational));
+        if ab.is_positive() {
+            let av = af.cross(v).sign();
+            let vb = v.cross(&bf).sign();
+            return in_ccw_range_signs(true, av, vb);
+        }
+        if ab.is_zero() && a.dot(&b).is_positive() {
+            // a degenerate (zero) arc: not produced by the outline code
+            return None;
+        }
+        in_ccw_range_signs(false, af.cross(v).sign(), v.cross(&bf).sign())
+    }
+    /// The same arc travelled the other way.
+    pub fn reversed(&self) -> Arc {
+        Arc {
+            from: self.to.clone(),
+            to: self.from.clone(),
+            clockwise: !self.clockwise,
+            ..self.clone()
+        }
+    }
+    /// A rational point on the circle strictly inside the arc, near its middle
+    /// angle (`None` for a degenerate arc).
+    pub fn midpoint(&self) -> Option<V2<Rational>> {
+        let (a, b) = self.ccw_dirs();
+        let (af, bf) = (a.map(Scalar::approx), b.map(Scalar::approx));
+        let ta = af.y.atan2(af.x);
+        let mut tb = bf.y.atan2(bf.x);
+        if tb <= ta {
+            tb += 2.0 * std::f64::consts::PI;
+        }
+        let tm = 0.5 * (ta + tb);
+        let m = snap(&self.center, &self.radius, (tm.cos(), tm.sin()))?;
+        let v = m.sub(&self.center);
+        let strictly = a.cross(&v).is_positive() && v.cross(&b).is_positive()
+            || (!a.cross(&b).is_positive()
+                && (a.cross(&v).is_positive() || v.cross(&b).is_positive()));
+        if strictly && m != self.from && m != self.to {
+            Some(m)
+        } else {
+            None
+        }
+    }
+    /// Splits at a point of the arc (exactly on the circle, inside the range).
+    pub fn split_at(&self, m: &V2<Rational>) -> (Arc, Arc) {
+        (
+            Arc {
+                to: m.clone(),
+                ..self.clone()
+            },
+            Arc {
+                from: m.clone(),
+                ..self.clone()
+            },
+        )
+    }
+    /// Travel angle below π (exact test).
+    pub fn is_minor(&self) -> bool {
+        let (a, b) = self.ccw_dirs();
+        a.cross(&b).is_positive()
+    }
+    /// For a minor arc: the control polygon `[from, apex, to]` whose convex
+    /// hull holds the arc (the apex is where the end tangents meet:
+    /// `c + (a + b)·2r²/|a + b|²`, exact).
+    pub fn hull(&self) -> Option<[V2<Rational>; 3]> {
+        if !self.is_minor() {
+            return None;
+        }
+        let (a, b) = (self.from.sub(&self.center), self.to.sub(&self.center));
+        let s = a.add(&b);
+        let n2 = s.norm2();
+        if n2.is_zero() {
+            return None;
+        }
+        let k = (&self.radius * &self.radius * Rational::from_integer(2.into())) / n2;
+        let apex = self.center.add(&s.scale(&k));
+        Some([self.from.clone(), apex, self.to.clone()])
+    }
+    /// Minor sub-arcs covering the arc, split at rational points of the circle.
+    pub fn minor_parts(&self) -> Option<Vec<Arc>> {
+        let mut out = Vec::new();
+        let mut todo = vec![self.clone()];
+        while let Some(a) = todo.pop() {
+            // split arcs of a quarter turn or more: keeps the hulls small
+            let (u, v) = a.ccw_dirs();
+            if a.is_minor() && u.dot(&v).is_positive() {
+                out.push(a);
+            } else {
+                if out.len() + todo.len() > 64 {
+                    return None;
+                }
+                let m = a.midpoint()?;
+                let (l, r) = a.split_at(&m);
+                todo.push(r);
+                todo.push(l);
+            }
+        }
+        Some(out)
+    }
+    /// `½∫(x dy − y dx)` along the arc, enclosed: `½ cross(c, to − from) ± ½ r² Δφ`.
+    pub fn area_term(&self) -> Option<Interval> {
+        let poly = self.center.cross(&self.to.sub(&self.from)) * half();
+        let mut phi = Interval::try_from((0.0, 0.0)).ok()?;
+        for p in self.minor_parts()? {
+            phi += minor_angle(&p)?;
+        }
+        let r2 = interval_from_rational(&(&self.radius * &self.radius * half()));
+        let sector = r2 * phi;
+        let poly = interval_from_rational(&poly);
+        Some(if self.clockwise {
+            poly - sector
+        } else {
+            poly + sector
+        })
+    }
+    /// As an `ArcDesc` (counter-clockwise directions) and the travel flag.
+    pub fn desc(&self) -> crate::shape::ArcDesc {
+        let (a, b) = self.ccw_dirs();
+        crate::shape::ArcDesc {
+            center: self.center.clone(),
+            radius: self.radius.clone(),
+            from: a,
+            to: b,
+        }
+    }
+}
+
+/// The angle of a minor arc below a right angle (`a·b > 0`), enclosed:
+/// `2 atan(t)`, `t = cross(a, b)/(r² + a·b) ∈ (0, 1)`, by the alternating
+/// Taylor series of `atan` (partial sums bracket it for `0 ≤ t ≤ 1`).
+fn minor_angle(a: &Arc) -> Option<Interval> {
+    let (u, v) = a.ccw_dirs();
+    let t = u.cross(&v) / (&a.radius * &a.radius + u.dot(&v));
+    if !(t.is_positive() && t <= <Rational as One>::one()) {
+        return None;
+    }
+    let t2 = &t * &t;
+    let (mut lo, mut hi) = (<Rational as Zero>::zero(), <Rational as Zero>::zero());
+    let mut term = t.clone();
+    let mut s = <Rational as Zero>::zero();
+    for k in 0..12 {
+        let c = &term / Rational::from_integer((2 * k + 1).into());
+        if k % 2 == 0 {
+            s += c;
+            hi = s.clone();
+        } else {
+            s -= c;
+            lo = s.clone();
+        }
+        term = &term * &t2;
+    }
+    let two = Interval::try_from((2.0, 2.0)).ok()?;
+    let (l, h) = (interval_from_rational(&lo), interval_from_rational(&hi));
+    Some(two * Interval::try_from((l.inf(), h.sup())).ok()?)
+}
+
+/// One point where a Bézier piece meets the circle of an arc inside the arc's
+/// range: parameter enclosure `[lo, hi]` on the piece.
+#[derive(Clone, Debug)]
+pub struct ArcHit {
+    /// Isolating interval of the parameter (exact root when `lo == hi`).
+    pub t: (Rational, Rational),
+    /// True when the root is a multiple root of `|B − c|² − r²` (a tangential
+    /// contact).
+    pub multiple: bool,
+}
+
+/// What [`bezier_arc`] found.
+#[derive(Clone, Debug, Default)]
+pub struct ArcMeet {
+    /// Points of the piece on the arc (range decided).
+    pub hits: Vec<ArcHit>,
+    /// Roots whose position relative to the arc's range could not be decided.
+    pub undecided: Vec<(Rational, Rational)>,
+}
+
+/// `|B(t) − c|² − r²` as an exact polynomial (power basis).
+pub fn circle_poly(b: &Bezier<Rational>, c: &V2<Rational>, r: &Rational) -> Poly<Rational> {
+    let (x, y) = b.coords();
+    let dx: Vec<Rational> = x.iter().map(|v| v - &c.x).collect();
+    let dy: Vec<Rational> = y.iter().map(|v| v - &c.y).collect();
+    let g: Vec<Rational> = bernstein_product(&dx, &dx)
+        .into_iter()
+        .zip(bernstein_product(&dy, &dy))
+        .map(|(p, q)| p + q - r * r)
+        .collect();
+    Poly::from_bernstein(&g)
+}
+
+fn no_circle_point_iv(b: &Bezier<Rational>, c: &V2<Rational>, r: &Rational) -> bool {
+    let (x, y) = b.map(interval_from_rational).coords();
+    let ci = c.map(interval_from_rational);
+    let r2 = interval_from_rational(&(r * r));
+    let dx: Vec<Interval> = x.iter().map(|v| *v - ci.x).collect();
+    let dy: Vec<Interval> = y.iter().map(|v| *v - ci.y).collect();
+    let g: Vec<Interval> = bernstein_product(&dx, &dx)
+        .into_iter()
+        .zip(bernstein_product(&dy, &dy))
+        .map(|(p, q)| p + q - r2)
+        .collect();
+    one_sign(g, 10)
+}
+
+/// Every Bernstein coefficient of every part of a subdivision has one strict
+/// sign (neighbouring parts share their end coefficient, so the sign is the
+/// same everywhere): the polynomial has no root on `[0, 1]`.
+fn one_sign(g: Vec<Interval>, depth: u32) -> bool {
+    let pos = g.iter().all(|v| v.inf() > 0.0);
+    let neg = g.iter().all(|v| v.sup() < 0.0);
+    if pos || neg {
+        return true;
+    }
+    if depth == 0 || g[0].contains(0.0) || g[g.len() - 1].contains(0.0) {
+        return false;
+    }
+    let half = Interval::try_from((0.5, 0.5)).expect("half");
+    let n = g.len();
+    let mut p = g;
+    let mut left = Vec::with_capacity(n);
+    let mut right = Vec::with_capacity(n);
+    left.push(p[0]);
+    right.push(p[n - 1]);
+    for k in 1..n {
+        for i in 0..n - k {
+            p[i] = (p[i] + p[i + 1]) * half;
+        }
+        left.push(p[0]);
+        right.push(p[n - 1 - k]);
+    }
+    right.reverse();
+    one_sign(left, depth - 1) && one_sign(right, depth - 1)
+}
+
+/// All points where the Bézier piece meets the arc: the real roots of
+/// `|B(t) − c|² − r²` on `[0, 1]` (exact isolation), each kept when its point
+/// is in the arc's angle range (decided on an interval enclosure of the point
+/// after refining the root; `undecided` when it cannot be).
+pub fn bezier_arc(b: &Bezier<Rational>, arc: &Arc) -> ArcMeet {
+    let mut out = ArcMeet::default();
+    // exact bounding-box exclusion: the circle's box against the control box
+    let (c, r) = (&arc.center, &arc.radius);
+    let p = b.points();
+    let minx = p.iter().map(|v| &v.x).min().expect("nonempty");
+    let maxx = p.iter().map(|v| &v.x).max().expect("nonempty");
+    let miny = p.iter().map(|v| &v.y).min().expect("nonempty");
+    let maxy = p.iter().map(|v| &v.y).max().expect("nonempty");
+    if maxx < &(&c.x - r) || minx > &(&c.x + r) || maxy < &(&c.y - r) || miny > &(&c.y + r) {
+        return out;
+    }
+    // interval filter: the Bernstein coefficients of |B − c|² − r² of one
+    // strict sign on every part of a subdivision: no point on the circle
+    if no_circle_point_iv(b, c, r) {
+        return out;
+    }
+    let g = circle_poly(b, c, r);
+    if g.clone().trimmed().degree().is_none() {
+        // the piece lies on the circle: an overlap
+        out.undecided
+            .push((<Rational as Zero>::zero(), <Rational as One>::one()));
+        return out;
+    }
+    let dg = g.derivative();
+    let bi = b.map(interval_from_rational);
+    let ci = c.map(interval_from_rational);
+    for root in isolate_roots(&g, &Span::unit_closed()) {
+        let multiple = if root.is_exact() {
+            dg.eval(&root.lo).is_zero()
+        } else {
+            // a multiple root of g is a root of gcd(g, g′): g′ has a root in the interval
+            crate::poly::has_root_in(&dg, &Span::closed(root.lo.clone(), root.hi.clone()))
+                && crate::poly::has_common_root_in(
+                    &g,
+                    &dg,
+                    &Span::closed(root.lo.clone(), root.hi.clone()),
+                )
+        };
+        if root.is_exact() {
+            // decide exactly at a rational root (e.g. a shared end point)
+            let v = b.eval(&root.lo).sub(c);
+            match arc.contains_dir(&v) {
+                Some(true) => out.hits.push(ArcHit {
+                    t: (root.lo.clone(), root.hi.clone()),
+                    multiple,
+                }),
+                Some(false) => {}
+                None => out.undecided.push((root.lo.clone(), root.hi.clone())),
+            }
+            continue;
+        }
+        let mut rt = root.clone();
+        let mut decided = None;
+        for w in [40, 60, 90] {
+            let width = Rational::new(1.into(), num_bigint::BigInt::from(1) << w);
+            rt = refine_root(&g, &rt, &width);
+            let t = Interval::try_from((
+                interval_from_rational(&rt.lo).inf(),
+                interval_from_rational(&rt.hi).sup(),
+            ))
+            .expect("ordered");
+            let v = bi.eval(&t).sub(&ci);
+            decided = arc.contains_dir(&v);
+            if decided.is_some() {
+                break;
+            }
+        }
+        match decided {
+            Some(true) => out.hits.push(ArcHit {
+                t: (rt.lo, rt.hi),
+                multiple,
+            }),
+            Some(false) => {}
+            None => out.undecided.push((rt.lo, rt.hi)),
+        }
+    }
+    out
+}
+
+/// Whether two arcs can meet anywhere besides a shared end point `shared`:
+/// `Some(false)` proven apart (apart from `shared`), `Some(true)` a contact,
+/// `None` undecided.
+pub fn arcs_meet(a: &Arc, b: &Arc, shared: Option<&V2<Rational>>) -> Option<bool> {
+    let d = b.center.sub(&a.center);
+    let d2 = d.norm2();
+    let rs = &a.radius + &b.radius;
+    if d2 > &rs * &rs {
+        return Some(false);
+    }
+    if d2.is_zero() {
+        if a.radius != b.radius {
+            return Some(false);
+        }
+        // the same circle: the ranges may only share the point `shared`
+        let other_in = |x: &Arc, y: &Arc| -> bool {
+            // some point of y strictly inside x, or x's ends inside y beyond `shared`
+            let ends_in = [&y.from, &y.to]
+                .into_iter()
+                .filter(|p| Some(*p) != shared)
+                .any(|p| x.contains_dir(&p.sub(&x.center)) == Some(true));
+            let mid_in = y
+                .midpoint()
+                .map(|m| x.contains_dir(&m.sub(&x.center)) == Some(true))
+                .unwrap_or(true);
+            ends_in || mid_in
+        };
+        return Some(other_in(a, b) || other_in(b, a));
+    }
+    // two circles: the points c_a + α d ± h d⊥ (enclosed)
+    let ra2 = &a.radius * &a.radius;
+    let rb2 = &b.radius * &b.radius;
+    let alpha = (&d2 + &ra2 - &rb2) / (&d2 * Rational::from_integer(2.into()));
+    let h2 = &ra2 / &d2 - &alpha * &alpha; // h² in units of |d|²
+    if h2.is_negative() {
+        return Some(false);
+    }
+    let hi = interval_from_rational(&h2).sqrt();
+    let di = d.map(interval_from_rational);
+    let base = a
+        .center
+        .map(interval_from_rational)
+        .add(&di.scale(&interval_from_rational(&alpha)));
+    let perp = di.rot90().scale(&hi);
+    let mut any = false;
+    for p in [base.add(&perp), base.sub(&perp)] {
+        if let Some(s) = shared {
+            let si = s.map(interval_from_rational);
+            let near = |x: Interval, y: Interval| !x.disjoint(y);
+            if near(p.x, si.x) && near(p.y, si.y) {
+                // the shared end point itself (the circles meet there exactly)
+                continue;
+            }
+        }
+        let ina = a.contains_dir(&p.sub(&a.center.map(interval_from_rational)));
+        let inb = b.contains_dir(&p.sub(&b.center.map(interval_from_rational)));
+        match (ina, inb) {
+            (Some(false), _) | (_, Some(false)) => {}
+            (Some(true), Some(true)) => any = true,
+            _ => return None,
+        }
+    }
+    Some(any)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(n: i64, d: i64) -> Rational {
+        Rational::new(n.into(), d.into())
+    }
+
+    #[test]
+    fn snapped_points_are_on_the_circle() {
+        let c = V2::new(q(1, 3), q(-2, 7));
+        let r = q(2, 5);
+        for k in 0..16 {
+            let th = k as f64 * 0.41 - 3.0;
+            let p = snap(&c, &r, (th.cos(), th.sin())).unwrap();
+            assert!(on_circle(&c, &r, &p));
+            let v = p.sub(&c).map(Scalar::approx);
+            let phi = v.y.atan2(v.x);
+            let d = (phi - th).rem_euclid(2.0 * std::f64::consts::PI);
+            assert!(
+                !(1e-9..=2.0 * std::f64::consts::PI - 1e-9).contains(&d),
+                "{th} {phi}"
+            );
+        }
+    }
+
+    #[test]
+    fn half_circle_area_and_split() {
+        let c = V2::new(q(0, 1), q(0, 1));
+        let arc = Arc {
+            center: c,
+            radius: q(1, 1),
+            from: V2::new(q(1, 1), q(0, 1)),
+            to: V2::new(q(-1, 1), q(0, 1)),
+            clockwise: false,
+        };
+        let a = arc.area_term().unwrap();
+        assert!(
+            a.contains(std::f64::consts::FRAC_PI_2) && a.wid() < 1e-9,
+            "{a:?}"
+        );
+        let parts = arc.minor_parts().unwrap();
+        assert!(parts.len() >= 2);
+        assert_eq!(parts[0].from, arc.from);
+        assert_eq!(parts.last().unwrap().to, arc.to);
+        let cw = arc.reversed().area_term().unwrap();
+        assert!(cw.contains(-std::f64::consts::FRAC_PI_2));
+    }
+
+    #[test]
+    fn a_line_meets_the_upper_half_circle_once() {
+        let arc = Arc {
+            center: V2::new(q(0, 1), q(0, 1)),
+            radius: q(1, 1),
+            from: V2::new(q(1, 1), q(0, 1)),
+            to: V2::new(q(-1, 1), q(0, 1)),
+            clockwise: false,
+        };
+        // the vertical line x = 1/2 from y = -2 to 2 meets the circle twice,
+        // the upper half once
+        let l = Bezier::new(vec![V2::new(q(1, 2), q(-2, 1)), V2::new(q(1, 2), q(2, 1))]);
+        let m = bezier_arc(&l, &arc);
+        assert_eq!(m.hits.len(), 1, "{m:?}");
+        assert!(m.undecided.is_empty());
+        assert!(!m.hits[0].multiple);
+        // a tangent line y = 1 touches at (0, 1): a multiple root
+        let t = Bezier::new(vec![V2::new(q(-2, 1), q(1, 1)), V2::new(q(2, 1), q(1, 1))]);
+        let m = bezier_arc(&t, &arc);
+        assert_eq!(m.hits.len(), 1);
+        assert!(m.hits[0].multiple);
+        // an arc on a circle far away, and two crossing circles
+        let far = Arc {
+            center: V2::new(q(5, 1), q(0, 1)),
+            ..arc.clone()
+        };
+        assert_eq!(arcs_meet(&arc, &far, None), Some(false));
+        let near = Arc {
+            center: V2::new(q(1, 1), q(0, 1)),
+            from: V2::new(q(2, 1), q(0, 1)),
+            to: V2::new(q(0, 1), q(0, 1)),
+            ..arc.clone()
+        };
+        assert_eq!(arcs_meet(&arc, &near, None), Some(true));
+    }
+}

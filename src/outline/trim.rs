@@ -1,0 +1,1632 @@
+//! Proven stroke outlines for a circular pen: the boundary of the swept region
+//! `S = x ⊕ disk(r)` as closed contours of exact Bézier pieces and exact arcs.
+//!
+//! # Construction
+//!
+//! 1. The offsets at `−r` and `+r` ([`crate::approx::offset`], each segment
+//!    certified within `tol/8` of the exact offset of its span) are chained
+//!    into raw contours: the `−r` side forward, the `+r` side reversed, joined by
+//!    round caps (exact arcs of radius `r` about the end points) for an open
+//!    curve, or kept as two contours for a closed one. At G⁰ corners a join
+//!    arc is added on the convex side and a straight *connector* chord on the
+//!    concave side (its points lie inside the disk of the corner, so inside `S`).
+//!    With this order the outside of `S` is locally on the **right** of every
+//!    raw piece.
+//! 2. Exact closure: arc end points are rational points **exactly on** the
+//!    circle ([`super::circle::snap`], the rational parametrisation of the
+//!    circle); the neighbouring offset segment's end control point is replaced
+//!    by that point. Replacing an end control point by a point `δ` away moves
+//!    every point of the Bézier by at most `δ` (the end basis function is ≤ 1),
+//!    so `δ` (enclosed exactly) is added to the piece's certified bound.
+//! 3. The raw pieces are split at their certified crossings
+//!    ([`super::intersect::intersections`] for Bézier pairs,
+//!    [`super::circle::bezier_arc`] for a Bézier and an arc). **Split
+//!    convention**: a Bézier–Bézier crossing with enclosures `s`, `t` and point
+//!    box `P` is split at the dyadic midpoints `s*`, `t*` of the enclosures, and
+//!    the crossing is represented by one exact point `X` (the dyadic midpoint of
+//!    `P`) that replaces the end control points of the halves on both pieces; a
+//!    Bézier–arc crossing is split at the midpoint `s*` of an isolating interval
+//!    refined to `2⁻⁴⁰`, and `X` is a rational point exactly on the circle near
+//!    `B(s*)` (so the arc splits exactly at `X`). Each half moves by at most
+//!    `|B(s*) − X|` (enclosed), added to its bound.
+//! 4. Every sub-piece is classified (see `proofs/trimming.md`):
+//!    **kept** when every point `q` of it has, within the claimed bound, a point
+//!    `w` proven outside `S` (`dist(w, x) > r`, exact Bernstein signs of
+//!    `|w − x(t)|² − r²` on every input piece) — together with a point of `S`
+//!    within the piece's certified bound, the segment between them crosses `∂S`;
+//!    **removed** when every point `q` of it has `dist(q, x) < r − e` (`e` the
+//!    piece's two-sided bound; an exact witness point of `x` for each part of a
+//!    subdivision) or lies within `λ = tol/2` of a kept crossing point;
+//!    otherwise **undecided**, never guessed.
+//! 5. Kept pieces are chained into contours by their exact shared end points;
+//!    the orientation is the sign of the enclosed area `½∮(x dy − y dx)`
+//!    (exact for Bézier pieces, an enclosure for arcs); outer contours come out
+//!    counter-clockwise, holes clockwise.
+//! 6. Claim (c) is checked on the output: [`super::intersect::intersections`]
+//!    on its Bézier pieces, [`super::circle::bezier_arc`] and
+//!    [`super::circle::arcs_meet`] for the arcs; contours must be closed, with no
+//!    crossing and no contact besides the joints of consecutive pieces.
+
+use super::circle::{arcs_meet, bezier_arc, snap, Arc};
+use super::intersect::{intersections, IntersectOptions};
+use crate::approx::prep::Junction;
+use crate::approx::{exact_bezier, offset, OffsetOptions, OffsetResult};
+use crate::curve::{bernstein_product, Bezier, V2};
+use crate::scalar::{interval_from_rational, rational_from_f64, Interval, Rational, Scalar};
+use num_traits::{One, Signed, Zero};
+
+/// How an open curve's ends are closed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Cap {
+    /// A half circle of radius `r` about the end point (exact arc).
+    Round,
+    /// The straight segment between the two offset ends. The region is then
+    /// not `x ⊕ disk`: claims (a) and (b) are not made for butt caps.
+    Butt,
+}
+
+/// Settings of [`stroke`].
+#[derive(Clone, Debug)]
+pub struct StrokeOptions {
+    /// Pen radius `r > 0`, exact.
+    pub radius: Rational,
+    /// The tolerance to prove for claims (a) and (b).
+    pub tol: f64,
+    /// End caps of an open curve (default round).
+    pub cap: Cap,
+    /// Solver boxes per pair for the intersection searches (default 20 000).
+    pub max_boxes_per_pair: usize,
+    /// The offset segments' form (default native: degree `n + 3`; `Cubic` /
+    /// `Quadratic` for SVG-expressible output, see [`crate::approx::fit`]).
+    pub output: crate::approx::Output,
+}
+
+impl StrokeOptions {
+    /// Round caps and the default budgets.
+    pub fn new(radius: Rational, tol: f64) -> Self {
+        StrokeOptions {
+            radius,
+            tol,
+            cap: Cap::Round,
+            max_boxes_per_pair: 20_000,
+            output: crate::approx::Output::Native,
+        }
+    }
+}
+
+/// Why a stroke could not be computed; names the field.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("invalid `{field}`: {reason}")]
+pub struct StrokeError {
+    /// The offending input (`radius`, `tol`, `curve`, …).
+    pub field: String,
+    /// Why.
+    pub reason: String,
+}
+
+fn bad(field: &str, reason: impl Into<String>) -> StrokeError {
+    StrokeError {
+        field: field.into(),
+        reason: reason.into(),
+    }
+}
+
+/// One output piece: a Bézier of any degree or an exact arc.
+#[derive(Clone, Debug, PartialEq)]
+#[allow(clippy::large_enum_variant)]
+pub enum Piece {
+    /// Exact control points.
+    Bezier(Bezier<Rational>),
+    /// An arc with exact end points on its circle.
+    Arc(Arc),
+}
+
+impl Piece {
+    /// The start point.
+    pub fn start(&self) -> &V2<Rational> {
+        match self {
+            Piece::Bezier(b) => &b.points()[0],
+            Piece::Arc(a) => &a.from,
+        }
+    }
+    /// The end point.
+    pub fn end(&self) -> &V2<Rational> {
+        match self {
+            Piece::Bezier(b) => b.points().last().expect("nonempty"),
+            Piece::Arc(a) => &a.to,
+        }
+    }
+    fn reversed(&self) -> Piece {
+        match self {
+            Piece::Bezier(b) => {
+                let mut p = b.points().to_vec();
+                p.reverse();
+                Piece::Bezier(Bezier::new(p))
+            }
+            Piece::Arc(a) => Piece::Arc(a.reversed()),
+        }
+    }
+    /// `½∫(x dy − y dx)` along the piece: exact for a Bézier, enclosed for an arc.
+    pub fn area_term(&self) -> Option<Interval> {
+        match self {
+            Piece::Bezier(b) => Some(interval_from_rational(&bezier_area(b))),
+            Piece::Arc(a) => a.area_term(),
+        }
+    }
+}
+
+/// `½∫₀¹ (x y′ − y x′) dt`, exact.
+fn bezier_area(b: &Bezier<Rational>) -> Rational {
+    let (x, y) = b.power_coords();
+    let integrand = x.mul(&y.derivative()).sub(&y.mul(&x.derivative()));
+    let mut s = <Rational as Zero>::zero();
+    for (k, c) in integrand.coeffs().iter().enumerate() {
+        s += c / Rational::from_integer((k as i64 + 1).into());
+    }
+    s / Rational::from_integer(2.into())
+}
+
+/// Orientation of a closed contour.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Orientation {
+    /// Positive area (an outer contour).
+    CounterClockwise,
+    /// Negative area (a hole).
+    Clockwise,
+    /// The area enclosure contains 0, or the contour is open.
+    Undecided,
+}
+
+impl Orientation {
+    /// `"ccw"`, `"cw"` or `"undecided"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Orientation::CounterClockwise => "ccw",
+            Orientation::Clockwise => "cw",
+            Orientation::Undecided => "undecided",
+        }
+    }
+}
+
+/// One output contour.
+#[derive(Clone, Debug)]
+pub struct Contour {
+    /// Pieces in travel order; consecutive pieces share exact end points.
+    pub pieces: Vec<Piece>,
+    /// The last end point equals the first start point exactly.
+    pub closed: bool,
+    /// From the sign of the enclosed area.
+    pub orientation: Orientation,
+    /// Enclosure of the signed area `½∮(x dy − y dx)`.
+    pub area: (f64, f64),
+}
+
+/// A proven crossing of two raw (untrimmed) pieces where they were split.
+#[derive(Clone, Debug)]
+pub struct RawCrossing {
+    /// Raw piece indices (`i ≤ j`).
+    pub pieces: (usize, usize),
+    /// Parameter enclosure on the first piece (for an arc: `[0, 0]`).
+    pub s: (f64, f64),
+    /// Parameter enclosure on the second piece (for an arc: `[0, 0]`).
+    pub t: (f64, f64),
+}
+
+/// The status of one claim.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Claim {
+    /// True when proven.
+    pub proven: bool,
+    /// The certified bound (claims (a), (b); `∞` when not established).
+    pub bound: f64,
+    /// What was shown, or why not.
+    pub note: String,
+}
+
+/// Counts of the classification.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Classified {
+    /// Sub-pieces proven on the boundary.
+    pub kept: usize,
+    /// Sub-pieces proven interior.
+    pub removed: usize,
+    /// Connectors dropped (no proof needed).
+    pub dropped_connectors: usize,
+    /// Sub-pieces neither proven kept nor removed.
+    pub undecided: usize,
+}
+
+/// The result of [`stroke`].
+#[derive(Clone, Debug)]
+pub struct Stroke {
+    /// The outline.
+    pub contours: Vec<Contour>,
+    /// The crossings where the raw pieces were split.
+    pub crossings: Vec<RawCrossing>,
+    /// Raw pieces (offset segments, caps, joins, connectors) before trimming.
+    pub raw_pieces: usize,
+    /// The raw arrangement's intersections were complete (nothing undecided).
+    pub raw_complete: bool,
+    /// The output check of claim (c) was complete.
+    pub complete: bool,
+    /// Claim (a): every output point within `bound` of `∂S`.
+    pub a: Claim,
+    /// Claim (b): every point of `∂S` within `bound` of the output.
+    pub b: Claim,
+    /// Claim (c): closed, simple (certified), oriented contours.
+    pub c: Claim,
+    /// Classification counts.
+    pub classified: Classified,
+    /// The tolerance asked for.
+    pub tol: f64,
+    /// The curve is closed.
+    pub closed_curve: bool,
+    /// What was left undecided on the way (raw regions, sub-pieces, offsets);
+    /// informational: the claims are decided on the output itself.
+    pub notes: Vec<String>,
+}
+
+impl Stroke {
+    /// All three claims proven.
+    pub fn proven(&self) -> bool {
+        self.a.proven && self.b.proven && self.c.proven
+    }
+    /// Output pieces in all.
+    pub fn pieces(&self) -> usize {
+        self.contours.iter().map(|c| c.pieces.len()).sum()
+    }
+}
+
+/// What a raw piece is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Kind {
+    /// Approximates an exact part of a candidate boundary (offset span, cap, join).
+    Boundary,
+    /// A concave-corner chord: no exact counterpart, inside `S`.
+    Connector,
+    /// A butt cap: always part of the outline (no distance claims).
+    Butt,
+}
+
+#[derive(Clone, Debug)]
+struct Raw {
+    piece: Piece,
+    /// Hausdorff bound to its exact counterpart (Boundary) — also a bound of
+    /// the distance of each of its points to `S`.
+    e: f64,
+    /// For connectors: every point is within `e_in` of `S`.
+    e_in: f64,
+    kind: Kind,
+}
+
+fn fsq(v: &V2<Rational>) -> Interval {
+    let w = v.map(interval_from_rational);
+    (w.x * w.x + w.y * w.y).sqrt()
+}
+
+/// `|p − q|` upper bound.
+fn dist_hi(p: &V2<Rational>, q: &V2<Rational>) -> f64 {
+    fsq(&p.sub(q)).sup()
+}
+
+fn unit_normal_point(c: &V2<Rational>, r: &Rational, dir: &V2<Rational>) -> V2<Interval> {
+    let d = dir.map(interval_from_rational);
+    let n = (d.x * d.x + d.y * d.y).sqrt();
+    let ri = interval_from_rational(r);
+    let ci = c.map(interval_from_rational);
+    V2::new(ci.x + ri * d.x / n, ci.y + ri * d.y / n)
+}
+
+fn dist_hi_iv(p: &V2<Rational>, q: &V2<Interval>) -> f64 {
+    let pi = p.map(interval_from_rational);
+    let (dx, dy) = (pi.x - q.x, pi.y - q.y);
+    (dx * dx + dy * dy).sqrt().sup()
+}
+
+fn set_end(
+    b: &Bezier<Rational>,
+    first: Option<&V2<Rational>>,
+    last: Option<&V2<Rational>>,
+) -> Bezier<Rational> {
+    let mut p = b.points().to_vec();
+    if let Some(f) = first {
+        p[0] = f.clone();
+    }
+    if let Some(l) = last {
+        let n = p.len() - 1;
+        p[n] = l.clone();
+    }
+    Bezier::new(p)
+}
+
+/// The first nonzero derivative direction at an end (`e = 0` or `1`), exact.
+fn end_tangent(b: &Bezier<Rational>, e: u8) -> Option<V2<Rational>> {
+    let h = b.hodograph();
+    let hp = h.points();
+    let z = |v: &&V2<Rational>| !v.x.is_zero() || !v.y.is_zero();
+    if e == 0 {
+        hp.iter().find(z).cloned()
+    } else {
+        hp.iter().rev().find(z).cloned()
+    }
+}
+
+fn approx_dir(v: &V2<Rational>) -> (f64, f64) {
+    (v.x.approx(), v.y.approx())
+}
+
+/// One side's segments chained forward, with join arcs and connectors at the
+/// corners (the closing corner too when `closed`).
+fn chain_side(res: &OffsetResult, r: &Rational, closed: bool) -> Result<Vec<Raw>, StrokeError> {
+    let segs: Vec<(usize, Bezier<Rational>, f64)> = res
+        .segments
+        .iter()
+        .map(|s| {
+            exact_bezier(&s.bezier)
+                .map(|b| (s.piece, b, s.error.1))
+                .ok_or_else(|| bad("curve", "an offset control point is not finite"))
+        })
+        .collect::<Result<_, _>>()?;
+    if segs.is_empty() {
+        return Err(bad("curve", "no offset segments"));
+    }
+    let mut raws: Vec<Raw> = segs
+        .iter()
+        .map(|(_, b, e)| Raw {
+            piece: Piece::Bezier(b.clone()),
+            e: *e,
+            e_in: *e,
+            kind: Kind::Boundary,
+        })
+        .collect();
+    let n = raws.len();
+    let mut out: Vec<Raw> = Vec::new();
+    // junction k: between segment k and k + 1 (cyclic for closed)
+    let mut inserts: Vec<Option<Raw>> = vec![None; n];
+    let last = if closed { n } else { n - 1 };
+    for k in 0..last {
+        let k1 = (k + 1) % n;
+        let corner = if segs[k].0 != segs[k1].0 || (closed && k1 == 0) {
+            res.corners
+                .iter()
+                .find(|c| c.after == segs[k].0)
+                .map(|c| c.kind.clone())
+        } else {
+            None
+        };
+        let (p1, p2) = (raws[k].piece.end().clone(), raws[k1].piece.start().clone());
+        match corner {
+            Some(Junction::Join {
+                center,
+                from,
+                to,
+                clockwise,
+            }) => {
+                let x1 = snap(&center, r, approx_dir(&from)).ok_or_else(|| bad("curve", "join"))?;
+                let x2 = snap(&center, r, approx_dir(&to)).ok_or_else(|| bad("curve", "join"))?;
+                let d1 = dist_hi(&p1, &x1);
+                let d2 = dist_hi(&p2, &x2);
+                if let Piece::Bezier(b) = &raws[k].piece {
+                    raws[k].piece = Piece::Bezier(set_end(b, None, Some(&x1)));
+                }
+                raws[k].e += d1;
+                raws[k].e_in += d1;
+                if let Piece::Bezier(b) = &raws[k1].piece {
+                    raws[k1].piece = Piece::Bezier(set_end(b, Some(&x2), None));
+                }
+                raws[k1].e += d2;
+                raws[k1].e_in += d2;
+                let e1 = dist_hi_iv(&x1, &unit_normal_point(&center, r, &from));
+                let e2 = dist_hi_iv(&x2, &unit_normal_point(&center, r, &to));
+                if x1 != x2 {
+                    inserts[k] = Some(Raw {
+                        piece: Piece::Arc(Arc {
+                            center,
+                            radius: r.clone(),
+                            from: x1,
+                            to: x2,
+                            clockwise,
+                        }),
+                        e: e1.max(e2),
+                        e_in: 0.0,
+                        kind: Kind::Boundary,
+                    });
+                } else if let Piece::Bezier(b) = &raws[k1].piece {
+                    let _ = b;
+                }
+            }
+            Some(Junction::Overlap { center }) => {
+                if p1 != p2 {
+                    let e_in = (dist_hi(&p1, &center).max(dist_hi(&p2, &center)) - r.approx())
+                        .max(0.0)
+                        * (1.0 + 1e-12);
+                    inserts[k] = Some(Raw {
+                        piece: Piece::Bezier(Bezier::new(vec![p1, p2])),
+                        e: f64::INFINITY,
+                        e_in,
+                        kind: Kind::Connector,
+                    });
+                }
+            }
+            _ => {
+                if p1 != p2 {
+                    // smooth junction with float ends that differ: move the next start
+                    let d = dist_hi(&p1, &p2);
+                    if let Piece::Bezier(b) = &raws[k1].piece {
+                        raws[k1].piece = Piece::Bezier(set_end(b, Some(&p1), None));
+                    }
+                    raws[k1].e += d;
+                    raws[k1].e_in += d;
+                }
+            }
+        }
+    }
+    for (k, r) in raws.into_iter().enumerate() {
+        out.push(r);
+        if let Some(ins) = inserts[k].take() {
+            out.push(ins);
+        }
+    }
+    Ok(out)
+}
+
+fn reverse_side(side: Vec<Raw>) -> Vec<Raw> {
+    side.into_iter()
+        .rev()
+        .map(|r| Raw {
+            piece: r.piece.reversed(),
+            ..r
+        })
+        .collect()
+}
+
+/// The cap at the end `e` (0: start, 1: end) of the curve: returns the arc or
+/// chord from `p_from` (moved to the snapped point) to `p_to`.
+fn cap_piece(
+    x: &Bezier<Rational>,
+    e: u8,
+    r: &Rational,
+    cap: Cap,
+    from_piece: &mut Raw,
+    to_piece: &mut Raw,
+) -> Result<Raw, StrokeError> {
+    let c = if e == 0 {
+        x.points()[0].clone()
+    } else {
+        x.points().last().expect("nonempty").clone()
+    };
+    let t = end_tangent(x, e).ok_or_else(|| bad("curve", "a degenerate end"))?;
+    let n = t.rot90(); // left normal (not unit)
+    let neg_n = n.neg();
+    // at the end: from −N (the −r side) to +N; at the start: from +N to −N
+    let (dir_from, dir_to) = if e == 1 { (neg_n, n) } else { (n, neg_n) };
+    let p1 = from_piece.piece.end().clone();
+    let p2 = to_piece.piece.start().clone();
+    match cap {
+        Cap::Butt => {
+            let ex1 = unit_normal_point(&c, r, &dir_from);
+            let ex2 = unit_normal_point(&c, r, &dir_to);
+            let e = dist_hi_iv(&p1, &ex1).max(dist_hi_iv(&p2, &ex2));
+            let e_in =
+                (dist_hi(&p1, &c).max(dist_hi(&p2, &c)) - r.approx()).max(0.0) * (1.0 + 1e-12);
+            Ok(Raw {
+                piece: Piece::Bezier(Bezier::new(vec![p1, p2])),
+                e,
+                e_in,
+                kind: Kind::Butt,
+            })
+        }
+        Cap::Round => {
+            let x1 = snap(&c, r, approx_dir(&dir_from)).ok_or_else(|| bad("curve", "cap"))?;
+            let x2 = snap(&c, r, approx_dir(&dir_to)).ok_or_else(|| bad("curve", "cap"))?;
+            let d1 = dist_hi(&p1, &x1);
+            let d2 = dist_hi(&p2, &x2);
+            if let Piece::Bezier(b) = &from_piece.piece {
+                from_piece.piece = Piece::Bezier(set_end(b, None, Some(&x1)));
+            }
+            from_piece.e += d1;
+            from_piece.e_in += d1;
+            if let Piece::Bezier(b) = &to_piece.piece {
+                to_piece.piece = Piece::Bezier(set_end(b, Some(&x2), None));
+            }
+            to_piece.e += d2;
+            to_piece.e_in += d2;
+            let e1 = dist_hi_iv(&x1, &unit_normal_point(&c, r, &dir_from));
+            let e2 = dist_hi_iv(&x2, &unit_normal_point(&c, r, &dir_to));
+            Ok(Raw {
+                piece: Piece::Arc(Arc {
+                    center: c,
+                    radius: r.clone(),
+                    from: x1,
+                    to: x2,
+                    clockwise: false,
+                }),
+                e: e1.max(e2),
+                e_in: 0.0,
+                kind: Kind::Boundary,
+            })
+        }
+    }
+}
+
+/// Checks the inputs; `true` when the curve is closed.
+fn check(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<bool, StrokeError> {
+    if curve.is_empty() {
+        return Err(bad("curve", "no pieces"));
+    }
+    if !opts.radius.is_positive() {
+        return Err(bad("radius", "must be > 0"));
+    }
+    if !(opts.tol.is_finite() && opts.tol > 0.0) {
+        return Err(bad("tol", "must be a positive number"));
+    }
+    for (i, b) in curve.iter().enumerate() {
+        if b.degree() == 0 {
+            return Err(bad("curve", format!("piece {i} is a point")));
+        }
+    }
+    for w in curve.windows(2) {
+        if w[0].points().last() != w[1].points().first() {
+            return Err(bad(
+                "curve",
+                "pieces must be connected (end point = next start point)",
+            ));
+        }
+    }
+    let closed = curve.len() > 1 || curve[0].degree() > 1;
+    Ok(closed && curve.last().and_then(|b| b.points().last()) == curve[0].points().first())
+}
+
+/// The raw contours (before trimming).
+fn raw_contours(
+    curve: &[Bezier<Rational>],
+    opts: &StrokeOptions,
+    closed: bool,
+) -> Result<(Vec<Vec<Raw>>, Vec<String>), StrokeError> {
+    let r = &opts.radius;
+    let tol_off = opts.tol / 8.0;
+    let run = |d: Rational| {
+        let mut o = OffsetOptions::new(d, tol_off);
+        o.output = opts.output;
+        offset(curve, &o).map_err(|e| bad("curve", e.to_string()))
+    };
+    let (minus, plus) = rayon::join(|| run(-r.clone()), || run(r.clone()));
+    let (minus, plus) = (minus?, plus?);
+    let mut notes = Vec::new();
+    for (name, res) in [("-r", &minus), ("+r", &plus)] {
+        if !res.reached() || !res.proven {
+            notes.push(format!(
+                "the {name} offset did not reach tol/8 (certified {:.3e})",
+                res.certified_hi
+            ));
+        }
+    }
+    let a = chain_side(&minus, r, closed)?;
+    let b = reverse_side(chain_side(&plus, r, closed)?);
+    if closed {
+        return Ok((vec![a, b], notes));
+    }
+    let (mut a, mut b) = (a, b);
+    let x_end = curve.last().expect("nonempty");
+    let (na, nb) = (a.len() - 1, b.len() - 1);
+    let end_cap = {
+        let (a_last, b_first) = (&mut a[na].clone(), &mut b[0].clone());
+        let cap = cap_piece(x_end, 1, r, opts.cap, a_last, b_first)?;
+        a[na] = a_last.clone();
+        b[0] = b_first.clone();
+        cap
+    };
+    let start_cap = {
+        let (b_last, a_first) = (&mut b[nb].clone(), &mut a[0].clone());
+        let cap = cap_piece(&curve[0], 0, r, opts.cap, b_last, a_first)?;
+        b[nb] = b_last.clone();
+        a[0] = a_first.clone();
+        cap
+    };
+    let mut all = a;
+    all.push(end_cap);
+    all.extend(b);
+    all.push(start_cap);
+    Ok((vec![all], notes))
+}
+
+// ---------------------------------------------------------------------------
+// distance to the input curve
+
+/// Float estimate of `dist(p, x)` and the foot `(piece, t)`.
+fn foot(curve: &[Bezier<f64>], p: (f64, f64)) -> (f64, usize, f64) {
+    let mut best = (f64::INFINITY, 0usize, 0.0f64);
+    for (i, b) in curve.iter().enumerate() {
+        let n = 64;
+        let d2 = |t: f64| {
+            let v = b.eval_fast(t);
+            (v.x - p.0).powi(2) + (v.y - p.1).powi(2)
+        };
+        let mut bt = 0.0;
+        let mut bd = f64::INFINITY;
+        for k in 0..=n {
+            let t = k as f64 / n as f64;
+            let d = d2(t);
+            if d < bd {
+                bd = d;
+                bt = t;
+            }
+        }
+        // golden-section refinement on the bracket
+        let (mut lo, mut hi) = (
+            (bt - 1.0 / n as f64).max(0.0),
+            (bt + 1.0 / n as f64).min(1.0),
+        );
+        for _ in 0..50 {
+            let m1 = lo + (hi - lo) * 0.382;
+            let m2 = lo + (hi - lo) * 0.618;
+            if d2(m1) < d2(m2) {
+                hi = m2;
+            } else {
+                lo = m1;
+            }
+        }
+        let t = 0.5 * (lo + hi);
+        let d = d2(t).min(bd);
+        let t = if d2(t) <= bd { t } else { bt };
+        if d < best.0 {
+            best = (d, i, t);
+        }
+    }
+    (best.0.sqrt(), best.1, best.2)
+}
+
+/// Proves `|w − x(t)|² > r²` for all `t` in `[0, 1]` (exact Bernstein signs,
+/// subdividing).
+fn outside_piece(x: &Bezier<Rational>, w: &V2<Rational>, r2: &Rational) -> bool {
+    // bounding-box exclusion first
+    let p = x.points();
+    let mut d2 = <Rational as Zero>::zero();
+    for k in 0..2 {
+        let get = |v: &V2<Rational>| if k == 0 { v.x.clone() } else { v.y.clone() };
+        let lo = p.iter().map(get).min().expect("nonempty");
+        let hi = p.iter().map(get).max().expect("nonempty");
+        let wk = get(w);
+        if wk < lo {
+            d2 += (&lo - &wk) * (&lo - &wk);
+        } else if wk > hi {
+            d2 += (&wk - &hi) * (&wk - &hi);
+        }
+    }
+    if &d2 > r2 {
+        return true;
+    }
+    // interval filter first (rigorous enclosures), exact only when it cannot decide
+    {
+        let xi = x.map(interval_from_rational);
+        let wi = w.map(interval_from_rational);
+        let (xs, ys) = xi.coords();
+        let dx: Vec<Interval> = xs.iter().map(|v| *v - wi.x).collect();
+        let dy: Vec<Interval> = ys.iter().map(|v| *v - wi.y).collect();
+        let r2i = interval_from_rational(r2);
+        let g: Vec<Interval> = bernstein_product(&dx, &dx)
+            .into_iter()
+            .zip(bernstein_product(&dy, &dy))
+            .map(|(a, b)| a + b - r2i)
+            .collect();
+        if let Some(v) = positive_bernstein_iv(g, 14) {
+            return v;
+        }
+    }
+    let (xs, ys) = x.coords();
+    let dx: Vec<Rational> = xs.iter().map(|v| v - &w.x).collect();
+    let dy: Vec<Rational> = ys.iter().map(|v| v - &w.y).collect();
+    let g: Vec<Rational> = bernstein_product(&dx, &dx)
+        .into_iter()
+        .zip(bernstein_product(&dy, &dy))
+        .map(|(a, b)| a + b - r2)
+        .collect();
+    positive_bernstein(g, 14)
+}
+
+/// [`positive_bernstein`] on interval coefficients: `Some(true)` proven
+/// positive, `Some(false)` proven not (an end value ≤ 0), `None` undecided.
+fn positive_bernstein_iv(g: Vec<Interval>, depth: u32) -> Option<bool> {
+    if g.iter().all(|c| c.inf() > 0.0) {
+        return Some(true);
+    }
+    if g[0].sup() <= 0.0 || g[g.len() - 1].sup() <= 0.0 {
+        return Some(false);
+    }
+    if depth == 0 {
+        return None;
+    }
+    let half = Interval::try_from((0.5, 0.5)).ok()?;
+    let n = g.len();
+    let mut p = g;
+    let mut left = Vec::with_capacity(n);
+    let mut right = Vec::with_capacity(n);
+    left.push(p[0]);
+    right.push(p[n - 1]);
+    for r in 1..n {
+        for i in 0..n - r {
+            p[i] = (p[i] + p[i + 1]) * half;
+        }
+        left.push(p[0]);
+        right.push(p[n - 1 - r]);
+    }
+    right.reverse();
+    match positive_bernstein_iv(left, depth - 1)? {
+        false => Some(false),
+        true => positive_bernstein_iv(right, depth - 1),
+    }
+}
+
+/// All of a Bernstein polynomial on `[0, 1]` is `> 0`: coefficients positive,
+/// or split in half (exact de Casteljau) up to `depth`.
+fn positive_bernstein(g: Vec<Rational>, depth: u32) -> bool {
+    if g.iter().all(|c| c.is_positive()) {
+        return true;
+    }
+    if !g[0].is_positive() || !g[g.len() - 1].is_positive() || depth == 0 {
+        return false;
+    }
+    let half = Rational::new(1.into(), 2.into());
+    let n = g.len();
+    let mut p = g;
+    let mut left = Vec::with_capacity(n);
+    let mut right = Vec::with_capacity(n);
+    left.push(p[0].clone());
+    right.push(p[n - 1].clone());
+    for r in 1..n {
+        for i in 0..n - r {
+            p[i] = (&p[i] + &p[i + 1]) * &half;
+        }
+        left.push(p[0].clone());
+        right.push(p[n - 1 - r].clone());
+    }
+    right.reverse();
+    positive_bernstein(left, depth - 1) && positive_bernstein(right, depth - 1)
+}
+
+fn outside(curve: &[Bezier<Rational>], w: &V2<Rational>, r2: &Rational) -> bool {
+    curve.iter().all(|x| outside_piece(x, w, r2))
+}
+
+// ---------------------------------------------------------------------------
+// sub-pieces and their parts
+
+/// A part of a sub-piece: its hull points and how to split it.
+#[derive(Clone, Debug)]
+#[allow(clippy::large_enum_variant)]
+enum Part {
+    Bez(Bezier<Rational>),
+    Arc(Arc),
+}
+
+impl Part {
+    fn hull(&self) -> Option<Vec<V2<Rational>>> {
+        match self {
+            Part::Bez(b) => Some(b.points().to_vec()),
+            Part::Arc(a) => a.hull().map(|h| h.to_vec()),
+        }
+    }
+    fn halves(&self) -> Option<(Part, Part)> {
+        match self {
+            Part::Bez(b) => {
+                let (l, r) = b.split(&Rational::new(1.into(), 2.into()));
+                Some((Part::Bez(l), Part::Bez(r)))
+            }
+            Part::Arc(a) => {
+                let m = a.midpoint()?;
+                let (l, r) = a.split_at(&m);
+                Some((Part::Arc(l), Part::Arc(r)))
+            }
+        }
+    }
+    /// A point near the middle and the unit right normal of travel there (floats).
+    fn mid_right_normal(&self) -> ((f64, f64), (f64, f64)) {
+        match self {
+            Part::Bez(b) => {
+                let bf = b.map(Scalar::approx);
+                let p = bf.eval_fast(0.5);
+                let h = bf.hodograph();
+                let mut d = h.eval_fast(0.5);
+                if d.length() == 0.0 {
+                    let q = bf.points();
+                    d = q[q.len() - 1].to_dvec2() - q[0].to_dvec2();
+                }
+                let l = d.length().max(f64::MIN_POSITIVE);
+                ((p.x, p.y), (d.y / l, -d.x / l))
+            }
+            Part::Arc(a) => {
+                let m = a.midpoint().unwrap_or_else(|| a.from.clone());
+                let v = approx_dir(&m.sub(&a.center));
+                let l = (v.0 * v.0 + v.1 * v.1).sqrt().max(f64::MIN_POSITIVE);
+                let out = (v.0 / l, v.1 / l);
+                let mm = approx_dir(&m);
+                // right of travel: outward for counter-clockwise travel
+                if a.clockwise {
+                    (mm, (-out.0, -out.1))
+                } else {
+                    (mm, out)
+                }
+            }
+        }
+    }
+    fn initial(p: &Piece) -> Option<Vec<Part>> {
+        match p {
+            Piece::Bezier(b) => Some(vec![Part::Bez(b.clone())]),
+            Piece::Arc(a) => Some(a.minor_parts()?.into_iter().map(Part::Arc).collect()),
+        }
+    }
+}
+
+fn hull_radius_hi(h: &[V2<Rational>], w: &V2<Rational>) -> f64 {
+    h.iter().map(|p| dist_hi(p, w)).fold(0.0, f64::max)
+}
+
+/// Kept test: every point of the piece is within the returned bound of a
+/// point proven outside `S`. Returns the largest such distance.
+fn prove_kept(
+    curve: &[Bezier<Rational>],
+    curve_f: &[Bezier<f64>],
+    piece: &Piece,
+    e_in: f64,
+    r: &Rational,
+    budget: f64,
+) -> Option<f64> {
+    let r2 = r * r;
+    let rf = r.approx();
+    let mut todo: Vec<(Part, u32)> = Part::initial(piece)?.into_iter().map(|p| (p, 0)).collect();
+    let mut worst: f64 = 0.0;
+    let mut n = 0;
+    while let Some((part, depth)) = todo.pop() {
+        n += 1;
+        if n > 4000 {
+            return None;
+        }
+        let hull = part.hull()?;
+        let (m, nr) = part.mid_right_normal();
+        // a point proven outside: the middle pushed out along the right normal
+        let est = foot(curve_f, m).0;
+        let mut done = None;
+        let base = (2.0 * e_in).max(rf * 1e-12);
+        for k in [1.25, 2.0, 3.0] {
+            let eta = base * k + (rf - est).max(0.0);
+            let w = (m.0 + eta * nr.0, m.1 + eta * nr.1);
+            let w = V2::new(rational_from_f64(w.0)?, rational_from_f64(w.1)?);
+            let rho = hull_radius_hi(&hull, &w);
+            if rho > budget {
+                break;
+            }
+            if outside(curve, &w, &r2) {
+                done = Some(rho);
+                break;
+            }
+        }
+        match done {
+            Some(rho) => worst = worst.max(rho),
+            None => {
+                if depth >= 14 {
+                    return None;
+                }
+                let (l, rr) = part.halves()?;
+                todo.push((rr, depth + 1));
+                todo.push((l, depth + 1));
+            }
+        }
+    }
+    Some(worst.max(e_in))
+}
+
+/// Removal test: every point of the piece is at distance `< r − e` from the
+/// curve (an exact witness point of the curve per part), or within `lambda`
+/// of one of `near` (kept crossing points). Returns whether `near` was used.
+#[allow(clippy::too_many_arguments)]
+fn prove_removed(
+    curve: &[Bezier<Rational>],
+    curve_f: &[Bezier<f64>],
+    piece: &Piece,
+    e: f64,
+    r: &Rational,
+    near: &[V2<Rational>],
+    lambda: &Rational,
+) -> Option<bool> {
+    let re = r - rational_from_f64(e)?;
+    if !re.is_positive() {
+        return None;
+    }
+    let re2 = &re * &re;
+    let l2 = lambda * lambda;
+    let mut todo: Vec<(Part, u32)> = Part::initial(piece)?.into_iter().map(|p| (p, 0)).collect();
+    let mut used = false;
+    let mut n = 0;
+    while let Some((part, depth)) = todo.pop() {
+        n += 1;
+        if n > 4000 {
+            return None;
+        }
+        let hull = part.hull()?;
+        if near
+            .iter()
+            .any(|x| hull.iter().all(|p| p.sub(x).norm2() < l2))
+        {
+            used = true;
+            continue;
+        }
+        let (m, _) = part.mid_right_normal();
+        let (_, i, t) = foot(curve_f, m);
+        let y = curve[i].eval(&rational_from_f64(t)?);
+        if hull.iter().all(|p| p.sub(&y).norm2() < re2) {
+            continue;
+        }
+        if depth >= 16 {
+            return None;
+        }
+        let (l, rr) = part.halves()?;
+        todo.push((rr, depth + 1));
+        todo.push((l, depth + 1));
+    }
+    Some(used)
+}
+
+// ---------------------------------------------------------------------------
+// splitting
+
+#[derive(Clone, Debug)]
+struct Split {
+    /// Bézier: the parameter; arc: unused.
+    param: Rational,
+    /// The exact crossing point shared by both pieces.
+    point: V2<Rational>,
+}
+
+#[derive(Clone, Debug)]
+struct Sub {
+    raw: usize,
+    /// The exact sub-piece of the raw piece (its union over the raw piece is
+    /// the raw piece).
+    pre: Piece,
+    /// With the crossing points as end points (what is output).
+    post: Piece,
+    /// Largest end move.
+    delta: f64,
+    /// The sub-piece's ends are crossing points (not raw piece ends).
+    end_splits: [bool; 2],
+}
+
+fn split_piece(raw: usize, p: &Piece, splits: &mut [Split]) -> Vec<Sub> {
+    match p {
+        Piece::Bezier(b) => {
+            splits.sort_by(|a, b| a.param.cmp(&b.param));
+            let zero = <Rational as Zero>::zero();
+            let one = <Rational as One>::one();
+            let mut out = Vec::new();
+            let mut prev: Option<&Split> = None;
+            for k in 0..=splits.len() {
+                let next = splits.get(k);
+                let a = prev.map(|s| s.param.clone()).unwrap_or(zero.clone());
+                let bb = next.map(|s| s.param.clone()).unwrap_or(one.clone());
+                let pre = b.restrict(&a, &bb);
+                let post = set_end(&pre, prev.map(|s| &s.point), next.map(|s| &s.point));
+                let mut delta: f64 = 0.0;
+                if let Some(s) = prev {
+                    delta = delta.max(dist_hi(&pre.points()[0], &s.point));
+                }
+                if let Some(s) = next {
+                    delta = delta.max(dist_hi(pre.points().last().expect("nonempty"), &s.point));
+                }
+                out.push(Sub {
+                    raw,
+                    pre: Piece::Bezier(pre),
+                    post: Piece::Bezier(post),
+                    delta,
+                    end_splits: [prev.is_some(), next.is_some()],
+                });
+                prev = next;
+            }
+            out
+        }
+        Piece::Arc(a) => {
+            // order along the travel direction by the angle from the start
+            let ang = |pt: &V2<Rational>| {
+                let u = approx_dir(&a.from.sub(&a.center));
+                let v = approx_dir(&pt.sub(&a.center));
+                let mut d = v.1.atan2(v.0) - u.1.atan2(u.0);
+                if a.clockwise {
+                    d = -d;
+                }
+                d.rem_euclid(2.0 * std::f64::consts::PI)
+            };
+            splits.sort_by(|x, y| ang(&x.point).total_cmp(&ang(&y.point)));
+            let mut out = Vec::new();
+            let mut cur = a.clone();
+            let mut first = true;
+            for s in splits.iter() {
+                let (l, r) = cur.split_at(&s.point);
+                out.push(Sub {
+                    raw,
+                    pre: Piece::Arc(l.clone()),
+                    post: Piece::Arc(l),
+                    delta: 0.0,
+                    end_splits: [!first, true],
+                });
+                first = false;
+                cur = r;
+            }
+            out.push(Sub {
+                raw,
+                pre: Piece::Arc(cur.clone()),
+                post: Piece::Arc(cur),
+                delta: 0.0,
+                end_splits: [!first, false],
+            });
+            out
+        }
+    }
+}
+
+fn mid_rational(lo: f64, hi: f64) -> Option<Rational> {
+    rational_from_f64(0.5 * lo + 0.5 * hi)
+}
+
+/// Builds the proven stroke outline of `curve` with a circular pen of radius
+/// `opts.radius` (see the module docs and `proofs/trimming.md`).
+///
+/// Errors name the field: an empty or disconnected curve, a point piece, a
+/// radius that is not positive, a tolerance that is not a positive number, or
+/// an offset error (a singular input piece). Claims that cannot be decided are
+/// not errors: they come back unproven with a note.
+///
+/// # Examples
+/// ```
+/// use lncert::outline::trim::{stroke, StrokeOptions, Orientation};
+/// use lncert::shape::parse_curve;
+/// use lncert::parse_rational;
+/// // a straight segment: the stadium, two segments and two half circles
+/// let x = parse_curve("M 0 0 L 2 0").unwrap();
+/// let s = stroke(&x, &StrokeOptions::new(parse_rational("1/2").unwrap(), 1e-3)).unwrap();
+/// assert!(s.proven(), "{:?} {:?} {:?}", s.a, s.b, s.c);
+/// assert_eq!(s.contours.len(), 1);
+/// assert_eq!(s.contours[0].orientation, Orientation::CounterClockwise);
+/// assert!(s.contours[0].closed);
+/// ```
+pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke, StrokeError> {
+    let closed = check(curve, opts)?;
+    let r = &opts.radius;
+    let dbg = std::env::var("LNCERT_TRIM_DEBUG").is_ok();
+    let t0 = std::time::Instant::now();
+    let (raw_contours, mut notes) = raw_contours(curve, opts, closed)?;
+    if dbg {
+        eprintln!("offsets: {:?}", t0.elapsed());
+    }
+    let raws: Vec<Raw> = raw_contours.into_iter().flatten().collect();
+    let curve_f: Vec<Bezier<f64>> = curve.iter().map(|b| b.map(Scalar::approx)).collect();
+
+    // --- crossings of the raw arrangement
+    let iopts = IntersectOptions {
+        max_boxes_per_pair: opts.max_boxes_per_pair,
+        self_intersections: true,
+    };
+    let bez_idx: Vec<usize> = (0..raws.len())
+        .filter(|&i| matches!(raws[i].piece, Piece::Bezier(_)))
+        .collect();
+    let arc_idx: Vec<usize> = (0..raws.len())
+        .filter(|&i| matches!(raws[i].piece, Piece::Arc(_)))
+        .collect();
+    let bez: Vec<Bezier<Rational>> = bez_idx
+        .iter()
+        .map(|&i| match &raws[i].piece {
+            Piece::Bezier(b) => b.clone(),
+            Piece::Arc(_) => unreachable!(),
+        })
+        .collect();
+    let inter = intersections(&bez, &iopts);
+    if dbg {
+        eprintln!(
+            "raw intersections: {:?} {} boxes",
+            t0.elapsed(),
+            inter.boxes
+        );
+        for (k, r) in raws.iter().enumerate() {
+            eprintln!(
+                "raw {k}: {:?} e={:.3e} {:?}",
+                r.kind,
+                r.e,
+                match &r.piece {
+                    Piece::Bezier(b) => format!(
+                        "bez deg {} {:?}",
+                        b.degree(),
+                        b.map(Scalar::approx).points()
+                    ),
+                    Piece::Arc(a) => format!("arc {:?}", a.desc()),
+                }
+            );
+        }
+        for u in &inter.undecided {
+            eprintln!("undecided {:?}", u);
+        }
+    }
+    let mut raw_complete = inter.complete;
+    let mut splits: Vec<Vec<Split>> = vec![Vec::new(); raws.len()];
+    let mut crossings = Vec::new();
+    let fail = |notes: &mut Vec<String>, s: String| {
+        if notes.len() < 20 && !notes.contains(&s) {
+            notes.push(s);
+        }
+    };
+    for u in &inter.undecided {
+        fail(
+            &mut notes,
+            format!(
+                "raw pieces {} and {}: {} region undecided",
+                bez_idx[u.pieces.0], bez_idx[u.pieces.1], u.reason
+            ),
+        );
+    }
+    for c in &inter.crossings {
+        let (i, j) = (bez_idx[c.pieces.0], bez_idx[c.pieces.1]);
+        let (px, py) = (
+            mid_rational(c.point.0 .0, c.point.0 .1),
+            mid_rational(c.point.1 .0, c.point.1 .1),
+        );
+        let (s, t) = (mid_rational(c.s.0, c.s.1), mid_rational(c.t.0, c.t.1));
+        if let (Some(xx), Some(xy), Some(s), Some(t)) = (px, py, s, t) {
+            let point = V2::new(xx, xy);
+            splits[i].push(Split {
+                param: s,
+                point: point.clone(),
+            });
+            splits[j].push(Split { param: t, point });
+            crossings.push(RawCrossing {
+                pieces: (i, j),
+                s: c.s,
+                t: c.t,
+            });
+        }
+    }
+    // Bézier–arc
+    for &ai in &arc_idx {
+        let Piece::Arc(arc) = &raws[ai].piece else {
+            continue;
+        };
+        for &bi in &bez_idx {
+            let Piece::Bezier(b) = &raws[bi].piece else {
+                continue;
+            };
+            let m = bezier_arc(b, arc);
+            if dbg && (!m.hits.is_empty() || !m.undecided.is_empty()) {
+                eprintln!("bez {bi} arc {ai}: {:?}", m);
+            }
+            if !m.undecided.is_empty() {
+                raw_complete = false;
+                fail(
+                    &mut notes,
+                    format!("raw pieces {bi} and {ai}: arc range undecided"),
+                );
+            }
+            for h in m.hits {
+                // the joint: the Bézier's end point is the arc's end point
+                if h.t.0 == h.t.1 {
+                    let zero = <Rational as Zero>::zero();
+                    let one = <Rational as One>::one();
+                    let pt = if h.t.0 == zero {
+                        Some(b.points()[0].clone())
+                    } else if h.t.0 == one {
+                        b.points().last().cloned()
+                    } else {
+                        None
+                    };
+                    if let Some(pt) = pt {
+                        if pt == arc.from || pt == arc.to {
+                            continue;
+                        }
+                    }
+                }
+                if h.multiple {
+                    raw_complete = false;
+                    fail(
+                        &mut notes,
+                        format!("raw pieces {bi} and {ai}: tangential contact"),
+                    );
+                    continue;
+                }
+                let s = (&h.t.0 + &h.t.1) / Rational::from_integer(2.into());
+                let p = b.eval(&s);
+                let x = snap(&arc.center, &arc.radius, approx_dir(&p.sub(&arc.center)));
+                match x {
+                    Some(x)
+                        if arc.contains_dir(&x.sub(&arc.center)) == Some(true)
+                            && x != arc.from
+                            && x != arc.to =>
+                    {
+                        splits[bi].push(Split {
+                            param: s,
+                            point: x.clone(),
+                        });
+                        splits[ai].push(Split {
+                            param: <Rational as Zero>::zero(),
+                            point: x,
+                        });
+                        crossings.push(RawCrossing {
+                            pieces: (bi.min(ai), bi.max(ai)),
+                            s: (h.t.0.approx(), h.t.1.approx()),
+                            t: (0.0, 0.0),
+                        });
+                    }
+                    _ => {
+                        raw_complete = false;
+                        fail(
+                            &mut notes,
+                            format!("raw pieces {bi} and {ai}: crossing at an arc end"),
+                        );
+                    }
+                }
+            }
+        }
+    }
+    // arc–arc: a crossing cannot be split exactly: undecided
+    for (k, &ai) in arc_idx.iter().enumerate() {
+        for &aj in &arc_idx[k + 1..] {
+            let (Piece::Arc(a), Piece::Arc(b)) = (&raws[ai].piece, &raws[aj].piece) else {
+                continue;
+            };
+            let shared = [&a.from, &a.to]
+                .into_iter()
+                .find(|p| **p == b.from || **p == b.to);
+            if arcs_meet(a, b, shared) != Some(false) {
+                raw_complete = false;
+                fail(
+                    &mut notes,
+                    format!("raw arcs {ai} and {aj} may meet (arc–arc crossings are not split)"),
+                );
+            }
+        }
+    }
+
+    if dbg {
+        eprintln!("arcs: {:?}", t0.elapsed());
+    }
+    // --- split
+    let mut subs: Vec<Sub> = Vec::new();
+    for (i, raw) in raws.iter().enumerate() {
+        subs.extend(split_piece(i, &raw.piece, &mut splits[i]));
+    }
+
+    // --- classify: kept first (the near-crossing relaxation of removal needs them)
+    let tol = opts.tol;
+    use rayon::prelude::*;
+    let estimates: Vec<f64> = subs
+        .par_iter()
+        .map(|s| {
+            let (m, _) = Part::initial(&s.pre)
+                .and_then(|p| p.into_iter().next())
+                .map(|p| p.mid_right_normal())
+                .unwrap_or(((0.0, 0.0), (0.0, 0.0)));
+            foot(&curve_f, m).0
+        })
+        .collect();
+    let rf = r.approx();
+    let kept_bounds: Vec<Option<f64>> = subs
+        .par_iter()
+        .zip(&estimates)
+        .map(|(s, est)| {
+            let raw = &raws[s.raw];
+            let e_in = raw.e_in + s.delta;
+            if raw.kind == Kind::Butt {
+                return Some(e_in);
+            }
+            if *est < rf - 4.0 * e_in.max(tol / 8.0) {
+                return None;
+            }
+            prove_kept(curve, &curve_f, &s.post, e_in, r, tol)
+        })
+        .collect();
+    let near: Vec<V2<Rational>> = subs
+        .iter()
+        .zip(&kept_bounds)
+        .filter(|(_, k)| k.is_some())
+        .flat_map(|(s, _)| {
+            let mut v = Vec::new();
+            if s.end_splits[0] {
+                v.push(s.post.start().clone());
+            }
+            if s.end_splits[1] {
+                v.push(s.post.end().clone());
+            }
+            v
+        })
+        .collect();
+    let lambda = rational_from_f64(tol / 2.0).unwrap_or_else(<Rational as Zero>::zero);
+    let removed: Vec<Option<bool>> = subs
+        .par_iter()
+        .zip(&kept_bounds)
+        .map(|(s, k)| {
+            let raw = &raws[s.raw];
+            if k.is_some() || raw.kind != Kind::Boundary {
+                return None;
+            }
+            prove_removed(curve, &curve_f, &s.pre, raw.e, r, &near, &lambda)
+        })
+        .collect();
+    let mut classified = Classified::default();
+    let mut a_bound: f64 = 0.0;
+    let mut b_bound: f64 = 0.0;
+    let mut a_ok = true;
+    let mut b_ok = true;
+    let mut keep = vec![false; subs.len()];
+    for (k, s) in subs.iter().enumerate() {
+        let raw = &raws[s.raw];
+        if let Some(bd) = kept_bounds[k] {
+            classified.kept += 1;
+            keep[k] = true;
+            a_bound = a_bound.max(bd);
+            if raw.kind == Kind::Boundary {
+                b_bound = b_bound.max(raw.e + s.delta);
+            }
+        } else if raw.kind == Kind::Connector {
+            classified.dropped_connectors += 1;
+        } else if let Some(used) = removed[k] {
+            classified.removed += 1;
+            b_bound = b_bound.max(raw.e);
+            if used {
+                b_bound = b_bound.max(raw.e + tol / 2.0);
+            }
+        } else {
+            classified.undecided += 1;
+            a_ok = false;
+            b_ok = false;
+            // shown, not proven: keep what looks like boundary
+            keep[k] = estimates[k] >= rf - 2.0 * (raw.e_in + s.delta);
+            fail(
+                &mut notes,
+                format!(
+                    "sub-piece of raw piece {} undecided (distance estimate {:.6})",
+                    s.raw, estimates[k]
+                ),
+            );
+        }
+    }
+    for raw in &raws {
+        if raw.kind == Kind::Boundary && !raw.e.is_finite() {
+            b_ok = false;
+        }
+    }
+
+    if dbg {
+        eprintln!("classified: {:?}", t0.elapsed());
+    }
+    // --- chain
+    let out_pieces: Vec<Piece> = subs
+        .iter()
+        .zip(&keep)
+        .filter(|(_, k)| **k)
+        .map(|(s, _)| s.post.clone())
+        .collect();
+    let contours = chain(out_pieces);
+
+    // --- claim (c)
+    let (c_ok, c_complete, c_note) = check_simple(&contours, &iopts);
+    if dbg {
+        eprintln!("checked: {:?}", t0.elapsed());
+        for (k, s) in subs.iter().enumerate() {
+            eprintln!(
+                "sub {k}: raw {} keep {} kept {:?} removed {:?} est {:.6} delta {:.2e}",
+                s.raw, keep[k], kept_bounds[k], removed[k], estimates[k], s.delta
+            );
+        }
+    }
+    let offsets_ok = notes.iter().all(|n| !n.contains("did not reach"));
+    let butt = !closed && opts.cap == Cap::Butt;
+    let a = Claim {
+        proven: a_ok && offsets_ok && a_bound <= tol && !butt,
+        bound: if a_ok { a_bound } else { f64::INFINITY },
+        note: if butt {
+            "not claimed for butt caps (the region is not x ⊕ disk)".into()
+        } else if a_ok {
+            format!("every kept sub-piece has a point proven outside S within {a_bound:.3e} and a point of S within its certified bound")
+        } else {
+            "some sub-pieces could not be classified".into()
+        },
+    };
+    let b = Claim {
+        proven: b_ok && offsets_ok && b_bound <= tol && !butt,
+        bound: if b_ok { b_bound } else { f64::INFINITY },
+        note: if butt {
+            "not claimed for butt caps (the region is not x ⊕ disk)".into()
+        } else if b_ok {
+            format!(
+                "every sub-piece of the raw pieces is kept or proven interior; bound {b_bound:.3e}"
+            )
+        } else {
+            "some sub-pieces could not be classified".into()
+        },
+    };
+    let c = Claim {
+        proven: c_ok,
+        bound: 0.0,
+        note: c_note,
+    };
+
+    Ok(Stroke {
+        contours,
+        crossings,
+        raw_pieces: raws.len(),
+        raw_complete,
+        complete: c_complete,
+        a,
+        b,
+        c,
+        classified,
+        tol,
+        closed_curve: closed,
+        notes,
+    })
+}
+
+/// Chains pieces into contours by exact shared end points.
+fn chain(pieces: Vec<Piece>) -> Vec<Contour> {
+    let n = pieces.len();
+    let mut used = vec![false; n];
+    let mut out = Vec::new();
+    for s in 0..n {
+        if used[s] {
+            continue;
+        }
+        used[s] = true;
+        let mut cur = vec![pieces[s].clone()];
+        loop {
+            let end = cur.last().expect("nonempty").end().clone();
+            if &end == cur[0].start() {
+                break;
+            }
+            let next = (0..n).find(|&k| !used[k] && pieces[k].start() == &end);
+            match next {
+                Some(k) => {
+                    used[k] = true;
+                    cur.push(pieces[k].clone());
+                }
+                None => break,
+            }
+        }
+        let closed = cur.last().expect("nonempty").end() == cur[0].start();
+        let area = cur
+            .iter()
+            .map(|p| p.area_term())
+            .try_fold(Interval::try_from((0.0, 0.0)).expect("zero"), |acc, a| {
+                a.map(|a| acc + a)
+            });
+        let (orientation, area) = match (closed, area) {
+            (true, Some(a)) if a.inf() > 0.0 => (Orientation::CounterClockwise, (a.inf(), a.sup())),
+            (true, Some(a)) if a.sup() < 0.0 => (Orientation::Clockwise, (a.inf(), a.sup())),
+            (_, Some(a)) => (Orientation::Undecided, (a.inf(), a.sup())),
+            _ => (Orientation::Undecided, (f64::NEG_INFINITY, f64::INFINITY)),
+        };
+        out.push(Contour {
+            pieces: cur,
+            closed,
+            orientation,
+            area,
+        });
+    }
+    out
+}
+
+/// Claim (c): closed, oriented, and no contact besides consecutive joints.
+/// Returns (proven, complete, note).
+fn check_simple(contours: &[Contour], iopts: &IntersectOptions) -> (bool, bool, String) {
+    // flat list with (contour, position)
+    let mut flat: Vec<(&Piece, usize, usize)> = Vec::new();
+    for (ci, c) in contours.iter().enumerate() {
+        for (k, p) in c.pieces.iter().enumerate() {
+            flat.push((p, ci, k));
+        }
+    }
+    let consecutive = |i: usize, j: usize| -> bool {
+        let (a, b) = (&flat[i], &flat[j]);
+        if a.1 != b.1 {
+            return false;
+        }
+        let n = contours[a.1].pieces.len();
+        let closed = contours[a.1].closed;
+        let (x, y) = (a.2, b.2);
+        (x + 1 == y || y + 1 == x) || (closed && ((x + 1) % n == y || (y + 1) % n == x))
+    };
+    let mut problems = Vec::new();
+    if let Some(c) = contours.iter().position(|c| !c.closed) {
+        problems.push(format!("contour {c} is not closed"));
+    }
+    if let Some(c) = contours
+        .iter()
+        .position(|c| c.orientation == Orientation::Undecided)
+    {
+        problems.push(format!("contour {c}: orientation undecided"));
+    }
+    let bez: Vec<usize> = (0..flat.len())
+        .filter(|&i| matches!(flat[i].0, Piece::Bezier(_)))
+        .collect();
+    let arcs: Vec<usize> = (0..flat.len())
+        .filter(|&i| matches!(flat[i].0, Piece::Arc(_)))
+        .collect();
+    let bz: Vec<Bezier<Rational>> = bez
+        .iter()
+        .map(|&i| match flat[i].0 {
+            Piece::Bezier(b) => b.clone(),
+            Piece::Arc(_) => unreachable!(),
+        })
+        .collect();
+    let r = intersections(&bz, iopts);
+    let mut complete = r.complete;
+    if !r.crossings.is_empty() {
+        problems.push(format!("{} crossings left", r.crossings.len()));
+    }
+    if !r.complete {
+        problems.push(format!("{} undecided regions", r.undecided.len()));
+    }
+    for j in &r.joints {
+        let (a, b) = (bez[j.pieces.0], bez[j.pieces.1]);
+        if !consecutive(a, b) {
+            problems.push(format!("pieces {a} and {b} touch but are not consecutive"));
+        }
+    }
+    for &ai in &arcs {
+        let Piece::Arc(arc) = flat[ai].0 else {
+            continue;
+        };
+        for &bi in &bez {
+            let Piece::Bezier(b) = flat[bi].0 else {
+                continue;
+            };
+            let m = bezier_arc(b, arc);
+            if !m.undecided.is_empty() {
+                complete = false;
+                problems.push(format!("pieces {bi} and {ai}: undecided"));
+            }
+            for h in &m.hits {
+                let joint = h.t.0 == h.t.1 && {
+                    let pt = if h.t.0.is_zero() {
+                        Some(&b.points()[0])
+                    } else if h.t.0 == <Rational as One>::one() {
+                        b.points().last()
+                    } else {
+                        None
+                    };
+                    pt.is_some_and(|p| *p == arc.from || *p == arc.to) && consecutive(ai, bi)
+                };
+                if !joint {
+                    problems.push(format!("pieces {bi} and {ai} meet"));
+                }
+            }
+        }
+    }
+    for (k, &ai) in arcs.iter().enumerate() {
+        for &aj in &arcs[k + 1..] {
+            let (Piece::Arc(a), Piece::Arc(b)) = (flat[ai].0, flat[aj].0) else {
+                continue;
+            };
+            let shared = if consecutive(ai, aj) {
+                [&a.from, &a.to]
+                    .into_iter()
+                    .find(|p| **p == b.from || **p == b.to)
+            } else {
+                None
+            };
+            match arcs_meet(a, b, shared) {
+                Some(false) => {}
+                Some(true) => problems.push(format!("arcs {ai} and {aj} meet")),
+                None => {
+                    complete = false;
+                    problems.push(format!("arcs {ai} and {aj}: undecided"));
+                }
+            }
+        }
+    }
+    let ok = problems.is_empty();
+    let note = if ok {
+        format!(
+            "{} closed contours, {} pieces: no crossing, only joints of consecutive pieces (certified), orientation from the area sign",
+            contours.len(),
+            flat.len()
+        )
+    } else {
+        problems.truncate(10);
+        problems.join("; ")
+    };
+    (ok, complete, note)
+}
