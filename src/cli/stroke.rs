@@ -158,6 +158,13 @@ fn svg(s: &Stroke, curve: &[lncert::curve::Bezier<Rational>], path: &str) -> Str
                 lo = (lo.0.min(f(&v.x)), lo.1.min(f(&v.y)));
                 hi = (hi.0.max(f(&v.x)), hi.1.max(f(&v.y)));
             }
+            // the control polygon holds the curve
+            if let Piece::Bezier(b) = p {
+                for v in b.points() {
+                    lo = (lo.0.min(f(&v.x)), lo.1.min(f(&v.y)));
+                    hi = (hi.0.max(f(&v.x)), hi.1.max(f(&v.y)));
+                }
+            }
             if let Piece::Arc(a) = p {
                 let r = f(&a.radius);
                 lo = (lo.0.min(f(&a.center.x) - r), lo.1.min(f(&a.center.y) - r));
