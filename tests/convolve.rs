@@ -590,3 +590,37 @@ fn font_h_approximant_cusps_turn_back() {
         }
     }
 }
+
+/// The paper's acceptance is the paper's: a span whose measure is above TOL is
+/// split even when its certified true error is below TOL, and every segment of
+/// the result has a measure ≤ TOL (or none: a straight span, judged by its true
+/// error).
+#[test]
+fn paper_acceptance_splits_by_the_measure_alone() {
+    let x = nonic();
+    let pen =
+        Pen::ellipse_within(&q("0.7"), &q("0.3"), &Angle::parse("pi/6").unwrap(), 1e-6).unwrap();
+    let mut opts = OffsetOptions::new(q("0"), 1.0);
+    opts.method = lncert::approx::OffsetMethod::LnPair;
+    opts.subdivision = lncert::approx::lnpair::Subdivision::Weighted;
+    opts.accept_paper = true;
+    let r = convolve(&x, &pen, -1, &opts).unwrap();
+    assert!(r.reached());
+    for s in &r.segments {
+        match s.paper_error {
+            Some(m) => assert!(m <= 1.0, "{:?}: measure {m} > TOL accepted", s.t),
+            None => assert!(s.error.1 <= 1.0),
+        }
+    }
+    // at TOL 1 the certified acceptance keeps a span the measure splits
+    opts.accept_paper = false;
+    opts.paper_error = true;
+    let c = convolve(&x, &pen, -1, &opts).unwrap();
+    assert!(
+        c.segments
+            .iter()
+            .any(|s| s.paper_error.is_some_and(|m| m > 1.0) && s.error.1 <= 1.0),
+        "no span with the measure above TOL and the true error below"
+    );
+    assert!(r.segments.len() > c.segments.len());
+}

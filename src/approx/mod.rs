@@ -116,8 +116,10 @@ pub struct OffsetOptions {
     /// `d_H(p, pa) + d_H(q, qa)` (`q` the pen's elliptic arc).
     pub paper_error: bool,
     /// Accept a segment when the paper's measure ([`OffsetSegment::paper_error`],
-    /// an upper bound of it) is `≤ tol`, as the paper does, instead of its
-    /// certified true error (default false). The true error is still certified
+    /// an upper bound of it) is `≤ tol`, and split it when it is above, as the
+    /// paper does, instead of by its certified true error (default false; a
+    /// segment without a measure — a straight span — is judged by its true
+    /// error). The true error is still certified
     /// and reported, and may exceed `tol`: the result is then *not* proven
     /// within `tol` (`certified_hi > tol`), and no certificate is written.
     pub accept_paper: bool,
@@ -1130,10 +1132,12 @@ fn offset_segments(
         for o in outcomes {
             pending -= 1;
             // proven within tol, or (certify: false) estimated within it
-            let accepted = o.segment.as_ref().is_some_and(|s| {
-                s.error.1 <= opts.tol
-                    || s.estimate.is_some_and(|e| e <= opts.tol)
-                    || (opts.accept_paper && s.paper_error.is_some_and(|e| e <= opts.tol))
+            // with the paper's acceptance a segment with a measure is accepted
+            // by the measure alone, as the paper does (a segment whose measure
+            // is above tol is split even when its true error is below it)
+            let accepted = o.segment.as_ref().is_some_and(|s| match s.paper_error {
+                Some(e) if opts.accept_paper => e <= opts.tol,
+                _ => s.error.1 <= opts.tol || s.estimate.is_some_and(|e| e <= opts.tol),
             });
             if accepted {
                 done.extend(o.segment);
