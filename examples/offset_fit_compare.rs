@@ -6,7 +6,11 @@
 //! ```sh
 //! cargo run --release --example offset_fit_compare            # TOL 1e-1 … 1e-5
 //! cargo run --release --example offset_fit_compare -- --quick # TOL 1e-1 … 1e-3
+//! cargo run --release --example offset_fit_compare -- --glyphs /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf
 //! ```
+//!
+//! With `--glyphs FONT`: the outlines of `a e g s R & @ 3 S O` (every contour,
+//! font units), offset by ±20 units, at TOL 2 and 0.2 units.
 //!
 //! For every curve of `data/offset_test_curves.json` (the plain cubic and the
 //! B-splines, split exactly into their Bézier pieces), every listed distance
@@ -38,6 +42,24 @@ use rayon::prelude::*;
 use std::time::Instant;
 
 const TOLS: [f64; 5] = [1e-1, 1e-2, 1e-3, 1e-4, 1e-5];
+const GLYPH_TOLS: [f64; 3] = [2.0, 0.2, 0.02];
+const GLYPHS: &str = "aegsR&@3SO";
+
+type Curves = Vec<(String, Vec<Bezier<Rational>>, Vec<Rational>)>;
+
+/// The outlines of [`GLYPHS`] in a TrueType/OpenType font, offset by ±20 units.
+fn glyph_curves(font: &str) -> Result<Curves, String> {
+    let data = std::fs::read(font).map_err(|e| format!("{font}: {e}"))?;
+    let d = Rational::from_integer(60.into());
+    GLYPHS
+        .chars()
+        .map(|ch| {
+            let pieces = lncert::shape::glyph_outline(&data, ch)
+                .map_err(|e| format!("glyph {ch:?}: {e}"))?;
+            Ok((format!("glyph '{ch}'"), pieces, vec![d.clone(), -d.clone()]))
+        })
+        .collect()
+}
 
 fn to_kurbo(b: &Bezier<Rational>) -> Option<CubicBez> {
     let mut b = b.clone();
@@ -101,9 +123,22 @@ fn certify_call(
 }
 
 fn main() {
-    let quick = std::env::args().any(|a| a == "--quick");
-    let tols: &[f64] = if quick { &TOLS[..3] } else { &TOLS };
-    let curves = match lncert::reproduce::offsets::test_curves() {
+    let args: Vec<String> = std::env::args().collect();
+    let quick = args.iter().any(|a| a == "--quick");
+    let glyph_font = args
+        .iter()
+        .position(|a| a == "--glyphs")
+        .and_then(|i| args.get(i + 1));
+    let (tols, curves): (&[f64], _) = match glyph_font {
+        // glyph outlines in font units: TOL 2 and 0.2 (about 1e-3 and 1e-4 em
+        // at 2048 units per em), offsets ±20 units
+        Some(font) => (&GLYPH_TOLS[..], glyph_curves(font)),
+        None => (
+            if quick { &TOLS[..3] } else { &TOLS[..] },
+            lncert::reproduce::offsets::test_curves(),
+        ),
+    };
+    let curves = match curves {
         Ok(c) => c,
         Err(e) => {
             eprintln!("offset_fit_compare: {e}");
