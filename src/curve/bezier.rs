@@ -246,6 +246,38 @@ pub fn bernstein_product<S: Scalar>(a: &[S], b: &[S]) -> Vec<S> {
         .collect()
 }
 
+/// The Bernstein coefficients of a polynomial on `[0, 1/2]` and on `[1/2, 1]`
+/// from those on `[0, 1]` (de Casteljau at `1/2`; exact for rationals,
+/// outward rounded for intervals). Empty input gives two empty lists.
+///
+/// # Examples
+/// ```
+/// use lncert::curve::bernstein_halves;
+/// let (l, r) = bernstein_halves(&[0.0, 1.0]); // t on [0, 1]
+/// assert_eq!((l, r), (vec![0.0, 0.5], vec![0.5, 1.0]));
+/// ```
+pub fn bernstein_halves<S: Scalar>(g: &[S]) -> (Vec<S>, Vec<S>) {
+    let n = g.len();
+    if n == 0 {
+        return (Vec::new(), Vec::new());
+    }
+    let half: S = S::from_frac(1, 2);
+    let mut p = g.to_vec();
+    let mut left = Vec::with_capacity(n);
+    let mut right = Vec::with_capacity(n);
+    left.push(p[0].clone());
+    right.push(p[n - 1].clone());
+    for k in 1..n {
+        for i in 0..n - k {
+            p[i] = (p[i].clone() + p[i + 1].clone()) * half.clone();
+        }
+        left.push(p[0].clone());
+        right.push(p[n - 1 - k].clone());
+    }
+    right.reverse();
+    (left, right)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

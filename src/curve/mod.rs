@@ -7,7 +7,7 @@ mod bspline;
 mod error;
 mod vec2;
 
-pub use bezier::{bernstein_product, Bezier};
+pub use bezier::{bernstein_halves, bernstein_product, Bezier};
 pub use bspline::BSpline;
 pub(crate) use error::field_err;
 pub use error::CurveParseError;

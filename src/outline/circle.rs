@@ -356,21 +356,7 @@ fn one_sign(g: Vec<Interval>, depth: u32) -> bool {
     if depth == 0 || g[0].contains(0.0) || g[g.len() - 1].contains(0.0) {
         return false;
     }
-    let half = Interval::try_from((0.5, 0.5)).expect("half");
-    let n = g.len();
-    let mut p = g;
-    let mut left = Vec::with_capacity(n);
-    let mut right = Vec::with_capacity(n);
-    left.push(p[0]);
-    right.push(p[n - 1]);
-    for k in 1..n {
-        for i in 0..n - k {
-            p[i] = (p[i] + p[i + 1]) * half;
-        }
-        left.push(p[0]);
-        right.push(p[n - 1 - k]);
-    }
-    right.reverse();
+    let (left, right) = crate::curve::bernstein_halves(&g);
     one_sign(left, depth - 1) && one_sign(right, depth - 1)
 }
 

@@ -736,21 +736,7 @@ fn positive_bernstein_iv(g: Vec<Interval>, depth: u32) -> Option<bool> {
     if depth == 0 {
         return None;
     }
-    let half = Interval::try_from((0.5, 0.5)).ok()?;
-    let n = g.len();
-    let mut p = g;
-    let mut left = Vec::with_capacity(n);
-    let mut right = Vec::with_capacity(n);
-    left.push(p[0]);
-    right.push(p[n - 1]);
-    for r in 1..n {
-        for i in 0..n - r {
-            p[i] = (p[i] + p[i + 1]) * half;
-        }
-        left.push(p[0]);
-        right.push(p[n - 1 - r]);
-    }
-    right.reverse();
+    let (left, right) = crate::curve::bernstein_halves(&g);
     match positive_bernstein_iv(left, depth - 1)? {
         false => Some(false),
         true => positive_bernstein_iv(right, depth - 1),
@@ -766,21 +752,7 @@ fn positive_bernstein(g: Vec<Rational>, depth: u32) -> bool {
     if !g[0].is_positive() || !g[g.len() - 1].is_positive() || depth == 0 {
         return false;
     }
-    let half = Rational::new(1.into(), 2.into());
-    let n = g.len();
-    let mut p = g;
-    let mut left = Vec::with_capacity(n);
-    let mut right = Vec::with_capacity(n);
-    left.push(p[0].clone());
-    right.push(p[n - 1].clone());
-    for r in 1..n {
-        for i in 0..n - r {
-            p[i] = (&p[i] + &p[i + 1]) * &half;
-        }
-        left.push(p[0].clone());
-        right.push(p[n - 1 - r].clone());
-    }
-    right.reverse();
+    let (left, right) = crate::curve::bernstein_halves(&g);
     positive_bernstein(left, depth - 1) && positive_bernstein(right, depth - 1)
 }
 
