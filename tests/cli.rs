@@ -1,18 +1,14 @@
 //! Integration tests of the `lncert` binary: the CLI contract of `DESIGN.md`
 //! (exact output, one JSON document, exit codes 0/1/2, messages naming the field).
 
+mod common;
+use common::lncert;
+
 use serde_json::Value;
-use std::process::{Command, Output};
+use std::process::Output;
 
 const FIG5A_LEFT: &str = "5/2,-1;1/2,1;7/2,5";
 const FIG5A_RIGHT: &str = "5/2,-4;1,-5/2;2,-7/6";
-
-fn lncert(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_lncert"))
-        .args(args)
-        .output()
-        .expect("the binary runs")
-}
 
 fn stdout(o: &Output) -> String {
     String::from_utf8_lossy(&o.stdout).into_owned()

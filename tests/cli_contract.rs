@@ -5,22 +5,15 @@
 //! that lands on the code it names.
 
 mod common;
+use common::lncert;
 use common::FIG4;
 use serde_json::Value;
 use std::path::PathBuf;
-use std::process::{Command, Output};
 use std::time::Instant;
 
 const CUBIC: &str = r#"{"bezier": [[-0.95, 0.7], [-0.3, 0.5], [0.3, -2.5], [0.9, -0.2]]}"#;
 const ARC: &str = r#"{"arc": {"center": [0, 0], "radius": 1, "from": [1, 0], "to": [0, 1]}}"#;
 const ARC_CUBIC: &str = "M 1 0 C 1 0.5523 0.5523 1 0 1";
-
-fn lncert(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_lncert"))
-        .args(args)
-        .output()
-        .expect("the binary runs")
-}
 
 fn code(args: &[&str]) -> i32 {
     let o = lncert(args);

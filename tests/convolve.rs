@@ -4,6 +4,7 @@
 //! cusp counts, the CLI contract and certificates that `verify` re-checks.
 
 mod common;
+use common::{lncert, tmp};
 
 use lncert::approx::conv::{conv_cusps, pen_point, Angle, Pen};
 use lncert::approx::{convolve, offset, OffsetOptions, OffsetResult};
@@ -11,8 +12,6 @@ use lncert::curve::{Bezier, V2};
 use lncert::scalar::{parse_rational, Rational, Scalar};
 use proptest::prelude::*;
 use serde_json::Value;
-use std::path::PathBuf;
-use std::process::{Command, Output};
 
 fn q(s: &str) -> Rational {
     parse_rational(s).unwrap()
@@ -217,21 +216,6 @@ fn nonic_cusp_counts_decide_the_axes() {
     };
     assert_eq!((count("0.7", "0.3", -1), count("0.7", "0.3", 1)), (2, 4));
     assert_eq!((count("1.4", "0.6", -1), count("1.4", "0.6", 1)), (4, 4));
-}
-
-fn lncert(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_lncert"))
-        .args(args)
-        .output()
-        .unwrap()
-}
-
-fn tmp(name: &str, text: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("lncert-convolve-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
 }
 
 /// `lncert convolve` on the nonic at TOL 1e-2: both sides proven, the JSON

@@ -4,6 +4,9 @@
 //! exactly, G¹ inside each piece, and its union certificate verifies; grid
 //! results consist of exact grid multiples; bad `--output`/`--grid` exit 2.
 
+mod common;
+use common::{lncert, tmp};
+
 use lncert::approx::conv::{pen_point, Angle, Pen};
 use lncert::approx::{
     convolve, offset, union_certificate, OffsetError, OffsetOptions, OffsetResult, Output,
@@ -12,8 +15,6 @@ use lncert::certify::verify::verify;
 use lncert::curve::{Bezier, V2};
 use lncert::reproduce::offsets::test_curves;
 use lncert::scalar::{parse_rational, rational_from_f64, Rational, Scalar};
-use std::path::PathBuf;
-use std::process::Command;
 
 fn q(s: &str) -> Rational {
     parse_rational(s).unwrap()
@@ -269,21 +270,6 @@ fn fitted_convolutions_are_certified_sampled_and_verified() {
     let r = convolve(&x, &pen, 1, &o).unwrap();
     assert!(r.reached());
     on_grid(&r, &q("1/2048"));
-}
-
-fn lncert(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_lncert"))
-        .args(args)
-        .output()
-        .expect("the binary runs")
-}
-
-fn tmp(name: &str, text: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("lncert-offset-fit-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
 }
 
 const CUBIC: &str = r#"{"bezier": [["-0.95","0.7"],["-0.3","1.6"],["0.9","-0.4"],["1.1","0.6"]]}"#;

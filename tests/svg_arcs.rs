@@ -4,26 +4,13 @@
 //! shape), and the CLI's report of what was approximated (`offset`,
 //! `hausdorff`, text and `--json`).
 
+mod common;
+use common::{lncert, tmp};
+
 use lncert::certify::{hausdorff, Config};
 use lncert::shape::{parse_curve_reported, ShapeDesc};
 use serde_json::Value;
-use std::path::PathBuf;
-use std::process::{Command, Output};
-
-fn lncert(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_lncert"))
-        .args(args)
-        .output()
-        .expect("the binary runs")
-}
-
-fn tmp(name: &str, text: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("lncert-svg-arcs-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
-}
+use std::process::Output;
 
 fn json_of(o: &Output) -> Value {
     serde_json::from_slice(&o.stdout)

@@ -3,16 +3,10 @@
 //! backend agreeing with the complete one.
 
 mod common;
+use common::lncert;
 use common::FIG4;
 use serde_json::Value;
-use std::process::{Command, Output};
-
-fn lncert(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_lncert"))
-        .args(args)
-        .output()
-        .expect("the binary runs")
-}
+use std::process::Output;
 
 fn with(extra: &[&str]) -> Vec<String> {
     FIG4.iter().chain(extra).map(|s| s.to_string()).collect()

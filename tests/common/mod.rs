@@ -166,3 +166,25 @@ pub const FIG4: [&str; 10] = [
     "15/16,-319/128",
     "--radius",
 ];
+
+/// Runs the `lncert` binary with `args`.
+pub fn lncert(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_lncert"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+/// Writes `text` to `name` in a temporary directory of this test binary and
+/// process, and returns the path.
+pub fn tmp(name: &str, text: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!(
+        "lncert-{}-{}",
+        env!("CARGO_CRATE_NAME"),
+        std::process::id()
+    ));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
