@@ -375,12 +375,16 @@ impl OffsetResult {
     /// join arcs (the shape `b` of [`union_certificate`], so a file written from
     /// it is what `lncert verify --against` compares).
     pub fn outline_shape(&self) -> Result<ShapeDesc, OffsetError> {
-        let curve = self.approximant_shape()?;
+        self.with_join_arcs(self.approximant_shape()?)
+    }
+
+    /// `shape`, or with join arcs the union of it and the arcs.
+    fn with_join_arcs(&self, shape: ShapeDesc) -> Result<ShapeDesc, OffsetError> {
         let arcs = join_arcs(self);
         if arcs.is_empty() {
-            return Ok(curve);
+            return Ok(shape);
         }
-        let mut members = vec![curve];
+        let mut members = vec![shape];
         for a in arcs {
             members.push(ShapeDesc::arc(a)?);
         }
@@ -398,15 +402,7 @@ impl OffsetResult {
             None => ShapeDesc::offset(curve.to_vec(), self.distance.clone()),
             Some(c) => ShapeDesc::convolution(curve.to_vec(), c.pen.m.clone(), c.side),
         }?;
-        let arcs = join_arcs(self);
-        if arcs.is_empty() {
-            return Ok(exact);
-        }
-        let mut members = vec![exact];
-        for a in arcs {
-            members.push(ShapeDesc::arc(a)?);
-        }
-        Ok(ShapeDesc::union(members)?)
+        self.with_join_arcs(exact)
     }
     /// The approximant as an exact shape (every float control point is an exact
     /// dyadic rational).
