@@ -88,16 +88,16 @@ pub struct FitEnds {
     pub k1: f64,
 }
 
-fn dv(p: &V2<f64>) -> DVec2 {
+pub(super) fn dv(p: &V2<f64>) -> DVec2 {
     DVec2::new(p.x, p.y)
 }
 
-fn v2(p: DVec2) -> V2<f64> {
+pub(super) fn v2(p: DVec2) -> V2<f64> {
     V2::new(p.x, p.y)
 }
 
 /// The cubic `p0, p0 + a t0, p1 − b t1, p1`.
-fn hermite(e: &FitEnds, a: f64, b: f64) -> Bezier<f64> {
+pub(super) fn hermite(e: &FitEnds, a: f64, b: f64) -> Bezier<f64> {
     let (p0, p1, t0, t1) = (dv(&e.p0), dv(&e.p1), dv(&e.t0), dv(&e.t1));
     Bezier::new(vec![
         e.p0.clone(),
@@ -267,7 +267,7 @@ fn solve_ls(e: &FitEnds, q: &[DVec2], u: &[f64]) -> Option<Bezier<f64>> {
 }
 
 /// The parameter of the point of the cubic nearest `p`, by Newton steps from `u`.
-fn project(c: &Bezier<f64>, p: DVec2, mut u: f64) -> f64 {
+pub(super) fn project(c: &Bezier<f64>, p: DVec2, mut u: f64) -> f64 {
     let pts: Vec<DVec2> = c.points().iter().map(dv).collect();
     for _ in 0..4 {
         let w = 1.0 - u;
@@ -330,20 +330,20 @@ pub fn tangent_quadratic(e: &FitEnds) -> Option<Bezier<f64>> {
 
 /// The exact curve's offset vector in floats: `d N` or the pen point.
 #[derive(Clone, Copy)]
-enum Reach {
+pub(super) enum Reach {
     Offset(f64),
     Pen([f64; 3], i8),
 }
 
 impl Reach {
-    fn of(kernel: &Kernel) -> Reach {
+    pub(super) fn of(kernel: &Kernel) -> Reach {
         match kernel {
             Kernel::Offset { df, .. } => Reach::Offset(*df),
             Kernel::Conv { qf, sigma, .. } => Reach::Pen(*qf, *sigma),
         }
     }
     /// The offset vector for the (not necessarily unit) derivative `v`.
-    fn vector(self, v: DVec2) -> Option<DVec2> {
+    pub(super) fn vector(self, v: DVec2) -> Option<DVec2> {
         let l = v.length();
         if !(l > 0.0 && l.is_finite()) {
             return None;
@@ -355,7 +355,7 @@ impl Reach {
         }
     }
     /// `λ` with `e′ = λ x′` (`v = x′`, `k = x′ × x″`).
-    fn lambda(self, v: DVec2, k: f64) -> f64 {
+    pub(super) fn lambda(self, v: DVec2, k: f64) -> f64 {
         match self {
             Reach::Offset(d) => -d * k / v.length().powi(3),
             Reach::Pen(q, s) => {
@@ -446,7 +446,7 @@ fn samples(sub: &Bezier<f64>, reach: Reach, m: usize) -> Option<Vec<V2<f64>>> {
 /// A sampled one-sided distance from the exact curve's samples to the cubic
 /// (each sample projected by Newton steps; a float estimate, used only to
 /// choose and refine candidates).
-fn sampled_error(exact: &[DVec2], c: &Bezier<f64>) -> f64 {
+pub(super) fn sampled_error(exact: &[DVec2], c: &Bezier<f64>) -> f64 {
     const N: usize = 48;
     let cs: Vec<DVec2> = (0..=N).map(|i| c.eval_fast(i as f64 / N as f64)).collect();
     // exact samples onto the cubic: nearest sample, then Newton (one-sided:
@@ -471,7 +471,11 @@ const REFINE_EVALS: usize = 40;
 /// Lowers the sampled (max) error of a cubic on the end tangents by a
 /// Nelder–Mead search over the two handle lengths (in log space), starting at
 /// `start`: the least squares and Hermite candidates minimise other measures.
-fn refine_minimax(e: &FitEnds, dense: &[DVec2], start: (f64, Bezier<f64>)) -> Bezier<f64> {
+pub(super) fn refine_minimax(
+    e: &FitEnds,
+    dense: &[DVec2],
+    start: (f64, Bezier<f64>),
+) -> Bezier<f64> {
     let handle =
         |c: &Bezier<f64>, i: usize, j: usize| (dv(&c.points()[i]) - dv(&c.points()[j])).length();
     let (a0, b0) = (handle(&start.1, 1, 0), handle(&start.1, 3, 2));
@@ -644,6 +648,25 @@ pub fn rounding_move(grid: &Rational) -> f64 {
 /// assert!(check_grid(&q("0"), 1e-3, 10.0).is_err());
 /// ```
 pub fn check_grid(grid: &Rational, tol: f64, scale: f64) -> Result<f64, OffsetError> {
+    check_grid_storage(grid, scale)?;
+    let mv = rounding_move(grid);
+    if mv.is_nan() || tol.is_nan() || mv >= tol {
+        return Err(super::bad(
+            "grid",
+            format!(
+                "rounding to {grid} moves the curve by up to {mv:e} (grid·√2/2) ≥ the tolerance {tol:e}: \
+                 it cannot be reached by rounding; use a finer grid, or --output cubic, whose \
+                 end points are then placed where the exact curve passes near a grid point"
+            ),
+        ));
+    }
+    Ok(mv)
+}
+
+/// The storage half of [`check_grid`]: an exact positive dyadic grid whose
+/// multiples over coordinates up to `8 (1 + scale)` are exact `f64` numbers
+/// (no condition on the tolerance).
+pub fn check_grid_storage(grid: &Rational, scale: f64) -> Result<(), OffsetError> {
     let bad = |reason: String| super::bad("grid", reason);
     if !grid.is_positive() {
         return Err(bad(format!("{grid} must be > 0")));
@@ -666,14 +689,7 @@ pub fn check_grid(grid: &Rational, tol: f64, scale: f64) -> Result<f64, OffsetEr
             "{grid} is too fine for coordinates up to {bound:e}: its multiples are not exact f64 numbers"
         )));
     }
-    let mv = rounding_move(grid);
-    if mv.is_nan() || tol.is_nan() || mv >= tol {
-        return Err(bad(format!(
-            "rounding to {grid} moves the curve by up to {mv:e} (grid·√2/2) ≥ the tolerance {tol:e}: \
-             it cannot be reached; use a finer grid"
-        )));
-    }
-    Ok(mv)
+    Ok(())
 }
 
 /// Rounds every control point to the nearest multiple of `grid` (ties away

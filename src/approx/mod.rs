@@ -50,6 +50,7 @@ pub mod arc;
 pub mod conv;
 pub mod fit;
 pub mod g2;
+pub mod gridfit;
 pub mod lnpair;
 pub mod prep;
 

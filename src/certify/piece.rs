@@ -140,7 +140,7 @@ impl Piece {
         Piece::from_iv(data, (0.0, 1.0), (0.0, 1.0))
     }
 
-    fn arc(a: &ArcDesc) -> Result<Piece, CertifyError> {
+    pub(crate) fn arc(a: &ArcDesc) -> Result<Piece, CertifyError> {
         let (e0, u) = arc_frame(&a.from, &a.to)?;
         let data = PieceData::Arc {
             c: (iv(&a.center.x), iv(&a.center.y)),

@@ -44,6 +44,7 @@ pub mod audit;
 pub mod convolve;
 pub mod hausdorff;
 pub mod offset;
+pub mod offset_grid;
 pub mod offset_svg;
 pub mod progress;
 pub mod prop;

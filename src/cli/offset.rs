@@ -47,6 +47,11 @@ pub struct OffsetArgs {
     /// units; every contour, exactly as stored: quadratics or cubics).
     #[arg(long)]
     pub glyph: Option<char>,
+    /// With `--glyph`: coordinates in em (the outline divided by the font's
+    /// units per em, exactly), so that `--grid 1/2048` is one font unit of a
+    /// 2048-unit font.
+    #[arg(long, requires = "glyph")]
+    pub em: bool,
     /// Signed offset distance, > 0 to the left of the direction of travel (read exactly).
     #[arg(long, allow_hyphen_values = true)]
     pub distance: String,
@@ -127,7 +132,7 @@ fn read_text(path: &PathBuf) -> Result<String, CliError> {
     std::fs::read_to_string(path).map_err(|e| bad("CURVE", format!("{}: {e}", path.display())))
 }
 
-fn offset_err(e: OffsetError) -> CliError {
+pub fn offset_err(e: OffsetError) -> CliError {
     let OffsetError::Input { field, reason } = e;
     let flag = match field.as_str() {
         "distance" => "--distance".to_string(),
@@ -216,7 +221,16 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             }
             let data = std::fs::read(&a.curve)
                 .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
-            let outline = lncert::shape::glyph_outline(&data, ch).map_err(|e| bad("--glyph", e))?;
+            let mut outline =
+                lncert::shape::glyph_outline(&data, ch).map_err(|e| bad("--glyph", e))?;
+            if a.em {
+                let upem = lncert::shape::units_per_em(&data).map_err(|e| bad("--em", e))?;
+                if upem == 0 {
+                    return Err(bad("--em", "the font says 0 units per em"));
+                }
+                let k = Rational::new(1.into(), i64::from(upem).into());
+                outline = outline.iter().map(|b| b.map(|v| v * &k)).collect();
+            }
             (outline, InputApprox::default())
         }
         None => {
@@ -241,6 +255,11 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     opts.max_boxes = a.max_boxes;
     opts.paper_error = a.paper_error;
     opts.certify = !a.no_certify;
+    if let Some(g) = &grid {
+        if output == Output::Cubic && lncert::approx::fit::rounding_move(g) >= tol {
+            return super::offset_grid::run(a, &curve, &opts);
+        }
+    }
     let start = std::time::Instant::now();
     let res = offset(&curve, &opts).map_err(offset_err)?;
     let build = start.elapsed().as_secs_f64();

@@ -80,6 +80,16 @@ impl ttf_parser::OutlineBuilder for Outline {
     }
 }
 
+/// The font's units per em (face 0): divide a [`glyph_outline`] by it for
+/// coordinates in em (exact: a rational scale).
+///
+/// Errors: the font cannot be read (`font`).
+pub fn units_per_em(data: &[u8]) -> Result<u16, CurveParseError> {
+    let face = ttf_parser::Face::parse(data, 0)
+        .map_err(|e| bad("font", format!("not a TrueType/OpenType font: {e}")))?;
+    Ok(face.units_per_em())
+}
+
 /// The outline of the glyph of `ch` in the font `data` (face 0), in font
 /// units, as exact Bézier pieces, contour after contour.
 ///

@@ -69,7 +69,7 @@ pub use arc::{parse_arc_input, TravelledArc};
 pub(crate) use desc::checked_offset;
 pub use desc::{ArcDesc, ShapeDesc, MAX_COORDINATE};
 #[cfg(feature = "font")]
-pub use font::glyph_outline;
+pub use font::{glyph_outline, units_per_em};
 pub use io::{
     parse_curve, parse_curve_reported, parse_json_curve, parse_svg_path, parse_svg_path_reported,
     CurveParseError, MAX_BSPLINE_WORK, MAX_CONTROL_POINTS, MAX_NUMBER_CHARS, MAX_SEGMENTS,

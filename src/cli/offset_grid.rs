@@ -1,0 +1,172 @@
+//! `lncert offset … --output cubic --grid G --tol T` with `T ≤ G·√2/2`: the
+//! tolerance is below what rounding a fitted spline to the grid can keep, so
+//! the joints are placed where the exact offset passes near a grid point and
+//! every cubic is proven against the exact curve between its joints
+//! ([`lncert::approx::gridfit::offset_on_grid`]).
+
+use super::args::{bad, q};
+use super::offset::{exact_decimal, offset_err, OffsetArgs};
+use super::{print_out, CliError};
+use lncert::approx::gridfit::{offset_on_grid, GridOffset, Target};
+use lncert::approx::OffsetOptions;
+use lncert::curve::Bezier;
+use lncert::scalar::Rational;
+use serde_json::json;
+
+fn target_json(t: &Target) -> serde_json::Value {
+    match t {
+        Target::Span { piece, t } => json!({"piece": piece, "t": [t.0, t.1]}),
+        Target::Arc(a) => json!({"arc": {
+            "center": [q(&a.center.x), q(&a.center.y)], "radius": q(&a.radius),
+            "from": [q(&a.from.x), q(&a.from.y)], "to": [q(&a.to.x), q(&a.to.y)],
+        }}),
+    }
+}
+
+/// SVG path data of the cubics, one subpath per contour (`Z` when closed).
+pub fn path_data(r: &GridOffset) -> String {
+    let mut out = String::new();
+    for &(first, n, closed) in &r.contours {
+        for (k, s) in r.segments[first..first + n].iter().enumerate() {
+            let p = s.bezier.points();
+            if k == 0 {
+                out += &format!("M {} {}", exact_decimal(p[0].x), exact_decimal(p[0].y));
+            }
+            out += " C";
+            for c in &p[1..] {
+                out += &format!(" {} {}", exact_decimal(c.x), exact_decimal(c.y));
+            }
+        }
+        if closed {
+            out += " Z";
+        }
+        out.push('\n');
+    }
+    out
+}
+
+/// Runs the grid path of `lncert offset` (called by [`super::offset::run`]).
+pub fn run(
+    a: &OffsetArgs,
+    curve: &[Bezier<Rational>],
+    opts: &OffsetOptions,
+) -> Result<i32, CliError> {
+    if a.svg.is_some() || a.global_bounds || a.no_certify || a.paper_error {
+        return Err(bad(
+            "--grid",
+            "with a tolerance below the grid's rounding move, --svg, --global-bounds, \
+             --no-certify and --paper-error are not available",
+        ));
+    }
+    let start = std::time::Instant::now();
+    let r = offset_on_grid(curve, opts).map_err(offset_err)?;
+    let secs = start.elapsed().as_secs_f64();
+    let mut cert_note = None;
+    if let Some(path) = &a.certificate {
+        cert_note = Some(match &r.certificate {
+            Some(c) => {
+                std::fs::write(path, c.to_json_string())
+                    .map_err(|e| bad("--certificate", format!("{}: {e}", path.display())))?;
+                format!("written to {} ({} boxes)", path.display(), c.box_count())
+            }
+            None => "not written: the tolerance is not certified".to_string(),
+        });
+    }
+    if let Some(path) = &a.curve_out {
+        let shape = r.approximant_shape().map_err(offset_err)?;
+        std::fs::write(path, format!("{}\n", shape.to_json()))
+            .map_err(|e| bad("--curve-out", format!("{}: {e}", path.display())))?;
+    }
+    if let Some(path) = &a.exact_out {
+        let shape = r.exact_shape(curve, &opts.distance).map_err(offset_err)?;
+        std::fs::write(path, format!("{}\n", shape.to_json()))
+            .map_err(|e| bad("--exact-out", format!("{}: {e}", path.display())))?;
+    }
+    if let Some(path) = &a.path_out {
+        std::fs::write(path, path_data(&r))
+            .map_err(|e| bad("--path-out", format!("{}: {e}", path.display())))?;
+    }
+    let grid = opts.grid.clone().unwrap_or_default();
+    let how = format!(
+        "joints placed where the exact offset passes within {:e} of a grid point, inner control points searched on the grid; each cubic proven against the exact curve between its joints (corner arcs included)",
+        0.5 * opts.tol
+    );
+    let verdict = if r.reached() {
+        "certified"
+    } else {
+        "not reached"
+    };
+    if a.json {
+        let doc = json!({
+            "method": "grid-fit",
+            "output": "cubic",
+            "degree": 3,
+            "grid": {"grid": q(&grid), "rounding_move": lncert::approx::fit::rounding_move(&grid), "how": how},
+            "distance": q(&opts.distance),
+            "tol": a.tol,
+            "segments": r.segments.len(),
+            "control_points": r.control_points(),
+            "certified_error": r.reached().then_some(json!([0.0, r.certified_hi])),
+            "proven": r.reached(),
+            "verdict": verdict,
+            "contours": r.contours.iter().map(|&(first, n, closed)| json!({"first": first, "segments": n, "closed": closed})).collect::<Vec<_>>(),
+            "pieces": r.segments.iter().map(|s| json!({
+                "contour": s.contour,
+                "control_points": s.bezier.points().iter().map(|p| json!([p.x, p.y])).collect::<Vec<_>>(),
+                "targets": s.targets.iter().map(target_json).collect::<Vec<_>>(),
+                "error": [s.error.0, s.error.1],
+                "proof": s.proof.map(|p| p.name()),
+            })).collect::<Vec<_>>(),
+            "unreached": r.unreached,
+            "corner_arcs": r.corner_arcs,
+            "base_segments": r.base_segments,
+            "refits": r.refits,
+            "certifications": r.certifications,
+            "max_joint_offset": r.max_joint_offset,
+            "seconds": {"total": secs},
+            "certificate": cert_note,
+        });
+        print_out(&format!(
+            "{}\n",
+            serde_json::to_string_pretty(&doc).unwrap_or_default()
+        ));
+    } else {
+        let mut s = format!(
+            "offset at distance {} on the grid {}: {} cubic segment(s) in {} contour(s), {} control points, every coordinate a multiple of the grid\n",
+            q(&opts.distance),
+            q(&grid),
+            r.segments.len(),
+            r.contours.len(),
+            r.control_points()
+        );
+        s += &format!("  {how}\n");
+        s += &format!(
+            "  tolerance {} below the rounding move {:.3e} (grid·√2/2)\n",
+            a.tol,
+            lncert::approx::fit::rounding_move(&grid)
+        );
+        s += &format!(
+            "  {} segment(s) of the grid-free fit at tol/2, {} corner arc(s), {} re-fit(s) after a failed proof, {} certified search(es), largest joint offset {:.3e}\n",
+            r.base_segments, r.corner_arcs, r.refits, r.certifications, r.max_joint_offset
+        );
+        if r.reached() {
+            s += &format!("  certified: d_H ≤ {:.6e} ≤ {}\n", r.certified_hi, a.tol);
+        } else {
+            s += &format!(
+                "  not reached: {} segment(s) above the tolerance (largest certified bound {:.3e})\n",
+                r.unreached.len(),
+                r.certified_hi
+            );
+        }
+        if let Some(n) = &cert_note {
+            s += &format!("  certificate: {n}\n");
+        }
+        s += &format!("  time {secs:.2} s\n");
+        print_out(&s);
+    }
+    Ok(if r.reached() {
+        super::EXIT_OK
+    } else {
+        super::EXIT_UNDECIDED
+    })
+}
