@@ -89,8 +89,14 @@ fn sampled_agrees(x: &[Bezier<Rational>], d: f64, r: &GridOffset) {
     };
     let h1 = one_sided(&exact, &fit);
     let h2 = one_sided(&fit, &exact);
-    assert!(h1 <= r.certified_hi + spacing(&fit) / 2.0 + 1e-9, "exact→fit {h1}");
-    assert!(h2 <= r.certified_hi + spacing(&exact) / 2.0 + 1e-9, "fit→exact {h2}");
+    assert!(
+        h1 <= r.certified_hi + spacing(&fit) / 2.0 + 1e-9,
+        "exact→fit {h1}"
+    );
+    assert!(
+        h2 <= r.certified_hi + spacing(&exact) / 2.0 + 1e-9,
+        "fit→exact {h2}"
+    );
     // the grid really is coarser than the tolerance: plain rounding of the
     // exact curve would not do
     assert!(r.tol < 0.5);
@@ -153,10 +159,16 @@ fn bad_grid_options_are_typed_errors() {
     let e = offset_on_grid(&x, &o).unwrap_err();
     assert!(e.to_string().contains("grid"), "{e}");
     o.grid = None;
-    assert!(offset_on_grid(&x, &o).unwrap_err().to_string().contains("grid"));
+    assert!(offset_on_grid(&x, &o)
+        .unwrap_err()
+        .to_string()
+        .contains("grid"));
     let mut o = opts("40", 0.2, "1");
     o.output = Output::Quadratic;
-    assert!(offset_on_grid(&x, &o).unwrap_err().to_string().contains("output"));
+    assert!(offset_on_grid(&x, &o)
+        .unwrap_err()
+        .to_string()
+        .contains("output"));
 }
 
 fn dejavu() -> Option<PathBuf> {
@@ -191,11 +203,33 @@ fn cli_glyph_on_integer_font_units() {
             path.to_str().unwrap(),
         );
         let out = lncert(&[
-            "offset", &font, "--glyph", ch, "--em", "--distance", d, "--tol", "1e-4",
-            "--output", "cubic", "--grid", "1/2048", "--json", "--certificate", cert,
-            "--exact-out", exact, "--path-out", path,
+            "offset",
+            &font,
+            "--glyph",
+            ch,
+            "--em",
+            "--distance",
+            d,
+            "--tol",
+            "1e-4",
+            "--output",
+            "cubic",
+            "--grid",
+            "1/2048",
+            "--json",
+            "--certificate",
+            cert,
+            "--exact-out",
+            exact,
+            "--path-out",
+            path,
         ]);
-        assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
         assert_eq!(doc["verdict"], "certified");
         assert_eq!(doc["degree"], 3);
@@ -209,7 +243,12 @@ fn cli_glyph_on_integer_font_units() {
             }
         }
         let v = lncert(&["verify", cert, "--against", exact, path]);
-        assert_eq!(v.status.code(), Some(0), "{}", String::from_utf8_lossy(&v.stdout));
+        assert_eq!(
+            v.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&v.stdout)
+        );
     }
 }
 
@@ -219,7 +258,16 @@ fn cli_grid_refusals_name_the_flag() {
     let f = f.to_str().unwrap();
     // quadratics cannot go below the rounding move
     let out = lncert(&[
-        "offset", f, "--distance", "40", "--tol", "0.2", "--output", "quadratic", "--grid", "1",
+        "offset",
+        f,
+        "--distance",
+        "40",
+        "--tol",
+        "0.2",
+        "--output",
+        "quadratic",
+        "--grid",
+        "1",
     ]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("--grid"));
@@ -228,8 +276,22 @@ fn cli_grid_refusals_name_the_flag() {
     assert_eq!(out.status.code(), Some(2));
     // the curve itself on the integer grid below the move: proven, exit 0
     let out = lncert(&[
-        "offset", f, "--distance", "40", "--tol", "0.2", "--output", "cubic", "--grid", "1",
+        "offset",
+        f,
+        "--distance",
+        "40",
+        "--tol",
+        "0.2",
+        "--output",
+        "cubic",
+        "--grid",
+        "1",
     ]);
-    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stdout));
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
     assert!(String::from_utf8_lossy(&out.stdout).contains("certified"));
 }

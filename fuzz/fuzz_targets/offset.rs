@@ -51,10 +51,12 @@
 //! * `corners` are at junctions where the pieces meet (`after` in range,
 //!   centre = the shared point) and equal `lncert::approx::corners`;
 //!   `join_arcs` has one arc of radius `|d|` per `Join` corner; cusps lie on
-//!   existing pieces with `lo <= hi` in `[0, 1]`.
+//!   existing pieces with `lo <= hi` in `[0, 1]`;
+//! * with one more input byte: the grid path (`check_grid`).
 
 use libfuzzer_sys::arbitrary::{Result, Unstructured};
 use libfuzzer_sys::{fuzz_target, Corpus};
+use lncert::approx::gridfit::offset_on_grid;
 use lncert::approx::lnpair::Subdivision;
 use lncert::approx::prep::Junction;
 use lncert::approx::{
@@ -512,11 +514,57 @@ fn check_ok(inp: &Input, r: &OffsetResult) {
     }
 }
 
+/// The grid path ([`offset_on_grid`], cubics on the 1/16 grid the inputs
+/// live on): no panic; an error names a field; every control point is a grid
+/// multiple; contours close exactly; `unreached` is exactly the segments whose
+/// `hi > tol`; a certificate exists iff every segment is proven, and it
+/// verifies.
+fn check_grid(inp: &Input) {
+    let mut o = inp.opts.clone();
+    o.output = lncert::approx::Output::Cubic;
+    o.grid = Some(q(1, 16));
+    let r = match offset_on_grid(&inp.curve, &o) {
+        Err(e) => {
+            check_error(&e, inp);
+            return;
+        }
+        Ok(r) => r,
+    };
+    for s in &r.segments {
+        for p in s.bezier.points() {
+            assert!((p.x * 16.0).fract() == 0.0 && (p.y * 16.0).fract() == 0.0, "{p:?} off the grid");
+        }
+        assert!(s.error.0 <= s.error.1, "{:?}", s.error);
+        assert_eq!(s.proof.is_some(), s.error.1 <= o.tol, "{:?}", s.error);
+    }
+    for &(first, n, closed) in &r.contours {
+        let segs = &r.segments[first..first + n];
+        for w in segs.windows(2) {
+            assert_eq!(w[0].bezier.points()[3], w[1].bezier.points()[0]);
+        }
+        if closed && n > 0 {
+            assert_eq!(segs[n - 1].bezier.points()[3], segs[0].bezier.points()[0]);
+        }
+    }
+    let unreached: Vec<usize> = (0..r.segments.len())
+        .filter(|&i| r.segments[i].proof.is_none())
+        .collect();
+    assert_eq!(unreached, r.unreached);
+    assert_eq!(r.certificate.is_some(), r.reached() && !r.segments.is_empty());
+    if let Some(c) = &r.certificate {
+        let v = lncert::verify(&c.to_json_string());
+        assert!(v.is_ok(), "grid certificate refused: {:?}", v.err());
+    }
+}
+
 fuzz_target!(|data: &[u8]| -> Corpus {
     let mut u = Unstructured::new(data);
     let Ok(inp) = input(&mut u) else {
         return Corpus::Reject;
     };
+    if u.arbitrary::<bool>().unwrap_or(false) {
+        check_grid(&inp);
+    }
     let tol = inp.opts.tol;
     let must_fail = !(tol.is_finite() && tol >= 1e-11) || inp.num == 0;
     match offset(&inp.curve, &inp.opts) {

@@ -247,6 +247,8 @@ struct Ctx<'a> {
     gf: f64,
     tol: f64,
     max_boxes: usize,
+    /// Splits after failed proofs, in all (`OffsetOptions::max_segments`).
+    max_splits: usize,
 }
 
 struct Contour {
@@ -785,7 +787,9 @@ impl Ctx<'_> {
         let dense = self.dense(c, &ranges, 48);
         let fitted = dense.as_ref().and_then(|d| self.fit(c, &a, &b, d));
         let split = |stats: &Stats| -> Option<Vec<Built>> {
-            if depth >= MAX_DEPTH {
+            if depth >= MAX_DEPTH
+                || stats.refits.load(std::sync::atomic::Ordering::Relaxed) >= self.max_splits
+            {
                 return None;
             }
             let d = dense.as_ref()?;
@@ -824,12 +828,23 @@ impl Ctx<'_> {
             );
             Some(l.into_iter().chain(r).collect())
         };
-        let (Some(targets), Some(bez)) = (targets, fitted) else {
-            return split(stats).unwrap_or_default();
+        // nothing to prove: a straight placeholder keeps the contour closed and
+        // is reported unreached
+        let placeholder = |targets: Option<Vec<Target>>| {
+            let v = |p: DVec2| V2::new(p.x, p.y);
+            vec![Built {
+                bezier: Bezier::new(vec![v(a.g), v(a.g), v(b.g), v(b.g)]),
+                targets: targets.unwrap_or_default(),
+                bounds: None,
+                error: (0.0, f64::INFINITY),
+            }]
+        };
+        let (Some(targets), Some(bez)) = (targets.clone(), fitted) else {
+            return split(stats).unwrap_or_else(|| placeholder(targets));
         };
         let pieces: Option<Vec<CPiece>> = targets.iter().map(|t| self.target_piece(t)).collect();
         let (Some(pa), Some(pb)) = (pieces, crate::certify::piece::bezier_f64(&bez)) else {
-            return split(stats).unwrap_or_default();
+            return split(stats).unwrap_or_else(|| placeholder(Some(targets)));
         };
         // a sampled error above the tolerance: split without a proof
         let pts: Vec<DVec2> = dense
@@ -970,6 +985,7 @@ pub fn offset_on_grid(
         grid: grid.clone(),
         tol: opts.tol,
         max_boxes: opts.max_boxes,
+        max_splits: opts.max_segments,
     };
     // contours of the input: pieces joined end to start
     let mut groups: Vec<(usize, usize)> = Vec::new();
@@ -1045,6 +1061,10 @@ pub fn offset_on_grid(
     let mut max_joint: f64 = 0.0;
     let mut built_contours: Vec<Vec<Built>> = Vec::new();
     for c in &contours {
+        if c.parts.is_empty() {
+            built_contours.push(Vec::new());
+            continue;
+        }
         let nominal = ctx.nominal_joints(c);
         let last = Pos {
             part: c.parts.len() - 1,
