@@ -66,6 +66,7 @@ const MAX_DEPTH: u32 = 12;
 /// What one output cubic is proven against: an exact span of an input piece's
 /// offset, or an exact sub-arc of a corner arc.
 #[derive(Clone, Debug, PartialEq)]
+#[allow(clippy::large_enum_variant)]
 pub enum Target {
     /// The exact offset of `curve[piece]` over the parameters `t` (dyadic).
     Span {
@@ -157,7 +158,7 @@ impl GridOffset {
         let (spans, arcs) = self.numbered_targets();
         exact_shape_of(curve, distance, &spans, &arcs)
     }
-    fn numbered_targets(&self) -> (Vec<(usize, (f64, f64))>, Vec<ArcDesc>) {
+    fn numbered_targets(&self) -> (Vec<SpanTarget>, Vec<ArcDesc>) {
         let mut spans = Vec::new();
         let mut arcs = Vec::new();
         for s in &self.segments {
@@ -172,10 +173,13 @@ impl GridOffset {
     }
 }
 
+/// An input piece and a parameter range of it.
+type SpanTarget = (usize, (f64, f64));
+
 fn exact_shape_of(
     curve: &[Bezier<Rational>],
     distance: &Rational,
-    spans: &[(usize, (f64, f64))],
+    spans: &[SpanTarget],
     arcs: &[ArcDesc],
 ) -> Result<ShapeDesc, OffsetError> {
     let pieces = spans
@@ -200,6 +204,7 @@ fn exact_shape_of(
 
 /// One part of a contour's exact outline, in travel order.
 #[derive(Clone, Debug)]
+#[allow(clippy::large_enum_variant)]
 enum Part {
     Span {
         piece: usize,
@@ -816,7 +821,7 @@ impl Ctx<'_> {
             let (m, dist) = self.snap(c, mid, lo, hi, (0.25 * len).min(WINDOW_STEPS * self.gf))?;
             // a joint off the curve by more than tol/2 leaves the cubics less
             // room, but may still be proven: up to 0.9 tol
-            if !(dist <= SPLIT_SHARE * self.tol) || m.pos == a.pos || m.pos == b.pos {
+            if dist.is_nan() || dist > SPLIT_SHARE * self.tol || m.pos == a.pos || m.pos == b.pos {
                 return None;
             }
             stats
@@ -892,15 +897,14 @@ struct Stats {
     certifications: std::sync::atomic::AtomicUsize,
 }
 
+/// A corner arc: centre, start and end directions, clockwise.
+type CornerArc = (V2<Rational>, V2<Rational>, V2<Rational>, bool);
+
 /// The corner arc between `a` (its end) and `b` (its start) for the distance
 /// `d`: `(center, from, to, clockwise)` at every G⁰ corner (convex: the join
 /// arc; concave: the arc of the corner point's own offset), `None` where the
 /// pieces meet smoothly or do not meet.
-fn corner_arc(
-    a: &Bezier<Rational>,
-    b: &Bezier<Rational>,
-    d: &Rational,
-) -> Option<(V2<Rational>, V2<Rational>, V2<Rational>, bool)> {
+fn corner_arc(a: &Bezier<Rational>, b: &Bezier<Rational>, d: &Rational) -> Option<CornerArc> {
     match prep::junction(a, b, d) {
         prep::Junction::Join {
             center,
@@ -1077,13 +1081,7 @@ pub fn offset_on_grid(
                 Some(j) => j.pos,
                 None => pos,
             };
-            let hi = if i + 1 < n {
-                nominal[i + 1]
-            } else if c.closed {
-                last
-            } else {
-                last
-            };
+            let hi = if i + 1 < n { nominal[i + 1] } else { last };
             let prev_len = if i > 0 {
                 ctx.length(c, nominal[i - 1], pos)
             } else {
