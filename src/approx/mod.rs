@@ -154,6 +154,14 @@ pub struct OffsetOptions {
     /// `tol − grid·√2/2` ([`fit::rounding_move`]), the rest of the tolerance
     /// is left to the rounding; the certification decides.
     pub grid: Option<Rational>,
+    /// Treat near-smooth corners as smooth (default false; fitted output
+    /// without a grid only): where the two offsets' ends at a G⁰ corner are
+    /// within `tol` of each other, both neighbouring segments are made to end
+    /// at their midpoint and re-proven against their spans, and the join arc
+    /// (convex side) is proven to lie within `tol` of them; the corner is then
+    /// [`Corner::absorbed`]. A corner where any of these proofs fails keeps its
+    /// join arc or overlap.
+    pub smooth_kinks: bool,
 }
 
 impl OffsetOptions {
@@ -173,6 +181,7 @@ impl OffsetOptions {
             subdivision: lnpair::Subdivision::MidAngle,
             output: Output::Native,
             grid: None,
+            smooth_kinks: false,
         }
     }
 }
@@ -272,6 +281,11 @@ pub struct Corner {
     pub after: usize,
     /// What happens there: a join arc to add or an overlap to trim.
     pub kind: Junction,
+    /// The kink is absorbed ([`OffsetOptions::smooth_kinks`]): the two
+    /// neighbouring segments meet at one point, the approximant has no join
+    /// arc here, and the exact curve's join arc (kept in the exact shape) is
+    /// proven to lie within `tol` of those two segments.
+    pub absorbed: bool,
 }
 
 /// The result of [`offset`].
@@ -376,25 +390,14 @@ impl OffsetResult {
     /// join arcs (the shape `b` of [`union_certificate`], so a file written from
     /// it is what `lncert verify --against` compares).
     pub fn outline_shape(&self) -> Result<ShapeDesc, OffsetError> {
-        self.with_join_arcs(self.approximant_shape()?)
+        with_arcs(self.approximant_shape()?, join_arcs(self))
     }
 
-    /// `shape`, or with join arcs the union of it and the arcs.
-    fn with_join_arcs(&self, shape: ShapeDesc) -> Result<ShapeDesc, OffsetError> {
-        let arcs = join_arcs(self);
-        if arcs.is_empty() {
-            return Ok(shape);
-        }
-        let mut members = vec![shape];
-        for a in arcs {
-            members.push(ShapeDesc::arc(a)?);
-        }
-        Ok(ShapeDesc::union(members)?)
-    }
     /// The exact curve the result approximates, as one shape over the input's
     /// own pieces: the offset (or convolution) of `curve`, and with join arcs
-    /// the union of it and the arcs (the shape `a` of [`union_certificate`], up
-    /// to how the pieces are split, which `verify --against` accepts).
+    /// the union of it and the arcs — the absorbed corners' arcs last (the
+    /// shape `a` of [`union_certificate`], up to how the pieces are split,
+    /// which `verify --against` accepts).
     pub fn exact_outline_shape(
         &self,
         curve: &[Bezier<Rational>],
@@ -403,7 +406,9 @@ impl OffsetResult {
             None => ShapeDesc::offset(curve.to_vec(), self.distance.clone()),
             Some(c) => ShapeDesc::convolution(curve.to_vec(), c.pen.m.clone(), c.side),
         }?;
-        self.with_join_arcs(exact)
+        let mut arcs = join_arcs(self);
+        arcs.extend(absorbed_arcs(self));
+        with_arcs(exact, arcs)
     }
     /// The approximant as an exact shape (every float control point is an exact
     /// dyadic rational).
@@ -416,6 +421,18 @@ impl OffsetResult {
             .ok_or_else(|| bad("approximant", "a control point is not finite"))?;
         ShapeDesc::curve(pieces).map_err(|e| bad("approximant", e.to_string()))
     }
+}
+
+/// `shape`, or with arcs the union of it and the arcs.
+fn with_arcs(shape: ShapeDesc, arcs: Vec<crate::shape::ArcDesc>) -> Result<ShapeDesc, OffsetError> {
+    if arcs.is_empty() {
+        return Ok(shape);
+    }
+    let mut members = vec![shape];
+    for a in arcs {
+        members.push(ShapeDesc::arc(a)?);
+    }
+    Ok(ShapeDesc::union(members)?)
 }
 
 /// The exact rational curve of float control points.
@@ -965,7 +982,7 @@ pub fn offset(
         (cusps, segs)
     };
     let (segments, unreached, certified_hi, certifications, spans) = segs;
-    Ok(OffsetResult {
+    let mut res = OffsetResult {
         method: opts.method,
         distance: opts.distance.clone(),
         tol: opts.tol,
@@ -978,7 +995,126 @@ pub fn offset(
         spans,
         proven: opts.certify,
         convolution: None,
+    };
+    if opts.smooth_kinks && opts.output != Output::Native && opts.grid.is_none() && opts.certify {
+        absorb_kinks(curve, &mut res, opts, &kernel);
+    }
+    Ok(res)
+}
+
+/// The index of the last segment of piece `a` and of the first of piece `b`.
+fn corner_segments(res: &OffsetResult, a: usize, b: usize) -> Option<(usize, usize)> {
+    let ia = res.segments.iter().rposition(|s| s.piece == a)?;
+    let ib = res.segments.iter().position(|s| s.piece == b)?;
+    (ia != ib).then_some((ia, ib))
+}
+
+/// Proves `bez` against the exact span `t` of `x` (both directions).
+fn prove_given(
+    x: &Bezier<Rational>,
+    piece: usize,
+    t: (f64, f64),
+    bez: Bezier<f64>,
+    opts: &OffsetOptions,
+    kernel: &Kernel,
+) -> Option<OffsetSegment> {
+    let pa = kernel.span_piece(x, t)?;
+    let pb = crate::certify::piece::bezier_f64(&bez)?;
+    let cfg = Config {
+        tol: Some(opts.tol),
+        max_boxes: opts.max_boxes,
+        verdict_only: true,
+        parametric: !opts.search_only,
+        ..Config::default()
+    };
+    let r = crate::certify::hausdorff_pieces(&[pa], &[pb], &cfg, &|| 0.0);
+    (r.hi <= opts.tol).then(|| OffsetSegment {
+        piece,
+        t,
+        bezier: bez,
+        error: (r.lo, r.hi),
+        paper_error: None,
+        proof: Some(SegmentProof {
+            path: if r.parametric.is_some() {
+                ProofPath::Parametric
+            } else {
+                ProofPath::Search
+            },
+            map: r.parametric.clone(),
+            exact_to_segment: r.a_to_b.boxes.clone(),
+            segment_to_exact: r.b_to_a.boxes.clone(),
+        }),
+        estimate: None,
     })
+}
+
+/// The cover of an absorbed join arc by its two neighbouring segments
+/// (`None` when it is not proven within `tol`).
+fn arc_cover(
+    arc: &crate::shape::ArcDesc,
+    sa: &Bezier<f64>,
+    sb: &Bezier<f64>,
+    tol: f64,
+    max_boxes: usize,
+) -> Option<Vec<CoverBox>> {
+    let pa = crate::certify::piece::Piece::arc(arc).ok()?;
+    let pb = [
+        crate::certify::piece::bezier_f64(sa)?,
+        crate::certify::piece::bezier_f64(sb)?,
+    ];
+    let cfg = Config {
+        tol: Some(tol),
+        max_boxes,
+        ..Config::default()
+    };
+    let r = crate::certify::search::one_sided(&[pa], &pb, &cfg, 0.0, (0.0, 0.0));
+    (r.hi <= tol && !r.boxes.is_empty()).then_some(r.boxes)
+}
+
+/// [`OffsetOptions::smooth_kinks`]: absorbs the corners whose offset ends are
+/// within `tol` of each other (see there).
+fn absorb_kinks(
+    curve: &[Bezier<Rational>],
+    res: &mut OffsetResult,
+    opts: &OffsetOptions,
+    kernel: &Kernel,
+) {
+    let n = curve.len();
+    for ci in 0..res.corners.len() {
+        let a = res.corners[ci].after;
+        let b = (a + 1) % n;
+        let Some((ia, ib)) = corner_segments(res, a, b) else {
+            continue;
+        };
+        let (sa, sb) = (&res.segments[ia], &res.segments[ib]);
+        let (pa, pb) = (sa.bezier.points(), sb.bezier.points());
+        let (p, q) = (&pa[pa.len() - 1], &pb[0]);
+        if !((p.x - q.x).hypot(p.y - q.y) <= opts.tol) {
+            continue;
+        }
+        let m = V2::new(0.5 * (p.x + q.x), 0.5 * (p.y + q.y));
+        let mut na = pa.to_vec();
+        let last = na.len() - 1;
+        na[last] = m.clone();
+        let mut nb = pb.to_vec();
+        nb[0] = m;
+        let (Some(new_a), Some(new_b)) = (
+            prove_given(&curve[a], a, sa.t, Bezier::new(na), opts, kernel),
+            prove_given(&curve[b], b, sb.t, Bezier::new(nb), opts, kernel),
+        ) else {
+            continue;
+        };
+        // the convex side's join arc must lie within tol of the two segments
+        if let Some(arc) = join_arc_of(&res.corners[ci], &res.distance) {
+            if arc_cover(&arc, &new_a.bezier, &new_b.bezier, opts.tol, opts.max_boxes).is_none() {
+                continue;
+            }
+        }
+        res.segments[ia] = new_a;
+        res.segments[ib] = new_b;
+        res.corners[ci].absorbed = true;
+    }
+    res.certified_hi = res.segments.iter().map(|s| s.error.1).fold(0.0, f64::max);
 }
 
 /// Approximates the convolution `x ∗ e_σ` of a piecewise polynomial curve with
@@ -1235,7 +1371,11 @@ pub fn corners(curve: &[Bezier<Rational>], d: &Rational) -> Vec<Corner> {
         }
         let kind = prep::junction(&curve[i], &curve[j % n], d);
         if matches!(kind, Junction::Join { .. } | Junction::Overlap { .. }) {
-            out.push(Corner { after: i, kind });
+            out.push(Corner {
+                after: i,
+                kind,
+                absorbed: false,
+            });
         }
     }
     out
@@ -1369,6 +1509,45 @@ fn assemble(
             base += 1;
         }
     }
+    // absorbed corners: the exact arc (in `a` only) covered by the two
+    // segments that meet there
+    let mut seg_base = 0usize;
+    for res in results {
+        let n = res.segments.len();
+        let pieces = res
+            .segments
+            .iter()
+            .map(|s| s.piece)
+            .max()
+            .map_or(0, |m| m + 1);
+        for c in res.corners.iter().filter(|c| c.absorbed) {
+            let Some(arc) = join_arc_of(c, &res.distance) else {
+                continue;
+            };
+            let after = (c.after + 1) % pieces.max(1);
+            let Some((ia, ib)) = corner_segments(res, c.after, after) else {
+                return Ok(None);
+            };
+            let Some(boxes) = arc_cover(
+                &arc,
+                &res.segments[ia].bezier,
+                &res.segments[ib].bezier,
+                tol_f,
+                200_000,
+            ) else {
+                return Ok(None);
+            };
+            let a_index = base;
+            ab.extend(boxes.into_iter().map(|bx| CoverBox {
+                piece: a_index,
+                target: seg_base + if bx.target == 0 { ia } else { ib },
+                ..bx
+            }));
+            a_members.push(ShapeDesc::arc(arc)?);
+            base += 1;
+        }
+        seg_base += n;
+    }
     let (a, b) = if a_members.len() == 1 && !always_union {
         (a_members.remove(0), b_members.remove(0))
     } else {
@@ -1433,37 +1612,54 @@ pub fn exact_offset_shape(
     .map_err(|e| bad("curve", e.to_string()))
 }
 
-/// The join arcs of a result as exact arcs (radius `|d|`), for output.
+/// The join arcs of a result as exact arcs (radius `|d|`), for output: those
+/// of the corners that are not [`Corner::absorbed`].
 pub fn join_arcs(res: &OffsetResult) -> Vec<crate::shape::ArcDesc> {
-    let r = if res.distance < <Rational as Zero>::zero() {
-        -res.distance.clone()
-    } else {
-        res.distance.clone()
-    };
     res.corners
         .iter()
-        .filter_map(|c| match &c.kind {
-            Junction::Join {
-                center,
-                from,
-                to,
-                clockwise,
-            } => Some(if *clockwise {
-                crate::shape::ArcDesc {
-                    center: center.clone(),
-                    radius: r.clone(),
-                    from: to.clone(),
-                    to: from.clone(),
-                }
-            } else {
-                crate::shape::ArcDesc {
-                    center: center.clone(),
-                    radius: r.clone(),
-                    from: from.clone(),
-                    to: to.clone(),
-                }
-            }),
-            _ => None,
-        })
+        .filter(|c| !c.absorbed)
+        .filter_map(|c| join_arc_of(c, &res.distance))
         .collect()
+}
+
+/// The join arcs of the [`Corner::absorbed`] corners: in the exact curve,
+/// covered by the neighbouring segments, not in the approximant.
+pub fn absorbed_arcs(res: &OffsetResult) -> Vec<crate::shape::ArcDesc> {
+    res.corners
+        .iter()
+        .filter(|c| c.absorbed)
+        .filter_map(|c| join_arc_of(c, &res.distance))
+        .collect()
+}
+
+/// The counter-clockwise exact arc of a `Join` corner.
+fn join_arc_of(c: &Corner, distance: &Rational) -> Option<crate::shape::ArcDesc> {
+    let r = if *distance < <Rational as Zero>::zero() {
+        -distance.clone()
+    } else {
+        distance.clone()
+    };
+    match &c.kind {
+        Junction::Join {
+            center,
+            from,
+            to,
+            clockwise,
+        } => Some(if *clockwise {
+            crate::shape::ArcDesc {
+                center: center.clone(),
+                radius: r,
+                from: to.clone(),
+                to: from.clone(),
+            }
+        } else {
+            crate::shape::ArcDesc {
+                center: center.clone(),
+                radius: r,
+                from: from.clone(),
+                to: to.clone(),
+            }
+        }),
+        _ => None,
+    }
 }

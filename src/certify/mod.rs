@@ -35,7 +35,7 @@ mod jet;
 mod param;
 pub(crate) mod piece;
 mod same;
-mod search;
+pub(crate) mod search;
 pub mod verify;
 
 use crate::shape::ShapeDesc;

@@ -115,6 +115,12 @@ pub struct OffsetArgs {
     /// (UNPROVEN, labelled so everywhere), to compare the cost of the proof.
     #[arg(long, conflicts_with = "certificate")]
     pub no_certify: bool,
+    /// With fitted output: keep every G⁰ corner as a corner (join arc or
+    /// overlap), instead of absorbing the kinks whose offset ends are within
+    /// TOL of each other (the default: their neighbouring segments meet at one
+    /// point, re-proven, and the exact join arc proven within TOL of them).
+    #[arg(long)]
+    pub keep_kinks: bool,
     /// Print one JSON document.
     #[arg(long)]
     pub json: bool,
@@ -255,6 +261,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     opts.max_boxes = a.max_boxes;
     opts.paper_error = a.paper_error;
     opts.certify = !a.no_certify;
+    opts.smooth_kinks = output != Output::Native && !a.keep_kinks;
     if let Some(g) = &grid {
         if output == Output::Cubic && lncert::approx::fit::rounding_move(g) >= tol {
             return super::offset_grid::run(a, &curve, &opts);
@@ -356,6 +363,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             "joins": res.corners.iter().filter_map(|c| match &c.kind {
                 Junction::Join { center, from, to, clockwise } => Some(json!({
                     "after_piece": c.after,
+                    "absorbed": c.absorbed,
                     "arc": {
                         "center": point_json(center), "radius": q(&num_traits::Signed::abs(&res.distance)),
                         "from": point_json(from), "to": point_json(to), "clockwise": clockwise,
@@ -364,7 +372,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
                 _ => None,
             }).collect::<Vec<_>>(),
             "overlaps": res.corners.iter().filter_map(|c| match &c.kind {
-                Junction::Overlap { center } => Some(json!({"after_piece": c.after, "at": point_json(center)})),
+                Junction::Overlap { center } => Some(json!({"after_piece": c.after, "at": point_json(center), "absorbed": c.absorbed})),
                 _ => None,
             }).collect::<Vec<_>>(),
             "certifications": res.certifications,
@@ -471,6 +479,18 @@ fn text_report(
         );
     }
     for c in &res.corners {
+        if c.absorbed {
+            s += &format!(
+                "  corner after piece {}: a kink within the tolerance, absorbed: the segments meet at one point{}\n",
+                c.after,
+                if matches!(c.kind, Junction::Join { .. }) {
+                    " and the exact join arc is proven within TOL of them"
+                } else {
+                    ""
+                }
+            );
+            continue;
+        }
         match &c.kind {
             Junction::Join { center, .. } => {
                 s += &format!(
@@ -601,6 +621,7 @@ fn join_commands(res: &OffsetResult) -> Vec<(usize, String, u8)> {
     );
     res.corners
         .iter()
+        .filter(|c| !c.absorbed)
         .filter_map(|c| match &c.kind {
             Junction::Join { clockwise, .. } => {
                 Some((c.after, radius.clone(), if *clockwise { 0 } else { 1 }))
