@@ -243,14 +243,116 @@ fn isolate_joint(a: &Bezier<Rational>, ea: u8, b: &Bezier<Rational>, eb: u8) -> 
     let (u, v) = (away(a, ea)?, away(b, eb)?);
     // d · u < 0 and d · v > 0 with d = v − u (fails only when u = v)
     let df = V2::new(v.x - u.x, v.y - u.y);
-    if df.norm2() < 1e-24 {
+    if df.norm2() >= 1e-24 {
+        let d = V2::new(rational_from_f64(df.x)?, rational_from_f64(df.y)?);
+        let mut eps = q(1, 8);
+        for _ in 0..24 {
+            if monotone(a, ea, &eps, &d, -1) && monotone(b, eb, &eps, &d, 1) {
+                return Some(eps);
+            }
+            eps /= Rational::from_integer(4.into());
+        }
+    }
+    // both leave in (nearly) the same direction: a cusp of the curve the
+    // pieces approximate; second order
+    let w = V2::new(u.x + v.x, u.y + v.y);
+    isolate_tangential_joint(a, ea, b, eb, &w)
+}
+
+/// The piece with its end `e` moved to parameter 0.
+fn from_end(b: &Bezier<Rational>, e: u8) -> Bezier<Rational> {
+    if e == 0 {
+        b.clone()
+    } else {
+        Bezier::new(b.points().iter().rev().cloned().collect())
+    }
+}
+
+/// Exact bounds of `c · p` over the Bernstein coefficients `p`.
+fn dot_range(p: &[V2<Rational>], c: &V2<Rational>) -> (Rational, Rational) {
+    let vals: Vec<Rational> = p.iter().map(|v| c.dot(v)).collect();
+    let lo = vals.iter().min().cloned().unwrap_or_default();
+    let hi = vals.iter().max().cloned().unwrap_or_default();
+    (lo, hi)
+}
+
+fn mul_range(a: &(Rational, Rational), b: &(Rational, Rational)) -> (Rational, Rational) {
+    let c = [&a.0 * &b.0, &a.0 * &b.1, &a.1 * &b.0, &a.1 * &b.1];
+    (
+        c.iter().min().cloned().unwrap_or_default(),
+        c.iter().max().cloned().unwrap_or_default(),
+    )
+}
+
+/// Bounds of the second derivative `y″(x)` of the piece as a graph over the
+/// direction `w` (`x = w·(p − P)`, `y = w⊥·(p − P)`) on `[0, eps]` from the
+/// end at parameter 0; `None` unless `x′ > 0` there.
+fn graph_curvature(b: &Bezier<Rational>, eps: &Rational, w: &V2<Rational>) -> Option<(Rational, Rational)> {
+    let part = b.restrict(&<Rational as Zero>::zero(), eps);
+    let h = part.hodograph();
+    let h2 = h.hodograph();
+    let n = w.rot90();
+    let xs = dot_range(h.points(), w);
+    if !xs.0.is_positive() {
         return None;
     }
-    let d = V2::new(rational_from_f64(df.x)?, rational_from_f64(df.y)?);
+    let ys = dot_range(h.points(), &n);
+    let (xss, yss) = if h2.points().is_empty() {
+        { let z = <Rational as Zero>::zero(); ((z.clone(), z.clone()), (z.clone(), z)) }
+    } else {
+        (dot_range(h2.points(), w), dot_range(h2.points(), &n))
+    };
+    let p1 = mul_range(&xs, &yss);
+    let p2 = mul_range(&ys, &xss);
+    let num = (&p1.0 - &p2.1, &p1.1 - &p2.0);
+    let c3 = (&xs.0 * &xs.0 * &xs.0, &xs.1 * &xs.1 * &xs.1);
+    let q = [&num.0 / &c3.0, &num.0 / &c3.1, &num.1 / &c3.0, &num.1 / &c3.1];
+    Some((
+        q.iter().min().cloned()?,
+        q.iter().max().cloned()?,
+    ))
+}
+
+/// Two pieces leaving their shared end point in the same direction `w`: on
+/// corner ranges where both are graphs `y_a(x)`, `y_b(x)` over `w` (`x′ > 0`,
+/// exact Bernstein bounds) with `y_a(0) = y_b(0) = 0`, `y_a′(0) = y_b′(0) = 0`
+/// (tangent to `w` at the joint) and enclosures of `y_a″`, `y_b″` that do not
+/// overlap, `y_a − y_b` is strictly convex or concave with a double zero at 0,
+/// so it vanishes nowhere else: the joint is their only contact there.
+fn isolate_tangential_joint(
+    a: &Bezier<Rational>,
+    ea: u8,
+    b: &Bezier<Rational>,
+    eb: u8,
+    w: &V2<f64>,
+) -> Option<Rational> {
+    let (fa, fb) = (from_end(a, ea), from_end(b, eb));
+    // both tangent to one direction at the joint, exactly
+    let first = |c: &Bezier<Rational>| {
+        c.hodograph()
+            .points()
+            .iter()
+            .find(|v| !v.x.is_zero() || !v.y.is_zero())
+            .cloned()
+    };
+    let (ta, tb) = (first(&fa)?, first(&fb)?);
+    if !ta.cross(&tb).is_zero() || !ta.dot(&tb).is_positive() {
+        return None;
+    }
+    // the graphs' direction: the exact tangent (w only checks the float side)
+    if ta.x.approx() * w.x + ta.y.approx() * w.y <= 0.0 {
+        return None;
+    }
+    let dir = ta;
     let mut eps = q(1, 8);
     for _ in 0..24 {
-        if monotone(a, ea, &eps, &d, -1) && monotone(b, eb, &eps, &d, 1) {
-            return Some(eps);
+        if let (Some(ka), Some(kb)) = (
+            graph_curvature(&fa, &eps, &dir),
+            graph_curvature(&fb, &eps, &dir),
+        ) {
+            if ka.1 < kb.0 || kb.1 < ka.0 {
+                return Some(eps);
+            }
         }
         eps /= Rational::from_integer(4.into());
     }
