@@ -120,7 +120,11 @@ fn run_lncert(curve: &[Bezier<Rational>], r: &Rational, tol: f64, out: Output) -
     if let Ok(s) = &s {
         for (n, c) in [("a", &s.a), ("b", &s.b), ("c", &s.c)] {
             if !c.proven {
-                eprintln!("  [{out:?} TOL {tol:e} r {}] ({n}) unproven: {}", r.approx(), c.note);
+                eprintln!(
+                    "  [{out:?} TOL {tol:e} r {}] ({n}) unproven: {}",
+                    r.approx(),
+                    c.note
+                );
             }
         }
     }

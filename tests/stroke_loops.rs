@@ -198,7 +198,10 @@ fn closed_lens_inner_offset_loops_are_cut() {
         if dist(&curve, *p) >= rf - 1e-9 {
             boundary += 1;
             let d = out_poly_dist(*p);
-            assert!(d <= tol + 5e-3, "inner boundary point {p:?} is {d} from the output");
+            assert!(
+                d <= tol + 5e-3,
+                "inner boundary point {p:?} is {d} from the output"
+            );
         }
     }
     assert!(boundary > 100, "most of the inner offset is boundary");

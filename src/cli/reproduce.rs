@@ -146,11 +146,16 @@ fn write_strokes(dir: &std::path::Path, runs: &[Run]) -> Result<Vec<PathBuf>, Cl
     let mut out = Vec::new();
     for r in runs {
         let Ok(s) = &r.stroke else { continue };
-        let name: String = r
-            .id
-            .chars()
-            .map(|c| if c.is_ascii_alphanumeric() || c == '-' { c } else { '_' })
-            .collect();
+        let name: String =
+            r.id.chars()
+                .map(|c| {
+                    if c.is_ascii_alphanumeric() || c == '-' {
+                        c
+                    } else {
+                        '_'
+                    }
+                })
+                .collect();
         let path = dir.join(format!("{name}.svg"));
         let svg = lncert::reproduce::strokes::svg_picture(s, &r.curve);
         std::fs::write(&path, svg).map_err(|e| {

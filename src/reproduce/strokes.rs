@@ -185,7 +185,10 @@ pub fn svg_picture(s: &Stroke, curve: &[Bezier<Rational>]) -> String {
             pts_all.push((v.x, v.y));
         }
     }
-    let (mut lo, mut hi) = ((f64::INFINITY, f64::INFINITY), (f64::NEG_INFINITY, f64::NEG_INFINITY));
+    let (mut lo, mut hi) = (
+        (f64::INFINITY, f64::INFINITY),
+        (f64::NEG_INFINITY, f64::NEG_INFINITY),
+    );
     for p in &pts_all {
         lo = (lo.0.min(p.0), lo.1.min(p.1));
         hi = (hi.0.max(p.0), hi.1.max(p.1));
