@@ -45,7 +45,8 @@
 //!   `h(L, K) − a ≤ h(∂S, K) ≤ h(L, K) + b` (triangle inequality; `h(X, Y) =
 //!   sup_{x ∈ X} dist(x, Y)`). kurbo → ∂S is large when kurbo keeps loops or
 //!   inner parts that are not on ∂S (kurbo's fill is right under the nonzero
-//!   rule; the *path* is not the boundary). `✓` marks `hi ≤ TOL` for
+//!   rule; the *path* is not the boundary). `✗` marks `lo > TOL` (proven
+//!   above TOL; no row of the README's run has it), `✓` marks `hi ≤ TOL` for
 //!   ∂S → kurbo (kurbo covers the boundary within its tolerance).
 
 use kurbo::{BezPath, PathEl, Point};
@@ -308,7 +309,13 @@ fn main() {
                         Ok((lo, hi, i)) => format!(
                             "{}{}{}",
                             interval(lo - a, hi + b),
-                            if hi + b <= tol { " ✓" } else { "" },
+                            if hi + b <= tol {
+                                " ✓"
+                            } else if lo - a > tol {
+                                " ✗"
+                            } else {
+                                ""
+                            },
                             inc(i)
                         ),
                         Err(e) => format!("error: {e}"),
