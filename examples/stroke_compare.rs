@@ -335,11 +335,15 @@ fn main() {
     println!();
     println!(
         "lncert: {n_lncert} strokes in {t_lncert:.1} s ({:.2} s per trimmed outline), \
-         {crossings} raw crossings cut in all ({:.2} s per crossing cut, stroke time / crossings); certifying kurbo's self-crossings: \
+         {crossings} raw crossings cut in all ({} per crossing cut, stroke time / crossings); certifying kurbo's self-crossings: \
          {t_kloops:.2} s for {kpairs} segment pairs ({:.1} µs per pair). \
          Total {:.1} s.",
         t_lncert / n_lncert.max(1) as f64,
-        t_lncert / crossings.max(1) as f64,
+        if crossings == 0 {
+            "n/a".to_string()
+        } else {
+            format!("{:.2} s", t_lncert / crossings as f64)
+        },
         1e6 * t_kloops / kpairs.max(1) as f64,
         start.elapsed().as_secs_f64()
     );
