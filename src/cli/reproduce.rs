@@ -2,10 +2,11 @@
 //! and prints every claim with its verdict, then a summary.
 //!
 //! Exit code 0 if no claim is `undecided`, else 1. `--out DIR` also writes one
-//! SVG picture per Fig. 5 case of seed 000 (see [`super::svg`]).
+//! SVG picture per Fig. 5 case of seed 000 (see [`super::svg`]), seed 001
+//! Fig. 2(a), seed 000 Fig. 7(a) and one per proven stroke outline (`stroke-….svg`).
 
 use super::{print_out, svg, CliError};
-use lncert::reproduce::{run_all, Claim, Verdict};
+use lncert::reproduce::{run_all_with_strokes, strokes::Run, Claim, Verdict};
 use serde_json::{json, Map, Value};
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -16,7 +17,7 @@ pub struct ReproduceArgs {
     /// Print one JSON document `{"claims": [...], "summary": {...}}`.
     #[arg(long)]
     pub json: bool,
-    /// Write SVG pictures (one per Fig. 5 case of seed 000) into this directory.
+    /// Write SVG pictures (Fig. 5 cases of seed 000, the stroke outlines, …) into this directory.
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
 }
@@ -33,12 +34,13 @@ pub fn run(a: &ReproduceArgs) -> Result<i32, CliError> {
     if let Some(dir) = &a.out {
         super::args::output_dir("--out", dir)?;
     }
-    let claims = run_all();
+    let (claims, strokes) = run_all_with_strokes();
     let written = match &a.out {
         Some(dir) => {
             let mut w = svg::write_fig5(dir)?;
             w.push(write_seed001_fig2a(dir)?);
             w.push(write_seed000_fig7a(dir)?);
+            w.extend(write_strokes(dir, &strokes)?);
             w
         }
         None => Vec::new(),
@@ -136,4 +138,30 @@ fn write_seed000_fig7a(dir: &std::path::Path) -> Result<PathBuf, CliError> {
     std::fs::write(&path, svg)
         .map_err(|e| super::args::bad("--out", format!("cannot write {}: {e}", path.display())))?;
     Ok(path)
+}
+
+/// One picture per computed stroke of the `stroke-…` claims (the outline over
+/// its skeleton); a stroke that failed has no picture.
+fn write_strokes(dir: &std::path::Path, runs: &[Run]) -> Result<Vec<PathBuf>, CliError> {
+    let mut out = Vec::new();
+    for r in runs {
+        let Ok(s) = &r.stroke else { continue };
+        let name: String =
+            r.id.chars()
+                .map(|c| {
+                    if c.is_ascii_alphanumeric() || c == '-' {
+                        c
+                    } else {
+                        '_'
+                    }
+                })
+                .collect();
+        let path = dir.join(format!("{name}.svg"));
+        let svg = lncert::reproduce::strokes::svg_picture(s, &r.curve);
+        std::fs::write(&path, svg).map_err(|e| {
+            super::args::bad("--out", format!("cannot write {}: {e}", path.display()))
+        })?;
+        out.push(path);
+    }
+    Ok(out)
 }
