@@ -1070,19 +1070,50 @@ fn prove_kept(
         let hull = part.hull()?;
         let (m, nr) = part.mid_right_normal();
         // a point proven outside: the middle pushed out along the right normal
-        let est = foot(curve_f, form, m).0;
+        let (est, fi, ft) = foot(curve_f, form, m);
         let mut done = None;
         let base = (2.0 * e_in).max(rf * 1e-12);
-        for k in [1.25, 2.0, 3.0] {
-            let eta = base * k + (rf - est).max(0.0);
-            let w = (m.0 + eta * nr.0, m.1 + eta * nr.1);
-            let w = V2::new(rational_from_f64(w.0)?, rational_from_f64(w.1)?);
-            let rho = hull_radius_hi(&hull, &w);
-            if rho > budget {
-                break;
+        // floats choose the candidates only: `outside` decides
+        let (deficit, dirs) = if form.circle {
+            ((rf - est).max(0.0), vec![nr])
+        } else {
+            // along the ray from the foot y: the pen boundary is |m − y|(1/γ − 1)
+            // away (γ the gauge); push along the piece's normal and along the
+            // outer normal Q⁻¹(m − y) of the translated pen
+            let y = curve_f[fi].eval_fast(ft);
+            let (zx, zy) = (m.0 - y.x, m.1 - y.y);
+            let gamma = est / rf;
+            let deficit = if gamma > 0.0 {
+                (zx.hypot(zy) * (1.0 / gamma - 1.0)).max(0.0)
+            } else {
+                0.0
+            };
+            let [fa, fb, fc, _] = form.ff;
+            let g = (fa * zx + fb * zy, fb * zx + fc * zy);
+            let gl = g.0.hypot(g.1);
+            let mut dirs = vec![nr];
+            if gl > 0.0 && gl.is_finite() {
+                dirs.push((g.0 / gl, g.1 / gl));
             }
-            if outside(curve, &w, form) {
-                done = Some(rho);
+            (deficit, dirs)
+        };
+        'tries: for k in [1.25, 2.0, 3.0] {
+            let eta = base * k + deficit;
+            let mut over = true;
+            for d in &dirs {
+                let w = (m.0 + eta * d.0, m.1 + eta * d.1);
+                let w = V2::new(rational_from_f64(w.0)?, rational_from_f64(w.1)?);
+                let rho = hull_radius_hi(&hull, &w);
+                if rho > budget {
+                    continue;
+                }
+                over = false;
+                if outside(curve, &w, form) {
+                    done = Some(rho);
+                    break 'tries;
+                }
+            }
+            if over {
                 break;
             }
         }
