@@ -401,3 +401,24 @@ pub fn pen_point_enclosure(c: &V2<Rational>, pen: &Pen, u: &V2<Rational>) -> V2<
     let ci = c.map(interval_from_rational);
     V2::new(ci.x + qx / n, ci.y + qy / n)
 }
+
+/// `w ∉ x ⊕ E`, proven by exact Bernstein signs of `g(w − x(t)) − d` on every
+/// piece (`false`: not proven — `w` may be inside, or too close to decide).
+///
+/// # Examples
+/// ```
+/// use lncert::approx::conv::{Angle, Pen};
+/// use lncert::outline::ellipse::{outside_of, Form};
+/// use lncert::curve::V2;
+/// use lncert::shape::parse_curve;
+/// let q = |s: &str| lncert::parse_rational(s).unwrap();
+/// let x = parse_curve("M 0 0 L 2 0").unwrap();
+/// let pen = Pen::ellipse(&q("1"), &q("1/2"), &Angle::parse("0").unwrap()).unwrap();
+/// let f = Form::ellipse(&pen).unwrap();
+/// assert!(outside_of(&x, &V2::new(q("1"), q("0.51")), &f));
+/// assert!(!outside_of(&x, &V2::new(q("1"), q("0.49")), &f));
+/// assert!(outside_of(&x, &V2::new(q("3.01"), q("0")), &f));
+/// ```
+pub fn outside_of(curve: &[Bezier<Rational>], w: &V2<Rational>, form: &Form) -> bool {
+    super::trim::outside(curve, w, form)
+}

@@ -825,7 +825,14 @@ fn ellipse_cap_piece(
 fn foot(curve: &[Bezier<f64>], form: &Form, p: (f64, f64)) -> (f64, usize, f64) {
     let mut best = (f64::INFINITY, 0usize, 0.0f64);
     for (i, b) in curve.iter().enumerate() {
-        let n = 64;
+        // samples at most about reach/4 apart along the control polygon (which
+        // bounds the arc length), so the global minimum's basin is not missed
+        let poly: f64 = b
+            .points()
+            .windows(2)
+            .map(|w| (w[1].x - w[0].x).hypot(w[1].y - w[0].y))
+            .sum();
+        let n = ((4.0 * poly / form.reach.max(1e-300)).ceil() as usize).clamp(64, 4096);
         let d2 = |t: f64| {
             let v = b.eval_fast(t);
             form.value_f64(v.x - p.0, v.y - p.1)
@@ -1614,6 +1621,30 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
     if dbg {
         eprintln!("classified: {:?}", t0.elapsed());
     }
+    // --- pinched loops: kept pieces that close a loop at an exact point X of
+    // the output, every hull point within λ of X, are dropped (the λ rule of
+    // the removal: a boundary point near them is within e + λ of X)
+    let kept_idx: Vec<usize> = (0..subs.len()).filter(|&k| keep[k]).collect();
+    let lambda_loop = rational_from_f64(0.75 * tol).unwrap_or_else(<Rational as Zero>::zero);
+    let dropped = pinched_loops(
+        &kept_idx.iter().map(|&k| &subs[k].post).collect::<Vec<_>>(),
+        &lambda_loop,
+    );
+    if !dropped.is_empty() {
+        for &d in &dropped {
+            let k = kept_idx[d];
+            keep[k] = false;
+            let raw = &raws[subs[k].raw];
+            b_bound = b_bound.max(raw.e + subs[k].delta + 0.75 * tol);
+        }
+        fail(
+            &mut notes,
+            format!(
+                "{} kept pieces forming pinched loops within 3·tol/4 of their pinch point dropped",
+                dropped.len()
+            ),
+        );
+    }
     // --- chain
     let out_pieces: Vec<Piece> = subs
         .iter()
@@ -1682,6 +1713,63 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
         pen: opts.ellipse.clone(),
         caps,
     })
+}
+
+/// Indices of pieces forming *pinched loops*: a chain of pieces
+/// `p_i, …, p_j` (following exact end = start) that starts and ends at one
+/// exact point `X` which is also the end or start of a piece outside the
+/// chain, with every hull point strictly within `lambda` of `X`.
+fn pinched_loops(pieces: &[&Piece], lambda: &Rational) -> Vec<usize> {
+    let l2 = lambda * lambda;
+    let n = pieces.len();
+    let mut dropped = vec![false; n];
+    let near = |p: &Piece, x: &V2<Rational>| {
+        Part::initial(p).is_some_and(|parts| {
+            parts.iter().all(|part| {
+                part.hull()
+                    .is_some_and(|h| h.iter().all(|q| q.sub(x).norm2() < l2))
+            })
+        })
+    };
+    for s in 0..n {
+        if dropped[s] {
+            continue;
+        }
+        let x = pieces[s].start().clone();
+        // X must be a pinch: at least two live pieces start there
+        let starts = (0..n)
+            .filter(|&k| !dropped[k] && pieces[k].start() == &x)
+            .count();
+        if starts < 2 {
+            continue;
+        }
+        // follow the chain from s while it stays near X
+        let mut chain = vec![s];
+        let mut cur = s;
+        let closed = loop {
+            if !near(pieces[cur], &x) {
+                break false;
+            }
+            let end = pieces[cur].end();
+            if end == &x {
+                break true;
+            }
+            let next = (0..n).find(|&k| !dropped[k] && !chain.contains(&k) && pieces[k].start() == end);
+            match next {
+                Some(k) if chain.len() < 64 => {
+                    chain.push(k);
+                    cur = k;
+                }
+                _ => break false,
+            }
+        };
+        if closed {
+            for k in chain {
+                dropped[k] = true;
+            }
+        }
+    }
+    (0..n).filter(|&k| dropped[k]).collect()
 }
 
 /// Chains pieces into contours by exact shared end points.
