@@ -425,39 +425,60 @@ fn gauge_to_curve(curve: &[Bezier<f64>], qi: [f64; 3], p: (f64, f64)) -> f64 {
 
 /// An independent polygonal sampling of `∂S`, `S = x ⊕ E`: every translate
 /// `x(t) + M(cos φ, sin φ)` not strictly inside `S` (brute force, floats).
-fn ellipse_boundary_points(curve: &[Bezier<Rational>], pen: &Pen) -> Vec<(f64, f64)> {
+fn ellipse_boundary_points(curve: &[Bezier<Rational>], pen: &Pen, nt: usize) -> Vec<(f64, f64)> {
     let cf: Vec<Bezier<f64>> = curve.iter().map(|b| b.map(Scalar::approx)).collect();
     let m = pen.m.clone().map(|r| r.map(|v| v.approx()));
+    let [q11, q12, q22] = pen.q_f64();
     let qi = pen_inverse(pen);
-    let mut out = Vec::new();
+    let mut cand = Vec::new();
+    // the support points x(t) ± Q n/√(nᵀQn) (n the left normal)
     for b in &cf {
-        for k in 0..=400 {
-            let c = b.eval_fast(k as f64 / 400.0);
-            for j in 0..96 {
-                let f = j as f64 / 96.0 * 2.0 * std::f64::consts::PI;
-                let p = (
-                    c.x + m[0][0] * f.cos() + m[0][1] * f.sin(),
-                    c.y + m[1][0] * f.cos() + m[1][1] * f.sin(),
-                );
-                if gauge_to_curve(&cf, qi, p) >= 1.0 - 1e-9 {
-                    out.push(p);
-                }
+        let h = b.hodograph();
+        for k in 0..=nt {
+            let t = k as f64 / nt as f64;
+            let c = b.eval_fast(t);
+            let d = h.eval_fast(t);
+            let n = (-d.y, d.x);
+            let qn = (q11 * n.0 + q12 * n.1, q12 * n.0 + q22 * n.1);
+            let l = (n.0 * qn.0 + n.1 * qn.1).sqrt();
+            for s in [1.0, -1.0] {
+                cand.push((c.x + s * qn.0 / l, c.y + s * qn.1 / l));
             }
         }
     }
-    out
+    // the whole pen about each end (the caps are among them)
+    for (b, e) in [(&cf[0], 0.0), (&cf[cf.len() - 1], 1.0)] {
+        let c = b.eval_fast(e);
+        for j in 0..400 {
+            let f = j as f64 / 400.0 * 2.0 * std::f64::consts::PI;
+            cand.push((
+                c.x + m[0][0] * f.cos() + m[0][1] * f.sin(),
+                c.y + m[1][0] * f.cos() + m[1][1] * f.sin(),
+            ));
+        }
+    }
+    cand.into_iter()
+        .filter(|p| gauge_to_curve(&cf, qi, *p) >= 1.0 - 1e-9)
+        .collect()
 }
 
 /// Claims (a) and (b) checked by sampling for an elliptical pen: each output
 /// point's gauge is within TOL of the pen boundary (a point at Euclidean
 /// distance δ from `∂S` has gauge within `δ / b` of 1), and each brute-force
 /// boundary point is within TOL (+ sampling slack) of the output.
-fn ellipse_sampled_check(curve: &[Bezier<Rational>], s: &Stroke, pen: &Pen, tol: f64, slack: f64) {
+fn ellipse_sampled_check(
+    curve: &[Bezier<Rational>],
+    s: &Stroke,
+    pen: &Pen,
+    tol: f64,
+    slack: f64,
+    nt: usize,
+) {
     let cf: Vec<Bezier<f64>> = curve.iter().map(|b| b.map(Scalar::approx)).collect();
     let qi = pen_inverse(pen);
     let [a, b, c] = pen.q_f64();
     let minor = ((a + c) / 2.0 - (((a - c) / 2.0).powi(2) + b * b).sqrt()).sqrt();
-    let boundary = ellipse_boundary_points(curve, pen);
+    let boundary = ellipse_boundary_points(curve, pen, nt);
     assert!(boundary.len() > 100);
     let out = output_points(s, 40);
     for p in &out {
@@ -473,7 +494,10 @@ fn ellipse_sampled_check(curve: &[Bezier<Rational>], s: &Stroke, pen: &Pen, tol:
     let dense = output_points(s, 200);
     for q in &boundary {
         let d = dist_to_points(&dense, *q);
-        assert!(d <= tol + slack, "boundary point {q:?} is {d} from the output");
+        assert!(
+            d <= tol + slack,
+            "boundary point {q:?} is {d} from the output"
+        );
     }
 }
 
@@ -486,7 +510,11 @@ fn ellipse_pen_test_cubic_is_proven_and_matches_brute_force() {
     let x = test_cubic();
     let pen = ellipse_pen("0.4", "0.2", "pi/6");
     let tol = 1e-2;
-    let s = stroke(&x, &StrokeOptions::with_pen(PenShape::Ellipse(pen.clone()), tol)).unwrap();
+    let s = stroke(
+        &x,
+        &StrokeOptions::with_pen(PenShape::Ellipse(pen.clone()), tol),
+    )
+    .unwrap();
     assert!(s.proven(), "{:?} {:?} {:?} {:?}", s.a, s.b, s.c, s.notes);
     check_closed_simple(&s);
     assert_eq!(s.contours.len(), 1);
@@ -503,7 +531,7 @@ fn ellipse_pen_test_cubic_is_proven_and_matches_brute_force() {
         .pieces
         .iter()
         .all(|p| matches!(p, Piece::Bezier(_))));
-    ellipse_sampled_check(&x, &s, &pen, tol, 6e-3);
+    ellipse_sampled_check(&x, &s, &pen, tol, 6e-3, 400);
 }
 
 #[test]
@@ -556,28 +584,64 @@ fn ellipse_cap_error_is_certified_and_within_budget() {
         .unwrap();
         assert!(cap.error <= budget, "{budget}: {}", cap.error);
         // sampled distance of the cap's points to the ellipse ≤ the bound
-        let qi = pen_inverse(&pen);
+        // (nearest of 4000 angles, refined by golden section)
         let m = pen.m.clone().map(|r| r.map(|v| v.approx()));
-        let ell: Vec<(f64, f64)> = (0..20000)
-            .map(|k| {
-                let f = k as f64 / 20000.0 * 2.0 * std::f64::consts::PI;
-                (
-                    1.0 + m[0][0] * f.cos() + m[0][1] * f.sin(),
-                    2.0 + m[1][0] * f.cos() + m[1][1] * f.sin(),
-                )
-            })
-            .collect();
+        let ell = |f: f64| {
+            (
+                1.0 + m[0][0] * f.cos() + m[0][1] * f.sin(),
+                2.0 + m[1][0] * f.cos() + m[1][1] * f.sin(),
+            )
+        };
+        let dist = |p: (f64, f64)| {
+            let d = |f: f64| {
+                let e = ell(f);
+                ((e.0 - p.0).powi(2) + (e.1 - p.1).powi(2)).sqrt()
+            };
+            let n = 4000;
+            let step = 2.0 * std::f64::consts::PI / n as f64;
+            let (mut bf, mut bd) = (0.0, f64::INFINITY);
+            for k in 0..n {
+                let f = k as f64 * step;
+                if d(f) < bd {
+                    bd = d(f);
+                    bf = f;
+                }
+            }
+            let (mut lo, mut hi) = (bf - step, bf + step);
+            for _ in 0..80 {
+                let m1 = lo + (hi - lo) * 0.382;
+                let m2 = lo + (hi - lo) * 0.618;
+                if d(m1) < d(m2) {
+                    hi = m2;
+                } else {
+                    lo = m1;
+                }
+            }
+            bd.min(d(0.5 * (lo + hi)))
+        };
         let mut worst: f64 = 0.0;
         for b in &cap.pieces {
             for p in sample_piece(&Piece::Bezier(b.clone()), 50) {
-                worst = worst.max(dist_to_points(&ell, p));
-                // on the half towards +x (the outward tangent (1, 0))
-                let z = (p.0 - 1.0, p.1 - 2.0);
-                let _ = qi;
-                assert!(z.0 > -1e-9 || z.0.abs() < 0.8, "{z:?}");
+                worst = worst.max(dist(p));
             }
         }
-        assert!(worst <= cap.error + 1e-6, "sampled {worst} > bound {}", cap.error);
+        assert!(
+            worst <= cap.error + 1e-12,
+            "sampled {worst} > bound {}",
+            cap.error
+        );
+        // the bound is not vacuous: within a factor 4 of the sampled error
+        assert!(cap.error <= 4.0 * worst + 1e-9, "{} vs {worst}", cap.error);
+        // it runs from c + p(−n) to c + p(n) (n = (0, 1)) through c + p(T),
+        // T = (1, 0): the joint of its middle cubics is on the +x side
+        let mid = cap.pieces[cap.pieces.len() / 2].points()[0].map(Scalar::approx);
+        let end = cap.pieces.last().unwrap().points()[3].map(Scalar::approx);
+        let start = cap.pieces[0].points()[0].map(Scalar::approx);
+        let side = |p: &lncert::curve::V2<f64>| {
+            (end.x - start.x) * (p.y - start.y) - (end.y - start.y) * (p.x - start.x)
+        };
+        let probe = lncert::curve::V2::new(2.0, 2.0);
+        assert!(side(&mid) * side(&probe) > 0.0, "{mid:?}");
         // consecutive cubics share exact end points
         for w in cap.pieces.windows(2) {
             assert_eq!(w[0].points()[3], w[1].points()[0]);
@@ -589,7 +653,7 @@ fn ellipse_cap_error_is_certified_and_within_budget() {
 fn ellipse_pen_font_h_at_tol_0_1() {
     // seed 000 Fig. 7(c): the nonic ⊕ ellipse (semi-axes 0.7, 0.3, θ = π/6)
     let x = lncert::reproduce::seed001::nonic().unwrap();
-    let pen = lncert::reproduce::seed001::pen(1e-9).unwrap();
+    let pen = lncert::reproduce::seed001::pen(1e-6).unwrap();
     let tol = 0.1;
     let mut o = StrokeOptions::with_pen(PenShape::Ellipse(pen.clone()), tol);
     o.method = lncert::approx::OffsetMethod::LnPair;
@@ -611,18 +675,19 @@ fn ellipse_pen_font_h_at_tol_0_1() {
     for c in &s.caps {
         assert!(c.error <= tol / 8.0, "{c:?}");
     }
-    // what is proven must hold by brute force: kept pieces are near ∂S
-    if s.a.proven {
-        assert!(s.a.bound <= tol);
-    }
-    if s.proven() {
-        check_closed_simple(&s);
-        ellipse_sampled_check(&x, &s, &pen, tol, 0.03);
-    } else {
-        // honest: something is reported undecided
-        assert!(!s.a.proven || !s.b.proven || !s.c.proven);
-        assert!(s.notes.iter().any(|n| n.contains("undecided")), "{:?}", s.notes);
-    }
+    // proven (measured: 3 closed contours, 57 pieces, 11 crossings) — and
+    // checked against an independent brute-force sampling of ∂S
+    assert!(s.proven(), "{:?} {:?} {:?} {:?}", s.a, s.b, s.c, s.notes);
+    assert!(s.a.bound <= tol && s.b.bound <= tol);
+    check_closed_simple(&s);
+    assert_eq!(s.contours.len(), 3);
+    let ccw = s
+        .contours
+        .iter()
+        .filter(|c| c.orientation == Orientation::CounterClockwise)
+        .count();
+    assert_eq!(ccw, 1, "one outer contour, the rest holes");
+    ellipse_sampled_check(&x, &s, &pen, tol, 0.02, 3000);
 }
 
 #[test]
@@ -645,12 +710,22 @@ fn ellipse_pen_rejects_g0_corners_and_cli_bad_pens() {
         ("ellipse:", "--pen"),
     ] {
         let out = std::process::Command::new(bin)
-            .args(["stroke", curve.to_str().unwrap(), "--pen", pen, "--tol", "0.01"])
+            .args([
+                "stroke",
+                curve.to_str().unwrap(),
+                "--pen",
+                pen,
+                "--tol",
+                "0.01",
+            ])
             .output()
             .unwrap();
         assert_eq!(out.status.code(), Some(2), "{pen}");
         let err = String::from_utf8_lossy(&out.stderr);
-        assert!(err.contains("--pen") && err.contains(needle), "{pen}: {err}");
+        assert!(
+            err.contains("--pen") && err.contains(needle),
+            "{pen}: {err}"
+        );
     }
     // a good pen: JSON with the exact pen used and the caps
     let out = std::process::Command::new(bin)

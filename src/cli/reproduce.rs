@@ -2,7 +2,9 @@
 //! and prints every claim with its verdict, then a summary.
 //!
 //! Exit code 0 if no claim is `undecided`, else 1. `--out DIR` also writes one
-//! SVG picture per Fig. 5 case of seed 000 (see [`super::svg`]).
+//! SVG picture per Fig. 5 case of seed 000 (see [`super::svg`]), seed 001
+//! Fig. 2(a), seed 000 Fig. 7(a) and the proven font 'H' of seed 000
+//! Fig. 7(c) (`font-H.svg`).
 
 use super::{print_out, svg, CliError};
 use lncert::reproduce::{run_all, Claim, Verdict};
@@ -39,6 +41,7 @@ pub fn run(a: &ReproduceArgs) -> Result<i32, CliError> {
             let mut w = svg::write_fig5(dir)?;
             w.push(write_seed001_fig2a(dir)?);
             w.push(write_seed000_fig7a(dir)?);
+            w.push(write_font_h(dir)?);
             w
         }
         None => Vec::new(),
@@ -134,6 +137,20 @@ fn write_seed000_fig7a(dir: &std::path::Path) -> Result<PathBuf, CliError> {
     let svg = super::convolve::render(&x, &pen, &[("minus", minus, 0.0), ("plus", plus, 0.0)]);
     let path = dir.join("seed000_fig7a.svg");
     std::fs::write(&path, svg)
+        .map_err(|e| super::args::bad("--out", format!("cannot write {}: {e}", path.display())))?;
+    Ok(path)
+}
+
+/// Seed 000 Fig. 7(c): the font 'H', the proven stroke outline of the nonic
+/// with the elliptical pen at TOL 0.1 (cubic LN-pair sides, cubic caps).
+fn write_font_h(dir: &std::path::Path) -> Result<PathBuf, CliError> {
+    use lncert::reproduce::seed001;
+    let fail = |e: String| super::args::bad("--out", format!("seed 000 Fig. 7(c): {e}"));
+    let (s, _) = seed001::font_h_stroke().map_err(fail)?;
+    let x = seed001::nonic().map_err(fail)?;
+    let d = super::stroke::path_data(&s).unwrap_or_else(|_| super::stroke::fallback_path(&s));
+    let path = dir.join("font-H.svg");
+    std::fs::write(&path, super::stroke::svg(&s, &x, &d))
         .map_err(|e| super::args::bad("--out", format!("cannot write {}: {e}", path.display())))?;
     Ok(path)
 }

@@ -168,7 +168,8 @@ pub fn path_data(s: &Stroke) -> Result<String, CliError> {
     Ok(d.trim_end().to_string())
 }
 
-fn svg(s: &Stroke, curve: &[lncert::curve::Bezier<Rational>], path: &str) -> String {
+/// The picture: the filled outline (path data `path`) over the skeleton.
+pub fn svg(s: &Stroke, curve: &[lncert::curve::Bezier<Rational>], path: &str) -> String {
     let mut lo = (f64::INFINITY, f64::INFINITY);
     let mut hi = (f64::NEG_INFINITY, f64::NEG_INFINITY);
     for c in &s.contours {
@@ -417,7 +418,8 @@ fn pen_json(s: &Stroke, given: &str) -> serde_json::Value {
     }
 }
 
-fn fallback_path(s: &Stroke) -> String {
+/// Path data drawing higher-degree pieces by 16 chords each (pictures only).
+pub fn fallback_path(s: &Stroke) -> String {
     let mut d = String::new();
     for c in &s.contours {
         let p0 = c.pieces[0].start();

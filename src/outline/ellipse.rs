@@ -379,8 +379,7 @@ fn cap_k(
             b.points().iter().map(|p| c.add(&m_apply(m, p))).collect(),
         ));
     }
-    let e = Interval::try_from((eps, eps)).ok()?
-        + Interval::try_from((delta, delta)).ok()?;
+    let e = Interval::try_from((eps, eps)).ok()? + Interval::try_from((delta, delta)).ok()?;
     let error = (Interval::try_from((norm, norm)).ok()? * e).sup();
     Some(EllipseCap {
         pieces,

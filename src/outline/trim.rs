@@ -1,5 +1,11 @@
 //! Proven stroke outlines for a circular pen: the boundary of the swept region
-//! `S = x ⊕ disk(r)` as closed contours of exact Bézier pieces and exact arcs.
+//! `S = x ⊕ disk(r)` as closed contours of exact Bézier pieces and exact arcs —
+//! and for an elliptical pen `E` ([`StrokeOptions::with_pen`],
+//! [`PenShape::Ellipse`]): `S = x ⊕ E`, the sides the convolution curves
+//! `x ∗ e_∓` ([`crate::approx::convolve`], certified within `tol/8`), round caps
+//! half ellipses of proven cubics ([`super::ellipse::half_ellipse_cap`]), and
+//! the kept/removed tests below with the pen's exact quadratic form
+//! ([`super::ellipse::Form`]; see `proofs/trimming.md`, "Elliptical pens").
 //!
 //! # Construction
 //!
@@ -1754,7 +1760,8 @@ fn pinched_loops(pieces: &[&Piece], lambda: &Rational) -> Vec<usize> {
             if end == &x {
                 break true;
             }
-            let next = (0..n).find(|&k| !dropped[k] && !chain.contains(&k) && pieces[k].start() == end);
+            let next =
+                (0..n).find(|&k| !dropped[k] && !chain.contains(&k) && pieces[k].start() == end);
             match next {
                 Some(k) if chain.len() < 64 => {
                     chain.push(k);
