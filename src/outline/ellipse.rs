@@ -295,7 +295,8 @@ pub fn half_ellipse_cap(
     let wi = w0.map(interval_from_rational);
     let (dx, dy) = (wi.x - vi.x / len, wi.y - vi.y / len);
     let delta = (dx * dx + dy * dy).sqrt().sup();
-    if !(delta < 1e-6) {
+    // NaN or too far: no cap
+    if delta.is_nan() || delta >= 1e-6 {
         return None;
     }
     // the sense: the half circle from w0 that holds Mᵀout

@@ -97,6 +97,7 @@ pub struct StrokeOptions {
 
 /// The pen of a stroke.
 #[derive(Clone, Debug, PartialEq)]
+#[allow(clippy::large_enum_variant)]
 pub enum PenShape {
     /// A disk of radius `r > 0` (exact).
     Circle(Rational),
