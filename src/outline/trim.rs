@@ -1730,6 +1730,7 @@ fn pinched_loops(pieces: &[&Piece], lambda: &Rational) -> Vec<usize> {
     let l2 = lambda * lambda;
     let n = pieces.len();
     let mut dropped = vec![false; n];
+    let mut loops: Vec<(V2<Rational>, Vec<usize>)> = Vec::new();
     let near = |p: &Piece, x: &V2<Rational>| {
         Part::initial(p).is_some_and(|parts| {
             parts.iter().all(|part| {
@@ -1772,8 +1773,21 @@ fn pinched_loops(pieces: &[&Piece], lambda: &Rational) -> Vec<usize> {
             }
         };
         if closed {
-            for k in chain {
+            for &k in &chain {
                 dropped[k] = true;
+            }
+            loops.push((x, chain));
+        }
+    }
+    // the argument of (b) needs X in the output: a loop whose pinch point is
+    // no longer an end of a live piece is restored (restoring only adds
+    // pieces, so one pass suffices)
+    for (x, chain) in &loops {
+        let witnessed =
+            (0..n).any(|k| !dropped[k] && (pieces[k].start() == x || pieces[k].end() == x));
+        if !witnessed {
+            for &k in chain {
+                dropped[k] = false;
             }
         }
     }
