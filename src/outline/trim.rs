@@ -1647,7 +1647,7 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
         fail(
             &mut notes,
             format!(
-                "{} kept pieces forming pinched loops within 3·tol/4 of their pinch point dropped",
+                "{} kept pieces forming pinched loops or spurs within 3·tol/4 of an output point dropped",
                 dropped.len()
             ),
         );
@@ -1725,7 +1725,11 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
 /// Indices of pieces forming *pinched loops*: a chain of pieces
 /// `p_i, …, p_j` (following exact end = start) that starts and ends at one
 /// exact point `X` which is also the end or start of a piece outside the
-/// chain, with every hull point strictly within `lambda` of `X`.
+/// chain, with every hull point strictly within `lambda` of `X` — and of
+/// *spurs*: a piece with a dangling end (no live piece continues it) whose
+/// hull is within `lambda` of its other end `Y`, an end of another live piece.
+/// Finally every dropped loop or spur's point must still end a live piece
+/// (else it is restored).
 fn pinched_loops(pieces: &[&Piece], lambda: &Rational) -> Vec<usize> {
     let l2 = lambda * lambda;
     let n = pieces.len();
@@ -1779,16 +1783,69 @@ fn pinched_loops(pieces: &[&Piece], lambda: &Rational) -> Vec<usize> {
             loops.push((x, chain));
         }
     }
-    // the argument of (b) needs X in the output: a loop whose pinch point is
-    // no longer an end of a live piece is restored (restoring only adds
-    // pieces, so one pass suffices)
-    for (x, chain) in &loops {
-        let witnessed =
-            (0..n).any(|k| !dropped[k] && (pieces[k].start() == x || pieces[k].end() == x));
-        if !witnessed {
-            for &k in chain {
-                dropped[k] = false;
+    // spurs: a piece one of whose ends no other live piece continues, its
+    // hull within `lambda` of its other end `Y` (which another piece ends or
+    // starts at)
+    loop {
+        let mut changed = false;
+        for k in 0..n {
+            if dropped[k] {
+                continue;
             }
+            let (a, b) = (pieces[k].start(), pieces[k].end());
+            let live_end = |x: &V2<Rational>, starts: bool| {
+                (0..n).any(|j| {
+                    j != k
+                        && !dropped[j]
+                        && if starts {
+                            pieces[j].start() == x
+                        } else {
+                            pieces[j].end() == x
+                        }
+                })
+            };
+            let touches = |x: &V2<Rational>| {
+                (0..n).any(|j| {
+                    j != k && !dropped[j] && (pieces[j].start() == x || pieces[j].end() == x)
+                })
+            };
+            let y = if !live_end(b, true) && touches(a) {
+                a.clone()
+            } else if !live_end(a, false) && touches(b) {
+                b.clone()
+            } else {
+                continue;
+            };
+            if near(pieces[k], &y) {
+                dropped[k] = true;
+                loops.push((y, vec![k]));
+                changed = true;
+            }
+        }
+        if !changed {
+            break;
+        }
+    }
+    // the argument of (b) needs X in the output: a loop or spur whose point
+    // is no longer an end of a live piece is restored (restoring only adds
+    // pieces: repeat until nothing changes)
+    loop {
+        let mut changed = false;
+        for (x, chain) in &loops {
+            if chain.iter().all(|&k| !dropped[k]) {
+                continue;
+            }
+            let witnessed =
+                (0..n).any(|k| !dropped[k] && (pieces[k].start() == x || pieces[k].end() == x));
+            if !witnessed {
+                for &k in chain {
+                    dropped[k] = false;
+                }
+                changed = true;
+            }
+        }
+        if !changed {
+            break;
         }
     }
     (0..n).filter(|&k| dropped[k]).collect()
