@@ -754,3 +754,25 @@ fn ellipse_pen_rejects_g0_corners_and_cli_bad_pens() {
     assert_eq!(doc["verdict"], "proven");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn ellipse_pen_font_h_at_tol_0_01() {
+    let x = lncert::reproduce::seed001::nonic().unwrap();
+    let pen = lncert::reproduce::seed001::pen(1e-6).unwrap();
+    let tol = 0.01;
+    let mut o = StrokeOptions::with_pen(PenShape::Ellipse(pen.clone()), tol);
+    o.method = lncert::approx::OffsetMethod::LnPair;
+    let s = stroke(&x, &o).unwrap();
+    eprintln!(
+        "font H at 0.01: {} raw, {} crossings, {} pieces, {} contours; {:?}",
+        s.raw_pieces,
+        s.crossings.len(),
+        s.pieces(),
+        s.contours.len(),
+        s.notes
+    );
+    assert!(s.proven(), "{:?} {:?} {:?} {:?}", s.a, s.b, s.c, s.notes);
+    check_closed_simple(&s);
+    assert_eq!(s.contours.len(), 3);
+    ellipse_sampled_check(&x, &s, &pen, tol, 0.004, 16000);
+}
