@@ -371,3 +371,408 @@ fn cli_stroke_json_path_and_exit_codes() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+// ---------------------------------------------------------------------------
+// elliptical pens
+
+use lncert::approx::conv::{Angle, Pen};
+use lncert::outline::ellipse::{half_ellipse_cap, Form};
+use lncert::outline::trim::PenShape;
+
+/// `Q⁻¹` of the pen, floats (for the independent checks).
+fn pen_inverse(pen: &Pen) -> [f64; 3] {
+    let [a, b, c] = pen.q_f64();
+    let det = a * c - b * b;
+    [c / det, -b / det, a / det]
+}
+
+/// The pen gauge `√(zᵀQ⁻¹z)` of `p − x(t)` minimised over `t` (dense
+/// sampling and golden-section refinement): `≤ 1` exactly on `S = x ⊕ E`.
+fn gauge_to_curve(curve: &[Bezier<f64>], qi: [f64; 3], p: (f64, f64)) -> f64 {
+    let mut best = f64::INFINITY;
+    for b in curve {
+        let g = |t: f64| {
+            let v = b.eval_fast(t);
+            let (x, y) = (p.0 - v.x, p.1 - v.y);
+            qi[0] * x * x + 2.0 * qi[1] * x * y + qi[2] * y * y
+        };
+        let n = 1500;
+        let (mut bt, mut bd) = (0.0, f64::INFINITY);
+        for k in 0..=n {
+            let t = k as f64 / n as f64;
+            if g(t) < bd {
+                bd = g(t);
+                bt = t;
+            }
+        }
+        let (mut lo, mut hi) = (
+            (bt - 1.0 / n as f64).max(0.0),
+            (bt + 1.0 / n as f64).min(1.0),
+        );
+        for _ in 0..60 {
+            let m1 = lo + (hi - lo) * 0.382;
+            let m2 = lo + (hi - lo) * 0.618;
+            if g(m1) < g(m2) {
+                hi = m2;
+            } else {
+                lo = m1;
+            }
+        }
+        best = best.min(bd).min(g(0.5 * (lo + hi)));
+    }
+    best.sqrt()
+}
+
+/// An independent polygonal sampling of `∂S`, `S = x ⊕ E`: every translate
+/// `x(t) + M(cos φ, sin φ)` not strictly inside `S` (brute force, floats).
+fn ellipse_boundary_points(curve: &[Bezier<Rational>], pen: &Pen, nt: usize) -> Vec<(f64, f64)> {
+    let cf: Vec<Bezier<f64>> = curve.iter().map(|b| b.map(Scalar::approx)).collect();
+    let m = pen.m.clone().map(|r| r.map(|v| v.approx()));
+    let [q11, q12, q22] = pen.q_f64();
+    let qi = pen_inverse(pen);
+    let mut cand = Vec::new();
+    // the support points x(t) ± Q n/√(nᵀQn) (n the left normal)
+    for b in &cf {
+        let h = b.hodograph();
+        for k in 0..=nt {
+            let t = k as f64 / nt as f64;
+            let c = b.eval_fast(t);
+            let d = h.eval_fast(t);
+            let n = (-d.y, d.x);
+            let qn = (q11 * n.0 + q12 * n.1, q12 * n.0 + q22 * n.1);
+            let l = (n.0 * qn.0 + n.1 * qn.1).sqrt();
+            for s in [1.0, -1.0] {
+                cand.push((c.x + s * qn.0 / l, c.y + s * qn.1 / l));
+            }
+        }
+    }
+    // the whole pen about each end (the caps are among them)
+    for (b, e) in [(&cf[0], 0.0), (&cf[cf.len() - 1], 1.0)] {
+        let c = b.eval_fast(e);
+        for j in 0..400 {
+            let f = j as f64 / 400.0 * 2.0 * std::f64::consts::PI;
+            cand.push((
+                c.x + m[0][0] * f.cos() + m[0][1] * f.sin(),
+                c.y + m[1][0] * f.cos() + m[1][1] * f.sin(),
+            ));
+        }
+    }
+    cand.into_iter()
+        .filter(|p| gauge_to_curve(&cf, qi, *p) >= 1.0 - 1e-9)
+        .collect()
+}
+
+/// Claims (a) and (b) checked by sampling for an elliptical pen: each output
+/// point's gauge is within TOL of the pen boundary (a point at Euclidean
+/// distance δ from `∂S` has gauge within `δ / b` of 1), and each brute-force
+/// boundary point is within TOL (+ sampling slack) of the output.
+fn ellipse_sampled_check(
+    curve: &[Bezier<Rational>],
+    s: &Stroke,
+    pen: &Pen,
+    tol: f64,
+    slack: f64,
+    nt: usize,
+) {
+    let cf: Vec<Bezier<f64>> = curve.iter().map(|b| b.map(Scalar::approx)).collect();
+    let qi = pen_inverse(pen);
+    let [a, b, c] = pen.q_f64();
+    let minor = ((a + c) / 2.0 - (((a - c) / 2.0).powi(2) + b * b).sqrt()).sqrt();
+    let boundary = ellipse_boundary_points(curve, pen, nt);
+    assert!(boundary.len() > 100);
+    let out = output_points(s, 40);
+    for p in &out {
+        let g = gauge_to_curve(&cf, qi, *p);
+        assert!(
+            (g - 1.0).abs() <= tol / minor + 1e-9,
+            "output point {p:?} has gauge {g}"
+        );
+        // and directly: within TOL of the sampled boundary
+        let d = dist_to_points(&boundary, *p);
+        assert!(d <= tol + slack, "output point {p:?} is {d} from ∂S");
+    }
+    let dense = output_points(s, 200);
+    for q in &boundary {
+        let d = dist_to_points(&dense, *q);
+        assert!(
+            d <= tol + slack,
+            "boundary point {q:?} is {d} from the output"
+        );
+    }
+}
+
+fn ellipse_pen(a: &str, b: &str, theta: &str) -> Pen {
+    Pen::ellipse(&q(a), &q(b), &Angle::parse(theta).unwrap()).unwrap()
+}
+
+#[test]
+fn ellipse_pen_test_cubic_is_proven_and_matches_brute_force() {
+    let x = test_cubic();
+    let pen = ellipse_pen("0.4", "0.2", "pi/6");
+    let tol = 1e-2;
+    let s = stroke(
+        &x,
+        &StrokeOptions::with_pen(PenShape::Ellipse(pen.clone()), tol),
+    )
+    .unwrap();
+    assert!(s.proven(), "{:?} {:?} {:?} {:?}", s.a, s.b, s.c, s.notes);
+    check_closed_simple(&s);
+    assert_eq!(s.contours.len(), 1);
+    assert_eq!(s.contours[0].orientation, Orientation::CounterClockwise);
+    assert!(s.a.bound <= tol && s.b.bound <= tol);
+    // the pen used is the exact rational one, and it is reported
+    assert_eq!(s.pen.as_ref(), Some(&pen));
+    assert_eq!(s.caps.len(), 2);
+    for c in &s.caps {
+        assert!(c.error <= tol / 8.0, "{c:?}");
+    }
+    // no arcs: the caps are cubics
+    assert!(s.contours[0]
+        .pieces
+        .iter()
+        .all(|p| matches!(p, Piece::Bezier(_))));
+    ellipse_sampled_check(&x, &s, &pen, tol, 6e-3, 400);
+}
+
+#[test]
+fn ellipse_outside_test_agrees_with_sampling() {
+    // a point proven outside S is outside by sampling, and points inside are
+    // never proven outside
+    let x = test_cubic();
+    let pen = ellipse_pen("0.4", "0.2", "pi/6");
+    let form = Form::ellipse(&pen).unwrap();
+    let cf: Vec<Bezier<f64>> = x.iter().map(|b| b.map(Scalar::approx)).collect();
+    let qi = pen_inverse(&pen);
+    let (mut proven, mut inside) = (0, 0);
+    for i in 0..30 {
+        for j in 0..30 {
+            let p = (-1.5 + 3.0 * i as f64 / 29.0, -2.5 + 4.0 * j as f64 / 29.0);
+            let w = lncert::curve::V2::new(
+                lncert::scalar::rational_from_f64(p.0).unwrap(),
+                lncert::scalar::rational_from_f64(p.1).unwrap(),
+            );
+            let g = gauge_to_curve(&cf, qi, p);
+            let out = lncert::outline::ellipse::outside_of(&x, &w, &form);
+            if out {
+                proven += 1;
+                assert!(g > 1.0 - 1e-9, "{p:?} proven outside, gauge {g}");
+            }
+            if g < 0.999 {
+                inside += 1;
+                assert!(!out, "{p:?} inside (gauge {g}) but proven outside");
+            }
+            if g > 1.01 {
+                assert!(out, "{p:?} clearly outside (gauge {g}) but not proven");
+            }
+        }
+    }
+    assert!(proven > 100 && inside > 50, "{proven} {inside}");
+}
+
+#[test]
+fn ellipse_cap_error_is_certified_and_within_budget() {
+    let pen = ellipse_pen("0.7", "0.3", "pi/6");
+    let c = lncert::curve::V2::new(q("1"), q("2"));
+    for budget in [1e-1 / 8.0, 1e-3, 1e-5] {
+        let cap = half_ellipse_cap(
+            &c,
+            &pen,
+            &lncert::curve::V2::new(q("0"), q("-1")),
+            &lncert::curve::V2::new(q("1"), q("0")),
+            budget,
+        )
+        .unwrap();
+        assert!(cap.error <= budget, "{budget}: {}", cap.error);
+        // sampled distance of the cap's points to the ellipse ≤ the bound
+        // (nearest of 4000 angles, refined by golden section)
+        let m = pen.m.clone().map(|r| r.map(|v| v.approx()));
+        let ell = |f: f64| {
+            (
+                1.0 + m[0][0] * f.cos() + m[0][1] * f.sin(),
+                2.0 + m[1][0] * f.cos() + m[1][1] * f.sin(),
+            )
+        };
+        let dist = |p: (f64, f64)| {
+            let d = |f: f64| {
+                let e = ell(f);
+                ((e.0 - p.0).powi(2) + (e.1 - p.1).powi(2)).sqrt()
+            };
+            let n = 4000;
+            let step = 2.0 * std::f64::consts::PI / n as f64;
+            let (mut bf, mut bd) = (0.0, f64::INFINITY);
+            for k in 0..n {
+                let f = k as f64 * step;
+                if d(f) < bd {
+                    bd = d(f);
+                    bf = f;
+                }
+            }
+            let (mut lo, mut hi) = (bf - step, bf + step);
+            for _ in 0..80 {
+                let m1 = lo + (hi - lo) * 0.382;
+                let m2 = lo + (hi - lo) * 0.618;
+                if d(m1) < d(m2) {
+                    hi = m2;
+                } else {
+                    lo = m1;
+                }
+            }
+            bd.min(d(0.5 * (lo + hi)))
+        };
+        let mut worst: f64 = 0.0;
+        for b in &cap.pieces {
+            for p in sample_piece(&Piece::Bezier(b.clone()), 50) {
+                worst = worst.max(dist(p));
+            }
+        }
+        assert!(
+            worst <= cap.error + 1e-12,
+            "sampled {worst} > bound {}",
+            cap.error
+        );
+        // the bound is not vacuous: within a factor 4 of the sampled error
+        assert!(cap.error <= 4.0 * worst + 1e-9, "{} vs {worst}", cap.error);
+        // it runs from c + p(−n) to c + p(n) (n = (0, 1)) through c + p(T),
+        // T = (1, 0): the joint of its middle cubics is on the +x side
+        let mid = cap.pieces[cap.pieces.len() / 2].points()[0].map(Scalar::approx);
+        let end = cap.pieces.last().unwrap().points()[3].map(Scalar::approx);
+        let start = cap.pieces[0].points()[0].map(Scalar::approx);
+        let side = |p: &lncert::curve::V2<f64>| {
+            (end.x - start.x) * (p.y - start.y) - (end.y - start.y) * (p.x - start.x)
+        };
+        let probe = lncert::curve::V2::new(2.0, 2.0);
+        assert!(side(&mid) * side(&probe) > 0.0, "{mid:?}");
+        // consecutive cubics share exact end points
+        for w in cap.pieces.windows(2) {
+            assert_eq!(w[0].points()[3], w[1].points()[0]);
+        }
+    }
+}
+
+#[test]
+fn ellipse_pen_font_h_at_tol_0_1() {
+    // seed 000 Fig. 7(c): the nonic ⊕ ellipse (semi-axes 0.7, 0.3, θ = π/6)
+    let x = lncert::reproduce::seed001::nonic().unwrap();
+    let pen = lncert::reproduce::seed001::pen(1e-6).unwrap();
+    let tol = 0.1;
+    let mut o = StrokeOptions::with_pen(PenShape::Ellipse(pen.clone()), tol);
+    o.method = lncert::approx::OffsetMethod::LnPair;
+    let t0 = std::time::Instant::now();
+    let s = stroke(&x, &o).unwrap();
+    eprintln!(
+        "font H: {} raw, {} crossings, {} pieces, {} contours, {:.2} s, caps {:?}; a {:?} b {:?} c {:?}",
+        s.raw_pieces,
+        s.crossings.len(),
+        s.pieces(),
+        s.contours.len(),
+        t0.elapsed().as_secs_f64(),
+        s.caps,
+        s.a,
+        s.b,
+        s.c
+    );
+    assert_eq!(s.caps.len(), 2);
+    for c in &s.caps {
+        assert!(c.error <= tol / 8.0, "{c:?}");
+    }
+    // proven (measured: 3 closed contours, 57 pieces, 11 crossings) — and
+    // checked against an independent brute-force sampling of ∂S
+    assert!(s.proven(), "{:?} {:?} {:?} {:?}", s.a, s.b, s.c, s.notes);
+    assert!(s.a.bound <= tol && s.b.bound <= tol);
+    check_closed_simple(&s);
+    assert_eq!(s.contours.len(), 3);
+    let ccw = s
+        .contours
+        .iter()
+        .filter(|c| c.orientation == Orientation::CounterClockwise)
+        .count();
+    assert_eq!(ccw, 1, "one outer contour, the rest holes");
+    ellipse_sampled_check(&x, &s, &pen, tol, 0.02, 3000);
+}
+
+#[test]
+fn ellipse_pen_rejects_g0_corners_and_cli_bad_pens() {
+    let x = parse_curve("M 0 0 L 1 0 L 1 1").unwrap();
+    let pen = ellipse_pen("0.4", "0.2", "0");
+    let e = stroke(&x, &StrokeOptions::with_pen(PenShape::Ellipse(pen), 1e-2)).unwrap_err();
+    assert_eq!(e.field, "curve");
+    let dir = std::env::temp_dir().join(format!("lncert-stroke-ell-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let curve = dir.join("seg.txt");
+    std::fs::write(&curve, "M 0 0 C 1 1 2 1 3 0").unwrap();
+    let bin = env!("CARGO_BIN_EXE_lncert");
+    for (pen, needle) in [
+        ("ellipse:0,1", "--pen"),
+        ("ellipse:a,b", "semi-axis A"),
+        ("ellipse:1", "ellipse:A,B"),
+        ("ellipse:1,2", "pen.a"),
+        ("ellipse:1,0.5,nonsense", "angle"),
+        ("ellipse:", "--pen"),
+    ] {
+        let out = std::process::Command::new(bin)
+            .args([
+                "stroke",
+                curve.to_str().unwrap(),
+                "--pen",
+                pen,
+                "--tol",
+                "0.01",
+            ])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2), "{pen}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            err.contains("--pen") && err.contains(needle),
+            "{pen}: {err}"
+        );
+    }
+    // a good pen: JSON with the exact pen used and the caps
+    let out = std::process::Command::new(bin)
+        .args([
+            "stroke",
+            curve.to_str().unwrap(),
+            "--pen",
+            "ellipse:0.3,0.1,pi/6",
+            "--tol",
+            "0.01",
+            "--json",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+    let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(doc["pen"]["kind"], "ellipse");
+    assert_eq!(doc["pen"]["matrix"].as_array().unwrap().len(), 2);
+    assert_eq!(doc["caps"].as_array().unwrap().len(), 2);
+    assert_eq!(doc["outline"]["contours"][0]["closed"], true);
+    assert_eq!(doc["verdict"], "proven");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn ellipse_pen_font_h_at_tol_0_01() {
+    let x = lncert::reproduce::seed001::nonic().unwrap();
+    let pen = lncert::reproduce::seed001::pen(1e-6).unwrap();
+    let tol = 0.01;
+    let mut o = StrokeOptions::with_pen(PenShape::Ellipse(pen.clone()), tol);
+    o.method = lncert::approx::OffsetMethod::LnPair;
+    let s = stroke(&x, &o).unwrap();
+    eprintln!(
+        "font H at 0.01: {} raw, {} crossings, {} pieces, {} contours; {:?}",
+        s.raw_pieces,
+        s.crossings.len(),
+        s.pieces(),
+        s.contours.len(),
+        s.notes
+    );
+    assert!(s.proven(), "{:?} {:?} {:?} {:?}", s.a, s.b, s.c, s.notes);
+    check_closed_simple(&s);
+    assert_eq!(s.contours.len(), 3);
+    ellipse_sampled_check(&x, &s, &pen, tol, 0.004, 16000);
+}

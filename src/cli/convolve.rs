@@ -122,16 +122,7 @@ fn pen_of(a: &ConvolveArgs, tol: f64) -> Result<Pen, CliError> {
                 Some(t) => Angle::parse(t).map_err(|e| shape_err("--angle", e))?,
                 None => Angle::Radians(Rational::from_integer(0.into())),
             };
-            let (af, bf) = (ab[0].approx(), ab[1].approx());
-            let reach = af + af * af / bf;
-            let max_angle = (tol * 1e-3 / reach).clamp(1e-12, 1e-6);
-            let max_angle = if max_angle.is_finite() {
-                max_angle
-            } else {
-                1e-12
-            };
-            Pen::ellipse_within(&ab[0], &ab[1], &angle, max_angle)
-                .map_err(|e| shape_err("--ellipse", e))
+            ellipse_pen("--ellipse", &ab[0], &ab[1], &angle, tol)
         }
         (None, Some(m)) => {
             let v = numbers("--pen-matrix", m, 4)?;
@@ -143,6 +134,52 @@ fn pen_of(a: &ConvolveArgs, tol: f64) -> Result<Pen, CliError> {
             "give the pen: --ellipse A,B [--angle θ] or --pen-matrix M11,M12,M21,M22",
         )),
     }
+}
+
+/// The pen with semi-axes `A ≥ B > 0` and rotation `angle`, its rotation
+/// represented within `min(1e-6, tol/1000 / (A + A²/B))` radians; errors name
+/// `flag`. Shared by `lncert convolve --ellipse` and `lncert stroke --pen ellipse:`.
+pub fn ellipse_pen(
+    flag: &str,
+    a: &Rational,
+    b: &Rational,
+    angle: &Angle,
+    tol: f64,
+) -> Result<Pen, CliError> {
+    let (af, bf) = (a.approx(), b.approx());
+    let reach = af + af * af / bf;
+    let max_angle = (tol * 1e-3 / reach).clamp(1e-12, 1e-6);
+    let max_angle = if max_angle.is_finite() {
+        max_angle
+    } else {
+        1e-12
+    };
+    Pen::ellipse_within(a, b, angle, max_angle)
+        .map_err(|e| bad(flag, format!("{}: {}", e.field, e.reason)))
+}
+
+/// `A,B` or `A,B,θ` (the angle as `lncert convolve --angle` reads it) for
+/// `lncert stroke --pen ellipse:…`; errors name `flag` and the field.
+pub fn parse_ellipse_spec(flag: &str, spec: &str, tol: f64) -> Result<Pen, CliError> {
+    let parts: Vec<&str> = spec.split(',').map(str::trim).collect();
+    if parts.len() != 2 && parts.len() != 3 {
+        return Err(bad(
+            flag,
+            format!("expected ellipse:A,B or ellipse:A,B,θ (semi-axes A ≥ B > 0), got {spec:?}"),
+        ));
+    }
+    let a = number(&format!("{flag} (semi-axis A)"), parts[0])?;
+    let b = number(&format!("{flag} (semi-axis B)"), parts[1])?;
+    let angle = match parts.get(2) {
+        Some(t) => Angle::parse(t).map_err(|e| {
+            bad(
+                &format!("{flag} (angle θ)"),
+                format!("{}: {}", e.field, e.reason),
+            )
+        })?,
+        None => Angle::Radians(Rational::from_integer(0.into())),
+    };
+    ellipse_pen(flag, &a, &b, &angle, tol)
 }
 
 fn conv_err(e: OffsetError) -> CliError {

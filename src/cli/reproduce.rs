@@ -3,7 +3,8 @@
 //!
 //! Exit code 0 if no claim is `undecided`, else 1. `--out DIR` also writes one
 //! SVG picture per Fig. 5 case of seed 000 (see [`super::svg`]), seed 001
-//! Fig. 2(a), seed 000 Fig. 7(a) and one per proven stroke outline (`stroke-….svg`).
+//! Fig. 2(a), seed 000 Fig. 7(a), the proven font 'H' of seed 000 Fig. 7(c)
+//! (`font-H.svg`) and one per proven stroke outline (`stroke-….svg`).
 
 use super::{print_out, svg, CliError};
 use lncert::reproduce::{run_all_with_strokes, strokes::Run, Claim, Verdict};
@@ -40,6 +41,7 @@ pub fn run(a: &ReproduceArgs) -> Result<i32, CliError> {
             let mut w = svg::write_fig5(dir)?;
             w.push(write_seed001_fig2a(dir)?);
             w.push(write_seed000_fig7a(dir)?);
+            w.push(write_font_h(dir)?);
             w.extend(write_strokes(dir, &strokes)?);
             w
         }
@@ -164,4 +166,18 @@ fn write_strokes(dir: &std::path::Path, runs: &[Run]) -> Result<Vec<PathBuf>, Cl
         out.push(path);
     }
     Ok(out)
+}
+
+/// Seed 000 Fig. 7(c): the font 'H', the proven stroke outline of the nonic
+/// with the elliptical pen at TOL 0.1 (cubic LN-pair sides, cubic caps).
+fn write_font_h(dir: &std::path::Path) -> Result<PathBuf, CliError> {
+    use lncert::reproduce::seed001;
+    let fail = |e: String| super::args::bad("--out", format!("seed 000 Fig. 7(c): {e}"));
+    let (s, _) = seed001::font_h_stroke().map_err(fail)?;
+    let x = seed001::nonic().map_err(fail)?;
+    let d = super::stroke::path_data(&s).unwrap_or_else(|_| super::stroke::fallback_path(&s));
+    let path = dir.join("font-H.svg");
+    std::fs::write(&path, super::stroke::svg(&s, &x, &d))
+        .map_err(|e| super::args::bad("--out", format!("cannot write {}: {e}", path.display())))?;
+    Ok(path)
 }

@@ -1,17 +1,30 @@
-//! `lncert stroke CURVE --pen circle:R --tol T [--cap round|butt] [--svg OUT]
-//! [--path-out OUT] [--json]`: the proven outline of the region a circular pen
-//! of radius `R` sweeps along the curve ([`lncert::outline::trim::stroke`]):
-//! closed contours of exact Bézier pieces and exact arcs, the crossings where
-//! the offsets were cut, and claims (a) output ⊂ TOL-neighbourhood of the
-//! exact boundary, (b) exact boundary ⊂ TOL-neighbourhood of the output,
-//! (c) closed, simple, oriented (see `proofs/trimming.md`).
+//! `lncert stroke CURVE --pen circle:R|ellipse:A,B[,θ] --tol T [--method g2|ln-pair]
+//! [--cap round|butt] [--output native|cubic|quadratic] [--svg OUT]
+//! [--path-out OUT] [--json]`: the proven outline of the region a pen sweeps
+//! along the curve ([`lncert::outline::trim::stroke`]): closed contours of
+//! exact Bézier pieces and exact arcs, the crossings where the sides were cut,
+//! and claims (a) output ⊂ TOL-neighbourhood of the exact boundary, (b) exact
+//! boundary ⊂ TOL-neighbourhood of the output, (c) closed, simple, oriented
+//! (see `proofs/trimming.md`).
+//!
+//! * `circle:R`: a disk of radius `R > 0` (exact); the sides are the offsets
+//!   at `∓R`, the round caps exact arcs.
+//! * `ellipse:A,B[,θ]`: the filled ellipse with semi-axes `A ≥ B > 0` rotated
+//!   by `θ` (`pi/6`, `30deg`, radians; default 0), parsed as `lncert convolve
+//!   --ellipse A,B --angle θ` does. An irrational rotation is represented by an
+//!   exactly rational one within a proven angle (printed as the pen's margin):
+//!   the outline and its claims are those of **that exact pen** (its matrix is
+//!   in the JSON). The sides are the convolution curves `x ∗ e_∓`
+//!   ([`lncert::approx::convolve`], each certified within TOL/8), the round
+//!   caps half ellipses made of proven cubics (error ≤ TOL/8, printed).
+//!   The curve must be G¹ (no join pieces for elliptical pens yet).
 //!
 //! Exit codes: 0 = all three claims proven, 3 = something undecided, 2 = bad
-//! input (`--pen ellipse:…` is not supported yet).
+//! input (naming the flag).
 
 use super::args::{bad, number, point_json, q};
 use super::{print_out, CliError};
-use lncert::outline::trim::{stroke, Cap, Claim, Piece, Stroke, StrokeOptions};
+use lncert::outline::trim::{stroke, Cap, Claim, PenShape, Piece, Stroke, StrokeOptions};
 use lncert::scalar::{interval_from_rational, Rational, Scalar};
 use lncert::shape::parse_curve;
 use serde_json::json;
@@ -23,7 +36,8 @@ use std::path::PathBuf;
 pub struct StrokeArgs {
     /// The curve: a curve file (JSON Bézier / B-spline, SVG path data).
     pub curve: PathBuf,
-    /// The pen: `circle:R` (`R > 0`, exact).
+    /// The pen: `circle:R` (`R > 0`, exact) or `ellipse:A,B[,θ]` (semi-axes
+    /// `A ≥ B > 0`, rotation `θ`: `pi/6`, `30deg` or radians).
     #[arg(long)]
     pub pen: String,
     /// The tolerance to prove for claims (a) and (b).
@@ -36,6 +50,10 @@ pub struct StrokeArgs {
     /// needed for `--path-out` when the native degree is above 3).
     #[arg(long, default_value = "native")]
     pub output: String,
+    /// The sides' construction: `g2` (degree n + 3, seeds 004 / 001) or
+    /// `ln-pair` (cubic LN pairs, seed 000).
+    #[arg(long, default_value = "g2")]
+    pub method: String,
     /// Write a picture: the filled outline over the skeleton.
     #[arg(long)]
     pub svg: Option<PathBuf>,
@@ -47,21 +65,22 @@ pub struct StrokeArgs {
     pub json: bool,
 }
 
-fn pen_radius(text: &str) -> Result<Rational, CliError> {
+fn pen_shape(text: &str, tol: f64) -> Result<PenShape, CliError> {
     if let Some(r) = text.strip_prefix("circle:") {
         let r = number("--pen", r)?;
         if r <= Rational::from_integer(0.into()) {
             return Err(bad("--pen", "the radius must be > 0"));
         }
-        return Ok(r);
+        return Ok(PenShape::Circle(r));
     }
-    if text.starts_with("ellipse:") {
-        return Err(bad(
-            "--pen",
-            "ellipse pens are not yet supported by `stroke` (use `lncert convolve`)",
-        ));
+    if let Some(spec) = text.strip_prefix("ellipse:") {
+        let pen = super::convolve::parse_ellipse_spec("--pen", spec, tol)?;
+        return Ok(PenShape::Ellipse(pen));
     }
-    Err(bad("--pen", format!("expected circle:R, got {text:?}")))
+    Err(bad(
+        "--pen",
+        format!("expected circle:R or ellipse:A,B[,θ], got {text:?}"),
+    ))
 }
 
 fn claim_json(c: &Claim) -> serde_json::Value {
@@ -149,7 +168,8 @@ pub fn path_data(s: &Stroke) -> Result<String, CliError> {
     Ok(d.trim_end().to_string())
 }
 
-fn svg(s: &Stroke, curve: &[lncert::curve::Bezier<Rational>], path: &str) -> String {
+/// The picture: the filled outline (path data `path`) over the skeleton.
+pub fn svg(s: &Stroke, curve: &[lncert::curve::Bezier<Rational>], path: &str) -> String {
     let mut lo = (f64::INFINITY, f64::INFINITY);
     let mut hi = (f64::NEG_INFINITY, f64::NEG_INFINITY);
     for c in &s.contours {
@@ -211,12 +231,22 @@ fn svg(s: &Stroke, curve: &[lncert::curve::Bezier<Rational>], path: &str) -> Str
 
 /// Runs `lncert stroke`.
 pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
-    let r = pen_radius(&a.pen)?;
     let tol_q = number("--tol", &a.tol)?;
     let tol = interval_from_rational(&tol_q).inf();
     if !(tol.is_finite() && tol > 0.0) {
         return Err(bad("--tol", "must be a positive number"));
     }
+    let pen = pen_shape(&a.pen, tol)?;
+    let method = match a.method.as_str() {
+        "g2" => lncert::approx::OffsetMethod::G2,
+        "ln-pair" => lncert::approx::OffsetMethod::LnPair,
+        m => {
+            return Err(bad(
+                "--method",
+                format!("expected g2 or ln-pair, got {m:?}"),
+            ))
+        }
+    };
     let cap = match a.cap.as_str() {
         "round" => Cap::Round,
         "butt" => Cap::Butt,
@@ -235,8 +265,9 @@ pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
     let text = std::fs::read_to_string(&a.curve)
         .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
     let curve = parse_curve(&text).map_err(|e| bad("CURVE", e))?;
-    let mut opts = StrokeOptions::new(r, tol);
+    let mut opts = StrokeOptions::with_pen(pen, tol);
     opts.cap = cap;
+    opts.method = method;
     opts.output = match a.output.as_str() {
         "native" => lncert::approx::Output::Native,
         "cubic" => lncert::approx::Output::Cubic,
@@ -252,7 +283,7 @@ pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
     let s = stroke(&curve, &opts).map_err(|e| {
         bad(
             match e.field.as_str() {
-                "radius" => "--pen",
+                "radius" | "pen" => "--pen",
                 "tol" => "--tol",
                 _ => "CURVE",
             },
@@ -294,6 +325,13 @@ pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
                 "claims": {"a": claim_json(&s.a), "b": claim_json(&s.b), "c": claim_json(&s.c)},
                 "notes": s.notes,
             },
+            "pen": pen_json(&s, &a.pen),
+            "caps": s.caps.iter().map(|c| json!({
+                "end": c.end,
+                "pieces": c.pieces,
+                "error": c.error,
+                "circle_error": c.circle_error,
+            })).collect::<Vec<_>>(),
             "raw_pieces": s.raw_pieces,
             "pieces": s.pieces(),
             "seconds": secs,
@@ -312,6 +350,32 @@ pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
             s.crossings.len(),
             secs
         );
+        if let Some(p) = &s.pen {
+            let _ = writeln!(
+                out,
+                "  pen used (exact): {}, M = [[{}, {}], [{}, {}]]{}",
+                p.description,
+                q(&p.m[0][0]),
+                q(&p.m[0][1]),
+                q(&p.m[1][0]),
+                q(&p.m[1][1]),
+                if p.margin > 0.0 {
+                    format!(
+                        " (rotation within {:.1e} rad of the one given; the claims are for this exact pen)",
+                        p.rotation_error
+                    )
+                } else {
+                    String::new()
+                }
+            );
+        }
+        for c in &s.caps {
+            let _ = writeln!(
+                out,
+                "  {} cap: {} cubics, certified within {:.3e} of the exact half ellipse",
+                c.end, c.pieces, c.error
+            );
+        }
         for (k, c) in s.contours.iter().enumerate() {
             let _ = writeln!(
                 out,
@@ -338,7 +402,24 @@ pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
     Ok(code)
 }
 
-fn fallback_path(s: &Stroke) -> String {
+/// The pen actually used: the circle's radius, or the exact ellipse matrix.
+fn pen_json(s: &Stroke, given: &str) -> serde_json::Value {
+    match &s.pen {
+        Some(p) => json!({
+            "given": given,
+            "kind": "ellipse",
+            "description": p.description,
+            "matrix": p.m.iter().map(|r| r.iter().map(q).collect::<Vec<_>>()).collect::<Vec<_>>(),
+            "rotation_error": p.rotation_error,
+            "margin": p.margin,
+            "note": "the outline and its claims are for this exact pen",
+        }),
+        None => json!({"given": given, "kind": "circle"}),
+    }
+}
+
+/// Path data drawing higher-degree pieces by 16 chords each (pictures only).
+pub fn fallback_path(s: &Stroke) -> String {
     let mut d = String::new();
     for c in &s.contours {
         let p0 = c.pieces[0].start();

@@ -4,5 +4,6 @@
 //! ([`circle`]), and proven stroke outlines for a circular pen ([`trim`]).
 
 pub mod circle;
+pub mod ellipse;
 pub mod intersect;
 pub mod trim;

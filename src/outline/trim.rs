@@ -1,5 +1,11 @@
 //! Proven stroke outlines for a circular pen: the boundary of the swept region
-//! `S = x ⊕ disk(r)` as closed contours of exact Bézier pieces and exact arcs.
+//! `S = x ⊕ disk(r)` as closed contours of exact Bézier pieces and exact arcs —
+//! and for an elliptical pen `E` ([`StrokeOptions::with_pen`],
+//! [`PenShape::Ellipse`]): `S = x ⊕ E`, the sides the convolution curves
+//! `x ∗ e_∓` ([`crate::approx::convolve`], certified within `tol/8`), round caps
+//! half ellipses of proven cubics ([`super::ellipse::half_ellipse_cap`]), and
+//! the kept/removed tests below with the pen's exact quadratic form
+//! ([`super::ellipse::Form`]; see `proofs/trimming.md`, "Elliptical pens").
 //!
 //! # Construction
 //!
@@ -48,9 +54,11 @@
 //!    crossing and no contact besides the joints of consecutive pieces.
 
 use super::circle::{arcs_meet, bezier_arc, snap, Arc};
+use super::ellipse::{half_ellipse_cap, pen_point_enclosure, Form};
 use super::intersect::{intersections, IntersectOptions};
+use crate::approx::conv::Pen;
 use crate::approx::prep::Junction;
-use crate::approx::{exact_bezier, offset, OffsetOptions, OffsetResult};
+use crate::approx::{convolve, exact_bezier, offset, OffsetMethod, OffsetOptions, OffsetResult};
 use crate::curve::{bernstein_product, Bezier, V2};
 use crate::scalar::{interval_from_rational, rational_from_f64, Interval, Rational, Scalar};
 use num_traits::{One, Signed, Zero};
@@ -79,6 +87,24 @@ pub struct StrokeOptions {
     /// The offset segments' form (default native: degree `n + 3`; `Cubic` /
     /// `Quadratic` for SVG-expressible output, see [`crate::approx::fit`]).
     pub output: crate::approx::Output,
+    /// The construction of the sides (default G², seeds 004 / 001; `LnPair`:
+    /// seed 000's cubic LN pairs).
+    pub method: OffsetMethod,
+    /// An elliptical pen: when set, the stroke is `x ⊕ E` for this exact pen
+    /// and `radius` is not used (see [`StrokeOptions::with_pen`]).
+    pub ellipse: Option<Pen>,
+}
+
+/// The pen of a stroke.
+#[derive(Clone, Debug, PartialEq)]
+#[allow(clippy::large_enum_variant)]
+pub enum PenShape {
+    /// A disk of radius `r > 0` (exact).
+    Circle(Rational),
+    /// A filled ellipse `E = M · disk(1)` with an exact rational matrix: the
+    /// stroke is that of **this** pen (a rotation given as an irrational angle
+    /// is represented by an exactly rational one, see [`Pen`]).
+    Ellipse(Pen),
 }
 
 impl StrokeOptions {
@@ -90,8 +116,62 @@ impl StrokeOptions {
             cap: Cap::Round,
             max_boxes_per_pair: 20_000,
             output: crate::approx::Output::Native,
+            method: OffsetMethod::G2,
+            ellipse: None,
         }
     }
+
+    /// Round caps and the default budgets for a circular or elliptical pen.
+    ///
+    /// # Examples
+    /// ```
+    /// use lncert::approx::conv::{Angle, Pen};
+    /// use lncert::outline::trim::{PenShape, StrokeOptions};
+    /// let q = |s: &str| lncert::parse_rational(s).unwrap();
+    /// let pen = Pen::ellipse(&q("0.7"), &q("0.3"), &Angle::parse("pi/6").unwrap()).unwrap();
+    /// let o = StrokeOptions::with_pen(PenShape::Ellipse(pen), 0.1);
+    /// assert!(matches!(o.pen(), PenShape::Ellipse(_)));
+    /// let c = StrokeOptions::with_pen(PenShape::Circle(q("1")), 0.1);
+    /// assert_eq!(c.pen(), PenShape::Circle(q("1")));
+    /// ```
+    pub fn with_pen(pen: PenShape, tol: f64) -> Self {
+        match pen {
+            PenShape::Circle(r) => Self::new(r, tol),
+            PenShape::Ellipse(p) => {
+                let mut o = Self::new(<Rational as One>::one(), tol);
+                o.ellipse = Some(p);
+                o
+            }
+        }
+    }
+
+    /// The pen these options stroke with.
+    pub fn pen(&self) -> PenShape {
+        match &self.ellipse {
+            Some(p) => PenShape::Ellipse(p.clone()),
+            None => PenShape::Circle(self.radius.clone()),
+        }
+    }
+
+    fn form(&self) -> Result<Form, StrokeError> {
+        match &self.ellipse {
+            Some(p) => Form::ellipse(p).ok_or_else(|| bad("pen", "the ellipse is degenerate")),
+            None => Ok(Form::circle(&self.radius)),
+        }
+    }
+}
+
+/// One proven half-ellipse cap of an elliptical pen.
+#[derive(Clone, Debug)]
+pub struct CapReport {
+    /// `"start"` or `"end"` of the curve.
+    pub end: &'static str,
+    /// Number of cubics.
+    pub pieces: usize,
+    /// Certified Hausdorff bound to the exact half ellipse (the pen used).
+    pub error: f64,
+    /// The pre-image cubics' proven radial deviation from the unit circle.
+    pub circle_error: f64,
 }
 
 /// Why a stroke could not be computed; names the field.
@@ -264,6 +344,10 @@ pub struct Stroke {
     /// What was left undecided on the way (raw regions, sub-pieces, offsets);
     /// informational: the claims are decided on the output itself.
     pub notes: Vec<String>,
+    /// The elliptical pen actually used (exact), when there is one.
+    pub pen: Option<Pen>,
+    /// The round caps of an elliptical pen (empty for a circle or butt caps).
+    pub caps: Vec<CapReport>,
 }
 
 impl Stroke {
@@ -554,7 +638,7 @@ fn check(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<bool, Strok
     if curve.is_empty() {
         return Err(bad("curve", "no pieces"));
     }
-    if !opts.radius.is_positive() {
+    if opts.ellipse.is_none() && !opts.radius.is_positive() {
         return Err(bad("radius", "must be > 0"));
     }
     if !(opts.tol.is_finite() && opts.tol > 0.0) {
@@ -574,21 +658,50 @@ fn check(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<bool, Strok
         }
     }
     let closed = curve.len() > 1 || curve[0].degree() > 1;
-    Ok(closed && curve.last().and_then(|b| b.points().last()) == curve[0].points().first())
+    let closed =
+        closed && curve.last().and_then(|b| b.points().last()) == curve[0].points().first();
+    if opts.ellipse.is_some() {
+        // the elliptical pen has no join pieces yet: the curve must be G¹
+        let n = curve.len();
+        let joints = if closed { n } else { n - 1 };
+        for i in 0..joints {
+            let (a, b) = (&curve[i], &curve[(i + 1) % n]);
+            let g1 = match (end_tangent(a, 1), end_tangent(b, 0)) {
+                (Some(u), Some(v)) => u.cross(&v).is_zero() && u.dot(&v).is_positive(),
+                _ => false,
+            };
+            if !g1 {
+                return Err(bad(
+                    "curve",
+                    format!("a G⁰ corner after piece {i}: the elliptical pen needs a G¹ curve (join pieces are not supported yet)"),
+                ));
+            }
+        }
+    }
+    Ok(closed)
 }
 
 /// The raw contours (before trimming).
+#[allow(clippy::type_complexity)]
 fn raw_contours(
     curve: &[Bezier<Rational>],
     opts: &StrokeOptions,
     closed: bool,
-) -> Result<(Vec<Vec<Raw>>, Vec<String>), StrokeError> {
+) -> Result<(Vec<Vec<Raw>>, Vec<String>, Vec<CapReport>), StrokeError> {
     let r = &opts.radius;
     let tol_off = opts.tol / 8.0;
     let run = |d: Rational| {
-        let mut o = OffsetOptions::new(d, tol_off);
+        let mut o = OffsetOptions::new(d.clone(), tol_off);
         o.output = opts.output;
-        offset(curve, &o).map_err(|e| bad("curve", e.to_string()))
+        o.method = opts.method;
+        match &opts.ellipse {
+            // the convolution sides x ∗ e_σ, σ = sign(d), certified for the exact pen
+            Some(pen) => {
+                let side = if d.is_negative() { -1 } else { 1 };
+                convolve(curve, pen, side, &o).map_err(|e| bad("curve", e.to_string()))
+            }
+            None => offset(curve, &o).map_err(|e| bad("curve", e.to_string())),
+        }
     };
     let (minus, plus) = rayon::join(|| run(-r.clone()), || run(r.clone()));
     let (minus, plus) = (minus?, plus?);
@@ -604,43 +717,132 @@ fn raw_contours(
     let a = chain_side(&minus, r, closed)?;
     let b = reverse_side(chain_side(&plus, r, closed)?);
     if closed {
-        return Ok((vec![a, b], notes));
+        return Ok((vec![a, b], notes, Vec::new()));
     }
     let (mut a, mut b) = (a, b);
     let x_end = curve.last().expect("nonempty");
     let (na, nb) = (a.len() - 1, b.len() - 1);
+    let mut caps = Vec::new();
     let end_cap = {
         let (a_last, b_first) = (&mut a[na].clone(), &mut b[0].clone());
-        let cap = cap_piece(x_end, 1, r, opts.cap, a_last, b_first)?;
+        let cap = match &opts.ellipse {
+            Some(pen) => ellipse_cap_piece(x_end, 1, pen, opts, a_last, b_first, &mut caps)?,
+            None => vec![cap_piece(x_end, 1, r, opts.cap, a_last, b_first)?],
+        };
         a[na] = a_last.clone();
         b[0] = b_first.clone();
         cap
     };
     let start_cap = {
         let (b_last, a_first) = (&mut b[nb].clone(), &mut a[0].clone());
-        let cap = cap_piece(&curve[0], 0, r, opts.cap, b_last, a_first)?;
+        let cap = match &opts.ellipse {
+            Some(pen) => ellipse_cap_piece(&curve[0], 0, pen, opts, b_last, a_first, &mut caps)?,
+            None => vec![cap_piece(&curve[0], 0, r, opts.cap, b_last, a_first)?],
+        };
         b[nb] = b_last.clone();
         a[0] = a_first.clone();
         cap
     };
     let mut all = a;
-    all.push(end_cap);
+    all.extend(end_cap);
     all.extend(b);
-    all.push(start_cap);
-    Ok((vec![all], notes))
+    all.extend(start_cap);
+    Ok((vec![all], notes, caps))
+}
+
+/// The cap of an elliptical pen at the end `e` (0: start, 1: end): the half
+/// ellipse as proven cubics ([`half_ellipse_cap`], within `tol/8`), the
+/// neighbouring sides' end control points replaced by its exact ends (the
+/// moves added to their bounds), or the butt chord.
+#[allow(clippy::too_many_arguments)]
+fn ellipse_cap_piece(
+    x: &Bezier<Rational>,
+    e: u8,
+    pen: &Pen,
+    opts: &StrokeOptions,
+    from_piece: &mut Raw,
+    to_piece: &mut Raw,
+    caps: &mut Vec<CapReport>,
+) -> Result<Vec<Raw>, StrokeError> {
+    let c = if e == 0 {
+        x.points()[0].clone()
+    } else {
+        x.points().last().expect("nonempty").clone()
+    };
+    let t = end_tangent(x, e).ok_or_else(|| bad("curve", "a degenerate end"))?;
+    let n = t.rot90();
+    let (dir_from, dir_to, out) = if e == 1 {
+        (n.neg(), n, t)
+    } else {
+        (n.clone(), n.neg(), t.neg())
+    };
+    let p1 = from_piece.piece.end().clone();
+    let p2 = to_piece.piece.start().clone();
+    let ex1 = pen_point_enclosure(&c, pen, &dir_from);
+    let ex2 = pen_point_enclosure(&c, pen, &dir_to);
+    if opts.cap == Cap::Butt {
+        let err = dist_hi_iv(&p1, &ex1).max(dist_hi_iv(&p2, &ex2));
+        // the chord lies within `err` of the convex c + E
+        return Ok(vec![Raw {
+            piece: Piece::Bezier(Bezier::new(vec![p1, p2])),
+            e: err,
+            e_in: err,
+            kind: Kind::Butt,
+        }]);
+    }
+    let cap = half_ellipse_cap(&c, pen, &dir_from, &out, opts.tol / 8.0)
+        .ok_or_else(|| bad("pen", "the half-ellipse cap could not be proven"))?;
+    let x1 = cap.pieces[0].points()[0].clone();
+    let x2 = cap.pieces.last().expect("k ≥ 2").points()[3].clone();
+    let d1 = dist_hi(&p1, &x1);
+    let d2 = dist_hi(&p2, &x2);
+    if let Piece::Bezier(b) = &from_piece.piece {
+        from_piece.piece = Piece::Bezier(set_end(b, None, Some(&x1)));
+    }
+    from_piece.e += d1;
+    from_piece.e_in += d1;
+    if let Piece::Bezier(b) = &to_piece.piece {
+        to_piece.piece = Piece::Bezier(set_end(b, Some(&x2), None));
+    }
+    to_piece.e += d2;
+    to_piece.e_in += d2;
+    caps.push(CapReport {
+        end: if e == 1 { "end" } else { "start" },
+        pieces: cap.pieces.len(),
+        error: cap.error,
+        circle_error: cap.circle_error,
+    });
+    Ok(cap
+        .pieces
+        .into_iter()
+        .map(|b| Raw {
+            piece: Piece::Bezier(b),
+            e: cap.error,
+            e_in: cap.error,
+            kind: Kind::Boundary,
+        })
+        .collect())
 }
 
 // ---------------------------------------------------------------------------
 // distance to the input curve
 
-/// Float estimate of `dist(p, x)` and the foot `(piece, t)`.
-fn foot(curve: &[Bezier<f64>], p: (f64, f64)) -> (f64, usize, f64) {
+/// Float estimate of the pen distance of `p` to `x` ([`Form::estimate`] of
+/// `min_t g(p − x(t))`; for a circle `dist(p, x)`) and the foot `(piece, t)`.
+fn foot(curve: &[Bezier<f64>], form: &Form, p: (f64, f64)) -> (f64, usize, f64) {
     let mut best = (f64::INFINITY, 0usize, 0.0f64);
     for (i, b) in curve.iter().enumerate() {
-        let n = 64;
+        // samples at most about reach/4 apart along the control polygon (which
+        // bounds the arc length), so the global minimum's basin is not missed
+        let poly: f64 = b
+            .points()
+            .windows(2)
+            .map(|w| (w[1].x - w[0].x).hypot(w[1].y - w[0].y))
+            .sum();
+        let n = ((4.0 * poly / form.reach.max(1e-300)).ceil() as usize).clamp(64, 4096);
         let d2 = |t: f64| {
             let v = b.eval_fast(t);
-            (v.x - p.0).powi(2) + (v.y - p.1).powi(2)
+            form.value_f64(v.x - p.0, v.y - p.1)
         };
         let mut bt = 0.0;
         let mut bd = f64::INFINITY;
@@ -673,12 +875,13 @@ fn foot(curve: &[Bezier<f64>], p: (f64, f64)) -> (f64, usize, f64) {
             best = (d, i, t);
         }
     }
-    (best.0.sqrt(), best.1, best.2)
+    (form.estimate(best.0), best.1, best.2)
 }
 
-/// Proves `|w − x(t)|² > r²` for all `t` in `[0, 1]` (exact Bernstein signs,
-/// subdividing).
-fn outside_piece(x: &Bezier<Rational>, w: &V2<Rational>, r2: &Rational) -> bool {
+/// Proves `g(w − x(t)) > d` for all `t` in `[0, 1]` (`w ∉ x(t) + E`; for a
+/// circle `|w − x(t)|² > r²`) by exact Bernstein signs, subdividing.
+pub(crate) fn outside_piece(x: &Bezier<Rational>, w: &V2<Rational>, form: &Form) -> bool {
+    let r2 = &form.a2_hi;
     // bounding-box exclusion first
     let p = x.points();
     let mut d2 = <Rational as Zero>::zero();
@@ -703,12 +906,27 @@ fn outside_piece(x: &Bezier<Rational>, w: &V2<Rational>, r2: &Rational) -> bool 
         let (xs, ys) = xi.coords();
         let dx: Vec<Interval> = xs.iter().map(|v| *v - wi.x).collect();
         let dy: Vec<Interval> = ys.iter().map(|v| *v - wi.y).collect();
-        let r2i = interval_from_rational(r2);
-        let g: Vec<Interval> = bernstein_product(&dx, &dx)
-            .into_iter()
-            .zip(bernstein_product(&dy, &dy))
-            .map(|(a, b)| a + b - r2i)
-            .collect();
+        let di = interval_from_rational(&form.d);
+        let g: Vec<Interval> = if form.circle {
+            bernstein_product(&dx, &dx)
+                .into_iter()
+                .zip(bernstein_product(&dy, &dy))
+                .map(|(a, b)| a + b - di)
+                .collect()
+        } else {
+            let (fa, fb, fc) = (
+                interval_from_rational(&form.a),
+                interval_from_rational(&form.b),
+                interval_from_rational(&form.c),
+            );
+            let two = Interval::try_from((2.0, 2.0)).expect("two");
+            bernstein_product(&dx, &dx)
+                .into_iter()
+                .zip(bernstein_product(&dy, &dy))
+                .zip(bernstein_product(&dx, &dy))
+                .map(|((xx, yy), xy)| fa * xx + fc * yy + two * fb * xy - di)
+                .collect()
+        };
         if let Some(v) = positive_bernstein_iv(g, 14) {
             return v;
         }
@@ -716,17 +934,27 @@ fn outside_piece(x: &Bezier<Rational>, w: &V2<Rational>, r2: &Rational) -> bool 
     let (xs, ys) = x.coords();
     let dx: Vec<Rational> = xs.iter().map(|v| v - &w.x).collect();
     let dy: Vec<Rational> = ys.iter().map(|v| v - &w.y).collect();
-    let g: Vec<Rational> = bernstein_product(&dx, &dx)
-        .into_iter()
-        .zip(bernstein_product(&dy, &dy))
-        .map(|(a, b)| a + b - r2)
-        .collect();
+    let g: Vec<Rational> = if form.circle {
+        bernstein_product(&dx, &dx)
+            .into_iter()
+            .zip(bernstein_product(&dy, &dy))
+            .map(|(a, b)| a + b - &form.d)
+            .collect()
+    } else {
+        let two_b = Rational::from_integer(2.into()) * &form.b;
+        bernstein_product(&dx, &dx)
+            .into_iter()
+            .zip(bernstein_product(&dy, &dy))
+            .zip(bernstein_product(&dx, &dy))
+            .map(|((xx, yy), xy)| &form.a * xx + &form.c * yy + &two_b * xy - &form.d)
+            .collect()
+    };
     positive_bernstein(g, 14)
 }
 
 /// [`positive_bernstein`] on interval coefficients: `Some(true)` proven
 /// positive, `Some(false)` proven not (an end value ≤ 0), `None` undecided.
-fn positive_bernstein_iv(g: Vec<Interval>, depth: u32) -> Option<bool> {
+pub(crate) fn positive_bernstein_iv(g: Vec<Interval>, depth: u32) -> Option<bool> {
     if g.iter().all(|c| c.inf() > 0.0) {
         return Some(true);
     }
@@ -745,7 +973,7 @@ fn positive_bernstein_iv(g: Vec<Interval>, depth: u32) -> Option<bool> {
 
 /// All of a Bernstein polynomial on `[0, 1]` is `> 0`: coefficients positive,
 /// or split in half (exact de Casteljau) up to `depth`.
-fn positive_bernstein(g: Vec<Rational>, depth: u32) -> bool {
+pub(crate) fn positive_bernstein(g: Vec<Rational>, depth: u32) -> bool {
     if g.iter().all(|c| c.is_positive()) {
         return true;
     }
@@ -756,8 +984,9 @@ fn positive_bernstein(g: Vec<Rational>, depth: u32) -> bool {
     positive_bernstein(left, depth - 1) && positive_bernstein(right, depth - 1)
 }
 
-fn outside(curve: &[Bezier<Rational>], w: &V2<Rational>, r2: &Rational) -> bool {
-    curve.iter().all(|x| outside_piece(x, w, r2))
+/// `w ∉ S = x ⊕ E`, proven (`false`: not proven).
+pub(crate) fn outside(curve: &[Bezier<Rational>], w: &V2<Rational>, form: &Form) -> bool {
+    curve.iter().all(|x| outside_piece(x, w, form))
 }
 
 // ---------------------------------------------------------------------------
@@ -840,11 +1069,10 @@ fn prove_kept(
     curve_f: &[Bezier<f64>],
     piece: &Piece,
     e_in: f64,
-    r: &Rational,
+    form: &Form,
     budget: f64,
 ) -> Option<f64> {
-    let r2 = r * r;
-    let rf = r.approx();
+    let rf = form.reach;
     let mut todo: Vec<(Part, u32)> = Part::initial(piece)?.into_iter().map(|p| (p, 0)).collect();
     let mut worst: f64 = 0.0;
     let mut n = 0;
@@ -856,19 +1084,50 @@ fn prove_kept(
         let hull = part.hull()?;
         let (m, nr) = part.mid_right_normal();
         // a point proven outside: the middle pushed out along the right normal
-        let est = foot(curve_f, m).0;
+        let (est, fi, ft) = foot(curve_f, form, m);
         let mut done = None;
         let base = (2.0 * e_in).max(rf * 1e-12);
-        for k in [1.25, 2.0, 3.0] {
-            let eta = base * k + (rf - est).max(0.0);
-            let w = (m.0 + eta * nr.0, m.1 + eta * nr.1);
-            let w = V2::new(rational_from_f64(w.0)?, rational_from_f64(w.1)?);
-            let rho = hull_radius_hi(&hull, &w);
-            if rho > budget {
-                break;
+        // floats choose the candidates only: `outside` decides
+        let (deficit, dirs) = if form.circle {
+            ((rf - est).max(0.0), vec![nr])
+        } else {
+            // along the ray from the foot y: the pen boundary is |m − y|(1/γ − 1)
+            // away (γ the gauge); push along the piece's normal and along the
+            // outer normal Q⁻¹(m − y) of the translated pen
+            let y = curve_f[fi].eval_fast(ft);
+            let (zx, zy) = (m.0 - y.x, m.1 - y.y);
+            let gamma = est / rf;
+            let deficit = if gamma > 0.0 {
+                (zx.hypot(zy) * (1.0 / gamma - 1.0)).max(0.0)
+            } else {
+                0.0
+            };
+            let [fa, fb, fc, _] = form.ff;
+            let g = (fa * zx + fb * zy, fb * zx + fc * zy);
+            let gl = g.0.hypot(g.1);
+            let mut dirs = vec![nr];
+            if gl > 0.0 && gl.is_finite() {
+                dirs.push((g.0 / gl, g.1 / gl));
             }
-            if outside(curve, &w, &r2) {
-                done = Some(rho);
+            (deficit, dirs)
+        };
+        'tries: for k in [1.25, 2.0, 3.0] {
+            let eta = base * k + deficit;
+            let mut over = true;
+            for d in &dirs {
+                let w = (m.0 + eta * d.0, m.1 + eta * d.1);
+                let w = V2::new(rational_from_f64(w.0)?, rational_from_f64(w.1)?);
+                let rho = hull_radius_hi(&hull, &w);
+                if rho > budget {
+                    continue;
+                }
+                over = false;
+                if outside(curve, &w, form) {
+                    done = Some(rho);
+                    break 'tries;
+                }
+            }
+            if over {
                 break;
             }
         }
@@ -887,24 +1146,28 @@ fn prove_kept(
     Some(worst.max(e_in))
 }
 
-/// Removal test: every point of the piece is at distance `< r − e` from the
-/// curve (an exact witness point of the curve per part), or within `lambda`
-/// of one of `near` (kept crossing points). Returns whether `near` was used.
+/// Removal test: every point `q` of the piece has its closed `e`-disk in the
+/// interior of `S` — an exact witness point `y = x(t*)` per part with
+/// `g(p − y) < d (1 − e/b_lo)²` at every hull point `p` (so `q − y ∈ ρE`,
+/// `ρ < 1 − e/b_lo`, and `q + disk(e) ⊆ y + (ρ + e/b_lo) E`, since
+/// `disk(b_lo) ⊆ E`; for a circle: `|p − y| < r − e`) — or lies within
+/// `lambda` of one of `near` (kept crossing points). Returns whether `near`
+/// was used.
 #[allow(clippy::too_many_arguments)]
 fn prove_removed(
     curve: &[Bezier<Rational>],
     curve_f: &[Bezier<f64>],
     piece: &Piece,
     e: f64,
-    r: &Rational,
+    form: &Form,
     near: &[V2<Rational>],
     lambda: &Rational,
 ) -> Option<bool> {
-    let re = r - rational_from_f64(e)?;
-    if !re.is_positive() {
+    let shrink = <Rational as One>::one() - rational_from_f64(e)? / &form.b_lo;
+    if !shrink.is_positive() {
         return None;
     }
-    let re2 = &re * &re;
+    let re2 = &form.d * &shrink * &shrink;
     let l2 = lambda * lambda;
     let mut todo: Vec<(Part, u32)> = Part::initial(piece)?.into_iter().map(|p| (p, 0)).collect();
     let mut used = false;
@@ -923,9 +1186,9 @@ fn prove_removed(
             continue;
         }
         let (m, _) = part.mid_right_normal();
-        let (_, i, t) = foot(curve_f, m);
+        let (_, i, t) = foot(curve_f, form, m);
         let y = curve[i].eval(&rational_from_f64(t)?);
-        if hull.iter().all(|p| p.sub(&y).norm2() < re2) {
+        if hull.iter().all(|p| form.value(&p.sub(&y)) < re2) {
             continue;
         }
         if depth >= 16 {
@@ -1061,10 +1324,11 @@ fn mid_rational(lo: f64, hi: f64) -> Option<Rational> {
 /// ```
 pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke, StrokeError> {
     let closed = check(curve, opts)?;
-    let r = &opts.radius;
+    let form = opts.form()?;
+    let form = &form;
     let dbg = std::env::var("LNCERT_TRIM_DEBUG").is_ok();
     let t0 = std::time::Instant::now();
-    let (raw_contours, mut notes) = raw_contours(curve, opts, closed)?;
+    let (raw_contours, mut notes, caps) = raw_contours(curve, opts, closed)?;
     if dbg {
         eprintln!("offsets: {:?}", t0.elapsed());
     }
@@ -1271,10 +1535,10 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
                 .and_then(|p| p.into_iter().next())
                 .map(|p| p.mid_right_normal())
                 .unwrap_or(((0.0, 0.0), (0.0, 0.0)));
-            foot(&curve_f, m).0
+            foot(&curve_f, form, m).0
         })
         .collect();
-    let rf = r.approx();
+    let rf = form.reach;
     let kept_bounds: Vec<Option<f64>> = subs
         .par_iter()
         .zip(&estimates)
@@ -1287,7 +1551,7 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
             if *est < rf - 4.0 * e_in.max(tol / 8.0) {
                 return None;
             }
-            prove_kept(curve, &curve_f, &s.post, e_in, r, tol)
+            prove_kept(curve, &curve_f, &s.post, e_in, form, tol)
         })
         .collect();
     let near: Vec<V2<Rational>> = subs
@@ -1314,7 +1578,7 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
             if k.is_some() || raw.kind != Kind::Boundary {
                 return None;
             }
-            prove_removed(curve, &curve_f, &s.pre, raw.e, r, &near, &lambda)
+            prove_removed(curve, &curve_f, &s.pre, raw.e, form, &near, &lambda)
         })
         .collect();
     let mut classified = Classified::default();
@@ -1364,6 +1628,30 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
     if dbg {
         eprintln!("classified: {:?}", t0.elapsed());
     }
+    // --- pinched loops: kept pieces that close a loop at an exact point X of
+    // the output, every hull point within λ of X, are dropped (the λ rule of
+    // the removal: a boundary point near them is within e + λ of X)
+    let kept_idx: Vec<usize> = (0..subs.len()).filter(|&k| keep[k]).collect();
+    let lambda_loop = rational_from_f64(0.75 * tol).unwrap_or_else(<Rational as Zero>::zero);
+    let dropped = pinched_loops(
+        &kept_idx.iter().map(|&k| &subs[k].post).collect::<Vec<_>>(),
+        &lambda_loop,
+    );
+    if !dropped.is_empty() {
+        for &d in &dropped {
+            let k = kept_idx[d];
+            keep[k] = false;
+            let raw = &raws[subs[k].raw];
+            b_bound = b_bound.max(raw.e + subs[k].delta + 0.75 * tol);
+        }
+        fail(
+            &mut notes,
+            format!(
+                "{} kept pieces forming pinched loops or spurs within 3·tol/4 of an output point dropped",
+                dropped.len()
+            ),
+        );
+    }
     // --- chain
     let out_pieces: Vec<Piece> = subs
         .iter()
@@ -1390,7 +1678,7 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
         proven: a_ok && offsets_ok && a_bound <= tol && !butt,
         bound: if a_ok { a_bound } else { f64::INFINITY },
         note: if butt {
-            "not claimed for butt caps (the region is not x ⊕ disk)".into()
+            "not claimed for butt caps (the region is not x ⊕ pen)".into()
         } else if a_ok {
             format!("every kept sub-piece has a point proven outside S within {a_bound:.3e} and a point of S within its certified bound")
         } else {
@@ -1401,7 +1689,7 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
         proven: b_ok && offsets_ok && b_bound <= tol && !butt,
         bound: if b_ok { b_bound } else { f64::INFINITY },
         note: if butt {
-            "not claimed for butt caps (the region is not x ⊕ disk)".into()
+            "not claimed for butt caps (the region is not x ⊕ pen)".into()
         } else if b_ok {
             format!(
                 "every sub-piece of the raw pieces is kept or proven interior; bound {b_bound:.3e}"
@@ -1429,7 +1717,138 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
         tol,
         closed_curve: closed,
         notes,
+        pen: opts.ellipse.clone(),
+        caps,
     })
+}
+
+/// Indices of pieces forming *pinched loops*: a chain of pieces
+/// `p_i, …, p_j` (following exact end = start) that starts and ends at one
+/// exact point `X` which is also the end or start of a piece outside the
+/// chain, with every hull point strictly within `lambda` of `X` — and of
+/// *spurs*: a piece with a dangling end (no live piece continues it) whose
+/// hull is within `lambda` of its other end `Y`, an end of another live piece.
+/// Finally every dropped loop or spur's point must still end a live piece
+/// (else it is restored).
+fn pinched_loops(pieces: &[&Piece], lambda: &Rational) -> Vec<usize> {
+    let l2 = lambda * lambda;
+    let n = pieces.len();
+    let mut dropped = vec![false; n];
+    let mut loops: Vec<(V2<Rational>, Vec<usize>)> = Vec::new();
+    let near = |p: &Piece, x: &V2<Rational>| {
+        Part::initial(p).is_some_and(|parts| {
+            parts.iter().all(|part| {
+                part.hull()
+                    .is_some_and(|h| h.iter().all(|q| q.sub(x).norm2() < l2))
+            })
+        })
+    };
+    for s in 0..n {
+        if dropped[s] {
+            continue;
+        }
+        let x = pieces[s].start().clone();
+        // X must be a pinch: at least two live pieces start there
+        let starts = (0..n)
+            .filter(|&k| !dropped[k] && pieces[k].start() == &x)
+            .count();
+        if starts < 2 {
+            continue;
+        }
+        // follow the chain from s while it stays near X
+        let mut chain = vec![s];
+        let mut cur = s;
+        let closed = loop {
+            if !near(pieces[cur], &x) {
+                break false;
+            }
+            let end = pieces[cur].end();
+            if end == &x {
+                break true;
+            }
+            let next =
+                (0..n).find(|&k| !dropped[k] && !chain.contains(&k) && pieces[k].start() == end);
+            match next {
+                Some(k) if chain.len() < 64 => {
+                    chain.push(k);
+                    cur = k;
+                }
+                _ => break false,
+            }
+        };
+        if closed {
+            for &k in &chain {
+                dropped[k] = true;
+            }
+            loops.push((x, chain));
+        }
+    }
+    // spurs: a piece one of whose ends no other live piece continues, its
+    // hull within `lambda` of its other end `Y` (which another piece ends or
+    // starts at)
+    loop {
+        let mut changed = false;
+        for k in 0..n {
+            if dropped[k] {
+                continue;
+            }
+            let (a, b) = (pieces[k].start(), pieces[k].end());
+            let live_end = |x: &V2<Rational>, starts: bool| {
+                (0..n).any(|j| {
+                    j != k
+                        && !dropped[j]
+                        && if starts {
+                            pieces[j].start() == x
+                        } else {
+                            pieces[j].end() == x
+                        }
+                })
+            };
+            let touches = |x: &V2<Rational>| {
+                (0..n).any(|j| {
+                    j != k && !dropped[j] && (pieces[j].start() == x || pieces[j].end() == x)
+                })
+            };
+            let y = if !live_end(b, true) && touches(a) {
+                a.clone()
+            } else if !live_end(a, false) && touches(b) {
+                b.clone()
+            } else {
+                continue;
+            };
+            if near(pieces[k], &y) {
+                dropped[k] = true;
+                loops.push((y, vec![k]));
+                changed = true;
+            }
+        }
+        if !changed {
+            break;
+        }
+    }
+    // the argument of (b) needs X in the output: a loop or spur whose point
+    // is no longer an end of a live piece is restored (restoring only adds
+    // pieces: repeat until nothing changes)
+    loop {
+        let mut changed = false;
+        for (x, chain) in &loops {
+            if chain.iter().all(|&k| !dropped[k]) {
+                continue;
+            }
+            let witnessed =
+                (0..n).any(|k| !dropped[k] && (pieces[k].start() == x || pieces[k].end() == x));
+            if !witnessed {
+                for &k in chain {
+                    dropped[k] = false;
+                }
+                changed = true;
+            }
+        }
+        if !changed {
+            break;
+        }
+    }
+    (0..n).filter(|&k| dropped[k]).collect()
 }
 
 /// Chains pieces into contours by exact shared end points.
