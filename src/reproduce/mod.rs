@@ -113,12 +113,7 @@ pub mod data {
 /// ```
 /// let claims = lncert::reproduce::run_all();
 /// assert!(claims.iter().any(|c| c.source.starts_with("seed 000 Fig. 5(a)")));
-/// // every printed value of the seeds is decided; the stroke outlines of issue 13
-/// // (`stroke-…`) are engine claims and may be undecided (`proofs/trimming.md`)
-/// assert!(claims
-///     .iter()
-///     .filter(|c| !c.id.starts_with("stroke-"))
-///     .all(|c| c.verdict != lncert::reproduce::Verdict::Undecided));
+/// assert!(claims.iter().all(|c| c.verdict != lncert::reproduce::Verdict::Undecided));
 /// ```
 pub fn run_all() -> Vec<Claim> {
     run_all_with_strokes().0
