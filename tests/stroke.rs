@@ -776,3 +776,108 @@ fn ellipse_pen_font_h_at_tol_0_01() {
     assert_eq!(s.contours.len(), 3);
     ellipse_sampled_check(&x, &s, &pen, tol, 0.004, 16000);
 }
+
+/// `offset --trim` and `convolve --trim` are the stroke of the same curve with
+/// the circle of radius `|distance|` / the convolution's pen: the same proven
+/// outline as `lncert stroke`, and a multi-contour input is refused naming
+/// `--trim`.
+#[test]
+fn cli_offset_and_convolve_trim_are_the_stroke() {
+    let dir = std::env::temp_dir().join(format!("lncert-trim-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let bin = env!("CARGO_BIN_EXE_lncert");
+    let run = |args: &[&str]| std::process::Command::new(bin).args(args).output().unwrap();
+    let curve = dir.join("cubic.json");
+    std::fs::write(
+        &curve,
+        r#"{"bezier": [[-0.95, 0.7], [-0.3, 0.5], [0.3, -2.5], [0.9, -0.2]]}"#,
+    )
+    .unwrap();
+    let c = curve.to_str().unwrap();
+    let trim = run(&[
+        "offset",
+        c,
+        "--distance",
+        "-2/5",
+        "--tol",
+        "1e-2",
+        "--output",
+        "cubic",
+        "--trim",
+        "--json",
+    ]);
+    assert_eq!(
+        trim.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&trim.stderr)
+    );
+    let st = run(&[
+        "stroke",
+        c,
+        "--pen",
+        "circle:2/5",
+        "--tol",
+        "1e-2",
+        "--output",
+        "cubic",
+        "--json",
+    ]);
+    let (a, b): (serde_json::Value, serde_json::Value) = (
+        serde_json::from_slice(&trim.stdout).unwrap(),
+        serde_json::from_slice(&st.stdout).unwrap(),
+    );
+    assert_eq!(a["verdict"], "proven");
+    assert_eq!(a["outline"]["contours"], b["outline"]["contours"]);
+    // the convolution's pen
+    let nonic = lncert::reproduce::seed001::nonic().unwrap();
+    let pts: Vec<String> = nonic[0]
+        .points()
+        .iter()
+        .map(|p| format!("[{}, {}]", p.x.approx(), p.y.approx()))
+        .collect();
+    let nf = dir.join("nonic.json");
+    std::fs::write(&nf, format!("{{\"bezier\": [{}]}}", pts.join(", "))).unwrap();
+    let out = run(&[
+        "convolve",
+        nf.to_str().unwrap(),
+        "--ellipse",
+        "0.7,0.3",
+        "--angle",
+        "pi/6",
+        "--method",
+        "ln-pair",
+        "--tol",
+        "0.1",
+        "--trim",
+        "--json",
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(doc["verdict"], "proven");
+    assert!(doc["outline"]["contours"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .all(|c| c["closed"] == true));
+    // two contours (an annulus): refused, naming --trim
+    let ring = dir.join("ring.txt");
+    std::fs::write(&ring, "M 0 0 L 4 0 L 4 4 L 0 4 Z M 1 1 L 1 3 L 3 3 L 3 1 Z").unwrap();
+    let out = run(&[
+        "offset",
+        ring.to_str().unwrap(),
+        "--distance",
+        "1/4",
+        "--tol",
+        "1e-2",
+        "--trim",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--trim"));
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -96,6 +96,12 @@ pub struct ConvolveArgs {
     /// Build the same construction without proofs (labelled unproven).
     #[arg(long, conflicts_with = "certificate")]
     pub no_certify: bool,
+    /// Trim: the proven outline of the region the pen sweeps (both sides
+    /// trimmed at their crossings, loops removed, closed by half-ellipse
+    /// caps), as `lncert stroke --pen ellipse:…` computes it; `--side` is
+    /// not used, `--svg` draws the outline.
+    #[arg(long, conflicts_with_all = ["certificate", "grid"])]
+    pub trim: bool,
     /// One JSON document on stdout.
     #[arg(long)]
     pub json: bool,
@@ -238,6 +244,20 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
     let text = std::fs::read_to_string(&a.curve)
         .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
     let curve = parse_curve(&text).map_err(|e| bad("CURVE", e))?;
+    if a.trim {
+        let sa = super::stroke::StrokeArgs {
+            curve: a.curve.clone(),
+            pen: String::new(),
+            tol: a.tol.clone(),
+            cap: "round".into(),
+            output: a.output.clone(),
+            method: a.method.clone(),
+            svg: a.svg.clone(),
+            path_out: None,
+            json: a.json,
+        };
+        return super::stroke::run_with(&sa, &curve, lncert::outline::trim::PenShape::Ellipse(pen));
+    }
     if a.max_boxes == 0 || a.max_boxes > 50_000_000 {
         return Err(bad("--max-boxes", "out of range (1 to 50000000)"));
     }

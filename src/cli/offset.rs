@@ -121,6 +121,12 @@ pub struct OffsetArgs {
     /// point, re-proven, and the exact join arc proven within TOL of them).
     #[arg(long)]
     pub keep_kinks: bool,
+    /// Trim: the proven outline of the offset region `x ⊕ disk(|R|)` (both
+    /// sides trimmed at their crossings, loops removed, round caps on an open
+    /// curve), as `lncert stroke --pen circle:|R|` computes it; `--svg` and
+    /// `--path-out` write the outline.
+    #[arg(long, conflicts_with_all = ["certificate", "grid", "curve_out", "exact_out"])]
+    pub trim: bool,
     /// Print one JSON document.
     #[arg(long)]
     pub json: bool,
@@ -248,6 +254,37 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             parse_curve_reported(&text).map_err(|e| bad("CURVE", e))?
         }
     };
+    if a.trim {
+        let sa = super::stroke::StrokeArgs {
+            curve: a.curve.clone(),
+            pen: String::new(),
+            tol: a.tol.clone(),
+            cap: "round".into(),
+            output: a.output.clone(),
+            method: a.method.clone(),
+            svg: a.svg.clone(),
+            path_out: a.path_out.clone(),
+            json: a.json,
+        };
+        let parts = 1 + curve
+            .windows(2)
+            .filter(|w| w[0].points().last() != w[1].points().first())
+            .count();
+        if parts > 1 {
+            return Err(bad(
+                "--trim",
+                format!(
+                    "the curve has {parts} separate contours (a glyph's outer and inner contours); \
+                     trimming handles one connected curve, open or closed, for now"
+                ),
+            ));
+        }
+        let r = num_traits::Signed::abs(&distance);
+        if r == Rational::from_integer(0.into()) {
+            return Err(bad("--distance", "must be nonzero"));
+        }
+        return super::stroke::run_with(&sa, &curve, lncert::outline::trim::PenShape::Circle(r));
+    }
     let mut opts = OffsetOptions::new(distance, tol);
     opts.method = method;
     opts.subdivision = super::args::subdivision(&a.subdivision, &a.method)?;

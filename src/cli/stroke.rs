@@ -237,6 +237,29 @@ pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
         return Err(bad("--tol", "must be a positive number"));
     }
     let pen = pen_shape(&a.pen, tol)?;
+    let meta = std::fs::metadata(&a.curve)
+        .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
+    if meta.len() > super::hausdorff::MAX_FILE_BYTES {
+        return Err(bad("CURVE", "file too large"));
+    }
+    let text = std::fs::read_to_string(&a.curve)
+        .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
+    let curve = parse_curve(&text).map_err(|e| bad("CURVE", e))?;
+    run_with(a, &curve, pen)
+}
+
+/// [`run`] on a curve already read and a pen already parsed (`a.curve` and
+/// `a.pen` are not read): shared with `offset --trim` and `convolve --trim`.
+pub fn run_with(
+    a: &StrokeArgs,
+    curve: &[lncert::curve::Bezier<Rational>],
+    pen: PenShape,
+) -> Result<i32, CliError> {
+    let tol_q = number("--tol", &a.tol)?;
+    let tol = interval_from_rational(&tol_q).inf();
+    if !(tol.is_finite() && tol > 0.0) {
+        return Err(bad("--tol", "must be a positive number"));
+    }
     let method = match a.method.as_str() {
         "g2" => lncert::approx::OffsetMethod::G2,
         "ln-pair" => lncert::approx::OffsetMethod::LnPair,
@@ -257,14 +280,6 @@ pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
             super::args::output_file(flag, p)?;
         }
     }
-    let meta = std::fs::metadata(&a.curve)
-        .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
-    if meta.len() > super::hausdorff::MAX_FILE_BYTES {
-        return Err(bad("CURVE", "file too large"));
-    }
-    let text = std::fs::read_to_string(&a.curve)
-        .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
-    let curve = parse_curve(&text).map_err(|e| bad("CURVE", e))?;
     let mut opts = StrokeOptions::with_pen(pen, tol);
     opts.cap = cap;
     opts.method = method;
@@ -280,7 +295,7 @@ pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
         }
     };
     let t0 = std::time::Instant::now();
-    let s = stroke(&curve, &opts).map_err(|e| {
+    let s = stroke(curve, &opts).map_err(|e| {
         bad(
             match e.field.as_str() {
                 "radius" | "pen" => "--pen",

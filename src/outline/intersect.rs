@@ -287,7 +287,11 @@ fn mul_range(a: &(Rational, Rational), b: &(Rational, Rational)) -> (Rational, R
 /// Bounds of the second derivative `y″(x)` of the piece as a graph over the
 /// direction `w` (`x = w·(p − P)`, `y = w⊥·(p − P)`) on `[0, eps]` from the
 /// end at parameter 0; `None` unless `x′ > 0` there.
-fn graph_curvature(b: &Bezier<Rational>, eps: &Rational, w: &V2<Rational>) -> Option<(Rational, Rational)> {
+fn graph_curvature(
+    b: &Bezier<Rational>,
+    eps: &Rational,
+    w: &V2<Rational>,
+) -> Option<(Rational, Rational)> {
     let part = b.restrict(&<Rational as Zero>::zero(), eps);
     let h = part.hodograph();
     let h2 = h.hodograph();
@@ -298,7 +302,10 @@ fn graph_curvature(b: &Bezier<Rational>, eps: &Rational, w: &V2<Rational>) -> Op
     }
     let ys = dot_range(h.points(), &n);
     let (xss, yss) = if h2.points().is_empty() {
-        { let z = <Rational as Zero>::zero(); ((z.clone(), z.clone()), (z.clone(), z)) }
+        {
+            let z = <Rational as Zero>::zero();
+            ((z.clone(), z.clone()), (z.clone(), z))
+        }
     } else {
         (dot_range(h2.points(), w), dot_range(h2.points(), &n))
     };
@@ -306,11 +313,13 @@ fn graph_curvature(b: &Bezier<Rational>, eps: &Rational, w: &V2<Rational>) -> Op
     let p2 = mul_range(&ys, &xss);
     let num = (&p1.0 - &p2.1, &p1.1 - &p2.0);
     let c3 = (&xs.0 * &xs.0 * &xs.0, &xs.1 * &xs.1 * &xs.1);
-    let q = [&num.0 / &c3.0, &num.0 / &c3.1, &num.1 / &c3.0, &num.1 / &c3.1];
-    Some((
-        q.iter().min().cloned()?,
-        q.iter().max().cloned()?,
-    ))
+    let q = [
+        &num.0 / &c3.0,
+        &num.0 / &c3.1,
+        &num.1 / &c3.0,
+        &num.1 / &c3.1,
+    ];
+    Some((q.iter().min().cloned()?, q.iter().max().cloned()?))
 }
 
 /// Two pieces leaving their shared end point in the same direction `w`: on
