@@ -188,3 +188,29 @@ fn loops_and_spline_joints_are_decided() {
     assert_eq!(r.crossings.iter().filter(|c| c.pieces == (0, 0)).count(), 1);
     assert!(r.joints.len() >= c.len() - 1, "{r:?}");
 }
+
+/// A cusp: two pieces leave their shared point in the same direction with
+/// different curvature (a parabola's two branches y = x² and y = x²/4 on the
+/// same side, and the mirror case y = −x²): the joint is isolated to second
+/// order, the search is complete, and the polyline oracle agrees.
+#[test]
+fn tangential_joints_at_a_cusp_are_decided() {
+    for (a, b) in [
+        ("M 1 1 Q 0.5 0 0 0", "M 0 0 Q 1 0 2 1"),
+        ("M 1 1 Q 0.5 0 0 0", "M 0 0 Q 0.5 0 1 -1"),
+    ] {
+        let mut c = lncert::shape::parse_curve(a).unwrap();
+        c.extend(lncert::shape::parse_curve(b).unwrap());
+        let r = intersections(&c, &IntersectOptions::default());
+        assert!(r.complete, "{a} {b}: {r:?}");
+        assert!(r.crossings.is_empty(), "{r:?}");
+        assert_eq!(r.joints.len(), 1, "{r:?}");
+        check(&c, &r);
+    }
+    // equal curvature at the joint (the same parabola traced twice): no
+    // second-order separation, never claimed complete
+    let mut c = lncert::shape::parse_curve("M 1 1 Q 0.5 0 0 0").unwrap();
+    c.extend(lncert::shape::parse_curve("M 0 0 Q 0.5 0 1 1").unwrap());
+    let r = intersections(&c, &IntersectOptions::default());
+    assert!(!r.complete, "{r:?}");
+}
