@@ -447,9 +447,17 @@ impl Ctx<'_> {
             } else {
                 a.0
             };
-            out.push((pos, self.point(&c.parts[pos.part], pos.u)?));
+            out.push((s, pos, self.point(&c.parts[pos.part], pos.u)?));
         }
-        Some(out)
+        // the joints between parts (a cusp's tip among them) are samples too
+        for (k, r) in raw.iter().enumerate() {
+            if k > 0 && k + 1 < raw.len() && r.0.u == 0.0 {
+                out.push((r.2, r.0, r.1));
+            }
+        }
+        out.sort_by(|x, y| x.0.total_cmp(&y.0));
+        out.dedup_by(|x, y| x.0 == y.0);
+        Some(out.into_iter().map(|(_, pos, p)| (pos, p)).collect())
     }
 
     /// [`Self::snap_within`] in `window`, then (when nothing there is within
@@ -679,6 +687,13 @@ impl Ctx<'_> {
             .filter(|(err, _)| err.is_finite())
             .min_by(|x, y| x.0.total_cmp(&y.0))?;
         let refined = fit::refine_minimax(&e, &pts, best);
+        // where the end tangents constrain too much (a hairpin round a cusp,
+        // joints moved off their nominal places) free both inner points
+        let refined = if two_sided(&pts, &refined) > 0.25 * self.tol {
+            free_inner_points(&pts, refined)
+        } else {
+            refined
+        };
         // inner control points onto the grid, then coordinate descent
         let p = refined.points();
         let mut q = [self.exact_grid(dv(&p[1]))?, self.exact_grid(dv(&p[2]))?];
@@ -773,6 +788,88 @@ fn two_sided(exact: &[DVec2], c: &Bezier<f64>) -> f64 {
     }
 }
 
+/// Evaluations of the sampled error spent by [`free_inner_points`].
+const FREE_EVALS: usize = 240;
+
+/// Lowers the sampled two-sided error of a cubic by a Nelder–Mead search over
+/// its two inner control points (4 coordinates; the end points stay), starting
+/// at `c`. A float heuristic: the proof decides.
+fn free_inner_points(exact: &[DVec2], c: Bezier<f64>) -> Bezier<f64> {
+    let p: Vec<DVec2> = c.points().iter().map(dv).collect();
+    let make = |x: &[f64; 4]| {
+        Bezier::new(vec![
+            V2::new(p[0].x, p[0].y),
+            V2::new(x[0], x[1]),
+            V2::new(x[2], x[3]),
+            V2::new(p[3].x, p[3].y),
+        ])
+    };
+    let f = |x: &[f64; 4]| two_sided(exact, &make(x));
+    let x0 = [p[1].x, p[1].y, p[2].x, p[2].y];
+    let step = 0.05
+        * (p[3] - p[0])
+            .length()
+            .max((p[1] - p[0]).length())
+            .max(1e-300);
+    let mut simplex: Vec<([f64; 4], f64)> = vec![(x0, f(&x0))];
+    for k in 0..4 {
+        let mut x = x0;
+        x[k] += step;
+        simplex.push((x, f(&x)));
+    }
+    let mut evals = 5;
+    while evals < FREE_EVALS {
+        simplex.sort_by(|a, b| a.1.total_cmp(&b.1));
+        let mut centroid = [0.0; 4];
+        for v in &simplex[..4] {
+            for k in 0..4 {
+                centroid[k] += v.0[k] / 4.0;
+            }
+        }
+        let worst = simplex[4].0;
+        let at = |t: f64| {
+            let mut x = [0.0; 4];
+            for k in 0..4 {
+                x[k] = centroid[k] + t * (worst[k] - centroid[k]);
+            }
+            x
+        };
+        let r = at(-1.0);
+        let fr = f(&r);
+        evals += 1;
+        if fr < simplex[0].1 {
+            let e = at(-2.0);
+            let fe = f(&e);
+            evals += 1;
+            simplex[4] = if fe < fr { (e, fe) } else { (r, fr) };
+        } else if fr < simplex[3].1 {
+            simplex[4] = (r, fr);
+        } else {
+            let k = at(0.5);
+            let fk = f(&k);
+            evals += 1;
+            if fk < simplex[4].1 {
+                simplex[4] = (k, fk);
+            } else {
+                let best = simplex[0].0;
+                for v in simplex.iter_mut().skip(1) {
+                    for k in 0..4 {
+                        v.0[k] = 0.5 * (v.0[k] + best[k]);
+                    }
+                    v.1 = f(&v.0);
+                    evals += 1;
+                }
+            }
+        }
+    }
+    simplex.sort_by(|a, b| a.1.total_cmp(&b.1));
+    if simplex[0].1 < f(&x0) {
+        make(&simplex[0].0)
+    } else {
+        c
+    }
+}
+
 /// One proven (or failed) cubic before numbering.
 struct Built {
     bezier: Bezier<f64>,
@@ -821,7 +918,13 @@ impl Ctx<'_> {
             let (m, dist) = self.snap(c, mid, lo, hi, (0.25 * len).min(WINDOW_STEPS * self.gf))?;
             // a joint off the curve by more than tol/2 leaves the cubics less
             // room, but may still be proven: up to 0.9 tol
-            if dist.is_nan() || dist > SPLIT_SHARE * self.tol || m.pos == a.pos || m.pos == b.pos {
+            if dist.is_nan()
+                || dist > SPLIT_SHARE * self.tol
+                || m.pos == a.pos
+                || m.pos == b.pos
+                || m.g == a.g
+                || m.g == b.g
+            {
                 return None;
             }
             stats
