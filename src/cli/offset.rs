@@ -266,19 +266,6 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             path_out: a.path_out.clone(),
             json: a.json,
         };
-        let parts = 1 + curve
-            .windows(2)
-            .filter(|w| w[0].points().last() != w[1].points().first())
-            .count();
-        if parts > 1 {
-            return Err(bad(
-                "--trim",
-                format!(
-                    "the curve has {parts} separate contours (a glyph's outer and inner contours); \
-                     trimming handles one connected curve, open or closed, for now"
-                ),
-            ));
-        }
         let r = num_traits::Signed::abs(&distance);
         if r == Rational::from_integer(0.into()) {
             return Err(bad("--distance", "must be nonzero"));

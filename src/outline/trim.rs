@@ -634,7 +634,29 @@ fn cap_piece(
 }
 
 /// Checks the inputs; `true` when the curve is closed.
-fn check(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<bool, StrokeError> {
+/// The connected components of the curve (pieces joined end to start):
+/// `(first, end, closed)` with `curve[first..end]` one component.
+fn components(curve: &[Bezier<Rational>]) -> Vec<(usize, usize, bool)> {
+    let mut out: Vec<(usize, usize, bool)> = Vec::new();
+    for i in 0..curve.len() {
+        let joined = i > 0 && curve[i - 1].points().last() == curve[i].points().first();
+        match out.last_mut() {
+            Some(c) if joined => c.1 = i + 1,
+            _ => out.push((i, i + 1, false)),
+        }
+    }
+    for c in &mut out {
+        let part = &curve[c.0..c.1];
+        let closed = part.len() > 1 || part[0].degree() > 1;
+        c.2 = closed && part.last().and_then(|b| b.points().last()) == part[0].points().first();
+    }
+    out
+}
+
+fn check(
+    curve: &[Bezier<Rational>],
+    opts: &StrokeOptions,
+) -> Result<Vec<(usize, usize, bool)>, StrokeError> {
     if curve.is_empty() {
         return Err(bad("curve", "no pieces"));
     }
@@ -649,23 +671,26 @@ fn check(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<bool, Strok
             return Err(bad("curve", format!("piece {i} is a point")));
         }
     }
-    for w in curve.windows(2) {
-        if w[0].points().last() != w[1].points().first() {
-            return Err(bad(
-                "curve",
-                "pieces must be connected (end point = next start point)",
-            ));
-        }
+    let comps = components(curve);
+    if comps.len() > MAX_COMPONENTS {
+        return Err(bad(
+            "curve",
+            format!(
+                "{} separate contours (at most {MAX_COMPONENTS})",
+                comps.len()
+            ),
+        ));
     }
-    let closed = curve.len() > 1 || curve[0].degree() > 1;
-    let closed =
-        closed && curve.last().and_then(|b| b.points().last()) == curve[0].points().first();
-    if opts.ellipse.is_some() {
+    for &(first, end, closed) in &comps {
+        if opts.ellipse.is_none() {
+            continue;
+        }
         // the elliptical pen has no join pieces yet: the curve must be G¹
-        let n = curve.len();
+        let part = &curve[first..end];
+        let n = part.len();
         let joints = if closed { n } else { n - 1 };
         for i in 0..joints {
-            let (a, b) = (&curve[i], &curve[(i + 1) % n]);
+            let (a, b) = (&part[i], &part[(i + 1) % n]);
             let g1 = match (end_tangent(a, 1), end_tangent(b, 0)) {
                 (Some(u), Some(v)) => u.cross(&v).is_zero() && u.dot(&v).is_positive(),
                 _ => false,
@@ -673,13 +698,16 @@ fn check(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<bool, Strok
             if !g1 {
                 return Err(bad(
                     "curve",
-                    format!("a G⁰ corner after piece {i}: the elliptical pen needs a G¹ curve (join pieces are not supported yet)"),
+                    format!("a G⁰ corner after piece {}: the elliptical pen needs a G¹ curve (join pieces are not supported yet)", first + i),
                 ));
             }
         }
     }
-    Ok(closed)
+    Ok(comps)
 }
+
+/// Most separate contours of one stroke.
+const MAX_COMPONENTS: usize = 256;
 
 /// The raw contours (before trimming).
 #[allow(clippy::type_complexity)]
@@ -1323,12 +1351,24 @@ fn mid_rational(lo: f64, hi: f64) -> Option<Rational> {
 /// assert!(s.contours[0].closed);
 /// ```
 pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke, StrokeError> {
-    let closed = check(curve, opts)?;
+    let comps = check(curve, opts)?;
+    let closed = comps.iter().all(|c| c.2);
     let form = opts.form()?;
     let form = &form;
     let dbg = std::env::var("LNCERT_TRIM_DEBUG").is_ok();
     let t0 = std::time::Instant::now();
-    let (raw_contours, mut notes, caps) = raw_contours(curve, opts, closed)?;
+    // every component's sides and caps; the trimming below is over all of
+    // them (the region is the union of the components' regions)
+    let mut raw_contours_all = Vec::new();
+    let mut notes = Vec::new();
+    let mut caps = Vec::new();
+    for &(first, end, c_closed) in &comps {
+        let (rc, n, cp) = raw_contours(&curve[first..end], opts, c_closed)?;
+        raw_contours_all.extend(rc);
+        notes.extend(n);
+        caps.extend(cp);
+    }
+    let raw_contours = raw_contours_all;
     if dbg {
         eprintln!("offsets: {:?}", t0.elapsed());
     }
