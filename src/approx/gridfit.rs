@@ -822,8 +822,8 @@ fn free_inner_points(exact: &[DVec2], c: Bezier<f64>) -> Bezier<f64> {
         simplex.sort_by(|a, b| a.1.total_cmp(&b.1));
         let mut centroid = [0.0; 4];
         for v in &simplex[..4] {
-            for k in 0..4 {
-                centroid[k] += v.0[k] / 4.0;
+            for (c, x) in centroid.iter_mut().zip(v.0) {
+                *c += x / 4.0;
             }
         }
         let worst = simplex[4].0;
@@ -853,8 +853,8 @@ fn free_inner_points(exact: &[DVec2], c: Bezier<f64>) -> Bezier<f64> {
             } else {
                 let best = simplex[0].0;
                 for v in simplex.iter_mut().skip(1) {
-                    for k in 0..4 {
-                        v.0[k] = 0.5 * (v.0[k] + best[k]);
+                    for (x, b) in v.0.iter_mut().zip(best) {
+                        *x = 0.5 * (*x + b);
                     }
                     v.1 = f(&v.0);
                     evals += 1;

@@ -1089,7 +1089,8 @@ fn absorb_kinks(
         let (sa, sb) = (&res.segments[ia], &res.segments[ib]);
         let (pa, pb) = (sa.bezier.points(), sb.bezier.points());
         let (p, q) = (&pa[pa.len() - 1], &pb[0]);
-        if !((p.x - q.x).hypot(p.y - q.y) <= opts.tol) {
+        let gap = (p.x - q.x).hypot(p.y - q.y);
+        if gap.is_nan() || gap > opts.tol {
             continue;
         }
         let m = V2::new(0.5 * (p.x + q.x), 0.5 * (p.y + q.y));
