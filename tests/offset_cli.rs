@@ -3,10 +3,9 @@
 //! B-spline input, and exit codes 0/1/2 with bad input naming the flag.
 
 mod common;
-use common::{lncert, tmp};
+use common::{dejavu, lncert, tmp};
 
 use serde_json::Value;
-use std::path::PathBuf;
 use std::process::Output;
 
 const CUBIC: &str = r#"{"bezier": [[-0.95, 0.7], [-0.3, 0.5], [0.3, -2.5], [0.9, -0.2]]}"#;
@@ -499,22 +498,6 @@ fn curve_out_and_path_out_read_back_as_the_certified_curve() {
     ]);
     assert_eq!(g2.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&g2.stderr).contains("--path-out"));
-}
-
-/// A system font for the glyph tests: CI installs DejaVu (fonts-dejavu-core)
-/// and sets `LNCERT_REQUIRE_FONT=1`; elsewhere the tests skip without it.
-fn dejavu() -> Option<PathBuf> {
-    let p = PathBuf::from("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf");
-    if p.exists() {
-        return Some(p);
-    }
-    assert!(
-        std::env::var("LNCERT_REQUIRE_FONT").is_err(),
-        "LNCERT_REQUIRE_FONT is set but {} is missing",
-        p.display()
-    );
-    eprintln!("skipped: no DejaVu font at {}", p.display());
-    None
 }
 
 /// `--glyph`: a TrueType glyph's closed contours, exactly as stored

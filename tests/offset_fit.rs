@@ -5,7 +5,7 @@
 //! results consist of exact grid multiples; bad `--output`/`--grid` exit 2.
 
 mod common;
-use common::{lncert, tmp};
+use common::{lncert, max_spacing, sampled_one_sided, tmp};
 
 use lncert::approx::conv::{pen_point, Angle, Pen};
 use lncert::approx::{
@@ -59,23 +59,12 @@ fn check_samples(x: &[Bezier<Rational>], e: &Exact, r: &OffsetResult) {
         let approx: Vec<V2<f64>> = (0..=N)
             .map(|i| s.bezier.eval(&(i as f64 / N as f64)))
             .collect();
-        let spacing = |v: &[V2<f64>]| {
-            v.windows(2)
-                .map(|w| w[1].sub(&w[0]).norm2().sqrt())
-                .fold(0.0, f64::max)
-        };
-        let one_sided = |from: &[V2<f64>], to: &[V2<f64>]| {
-            from.iter()
-                .map(|p| {
-                    to.iter()
-                        .map(|q| p.sub(q).norm2().sqrt())
-                        .fold(f64::INFINITY, f64::min)
-                })
-                .fold(0.0, f64::max)
-        };
-        let h1 = one_sided(&exact, &approx);
-        let h2 = one_sided(&approx, &exact);
-        let (sa, se) = (spacing(&approx) / 2.0 + 1e-9, spacing(&exact) / 2.0 + 1e-9);
+        let h1 = sampled_one_sided(&exact, &approx);
+        let h2 = sampled_one_sided(&approx, &exact);
+        let (sa, se) = (
+            max_spacing(&approx) / 2.0 + 1e-9,
+            max_spacing(&exact) / 2.0 + 1e-9,
+        );
         assert!(
             h1 <= s.error.1 + sa,
             "exact→fit {h1} > {} + {sa}",

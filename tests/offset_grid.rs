@@ -6,14 +6,13 @@
 //! point can reach is reported not reached.
 
 mod common;
-use common::{lncert, tmp};
+use common::{dejavu, lncert, max_spacing, sampled_one_sided, tmp};
 
 use lncert::approx::gridfit::{offset_on_grid, GridOffset};
 use lncert::approx::{OffsetOptions, Output};
 use lncert::curve::{Bezier, V2};
 use lncert::scalar::{parse_rational, Rational, Scalar};
 use lncert::shape::parse_curve;
-use std::path::PathBuf;
 
 fn q(s: &str) -> Rational {
     parse_rational(s).unwrap()
@@ -72,29 +71,14 @@ fn sampled_agrees(x: &[Bezier<Rational>], d: f64, r: &GridOffset) {
         .iter()
         .flat_map(|s| (0..=200).map(move |i| s.bezier.eval(&(i as f64 / 200.0))))
         .collect();
-    let spacing = |v: &[V2<f64>]| {
-        v.windows(2)
-            .map(|w| w[1].sub(&w[0]).norm2().sqrt())
-            .filter(|s| *s < 50.0)
-            .fold(0.0, f64::max)
-    };
-    let one_sided = |from: &[V2<f64>], to: &[V2<f64>]| {
-        from.iter()
-            .map(|p| {
-                to.iter()
-                    .map(|q| p.sub(q).norm2().sqrt())
-                    .fold(f64::INFINITY, f64::min)
-            })
-            .fold(0.0, f64::max)
-    };
-    let h1 = one_sided(&exact, &fit);
-    let h2 = one_sided(&fit, &exact);
+    let h1 = sampled_one_sided(&exact, &fit);
+    let h2 = sampled_one_sided(&fit, &exact);
     assert!(
-        h1 <= r.certified_hi + spacing(&fit) / 2.0 + 1e-9,
+        h1 <= r.certified_hi + max_spacing(&fit) / 2.0 + 1e-9,
         "exact→fit {h1}"
     );
     assert!(
-        h2 <= r.certified_hi + spacing(&exact) / 2.0 + 1e-9,
+        h2 <= r.certified_hi + max_spacing(&exact) / 2.0 + 1e-9,
         "fit→exact {h2}"
     );
     // the grid really is coarser than the tolerance: plain rounding of the
@@ -169,20 +153,6 @@ fn bad_grid_options_are_typed_errors() {
         .unwrap_err()
         .to_string()
         .contains("output"));
-}
-
-fn dejavu() -> Option<PathBuf> {
-    let p = PathBuf::from("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf");
-    if p.exists() {
-        return Some(p);
-    }
-    assert!(
-        std::env::var("LNCERT_REQUIRE_FONT").is_err(),
-        "LNCERT_REQUIRE_FONT is set but {} is missing",
-        p.display()
-    );
-    eprintln!("skipped: no DejaVu font at {}", p.display());
-    None
 }
 
 /// The command: a glyph in em, `--grid 1/2048` (integer font units of

@@ -16,39 +16,6 @@ fn test_cubic() -> Vec<Bezier<Rational>> {
 }
 
 /// Points along a piece (floats).
-fn sample_piece(p: &Piece, n: usize) -> Vec<(f64, f64)> {
-    match p {
-        Piece::Bezier(b) => {
-            let f = b.map(Scalar::approx);
-            (0..=n)
-                .map(|k| {
-                    let v = f.eval_fast(k as f64 / n as f64);
-                    (v.x, v.y)
-                })
-                .collect()
-        }
-        Piece::Arc(a) => {
-            let c = (a.center.x.approx(), a.center.y.approx());
-            let r = a.radius.approx();
-            let u = (a.from.x.approx() - c.0, a.from.y.approx() - c.1);
-            let v = (a.to.x.approx() - c.0, a.to.y.approx() - c.1);
-            let t0 = u.1.atan2(u.0);
-            let mut d = v.1.atan2(v.0) - t0;
-            if a.clockwise {
-                d = -(-d).rem_euclid(2.0 * std::f64::consts::PI);
-            } else {
-                d = d.rem_euclid(2.0 * std::f64::consts::PI);
-            }
-            (0..=n)
-                .map(|k| {
-                    let t = t0 + d * k as f64 / n as f64;
-                    (c.0 + r * t.cos(), c.1 + r * t.sin())
-                })
-                .collect()
-        }
-    }
-}
-
 /// Distance from p to the curve by dense sampling and golden-section refinement.
 fn dist_to_curve(curve: &[Bezier<f64>], p: (f64, f64)) -> f64 {
     let mut best = f64::INFINITY;
@@ -87,7 +54,7 @@ fn dist_to_curve(curve: &[Bezier<f64>], p: (f64, f64)) -> f64 {
 fn output_points(s: &Stroke, n: usize) -> Vec<(f64, f64)> {
     s.contours
         .iter()
-        .flat_map(|c| c.pieces.iter().flat_map(|p| sample_piece(p, n)))
+        .flat_map(|c| c.pieces.iter().flat_map(|p| p.sample(n)))
         .collect()
 }
 
@@ -621,7 +588,7 @@ fn ellipse_cap_error_is_certified_and_within_budget() {
         };
         let mut worst: f64 = 0.0;
         for b in &cap.pieces {
-            for p in sample_piece(&Piece::Bezier(b.clone()), 50) {
+            for p in Piece::Bezier(b.clone()).sample(50) {
                 worst = worst.max(dist(p));
             }
         }

@@ -7,7 +7,7 @@
 //! dense polyline of the curve.
 
 use lncert::curve::Bezier;
-use lncert::outline::trim::{stroke, Orientation, Piece, StrokeOptions};
+use lncert::outline::trim::{stroke, Orientation, StrokeOptions};
 use lncert::reproduce::strokes::{lens, lens_radius};
 use lncert::scalar::{Rational, Scalar};
 
@@ -79,38 +79,6 @@ fn signed_area(poly: &[P]) -> f64 {
         / 2.0
 }
 
-fn sample_piece(p: &Piece, n: usize) -> Vec<P> {
-    match p {
-        Piece::Bezier(b) => {
-            let f = b.map(Scalar::approx);
-            (0..=n)
-                .map(|k| {
-                    let v = f.eval_fast(k as f64 / n as f64);
-                    (v.x, v.y)
-                })
-                .collect()
-        }
-        Piece::Arc(a) => {
-            let c = (a.center.x.approx(), a.center.y.approx());
-            let r = a.radius.approx();
-            let t0 = (a.from.y.approx() - c.1).atan2(a.from.x.approx() - c.0);
-            let t1 = (a.to.y.approx() - c.1).atan2(a.to.x.approx() - c.0);
-            let tau = 2.0 * std::f64::consts::PI;
-            let d = if a.clockwise {
-                -(t0 - t1).rem_euclid(tau)
-            } else {
-                (t1 - t0).rem_euclid(tau)
-            };
-            (0..=n)
-                .map(|k| {
-                    let t = t0 + d * k as f64 / n as f64;
-                    (c.0 + r * t.cos(), c.1 + r * t.sin())
-                })
-                .collect()
-        }
-    }
-}
-
 #[test]
 fn closed_lens_inner_offset_loops_are_cut() {
     let x = lens();
@@ -159,7 +127,7 @@ fn closed_lens_inner_offset_loops_are_cut() {
         }
         assert_eq!(c.pieces.last().unwrap().end(), c.pieces[0].start());
         // the hole's own polyline does not cross itself
-        let poly: Vec<P> = c.pieces.iter().flat_map(|p| sample_piece(p, 40)).collect();
+        let poly: Vec<P> = c.pieces.iter().flat_map(|p| p.sample(40)).collect();
         assert_eq!(self_crossings(&poly), 0, "a sampled contour crosses itself");
     }
     // every sampled output point is r ± tol from the curve (the polyline's
@@ -167,7 +135,7 @@ fn closed_lens_inner_offset_loops_are_cut() {
     let slack = 1e-6;
     let mut worst: f64 = 0.0;
     for c in &s.contours {
-        for p in c.pieces.iter().flat_map(|p| sample_piece(p, 40)) {
+        for p in c.pieces.iter().flat_map(|p| p.sample(40)) {
             let d = dist(&curve, p);
             assert!(
                 d >= rf - tol - slack,
@@ -186,7 +154,7 @@ fn closed_lens_inner_offset_loops_are_cut() {
     let out: Vec<P> = s
         .contours
         .iter()
-        .flat_map(|c| c.pieces.iter().flat_map(|p| sample_piece(p, 200)))
+        .flat_map(|c| c.pieces.iter().flat_map(|p| p.sample(200)))
         .collect();
     let out_poly_dist = |p: P| {
         out.iter()

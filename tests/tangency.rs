@@ -193,6 +193,16 @@ fn planted() -> impl Strategy<Value = Planted> {
         })
 }
 
+/// Exact: the oracle root's `m` lies in `cert` iff its defining polynomial has
+/// a root in the isolating interval ∩ `cert` (it has exactly one in the former).
+fn inside(cert: &Interval, o: &lncert::tangency::eliminate::OracleRoot) -> bool {
+    let lo = rational_from_f64(cert.inf()).unwrap();
+    let hi = rational_from_f64(cert.sup()).unwrap();
+    let a = if o.m.lo > lo { o.m.lo.clone() } else { lo };
+    let b = if o.m.hi < hi { o.m.hi.clone() } else { hi };
+    a <= b && count_distinct_roots(&o.defining, &Span::closed(a, b)) == RootCount::Finite(1)
+}
+
 /// Every oracle root lies in exactly one certified box and every certified
 /// box holds exactly one oracle root; both answers complete.
 fn assert_same_roots(rep: &TangencyReport, orc: &OracleSolution) {
@@ -209,15 +219,6 @@ fn assert_same_roots(rep: &TangencyReport, orc: &OracleSolution) {
         rep.roots,
         orc.roots
     );
-    let inside = |cert: &Interval, o: &lncert::tangency::eliminate::OracleRoot| -> bool {
-        // Exact: the oracle root m lies in [lo, hi] iff the defining polynomial has
-        // a root in the isolating interval ∩ [lo, hi] (it has exactly one in the former).
-        let lo = rational_from_f64(cert.inf()).unwrap();
-        let hi = rational_from_f64(cert.sup()).unwrap();
-        let a = if o.m.lo > lo { o.m.lo.clone() } else { lo };
-        let b = if o.m.hi < hi { o.m.hi.clone() } else { hi };
-        a <= b && count_distinct_roots(&o.defining, &Span::closed(a, b)) == RootCount::Finite(1)
-    };
     for o in &orc.roots {
         let hits = rep
             .roots
@@ -246,13 +247,6 @@ fn assert_same_roots(rep: &TangencyReport, orc: &OracleSolution) {
 fn assert_sound_partial(rep: &TangencyReport, orc: &OracleSolution) {
     assert!(orc.complete(), "oracle incomplete: {orc:?}");
     assert!(!rep.complete && !rep.undecided.is_empty());
-    let inside = |cert: &Interval, o: &lncert::tangency::eliminate::OracleRoot| -> bool {
-        let lo = rational_from_f64(cert.inf()).unwrap();
-        let hi = rational_from_f64(cert.sup()).unwrap();
-        let a = if o.m.lo > lo { o.m.lo.clone() } else { lo };
-        let b = if o.m.hi < hi { o.m.hi.clone() } else { hi };
-        a <= b && count_distinct_roots(&o.defining, &Span::closed(a, b)) == RootCount::Finite(1)
-    };
     for c in &rep.roots {
         let hits = orc
             .roots

@@ -159,7 +159,8 @@ fn write_strokes(dir: &std::path::Path, runs: &[Run]) -> Result<Vec<PathBuf>, Cl
                 })
                 .collect();
         let path = dir.join(format!("{name}.svg"));
-        let svg = lncert::reproduce::strokes::svg_picture(s, &r.curve);
+        let d = super::stroke::path_data(s).unwrap_or_else(|_| super::stroke::fallback_path(s));
+        let svg = super::stroke::svg(s, &r.curve, &d);
         std::fs::write(&path, svg).map_err(|e| {
             super::args::bad("--out", format!("cannot write {}: {e}", path.display()))
         })?;

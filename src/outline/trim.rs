@@ -226,6 +226,41 @@ impl Piece {
             Piece::Arc(a) => Piece::Arc(a.reversed()),
         }
     }
+    /// `n + 1` float points of the piece, from its start to its end (for
+    /// pictures and sampled checks; nothing certified rests on them).
+    pub fn sample(&self, n: usize) -> Vec<(f64, f64)> {
+        let n = n.max(1);
+        match self {
+            Piece::Bezier(b) => {
+                let f = b.map(Scalar::approx);
+                (0..=n)
+                    .map(|k| {
+                        let v = f.eval_fast(k as f64 / n as f64);
+                        (v.x, v.y)
+                    })
+                    .collect()
+            }
+            Piece::Arc(a) => {
+                let c = (a.center.x.approx(), a.center.y.approx());
+                let r = a.radius.approx();
+                let t0 = (a.from.y.approx() - c.1).atan2(a.from.x.approx() - c.0);
+                let t1 = (a.to.y.approx() - c.1).atan2(a.to.x.approx() - c.0);
+                let tau = std::f64::consts::TAU;
+                let d = if a.clockwise {
+                    -(t0 - t1).rem_euclid(tau)
+                } else {
+                    (t1 - t0).rem_euclid(tau)
+                };
+                (0..=n)
+                    .map(|k| {
+                        let t = t0 + d * k as f64 / n as f64;
+                        (c.0 + r * t.cos(), c.1 + r * t.sin())
+                    })
+                    .collect()
+            }
+        }
+    }
+
     /// `½∫(x dy − y dx)` along the piece: exact for a Bézier, enclosed for an arc.
     pub fn area_term(&self) -> Option<Interval> {
         match self {

@@ -18,7 +18,6 @@ use crate::outline::trim::{stroke, Orientation, Piece, Stroke, StrokeOptions};
 use crate::scalar::{Rational, Scalar};
 use crate::shape::{ArcDesc, ShapeDesc, ShapeError};
 use rayon::prelude::*;
-use std::fmt::Write as _;
 use std::time::Instant;
 
 /// The tolerance of the `stroke-…` claims (chosen for run time: the whole
@@ -135,86 +134,6 @@ pub fn control_points(s: &Stroke) -> usize {
                 .sum::<usize>()
         })
         .sum()
-}
-
-fn sample_piece(p: &Piece, n: usize) -> Vec<(f64, f64)> {
-    match p {
-        Piece::Bezier(b) => {
-            let f = b.map(Scalar::approx);
-            (0..=n)
-                .map(|k| {
-                    let v = f.eval_fast(k as f64 / n as f64);
-                    (v.x, v.y)
-                })
-                .collect()
-        }
-        Piece::Arc(a) => {
-            let c = (a.center.x.approx(), a.center.y.approx());
-            let r = a.radius.approx();
-            let ang = |v: &V2<Rational>| (v.y.approx() - c.1).atan2(v.x.approx() - c.0);
-            let t0 = ang(&a.from);
-            let tau = 2.0 * std::f64::consts::PI;
-            let d = ang(&a.to) - t0;
-            let d = if a.clockwise {
-                -(-d).rem_euclid(tau)
-            } else {
-                d.rem_euclid(tau)
-            };
-            (0..=n)
-                .map(|k| {
-                    let t = t0 + d * k as f64 / n as f64;
-                    (c.0 + r * t.cos(), c.1 + r * t.sin())
-                })
-                .collect()
-        }
-    }
-}
-
-/// An SVG picture: the filled outline (pieces drawn as fine polylines) over
-/// the skeleton curve.
-pub fn svg_picture(s: &Stroke, curve: &[Bezier<Rational>]) -> String {
-    let mut d = String::new();
-    let mut pts_all = Vec::new();
-    for c in &s.contours {
-        let pts: Vec<(f64, f64)> = c.pieces.iter().flat_map(|p| sample_piece(p, 24)).collect();
-        for (k, p) in pts.iter().enumerate() {
-            let _ = write!(d, "{} {} {} ", if k == 0 { "M" } else { "L" }, p.0, p.1);
-        }
-        d.push_str("Z ");
-        pts_all.extend(pts);
-    }
-    let mut skel = String::new();
-    for b in curve {
-        let f = b.map(Scalar::approx);
-        for k in 0..=32 {
-            let v = f.eval_fast(k as f64 / 32.0);
-            let _ = write!(skel, "{} {} {} ", if k == 0 { "M" } else { "L" }, v.x, v.y);
-            pts_all.push((v.x, v.y));
-        }
-    }
-    let (mut lo, mut hi) = (
-        (f64::INFINITY, f64::INFINITY),
-        (f64::NEG_INFINITY, f64::NEG_INFINITY),
-    );
-    for p in &pts_all {
-        lo = (lo.0.min(p.0), lo.1.min(p.1));
-        hi = (hi.0.max(p.0), hi.1.max(p.1));
-    }
-    let (w, h) = ((hi.0 - lo.0).max(1e-9), (hi.1 - lo.1).max(1e-9));
-    let m = 0.05 * w.max(h);
-    format!(
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"{} {} {} {}\" width=\"800\">\n\
-         <g transform=\"scale(1,-1)\">\n\
-         <path d=\"{d}\" fill=\"#9cc3e6\" fill-rule=\"nonzero\" stroke=\"#1f4e79\" stroke-width=\"{}\"/>\n\
-         <path d=\"{skel}\" fill=\"none\" stroke=\"#c00000\" stroke-width=\"{}\"/>\n\
-         </g>\n</svg>\n",
-        lo.0 - m,
-        -hi.1 - m,
-        w + 2.0 * m,
-        h + 2.0 * m,
-        w.max(h) / 400.0,
-        w.max(h) / 300.0,
-    )
 }
 
 /// One computed stroke of the reproduce family.

@@ -188,3 +188,38 @@ pub fn tmp(name: &str, text: &str) -> std::path::PathBuf {
     std::fs::write(&p, text).unwrap();
     p
 }
+
+/// A system font for the glyph tests: CI installs DejaVu (fonts-dejavu-core)
+/// and sets `LNCERT_REQUIRE_FONT=1`; elsewhere the tests skip without it.
+pub fn dejavu() -> Option<std::path::PathBuf> {
+    let p = std::path::PathBuf::from("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf");
+    if p.exists() {
+        return Some(p);
+    }
+    assert!(
+        std::env::var("LNCERT_REQUIRE_FONT").is_err(),
+        "LNCERT_REQUIRE_FONT is set but {} is missing",
+        p.display()
+    );
+    eprintln!("skipped: no DejaVu font at {}", p.display());
+    None
+}
+
+/// The largest distance between consecutive samples (a sampled one-sided
+/// distance exceeds the true one by at most half of the target's).
+pub fn max_spacing(v: &[V2<f64>]) -> f64 {
+    v.windows(2)
+        .map(|w| w[1].sub(&w[0]).norm2().sqrt())
+        .fold(0.0, f64::max)
+}
+
+/// The sampled one-sided distance `max_{p ∈ from} min_{q ∈ to} |p − q|`.
+pub fn sampled_one_sided(from: &[V2<f64>], to: &[V2<f64>]) -> f64 {
+    from.iter()
+        .map(|p| {
+            to.iter()
+                .map(|q| p.sub(q).norm2().sqrt())
+                .fold(f64::INFINITY, f64::min)
+        })
+        .fold(0.0, f64::max)
+}
