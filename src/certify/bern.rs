@@ -40,12 +40,13 @@
 
 use crate::scalar::Interval;
 
-/// Most control points handled on the stack (larger pieces take the interval path).
-const MAX: usize = 32;
+/// Most control points handled (on the stack): every piece a shape may hold
+/// ([`crate::shape::MAX_CONTROL_POINTS`]).
+const MAX: usize = crate::shape::MAX_CONTROL_POINTS;
 
 /// The enclosure described in the module docs; `None` (use interval de
 /// Casteljau) when `t ⊄ [0, 1]`, a coefficient is not finite, or the piece has
-/// more than 32 control points.
+/// more than [`MAX`] control points.
 pub(crate) fn enclose(pts: &[(Interval, Interval)], t: Interval) -> Option<(Interval, Interval)> {
     let n = pts.len();
     if n == 0 || n > MAX || t.is_empty() {

@@ -43,6 +43,7 @@ use piece::Pieces;
 
 pub use cert::{Certificate, MapCover};
 pub use param::Parametric;
+pub use same::verify_against;
 
 pub use search::{Config, CoverBox, OneSided};
 

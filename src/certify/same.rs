@@ -17,7 +17,10 @@
 //!
 //! Every comparison is exact (rational arithmetic).
 
+use super::verify::{verify_json, Invalid, Valid};
 use crate::curve::{Bezier, V2};
+use crate::json::{parse, Limits};
+use crate::poly::binomial_big;
 use crate::scalar::Rational;
 use crate::shape::{ArcDesc, ShapeDesc};
 use num_bigint::BigInt;
@@ -131,6 +134,74 @@ fn same_arc(a: &ArcDesc, b: &ArcDesc) -> Result<(), String> {
     Ok(())
 }
 
+/// Verifies a certificate ([`verify_json`]) and checks that it is about
+/// exactly the shapes `a` and `b` ([`ShapeDesc::same_as`]): what `lncert
+/// verify CERT --against A B` runs.
+///
+/// The certificate's shapes are read back by the user-language reader and
+/// must read back to the very document the verifier checked (the canonical
+/// form is a fixpoint), so the shapes compared are the shapes proven. The
+/// comparison costs `O(n · m)` exact operations per piece of `n + 1` control
+/// points matched against a piece of reduced degree `m` (see
+/// `proofs/certify-hausdorff.md`, "Same shapes"): about linear in the
+/// certificate's size, like the verification itself.
+///
+/// Shapes read from SVG arcs, circles, ellipses or rounded rects are their
+/// certified cubic approximations ([`crate::shape::InputApprox`]): a `Valid`
+/// here is then about the approximation, which the caller must say.
+///
+/// # Examples
+/// ```
+/// use lncert::certify::{hausdorff, verify_against, Certificate, Config};
+/// use lncert::shape::ShapeDesc;
+/// use lncert::scalar::parse_rational;
+/// let a = ShapeDesc::parse("M 0 0 Q 0.5 0.5 1 0").unwrap();
+/// let b = ShapeDesc::parse("M 0 0 L 1 0").unwrap();
+/// let cfg = Config { tol: Some(0.26), parametric: false, ..Config::default() };
+/// let r = hausdorff(&a, &b, &cfg).unwrap();
+/// let cert = Certificate::new(&a, &b, &parse_rational("0.26").unwrap(), &r).unwrap();
+/// let text = cert.to_json_string();
+/// assert!(verify_against(&text, &a, &b).is_ok());
+/// // a dot far away added to B: not the shape the certificate speaks about
+/// let b_dot = ShapeDesc::parse("M 0 0 L 1 0 M 5 0 L 5 0").unwrap();
+/// assert_eq!(verify_against(&text, &a, &b_dot).unwrap_err().at, "b");
+/// ```
+pub fn verify_against(text: &str, a: &ShapeDesc, b: &ShapeDesc) -> Result<Valid, Invalid> {
+    let doc = parse(text, &Limits::DEFAULT).map_err(|e| Invalid {
+        at: e.path.clone(),
+        reason: format!("{} (line {}, column {})", e.reason, e.line, e.column),
+    })?;
+    let valid = verify_json(&doc)?;
+    for (key, mine) in [("a", a), ("b", b)] {
+        // a valid certificate has both keys, in the canonical form
+        let value = doc
+            .get(key)
+            .ok_or_else(|| Invalid {
+                at: key.into(),
+                reason: "missing".into(),
+            })?
+            .to_value();
+        let theirs = ShapeDesc::from_value(&value).map_err(|e| Invalid {
+            at: key.into(),
+            reason: e.to_string(),
+        })?;
+        if theirs.to_json() != value {
+            return Err(Invalid {
+                at: key.into(),
+                reason: "the shape does not read back to itself in the canonical form".into(),
+            });
+        }
+        theirs.same_as(mine).map_err(|why| Invalid {
+            at: key.into(),
+            reason: format!(
+                "the certificate is about another shape than --against {}: {why}",
+                key.to_uppercase()
+            ),
+        })?;
+    }
+    Ok(valid)
+}
+
 /// The exact `k`-th root of a positive rational, if it is rational.
 fn rational_root(r: &Rational, k: u32) -> Option<Rational> {
     let root = |n: &BigInt| {
@@ -140,110 +211,224 @@ fn rational_root(r: &Rational, k: u32) -> Option<Rational> {
     Some(Rational::new(root(r.numer())?, root(r.denom())?))
 }
 
-/// `h > 0` with `u = h^k v` for the first order `k` at which `v` (the
-/// derivatives of the longer-or-equal piece at its start) is nonzero.
-fn speed_ratio(u: &Piece, v: &Piece) -> Option<Rational> {
-    let (mut du, mut dv) = (u.clone(), v.clone());
-    for k in 1..=v.degree().max(1) as u32 {
-        du = du.hodograph();
-        dv = dv.hodograph();
-        let (pu, pv) = (&du.points()[0], &dv.points()[0]);
-        if pv.x.is_zero() && pv.y.is_zero() {
-            if pu.x.is_zero() && pu.y.is_zero() {
-                continue;
-            }
-            return None;
-        }
-        if !positively_parallel(pu, pv) && !(k % 2 == 0 && pu.cross(pv).is_zero()) {
-            return None;
-        }
-        let ratio = if pv.x.is_zero() {
-            &pu.y / &pv.y
-        } else {
-            &pu.x / &pv.x
-        };
-        if !ratio.is_positive() {
-            return None;
-        }
-        return rational_root(&ratio, k);
-    }
-    None
+/// A polynomial piece in the power basis, `p(t) = Σ c[k] tᵏ`, of exact degree
+/// `c.len() − 1` (the last coefficient is nonzero unless the piece is a point).
+type Power = Vec<V2<Rational>>;
+
+fn is_zero(v: &V2<Rational>) -> bool {
+    v.x.is_zero() && v.y.is_zero()
 }
 
-fn elevate_to(b: &Piece, n: usize) -> Piece {
-    let mut b = b.clone();
-    while b.degree() < n {
-        b = b.elevate();
+/// A Bézier piece in the power basis, if its exact degree is at most `limit`.
+///
+/// A Bézier curve of degree `n` has degree `≤ m` exactly when its control
+/// points are a polynomial of degree `≤ m` in their index, i.e. when all the
+/// `(m+1)`-th forward differences `Δᵐ⁺¹Pᵢ` vanish (a degree-`m` curve written
+/// with `n + 1` points has `Pᵢ = Σₖ aₖ C(i, k)/C(n, k)`, of degree `m` in `i`).
+/// Its power coefficients are then `aₖ = C(n, k) ΔᵏP₀`. Only the differences
+/// up to order `limit + 1` are formed: `O(n · limit)` operations, so a piece
+/// of high written degree costs little when it is compared with one of low
+/// degree (the cost of `--against` stays linear in the certificate's size).
+fn power_basis(b: &Piece, limit: usize) -> Option<Power> {
+    let n = b.degree();
+    let mut level: Vec<V2<Rational>> = b.points().to_vec();
+    let mut first = vec![level[0].clone()];
+    for k in 1..=n {
+        level = level.windows(2).map(|w| w[1].sub(&w[0])).collect();
+        if level.iter().all(is_zero) {
+            break;
+        }
+        if k > limit {
+            return None;
+        }
+        first.push(level[0].clone());
     }
-    b
+    Some(
+        first
+            .into_iter()
+            .enumerate()
+            .map(|(k, d)| d.scale(&Rational::from_integer(binomial_big(n, k))))
+            .collect(),
+    )
+}
+
+/// The coefficients of `p(a + u)` in `u` (Taylor shift, `O(deg²)`).
+fn taylor(p: &Power, a: &Rational) -> Power {
+    let mut c = p.clone();
+    if a.is_zero() {
+        return c;
+    }
+    let m = c.len() - 1;
+    for i in 0..m {
+        for j in (i..m).rev() {
+            let t = c[j + 1].scale(a);
+            c[j] = c[j].add(&t);
+        }
+    }
+    c
 }
 
 fn is_point(b: &Piece) -> bool {
     b.points().iter().all(|p| *p == b.points()[0])
 }
 
+/// One side of the match: the pieces, their power bases once formed, and the
+/// cursor (the piece and the parameter where its unmatched part starts).
+struct Side<'a> {
+    pieces: &'a [Piece],
+    power: Vec<Option<Power>>,
+    at: usize,
+    t: Rational,
+}
+
+impl<'a> Side<'a> {
+    fn new(pieces: &'a [Piece]) -> Self {
+        Side {
+            pieces,
+            power: vec![None; pieces.len()],
+            at: 0,
+            t: Rational::zero(),
+        }
+    }
+    fn done(&self) -> bool {
+        self.at >= self.pieces.len()
+    }
+    fn piece(&self) -> &Piece {
+        &self.pieces[self.at]
+    }
+    /// The power basis of the current piece, formed with the degree `limit`.
+    fn power(&mut self, limit: usize) -> Option<&Power> {
+        if self.power[self.at].is_none() {
+            self.power[self.at] = power_basis(&self.pieces[self.at], limit);
+        }
+        self.power[self.at].as_ref()
+    }
+    /// The point where the unmatched part starts.
+    fn point(&mut self) -> V2<Rational> {
+        if self.t.is_zero() {
+            return self.piece().points()[0].clone();
+        }
+        // only a piece matched in part has t > 0, and its power basis is formed
+        let t = self.t.clone();
+        let p = self.power[self.at].as_ref().expect("formed when matched");
+        let mut v = p[p.len() - 1].clone();
+        for c in p.iter().rev().skip(1) {
+            v = v.scale(&t).add(c);
+        }
+        v
+    }
+    fn next(&mut self) {
+        self.at += 1;
+        self.t = Rational::zero();
+    }
+    /// The end point of the last piece.
+    fn last_point(&self) -> Option<&V2<Rational>> {
+        self.pieces.last().map(|b| &b.points()[b.degree()])
+    }
+}
+
 /// The same curve up to splitting pieces and degree elevation (same direction).
+///
+/// A walk with a cursor on each side. Each step either consumes a single-point
+/// piece of one side lying at the other side's cursor point, or matches the
+/// unmatched parts as `x(a + s) = y(c + h s)`, `0 ≤ s ≤ ℓ`, for one rational
+/// `h > 0` (both Taylor expansions at the cursors agree term by term with the
+/// factor `hᵏ`) and advances both cursors to the end of the shorter part.
+/// Pieces left over at the end must be single points at the other curve's end
+/// point. `proofs/certify-hausdorff.md` ("Same shapes") proves that a curve
+/// accepted here has the same point set as the other.
 fn same_curve(x: &[Piece], y: &[Piece]) -> Result<(), String> {
     let one = Rational::one();
-    // cursors: piece index and start parameter of its remaining part
-    let (mut i, mut a) = (0usize, Rational::zero());
-    let (mut j, mut c) = (0usize, Rational::zero());
-    let rest = |p: &Piece, s: &Rational| {
-        if s.is_zero() {
-            p.clone()
-        } else {
-            p.restrict(s, &one)
-        }
-    };
-    let mut steps = 0usize;
-    while i < x.len() && j < y.len() {
-        steps += 1;
-        if steps > 4 * (x.len() + y.len()) {
-            return Err("too many pieces to match".into());
-        }
-        let (u, v) = (rest(&x[i], &a), rest(&y[j], &c));
-        let at = || format!("piece {i} (from its parameter {a}) against piece {j} (from {c})");
-        if u.points()[0] != v.points()[0] {
-            return Err(format!("{}: different start points", at()));
-        }
-        // single points add nothing to the point set once their neighbour starts there
-        if is_point(&u) || is_point(&v) {
-            if is_point(&u) {
-                (i, a) = (i + 1, Rational::zero());
+    let (mut xs, mut ys) = (Side::new(x), Side::new(y));
+    while !xs.done() && !ys.done() {
+        let at = |xs: &Side, ys: &Side| {
+            format!(
+                "piece {} (from its parameter {}) against piece {} (from {})",
+                xs.at, xs.t, ys.at, ys.t
+            )
+        };
+        // single points add nothing to the point set once the other side's
+        // cursor point is that point
+        let (px, py) = (
+            xs.t.is_zero() && is_point(xs.piece()),
+            ys.t.is_zero() && is_point(ys.piece()),
+        );
+        if px || py {
+            if xs.point() != ys.point() {
+                return Err(format!("{}: different start points", at(&xs, &ys)));
             }
-            if is_point(&v) {
-                (j, c) = (j + 1, Rational::zero());
+            if px {
+                xs.next();
+            }
+            if py {
+                ys.next();
             }
             continue;
         }
-        let n = u.degree().max(v.degree());
-        let (u, v) = (elevate_to(&u, n), elevate_to(&v, n));
-        // u(s) = v(h s) with h ≤ 1, or v(s) = u(s / h) with h > 1
-        let h = speed_ratio(&u, &v)
-            .ok_or_else(|| format!("{}: different directions or speeds at the start", at()))?;
-        if h <= one {
-            if u != v.restrict(&Rational::zero(), &h) {
-                return Err(format!("{}: different curves", at()));
-            }
-            // x's piece is used up; y's advances to c + h (1 − c)
-            c = &c + &h * (&one - &c);
-            (i, a) = (i + 1, Rational::zero());
-            if c == one {
-                (j, c) = (j + 1, Rational::zero());
-            }
+        // the power bases: the piece written with fewer points is reduced in
+        // full, the other only up to that degree
+        let limit = xs.piece().degree().min(ys.piece().degree());
+        let (u, v) = match (xs.power(limit).cloned(), ys.power(limit).cloned()) {
+            (Some(u), Some(v)) => (taylor(&u, &xs.t), taylor(&v, &ys.t)),
+            _ => return Err(format!("{}: different degrees", at(&xs, &ys))),
+        };
+        if u.len() != v.len() {
+            return Err(format!("{}: different degrees", at(&xs, &ys)));
+        }
+        if u[0] != v[0] {
+            return Err(format!("{}: different start points", at(&xs, &ys)));
+        }
+        // uₖ = hᵏ vₖ: h from the first nonzero order, then every order checked
+        let k0 = (1..u.len())
+            .find(|&k| !is_zero(&u[k]) || !is_zero(&v[k]))
+            .expect("a piece that is not a point has a nonzero coefficient");
+        let (uk, vk) = (&u[k0], &v[k0]);
+        let h = if positively_parallel(uk, vk) {
+            let ratio = if vk.x.is_zero() {
+                &uk.y / &vk.y
+            } else {
+                &uk.x / &vk.x
+            };
+            rational_root(&ratio, k0 as u32)
         } else {
-            let g = one.clone() / &h;
-            if v != u.restrict(&Rational::zero(), &g) {
-                return Err(format!("{}: different curves", at()));
+            None
+        }
+        .ok_or_else(|| format!("{}: different directions or speeds", at(&xs, &ys)))?;
+        let mut hk = one.clone();
+        for k in 1..u.len() {
+            hk = &hk * &h;
+            if u[k] != v[k].scale(&hk) {
+                return Err(format!("{}: different curves", at(&xs, &ys)));
             }
-            a = &a + &g * (&one - &a);
-            (j, c) = (j + 1, Rational::zero());
+        }
+        // x(a + s) = y(c + h s) for s up to the end of the shorter part
+        let len = (&one - &xs.t).min((&one - &ys.t) / &h);
+        xs.t = &xs.t + &len;
+        ys.t = &ys.t + &h * &len;
+        if xs.t == one {
+            xs.next();
+        }
+        if ys.t == one {
+            ys.next();
         }
     }
-    // trailing single points
-    let trailing_points = |p: &[Piece], k: usize| p[k.min(p.len())..].iter().all(is_point);
-    if (i < x.len() && !trailing_points(x, i)) || (j < y.len() && !trailing_points(y, j)) {
-        return Err("one curve continues where the other ends".into());
+    // pieces left over: single points at the other curve's end point
+    for (rest, other, name) in [(&xs, &ys, "first"), (&ys, &xs, "second")] {
+        if rest.done() {
+            continue;
+        }
+        let end = other.last_point();
+        let ok = rest.t.is_zero()
+            && rest.pieces[rest.at..]
+                .iter()
+                .all(|b| is_point(b) && Some(&b.points()[0]) == end);
+        if !ok {
+            return Err(format!(
+                "the {name} curve continues where the other ends (piece {} of {})",
+                rest.at,
+                rest.pieces.len()
+            ));
+        }
     }
     Ok(())
 }

@@ -56,13 +56,8 @@ pub struct HausdorffArgs {
     pub json: bool,
 }
 
-/// Reads a shape file; errors name the argument. What was approximated (SVG
-/// arcs, circles, ellipses) is dropped: [`read_shape_reported`] returns it.
-pub fn read_shape(flag: &str, path: &PathBuf) -> Result<ShapeDesc, CliError> {
-    read_shape_reported(flag, path).map(|(shape, _)| shape)
-}
-
-/// [`read_shape`], with the report of what was approximated.
+/// Reads a shape file, with the report of what was approximated (SVG arcs,
+/// circles, ellipses, rounded rects); errors name the argument.
 pub fn read_shape_reported(
     flag: &str,
     path: &PathBuf,

@@ -9,16 +9,26 @@
 //! geometry ([`lncert::shape::ShapeDesc::same_as`]: pieces may be split,
 //! degrees elevated, arc directions scaled).
 //!
-//! Exit codes: 0 = valid (and, with `--against`, about those shapes);
-//! 1 = invalid, or about other shapes (the first failing field or box is named);
-//! 2 = a file cannot be read, or a shape given to `--against` is bad input.
+//! A shape file whose SVG arcs, circles, ellipses or rounded rects were read
+//! as certified cubic approximations is compared as read (the certificate can
+//! only hold the approximation): the verdict then says that the certificate is
+//! about the approximation, not the exact shape, and what it proves for the
+//! exact shapes (`d_H ≤ tol + ε`, `ε` the certified approximation bounds).
+//!
+//! Exit codes: 0 = valid (and, with `--against`, about exactly those shapes);
+//! 1 = invalid (the first failing field or box is named; a document that is
+//! not a certificate — not UTF-8, over the size limit — is invalid), about
+//! other shapes, or about an approximation of an `--against` shape; 2 = a file
+//! cannot be read, or a shape given to `--against` is bad input.
 
 use super::args::bad;
-use super::hausdorff::read_shape;
+use super::hausdorff::read_shape_reported;
 use super::{print_out, CliError};
 use lncert::certify::verify::{verify, Invalid};
+use lncert::certify::verify_against;
 use lncert::json::Limits;
-use lncert::shape::ShapeDesc;
+use lncert::scalar::{interval_from_rational, Interval, IntervalExt, Rational};
+use lncert::shape::{format_up, InputApprox};
 use serde_json::json;
 use std::io::Read;
 use std::path::PathBuf;
@@ -37,95 +47,122 @@ pub struct VerifyArgs {
     pub json: bool,
 }
 
-/// Reads the certificate, refusing files over the reader's byte limit before
-/// reading them (and again while reading, should the file grow).
-fn read_cert(path: &PathBuf) -> Result<Vec<u8>, CliError> {
+/// The certificate's bytes: `Ok(Err(_))` when the file is read but is not a
+/// certificate (over the reader's byte limit, checked before reading and again
+/// while reading, should the file grow; or not UTF-8): that is an invalid
+/// certificate (exit 1), not a file that cannot be read (exit 2).
+fn read_cert(path: &PathBuf) -> Result<Result<String, Invalid>, CliError> {
     let limit = Limits::DEFAULT.max_bytes as u64;
     let file =
         std::fs::File::open(path).map_err(|e| bad("CERT", format!("{}: {e}", path.display())))?;
-    let too_big = || {
-        bad(
-            "CERT",
-            format!("{}: larger than the limit of {limit} bytes", path.display()),
-        )
+    let too_big = || Invalid {
+        at: "(top level)".into(),
+        reason: format!("not a certificate: larger than the limit of {limit} bytes"),
     };
     if file.metadata().map(|m| m.len() > limit).unwrap_or(false) {
-        return Err(too_big());
+        return Ok(Err(too_big()));
     }
     let mut bytes = Vec::new();
     file.take(limit + 1)
         .read_to_end(&mut bytes)
         .map_err(|e| bad("CERT", format!("{}: {e}", path.display())))?;
     if bytes.len() as u64 > limit {
-        return Err(too_big());
+        return Ok(Err(too_big()));
     }
-    Ok(bytes)
+    Ok(String::from_utf8(bytes).map_err(|e| Invalid {
+        at: "(top level)".into(),
+        reason: format!("not a certificate: not UTF-8 text ({e})"),
+    }))
 }
 
-/// The certificate's shapes against the user's, exactly.
-fn check_against(text: &str, a: &ShapeDesc, b: &ShapeDesc) -> Result<(), Invalid> {
-    // the certificate is valid, so its shapes are canonical and read by the
-    // user-language reader too (tests/shape_language.rs keeps the two in step)
-    let doc = lncert::json::parse(text, &Limits::DEFAULT).map_err(|e| Invalid {
-        at: e.path,
-        reason: e.reason,
-    })?;
-    for (key, mine) in [("a", a), ("b", b)] {
-        let theirs = doc
-            .get(key)
-            .ok_or_else(|| Invalid {
-                at: key.into(),
-                reason: "missing".into(),
-            })
-            .and_then(|v| {
-                ShapeDesc::from_value(&v.to_value()).map_err(|e| Invalid {
-                    at: key.into(),
-                    reason: e.to_string(),
-                })
-            })?;
-        theirs.same_as(mine).map_err(|why| Invalid {
-            at: key.to_string(),
-            reason: format!(
-                "the certificate is about another shape than --against {}: {why}",
-                key.to_uppercase()
-            ),
-        })?;
+/// What `--against` found out about shapes read as approximations.
+struct Approximated {
+    /// `A` and/or `B` with the report line of each.
+    which: Vec<(&'static str, String)>,
+    /// The sum of the certified approximation bounds (rounded up).
+    bound: f64,
+    /// `tol + bound`, rounded up: what the certificate proves for the exact shapes.
+    tol_for_exact: f64,
+}
+
+fn approximated(tol: &Rational, a: &InputApprox, b: &InputApprox) -> Option<Approximated> {
+    if a.is_empty() && b.is_empty() {
+        return None;
     }
-    Ok(())
+    let which = [("A", a), ("B", b)]
+        .into_iter()
+        .filter_map(|(k, x)| x.summary().map(|s| (k, s)))
+        .collect();
+    // d_H(A, B) ≤ d_H(A, A′) + d_H(A′, B′) + d_H(B′, B), added upward
+    let up = |x: f64| Interval::point(x).unwrap_or(Interval::ENTIRE);
+    let bound = (up(a.bound()) + up(b.bound())).sup();
+    let tol_for_exact = (interval_from_rational(tol) + up(bound)).sup();
+    Some(Approximated {
+        which,
+        bound,
+        tol_for_exact,
+    })
+}
+
+impl Approximated {
+    fn reason(&self, tol: &Rational) -> String {
+        let parts: Vec<String> = self
+            .which
+            .iter()
+            .map(|(k, s)| format!("--against {k}: {s}"))
+            .collect();
+        format!(
+            "the certificate is about the certified cubic approximation of the shape(s) given, not the exact shape(s) ({}): it proves d_H ≤ {tol} for the approximations, hence only d_H(A, B) ≤ {} (tol + {}) for the exact shapes given",
+            parts.join("; "),
+            format_up(self.tol_for_exact),
+            format_up(self.bound),
+        )
+    }
 }
 
 /// Runs the command; returns the exit code.
 pub fn run(a: &VerifyArgs) -> Result<i32, CliError> {
     // every input is read and checked before any work
-    let bytes = read_cert(&a.cert)?;
+    let text = read_cert(&a.cert)?;
     let against = match &a.against {
         Some(files) => Some((
-            read_shape("--against A", &files[0])?,
-            read_shape("--against B", &files[1])?,
+            read_shape_reported("--against A", &files[0])?,
+            read_shape_reported("--against B", &files[1])?,
         )),
         None => None,
     };
-    let text =
-        std::str::from_utf8(&bytes).map_err(|e| bad("CERT", format!("not UTF-8 text: {e}")))?;
     let start = std::time::Instant::now();
-    let res = verify(text).and_then(|v| {
-        if let Some((sa, sb)) = &against {
-            check_against(text, sa, sb)?;
-        }
-        Ok(v)
+    let res = text.and_then(|text| match &against {
+        Some(((sa, _), (sb, _))) => verify_against(&text, sa, sb),
+        None => verify(&text),
     });
     let secs = start.elapsed().as_secs_f64();
-    let code = i32::from(res.is_err());
+    // shapes read as approximations: the certificate is not about the exact ones
+    let approx = match (&res, &against) {
+        (Ok(v), Some(((_, xa), (_, xb)))) => approximated(&v.tol, xa, xb),
+        _ => None,
+    };
+    let code = i32::from(res.is_err() || approx.is_some());
     if a.json {
         let doc = match &res {
-            Ok(v) => json!({
-                "valid": true,
-                "statement": {"claim": "d_H(A, B) <= tol", "tol": v.tol.to_string(), "a": v.a, "b": v.b},
-                "against": against.is_some(),
-                "max_bound": v.max_bound,
-                "boxes": v.boxes,
-                "seconds": secs,
-            }),
+            Ok(v) => {
+                let mut doc = json!({
+                    "valid": approx.is_none(),
+                    "certificate_valid": true,
+                    "statement": {"claim": "d_H(A, B) <= tol", "tol": v.tol.to_string(), "a": v.a, "b": v.b},
+                    "against": against.is_some(),
+                    "max_bound": v.max_bound,
+                    "boxes": v.boxes,
+                    "seconds": secs,
+                });
+                if let Some(x) = &approx {
+                    doc["at"] = json!("against");
+                    doc["reason"] = json!(x.reason(&v.tol));
+                    doc["approximation_bound"] = json!(x.bound);
+                    doc["tol_for_exact_shapes"] = json!(x.tol_for_exact);
+                }
+                doc
+            }
             Err(e) => json!({"valid": false, "at": e.at, "reason": e.reason, "seconds": secs}),
         };
         print_out(&format!(
@@ -135,12 +172,13 @@ pub fn run(a: &VerifyArgs) -> Result<i32, CliError> {
     } else {
         match &res {
             Ok(v) => print_out(&format!(
-                "valid: proven {}\n{}({} boxes re-checked, largest bound {:e}, {:.3} ms)\n",
+                "{}: proven {}\n{}({} boxes re-checked, largest bound {:e}, {:.3} ms)\n",
+                if approx.is_some() { "valid certificate, not about the exact shapes" } else { "valid" },
                 v.statement(),
-                if against.is_some() {
-                    "A and B are exactly the shapes given to --against\n"
-                } else {
-                    ""
+                match (&approx, &against) {
+                    (Some(x), _) => format!("{}\n", x.reason(&v.tol)),
+                    (None, Some(_)) => "A and B are exactly the shapes given to --against\n".into(),
+                    (None, None) => String::new(),
                 },
                 v.boxes,
                 v.max_bound,

@@ -125,13 +125,13 @@ fn casteljau(pts: &[[Interval; 2]], t: Interval) -> [Interval; 2] {
 /// The control points of the piece on `[0, t]` (`left`) or `[t, 1]`.
 fn subdivide(pts: &[[Interval; 2]], t: Interval, left: bool) -> Vec<[Interval; 2]> {
     let n = pts.len();
+    let u = ic(1) - t;
     let mut tri: Vec<[Interval; 2]> = pts.to_vec();
     let mut edge = Vec::with_capacity(n);
     edge.push(if left { tri[0] } else { tri[n - 1] });
     for level in 1..n {
         for i in 0..n - level {
-            let (a, b) = (tri[i], tri[i + 1]);
-            tri[i] = [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])];
+            tri[i] = convex(u, tri[i], t, tri[i + 1]);
         }
         edge.push(if left { tri[0] } else { tri[n - 1 - level] });
     }
@@ -141,17 +141,35 @@ fn subdivide(pts: &[[Interval; 2]], t: Interval, left: bool) -> Vec<[Interval; 2
     edge
 }
 
-/// De Casteljau at an interval parameter.
+/// One de Casteljau step `(1 − t) a + t b`, with `u ⊇ 1 − t`.
+///
+/// The convex form, not `a + t (b − a)`: for a thin `t` its width is about
+/// the widths of `a` and `b` (plus rounding), while the difference form counts
+/// `a`'s width `1 + 2t` times, so `n` levels multiply the control points'
+/// widths by up to `3ⁿ` and a degree-27 piece with non-dyadic control points
+/// could no longer be evaluated (issue 24, item 5).
+fn convex(u: Interval, a: [Interval; 2], t: Interval, b: [Interval; 2]) -> [Interval; 2] {
+    [u * a[0] + t * b[0], u * a[1] + t * b[1]]
+}
+
+/// De Casteljau at an interval parameter: the convex form for a thin
+/// parameter (see [`convex`]), the difference form for a wide one (where
+/// `t`'s width, not the data's, dominates and `b − a` is small).
 fn casteljau_at(pts: &[[Interval; 2]], t: Interval) -> [Interval; 2] {
-    let mut x: Vec<Interval> = pts.iter().map(|p| p[0]).collect();
-    let mut y: Vec<Interval> = pts.iter().map(|p| p[1]).collect();
-    for n in (1..pts.len()).rev() {
+    let mut p: Vec<[Interval; 2]> = pts.to_vec();
+    let thin = t.inf() == t.sup();
+    let u = ic(1) - t;
+    for n in (1..p.len()).rev() {
         for i in 0..n {
-            x[i] = x[i] + t * (x[i + 1] - x[i]);
-            y[i] = y[i] + t * (y[i + 1] - y[i]);
+            let (a, b) = (p[i], p[i + 1]);
+            p[i] = if thin {
+                convex(u, a, t, b)
+            } else {
+                [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])]
+            };
         }
     }
-    [x[0], y[0]]
+    p[0]
 }
 
 /// The Taylor triples of `P(τ(s))` for a polynomial `P` given by the control
