@@ -386,8 +386,8 @@ fn elevated_split_certificate(cubic: &ShapeDesc, splits: usize, points: usize) -
         .to_json_string()
 }
 
-/// The 10 MB case: a cubic split into 30 pieces at 330-digit rationals, each
-/// written with 64 control points (numbers of up to ~4 000 digits), against
+/// The 10 MB case: a cubic split into 50 pieces at 331-digit rationals, each
+/// written with 64 control points, against
 /// the cubic. Run with `cargo test --release -- --ignored against_cost_on_10_mb`.
 #[test]
 #[ignore = "about 30 s: the 10 MB figure of issue 24's closing note"]
@@ -398,16 +398,16 @@ fn against_cost_on_10_mb() {
     let ShapeDesc::Curve(c) = &cubic else {
         unreachable!()
     };
-    // 29 interior parameters with 330-digit numerators and denominators
+    // 49 interior parameters with 331-digit numerators and denominators
     let big = |k: u64| {
         let digits: String = (0..330).map(|i| char::from(b'1' + ((i * 7 + k * 13) % 9) as u8)).collect();
         digits.parse::<num_bigint::BigInt>().unwrap()
     };
-    // t_k in (k/30, k/30 + 1/100), all with one 331-digit denominator
+    // t_k in (k/50, k/50 + 1/200), all with one 331-digit denominator
     let den: num_bigint::BigInt = big(0) * 10 + 7;
-    let slack: num_bigint::BigInt = &den / 100;
-    let ts: Vec<Rational> = (1..30u64)
-        .map(|k| Rational::new(&den * k / 30 + big(k) % &slack, den.clone()))
+    let slack: num_bigint::BigInt = &den / 200;
+    let ts: Vec<Rational> = (1..50u64)
+        .map(|k| Rational::new(&den * k / 50 + big(k) % &slack, den.clone()))
         .collect();
     let mut bounds = vec![Rational::from_integer(0.into())];
     bounds.extend(ts);
