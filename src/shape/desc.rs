@@ -394,7 +394,8 @@ impl ShapeDesc {
         ShapeDesc::curve(parse_curve(&doc.to_string()).map_err(|e| err("curve", e.to_string()))?)
     }
 
-    /// A curve shape, with the coordinate-size check.
+    /// A curve shape, with the checks of the canonical form: 2 to 64 control
+    /// points per piece, coordinates within [`MAX_COORDINATE`].
     pub fn curve(pieces: Vec<Bezier<Rational>>) -> Result<ShapeDesc, ShapeError> {
         check_pieces(&pieces, "curve")?;
         Ok(ShapeDesc::Curve(pieces))
@@ -589,6 +590,18 @@ fn check_pieces(c: &[Bezier<Rational>], field: &str) -> Result<(), ShapeError> {
         return Err(err(field, "no curve pieces"));
     }
     for (i, b) in c.iter().enumerate() {
+        // the canonical form (what certificates store) writes 2 to 64 points
+        // per piece: a single point is a piece with 2 equal points
+        let n = b.points().len();
+        if !(2..=super::io::MAX_CONTROL_POINTS).contains(&n) {
+            return Err(err(
+                format!("{field}[{i}]"),
+                format!(
+                    "{n} control points; a piece has 2 to {} (a single point is written with 2 equal points)",
+                    super::io::MAX_CONTROL_POINTS
+                ),
+            ));
+        }
         for (k, p) in b.points().iter().enumerate() {
             check_magnitude(&p.x, &format!("{field}[{i}][{k}][0]"))?;
             check_magnitude(&p.y, &format!("{field}[{i}][{k}][1]"))?;
