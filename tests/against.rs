@@ -33,28 +33,25 @@ fn pt(x: i64, y: i64) -> V2<Rational> {
 /// 1 to 3 connected pieces of degree 1 to 3 with integer control points in
 /// `[-4, 4]²`, none of them a single point.
 fn chain() -> impl Strategy<Value = Vec<Piece>> {
-    prop::collection::vec(
-        prop::collection::vec((-4i64..=4, -4i64..=4), 2..=4),
-        1..=3,
-    )
-    .prop_map(|raw| {
-        let mut out: Vec<Piece> = Vec::new();
-        for mut pts in raw {
-            if let Some(prev) = out.last() {
-                let end = &prev.points()[prev.degree()];
-                pts[0] = (
-                    end.x.to_integer().try_into().unwrap(),
-                    end.y.to_integer().try_into().unwrap(),
-                );
+    prop::collection::vec(prop::collection::vec((-4i64..=4, -4i64..=4), 2..=4), 1..=3)
+        .prop_map(|raw| {
+            let mut out: Vec<Piece> = Vec::new();
+            for mut pts in raw {
+                if let Some(prev) = out.last() {
+                    let end = &prev.points()[prev.degree()];
+                    pts[0] = (
+                        end.x.to_integer().try_into().unwrap(),
+                        end.y.to_integer().try_into().unwrap(),
+                    );
+                }
+                out.push(Bezier::new(pts.iter().map(|&(x, y)| pt(x, y)).collect()));
             }
-            out.push(Bezier::new(pts.iter().map(|&(x, y)| pt(x, y)).collect()));
-        }
-        out
-    })
-    .prop_filter("no point pieces", |c| {
-        c.iter()
-            .all(|b| b.points().iter().any(|p| *p != b.points()[0]))
-    })
+            out
+        })
+        .prop_filter("no point pieces", |c| {
+            c.iter()
+                .all(|b| b.points().iter().any(|p| *p != b.points()[0]))
+        })
 }
 
 /// A rewrite that keeps the point set.
@@ -72,7 +69,8 @@ enum Rewrite {
 
 fn rewrite() -> impl Strategy<Value = Rewrite> {
     prop_oneof![
-        (0usize..8, 2i64..60).prop_flat_map(|(i, d)| (Just(i), 1..d, Just(d)))
+        (0usize..8, 2i64..60)
+            .prop_flat_map(|(i, d)| (Just(i), 1..d, Just(d)))
             .prop_map(|(i, p, d)| Rewrite::Split(i, p, d)),
         (0usize..8, 1usize..=3).prop_map(|(i, k)| Rewrite::Elevate(i, k)),
         (0usize..8).prop_map(Rewrite::Point),
@@ -124,9 +122,8 @@ enum Mutation {
 fn mutation() -> impl Strategy<Value = Mutation> {
     prop_oneof![
         (6i64..=9, -9i64..=9).prop_map(|(x, y)| Mutation::Dot(x, y)),
-        (0usize..8, 0usize..8, -8i64..=8, -8i64..=8).prop_map(|(i, k, dx, dy)| Mutation::Move(
-            i, k, dx, dy
-        )),
+        (0usize..8, 0usize..8, -8i64..=8, -8i64..=8)
+            .prop_map(|(i, k, dx, dy)| Mutation::Move(i, k, dx, dy)),
         (0usize..8).prop_map(Mutation::Drop),
     ]
 }
@@ -159,7 +156,10 @@ fn on(from: &[Piece], to: &[Piece]) -> Result<(), String> {
         for t in [q(0, 1), q(1, 3), q(1, 1)] {
             let p = b.eval(&t);
             if !to.iter().any(|c| exact_dist2(&p, c).inf() <= 0.0) {
-                return Err(format!("piece {i} at t = {t}: ({}, {}) is on no piece", p.x, p.y));
+                return Err(format!(
+                    "piece {i} at t = {t}: ({}, {}) is on no piece",
+                    p.x, p.y
+                ));
             }
         }
     }

@@ -181,12 +181,9 @@ fn valid_seeds_have_canonical_shapes() {
     }
 }
 
-fn lncert_verify(file: &Path) -> (Option<i32>, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_lncert"))
-        .arg("verify")
-        .arg(file)
-        .output()
-        .expect("running lncert");
+/// The exit code and the output (stdout, then stderr) of a command.
+fn outcome(cmd: &mut Command) -> (Option<i32>, String) {
+    let out = cmd.output().expect("running lncert");
     (
         out.status.code(),
         format!(
@@ -194,6 +191,14 @@ fn lncert_verify(file: &Path) -> (Option<i32>, String) {
             String::from_utf8_lossy(&out.stdout),
             String::from_utf8_lossy(&out.stderr)
         ),
+    )
+}
+
+fn lncert_verify(file: &Path) -> (Option<i32>, String) {
+    outcome(
+        Command::new(env!("CARGO_BIN_EXE_lncert"))
+            .arg("verify")
+            .arg(file),
     )
 }
 
@@ -247,15 +252,7 @@ fn lncert_against(case: &str, a: &str, b: &str, json: bool) -> (Option<i32>, Str
     if json {
         cmd.arg("--json");
     }
-    let out = cmd.output().expect("running lncert");
-    (
-        out.status.code(),
-        format!(
-            "{}{}",
-            String::from_utf8_lossy(&out.stdout),
-            String::from_utf8_lossy(&out.stderr)
-        ),
-    )
+    outcome(&mut cmd)
 }
 
 /// The six findings of issue 24, each as the binary judges it now
@@ -265,12 +262,18 @@ fn against_findings_of_issue_24() {
     // 1. the certificate's A has a point piece at (2, 0) that the user's A lacks
     let (code, out) = lncert_against("1-cert-point-piece", "a.json", "b.json", false);
     assert_eq!(code, Some(1), "{out}");
-    assert!(out.contains("invalid: a: the certificate is about another shape than --against A"), "{out}");
+    assert!(
+        out.contains("invalid: a: the certificate is about another shape than --against A"),
+        "{out}"
+    );
     // 2. the user's B has a dot at (5, 0), as SVG path data and as JSON
     for b in ["b.svg", "b-json.json"] {
         let (code, out) = lncert_against("2-user-dot", "a.json", b, false);
         assert_eq!(code, Some(1), "{b}: {out}");
-        assert!(out.contains("invalid: b: the certificate is about another shape than --against B"), "{b}: {out}");
+        assert!(
+            out.contains("invalid: b: the certificate is about another shape than --against B"),
+            "{b}: {out}"
+        );
     }
     // ... and the plain segment is still recognised
     let (code, out) = lncert_against("2-user-dot", "a.json", "a.json", false);
@@ -279,7 +282,10 @@ fn against_findings_of_issue_24() {
     // says so, with what it proves for the exact arcs (tol + both bounds)
     let (code, out) = lncert_against("3-svg-arc", "a.svg", "b.svg", false);
     assert_eq!(code, Some(1), "{out}");
-    assert!(out.starts_with("valid certificate, not about the exact shapes"), "{out}");
+    assert!(
+        out.starts_with("valid certificate, not about the exact shapes"),
+        "{out}"
+    );
     assert!(!out.contains("exactly the shapes given"), "{out}");
     let (code, out) = lncert_against("3-svg-arc", "a.svg", "b.svg", true);
     assert_eq!(code, Some(1), "{out}");
@@ -293,7 +299,10 @@ fn against_findings_of_issue_24() {
     // 4. degree 63, split at 8-digit rationals: recognised, and fast (below)
     let (code, out) = lncert_against("4-elevated-63-split", "a.json", "b.json", false);
     assert_eq!(code, Some(0), "{out}");
-    assert!(out.contains("A and B are exactly the shapes given to --against"), "{out}");
+    assert!(
+        out.contains("A and B are exactly the shapes given to --against"),
+        "{out}"
+    );
     // 5. offsets of degree 27 to 63 with non-dyadic control points: the
     // valid-seed-offset-degree-*.json certificates above verify
     for d in [27, 40, 63] {
@@ -303,7 +312,10 @@ fn against_findings_of_issue_24() {
     // 6. a document that is not UTF-8 is not a certificate: invalid, exit 1
     let (code, out) = lncert_verify(&against_dir("6-not-utf8").join("cert.json"));
     assert_eq!(code, Some(1), "{out}");
-    assert!(out.contains("invalid: (top level): not a certificate: not UTF-8"), "{out}");
+    assert!(
+        out.contains("invalid: (top level): not a certificate: not UTF-8"),
+        "{out}"
+    );
 }
 
 /// The smallest of `runs` timings of `f`.
@@ -357,8 +369,7 @@ fn against_costs_about_what_verify_costs() {
 /// with `points` control points and split `splits` times at 8-digit rationals
 /// (each split cuts the last piece: the numbers grow with every split).
 fn elevated_split_certificate(cubic: &ShapeDesc, splits: usize, points: usize) -> String {
-    use lncert::certify::{hausdorff, Certificate, Config};
-    use lncert::scalar::{parse_rational, Rational};
+    use lncert::scalar::Rational;
     let ShapeDesc::Curve(c) = cubic else {
         panic!("a curve")
     };
@@ -368,11 +379,24 @@ fn elevated_split_certificate(cubic: &ShapeDesc, splits: usize, points: usize) -
     }
     let mut pieces = vec![b];
     for k in 0..splits {
-        let t = Rational::new((12_345_678 + 7_654_321 * k as i64).into(), 99_999_989.into());
+        let t = Rational::new(
+            (12_345_678 + 7_654_321 * k as i64).into(),
+            99_999_989.into(),
+        );
         let last = pieces.pop().unwrap();
         let (l, r) = last.split(&t);
         pieces.extend([l, r]);
     }
+    certificate_of(pieces, cubic)
+}
+
+/// The certificate of `d_H(pieces, cubic) ≤ 1/1000` from the box covers.
+fn certificate_of(
+    pieces: Vec<lncert::curve::Bezier<lncert::scalar::Rational>>,
+    cubic: &ShapeDesc,
+) -> String {
+    use lncert::certify::{hausdorff, Certificate, Config};
+    use lncert::scalar::parse_rational;
     let a = ShapeDesc::Curve(pieces);
     let tol = parse_rational("1/1000").unwrap();
     let cfg = Config {
@@ -382,7 +406,7 @@ fn elevated_split_certificate(cubic: &ShapeDesc, splits: usize, points: usize) -
     };
     let r = hausdorff(&a, cubic, &cfg).unwrap();
     Certificate::new(&a, cubic, &tol, &r)
-        .expect("the search certifies the elevated cubic against itself")
+        .expect("the search certifies the pieces of the cubic against it")
         .to_json_string()
 }
 
@@ -392,15 +416,17 @@ fn elevated_split_certificate(cubic: &ShapeDesc, splits: usize, points: usize) -
 #[test]
 #[ignore = "about 30 s: the 10 MB figure of issue 24's closing note"]
 fn against_cost_on_10_mb() {
-    use lncert::certify::{hausdorff, verify_against, Certificate, Config};
-    use lncert::scalar::{parse_rational, Rational};
+    use lncert::certify::verify_against;
+    use lncert::scalar::Rational;
     let cubic = ShapeDesc::parse(r#"{"bezier": [[0, 0], [1, 2], [3, 2], [4, 0]]}"#).unwrap();
     let ShapeDesc::Curve(c) = &cubic else {
         unreachable!()
     };
     // 49 interior parameters with 331-digit numerators and denominators
     let big = |k: u64| {
-        let digits: String = (0..330).map(|i| char::from(b'1' + ((i * 7 + k * 13) % 9) as u8)).collect();
+        let digits: String = (0..330)
+            .map(|i| char::from(b'1' + ((i * 7 + k * 13) % 9) as u8))
+            .collect();
         digits.parse::<num_bigint::BigInt>().unwrap()
     };
     // t_k in (k/50, k/50 + 1/200), all with one 331-digit denominator
@@ -422,15 +448,7 @@ fn against_cost_on_10_mb() {
             p
         })
         .collect();
-    let a = ShapeDesc::Curve(pieces);
-    let tol = parse_rational("1/1000").unwrap();
-    let cfg = Config {
-        tol: Some(1e-3),
-        parametric: false,
-        ..Config::default()
-    };
-    let r = hausdorff(&a, &cubic, &cfg).unwrap();
-    let text = Certificate::new(&a, &cubic, &tol, &r).unwrap().to_json_string();
+    let text = certificate_of(pieces, &cubic);
     let plain = fastest(1, || {
         verify(&text).unwrap();
     });
@@ -445,5 +463,8 @@ fn against_cost_on_10_mb() {
         against.as_secs_f64() / plain.as_secs_f64()
     );
     assert!(text.len() >= 10_000_000, "{} bytes", text.len());
-    assert!(against <= 2 * plain, "--against {against:?} against verify {plain:?}");
+    assert!(
+        against <= 2 * plain,
+        "--against {against:?} against verify {plain:?}"
+    );
 }

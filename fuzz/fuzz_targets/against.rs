@@ -64,7 +64,9 @@ use libfuzzer_sys::arbitrary::{Result, Unstructured};
 use libfuzzer_sys::{fuzz_target, Corpus};
 use lncert::certify::{hausdorff, verify_against, Certificate, Config};
 use lncert::curve::{Bezier, V2};
-use lncert::scalar::{frac, interval_from_rational, parse_rational, rational_from_f64, Rational, Scalar};
+use lncert::scalar::{
+    frac, interval_from_rational, parse_rational, rational_from_f64, Rational, Scalar,
+};
 use lncert::shape::ShapeDesc;
 use serde_json::Value;
 use std::collections::BTreeMap;
@@ -449,8 +451,7 @@ fn rewrite_member(u: &mut Unstructured, s: &ShapeDesc) -> Result<Option<(ShapeDe
                 0 => {
                     let p = end(&c[i]).clone();
                     let walk = !is_point(&c[i])
-                        && c
-                            .get(i + 1)
+                        && c.get(i + 1)
                             .map_or(true, |n| n.points()[0] == p && !is_point(n));
                     c.insert(i + 1, dot(u, &p)?);
                     if walk {
@@ -529,7 +530,11 @@ fn rewrite_member(u: &mut Unstructured, s: &ShapeDesc) -> Result<Option<(ShapeDe
                     _ => {
                         // the convolution with M = r R on the side of sign r
                         let pos = *distance > zero();
-                        let r = if pos { distance.clone() } else { -distance.clone() };
+                        let r = if pos {
+                            distance.clone()
+                        } else {
+                            -distance.clone()
+                        };
                         let mut m = orthogonal(u.arbitrary()?);
                         for row in m.iter_mut() {
                             for x in row.iter_mut() {
@@ -556,9 +561,8 @@ fn rewrite_member(u: &mut Unstructured, s: &ShapeDesc) -> Result<Option<(ShapeDe
                         // M R, R orthogonal: the same ellipse
                         let r = orthogonal(u.arbitrary()?);
                         let m = ellipse;
-                        let mr = [0, 1].map(|i| {
-                            [0, 1].map(|j| &m[i][0] * &r[0][j] + &m[i][1] * &r[1][j])
-                        });
+                        let mr = [0, 1]
+                            .map(|i| [0, 1].map(|j| &m[i][0] * &r[0][j] + &m[i][1] * &r[1][j]));
                         ShapeDesc::convolution(curve.clone(), mr, *side)
                             .ok()
                             .map(|s| (s, Kind::Form))
@@ -641,34 +645,29 @@ fn samples(s: &ShapeDesc, n: usize, out: &mut Vec<Vec<(f64, f64)>>) {
                 .collect(),
             );
         }
-        ShapeDesc::Offset { curve, distance } => {
-            let d = f(distance);
-            for b in curve {
-                let b: Bezier<f64> = b.map(f);
-                let h = b.hodograph();
-                out.push(
-                    ts.clone()
-                        .map(|t| {
-                            let (p, v) = (b.eval(&t), h.eval(&t));
-                            let l = (v.x * v.x + v.y * v.y).sqrt();
-                            (p.x - v.y / l * d, p.y + v.x / l * d)
-                        })
-                        .collect(),
-                );
-            }
-        }
-        ShapeDesc::Convolution {
-            curve,
-            ellipse: m,
-            side,
-        } => {
-            let m = [[f(&m[0][0]), f(&m[0][1])], [f(&m[1][0]), f(&m[1][1])]];
-            let qm = [
-                m[0][0] * m[0][0] + m[0][1] * m[0][1],
-                m[0][0] * m[1][0] + m[0][1] * m[1][1],
-                m[1][0] * m[1][0] + m[1][1] * m[1][1],
-            ];
-            let sd = f64::from(*side);
+        ShapeDesc::Offset { .. } | ShapeDesc::Convolution { .. } => {
+            // an offset at distance d is the convolution with Q = d² I on the
+            // side of sign d: x + side · Q n / √(nᵀQn), n = x′⊥
+            let (curve, qm, sd) = match s {
+                ShapeDesc::Offset { curve, distance } => {
+                    let d = f(distance);
+                    (curve, [d * d, 0.0, d * d], d.signum())
+                }
+                ShapeDesc::Convolution {
+                    curve,
+                    ellipse: m,
+                    side,
+                } => {
+                    let m = [[f(&m[0][0]), f(&m[0][1])], [f(&m[1][0]), f(&m[1][1])]];
+                    let qm = [
+                        m[0][0] * m[0][0] + m[0][1] * m[0][1],
+                        m[0][0] * m[1][0] + m[0][1] * m[1][1],
+                        m[1][0] * m[1][0] + m[1][1] * m[1][1],
+                    ];
+                    (curve, qm, f64::from(*side))
+                }
+                _ => unreachable!(),
+            };
             for b in curve {
                 let b: Bezier<f64> = b.map(f);
                 let h = b.hodograph();
@@ -848,8 +847,7 @@ fn certificate(
     mode: u8,
     fixed: Option<Rational>,
 ) -> Option<(Rational, String)> {
-    static MEMO: Mutex<BTreeMap<String, Option<(Rational, String)>>> =
-        Mutex::new(BTreeMap::new());
+    static MEMO: Mutex<BTreeMap<String, Option<(Rational, String)>>> = Mutex::new(BTreeMap::new());
     let key = format!(
         "{}\n{}\n{mode}\n{}",
         ac.to_json(),
@@ -1009,7 +1007,12 @@ fn run(u: &mut Unstructured) -> Result<()> {
     match &verdict {
         Ok(v) => {
             STATS.accepted.fetch_add(1, Relaxed);
-            assert_eq!(v.tol, tol, "verify_against proved another tol ({})", describe());
+            assert_eq!(
+                v.tol,
+                tol,
+                "verify_against proved another tol ({})",
+                describe()
+            );
             let t1 = Instant::now();
             check_accepted(&au, &bu, &tol, ka, kb, &describe);
             if timing() {
@@ -1050,8 +1053,13 @@ fn run(u: &mut Unstructured) -> Result<()> {
             STATS.rejected_cert.fetch_add(1, Relaxed);
             if mutated {
                 STATS.rejected_cert_mutated.fetch_add(1, Relaxed);
-            } else if STATS.rejected_cert.load(Relaxed) - STATS.rejected_cert_mutated.load(Relaxed) <= 5 {
-                eprintln!("against: a fresh certificate is invalid: {e:?}\n  {}", describe());
+            } else if STATS.rejected_cert.load(Relaxed) - STATS.rejected_cert_mutated.load(Relaxed)
+                <= 5
+            {
+                eprintln!(
+                    "against: a fresh certificate is invalid: {e:?}\n  {}",
+                    describe()
+                );
             }
         }
     }
@@ -1112,7 +1120,11 @@ fuzz_target!(|data: &[u8]| -> Corpus {
     let res = run(&mut Unstructured::new(data));
     if timing() {
         let i = PICK[data.first().map_or(0, |b| *b as usize % PICK.len())] as usize;
-        eprintln!("total {:?} {} us", SCENARIOS()[i].name, t.elapsed().as_micros());
+        eprintln!(
+            "total {:?} {} us",
+            SCENARIOS()[i].name,
+            t.elapsed().as_micros()
+        );
     }
     let n = STATS.runs.fetch_add(1, Relaxed) + 1;
     let every = stats_every();

@@ -173,7 +173,11 @@ pub fn run(a: &VerifyArgs) -> Result<i32, CliError> {
         match &res {
             Ok(v) => print_out(&format!(
                 "{}: proven {}\n{}({} boxes re-checked, largest bound {:e}, {:.3} ms)\n",
-                if approx.is_some() { "valid certificate, not about the exact shapes" } else { "valid" },
+                if approx.is_some() {
+                    "valid certificate, not about the exact shapes"
+                } else {
+                    "valid"
+                },
                 v.statement(),
                 match (&approx, &against) {
                     (Some(x), _) => format!("{}\n", x.reason(&v.tol)),
