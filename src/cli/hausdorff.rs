@@ -81,15 +81,9 @@ fn approx_json(a: &InputApprox, b: &InputApprox) -> serde_json::Value {
     if a.is_empty() && b.is_empty() {
         return serde_json::Value::Null;
     }
-    // d_H(A, B) − d_H(A′, B′) ≤ d_H(A, A′) + d_H(B, B′): the sum, rounded up
-    use lncert::scalar::{Interval, IntervalExt};
-    let sum = match (Interval::point(a.bound()), Interval::point(b.bound())) {
-        (Some(x), Some(y)) => (x + y).sup(),
-        _ => f64::INFINITY,
-    };
     json!({
         "elements": a.elements.len() + b.elements.len(),
-        "bound": sum,
+        "bound": a.combined_bound(b),
         "a": a.to_json(),
         "b": b.to_json(),
     })

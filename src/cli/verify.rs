@@ -94,9 +94,11 @@ fn approximated(tol: &Rational, a: &InputApprox, b: &InputApprox) -> Option<Appr
         .filter_map(|(k, x)| x.summary().map(|s| (k, s)))
         .collect();
     // d_H(A, B) ≤ d_H(A, A′) + d_H(A′, B′) + d_H(B′, B), added upward
-    let up = |x: f64| Interval::point(x).unwrap_or(Interval::ENTIRE);
-    let bound = (up(a.bound()) + up(b.bound())).sup();
-    let tol_for_exact = (interval_from_rational(tol) + up(bound)).sup();
+    let bound = a.combined_bound(b);
+    let tol_for_exact = match Interval::point(bound) {
+        Some(e) => (interval_from_rational(tol) + e).sup(),
+        None => f64::INFINITY,
+    };
     Some(Approximated {
         which,
         bound,

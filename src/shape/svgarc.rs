@@ -135,6 +135,28 @@ impl InputApprox {
     pub fn bound(&self) -> f64 {
         self.elements.iter().map(|e| e.bound).fold(0.0, f64::max)
     }
+    /// `ε + ε′`, the two overall bounds added and rounded up (`∞` if either is
+    /// not finite). For exact shapes `A`, `B` read as `A′`, `B′`, the triangle
+    /// inequality gives `|d_H(A, B) − d_H(A′, B′)| ≤ d_H(A, A′) + d_H(B, B′)`:
+    /// a bound proven for the shapes read holds for the exact ones up to this.
+    ///
+    /// # Examples
+    /// ```
+    /// use lncert::shape::parse_curve_reported;
+    /// let (_, arc) = parse_curve_reported("M 0 0 A 1 1 0 0 1 2 0").unwrap();
+    /// let (_, line) = parse_curve_reported("M 0 0 L 2 0").unwrap();
+    /// assert_eq!(arc.combined_bound(&line), arc.bound());
+    /// assert!(arc.combined_bound(&arc) >= 2.0 * arc.bound());
+    /// ```
+    pub fn combined_bound(&self, other: &InputApprox) -> f64 {
+        match (
+            Interval::try_from((self.bound(), self.bound())),
+            Interval::try_from((other.bound(), other.bound())),
+        ) {
+            (Ok(x), Ok(y)) => (x + y).sup(),
+            _ => f64::INFINITY,
+        }
+    }
     /// One line for a report, or `None` when nothing was approximated:
     /// `3 SVG arc(s) approximated by 27 cubic pieces, certified within 5.9e-8`.
     pub fn summary(&self) -> Option<String> {
