@@ -726,3 +726,87 @@ proptest! {
         }
     }
 }
+
+// ---------------------------------------------------------------------------
+// Exact G¹ joints (issue 27: a stroke of an arc must not see float-size corners)
+// ---------------------------------------------------------------------------
+
+/// `a` ends where `b` starts, and the two handles at the joint are exactly
+/// opposite directions (cross product zero, dot product negative).
+fn exactly_g1(a: &Bezier<Rational>, b: &Bezier<Rational>) -> bool {
+    let (pa, pb) = (a.points(), b.points());
+    let j = &pa[3];
+    if *j != pb[0] {
+        return false;
+    }
+    let u = pa[2].sub(j);
+    let v = pb[1].sub(j);
+    let cross = &u.x * &v.y - &u.y * &v.x;
+    let dot = &u.x * &v.x + &u.y * &v.y;
+    cross.is_zero() && dot.is_negative()
+}
+
+#[test]
+fn arc_pieces_join_with_exact_g1() {
+    // a rotated ellipse arc and a circle arc with irrational joints
+    for (rx, ry, phi, large, sweep, x1, y1) in [
+        ("5.5", "5.5", "0", false, false, "-7.78", "0"),
+        ("10", "4", "30", true, true, "3", "7"),
+        ("3", "3", "0", true, false, "0", "6"),
+    ] {
+        let p0 = V2::new(q("1"), q("2"));
+        let p1 = V2::new(&p0.x + q(x1), &p0.y + q(y1));
+        let SvgArc::Cubics { pieces, .. } =
+            svg_arc(&p0, &q(rx), &q(ry), &q(phi), large, sweep, &p1).unwrap()
+        else {
+            panic!("expected cubics");
+        };
+        assert!(pieces.len() >= 2, "{rx} {ry}: {} pieces", pieces.len());
+        for w in pieces.windows(2) {
+            assert!(exactly_g1(&w[0], &w[1]), "{rx} {ry} {phi}: joint not exactly G1");
+        }
+    }
+}
+
+#[test]
+fn circle_and_rounded_rect_close_with_exact_g1() {
+    // every joint of the closed path, including the last to the first, and
+    // the rounded rectangle's arcs to its straight edges
+    for d in [
+        "M 15 12 A 3 3 0 0 1 12 15 A 3 3 0 0 1 9 12 A 3 3 0 0 1 12 9 A 3 3 0 0 1 15 12 Z",
+        "M 4.5 3 H 19.5 A 1.5 1.5 0 0 1 21 4.5 V 19.5 A 1.5 1.5 0 0 1 19.5 21 H 4.5 \
+         A 1.5 1.5 0 0 1 3 19.5 V 4.5 A 1.5 1.5 0 0 1 4.5 3 Z",
+    ] {
+        let curve = parse_svg_path(d).unwrap();
+        // straight edges are degree 1: elevate them for the joint test
+        let cubic: Vec<Bezier<Rational>> = curve
+            .iter()
+            .map(|b| {
+                if b.degree() == 1 {
+                    let p = b.points();
+                    let third = |a: &V2<Rational>, c: &V2<Rational>| {
+                        V2::new(
+                            (&a.x * q("2") + &c.x) / q("3"),
+                            (&a.y * q("2") + &c.y) / q("3"),
+                        )
+                    };
+                    Bezier::new(vec![
+                        p[0].clone(),
+                        third(&p[0], &p[1]),
+                        third(&p[1], &p[0]),
+                        p[1].clone(),
+                    ])
+                } else {
+                    b.clone()
+                }
+            })
+            .collect();
+        let n = cubic.len();
+        for k in 0..n {
+            assert!(
+                exactly_g1(&cubic[k], &cubic[(k + 1) % n]),
+                "{d}: joint {k} not exactly G1"
+            );
+        }
+    }
+}
