@@ -476,7 +476,29 @@ fn approx_dir(v: &V2<Rational>) -> (f64, f64) {
 
 /// One side's segments chained forward, with join arcs and connectors at the
 /// corners (the closing corner too when `closed`).
-fn chain_side(res: &OffsetResult, r: &Rational, closed: bool) -> Result<Vec<Raw>, StrokeError> {
+/// The raw pieces of one offset side, in order, joined exactly.
+///
+/// **Joints are not crossings** (issue 27): at a G⁰ corner whose join arc or
+/// concave connector would be shorter than `merge` (a corner of a few ulps in
+/// data written by float code, a path whose tangents agree to a few digits),
+/// no piece is inserted: the next segment's start control point is moved onto
+/// the previous segment's end (fact 4: the move `d` is added to its bounds),
+/// so the two segments meet at one exact point with nearly opposite
+/// directions, a joint the crossing search decides to first order. For a
+/// convex corner the exact join arc (from `E₁ = c + r·from/|from|` to `E₂`,
+/// turning by less than π) has every point within `|E₁ − E₂|` of `E₁`, hence
+/// within `e_J = 2|x₁ − E₁| + |x₁ − x₂| + |x₂ − E₂|` of the kept end `x₁`:
+/// the previous segment stands for its exact span **and** the join arc, its
+/// bound `e` raised to `e_J` (claim (b) uses `e` only through "every exact
+/// point is within `e` of the raw piece"; `e_in` is unchanged since the raw
+/// piece still lies within `e_in` of `S`). A concave connector's points are
+/// never needed for (b) (fact 3), so dropping a short one costs only the move.
+fn chain_side(
+    res: &OffsetResult,
+    r: &Rational,
+    closed: bool,
+    merge: f64,
+) -> Result<Vec<Raw>, StrokeError> {
     let segs: Vec<(usize, Bezier<Rational>, f64)> = res
         .segments
         .iter()
@@ -525,6 +547,25 @@ fn chain_side(res: &OffsetResult, r: &Rational, closed: bool) -> Result<Vec<Raw>
                 let x2 = snap(&center, r, approx_dir(&to)).ok_or_else(|| bad("curve", "join"))?;
                 let d1 = dist_hi(&p1, &x1);
                 let d2 = dist_hi(&p2, &x2);
+                let e1 = dist_hi_iv(&x1, &unit_normal_point(&center, r, &from));
+                let e2 = dist_hi_iv(&x2, &unit_normal_point(&center, r, &to));
+                let gap = dist_hi(&x1, &x2);
+                if gap <= merge {
+                    // a join arc shorter than `merge`: no arc, one exact point
+                    let e_j = (2.0 * e1 + gap + e2) * (1.0 + 1e-12);
+                    if let Piece::Bezier(b) = &raws[k].piece {
+                        raws[k].piece = Piece::Bezier(set_end(b, None, Some(&x1)));
+                    }
+                    raws[k].e = (raws[k].e + d1).max(e_j);
+                    raws[k].e_in += d1;
+                    let d = dist_hi(&p2, &x1);
+                    if let Piece::Bezier(b) = &raws[k1].piece {
+                        raws[k1].piece = Piece::Bezier(set_end(b, Some(&x1), None));
+                    }
+                    raws[k1].e += d;
+                    raws[k1].e_in += d;
+                    continue;
+                }
                 if let Piece::Bezier(b) = &raws[k].piece {
                     raws[k].piece = Piece::Bezier(set_end(b, None, Some(&x1)));
                 }
@@ -535,8 +576,6 @@ fn chain_side(res: &OffsetResult, r: &Rational, closed: bool) -> Result<Vec<Raw>
                 }
                 raws[k1].e += d2;
                 raws[k1].e_in += d2;
-                let e1 = dist_hi_iv(&x1, &unit_normal_point(&center, r, &from));
-                let e2 = dist_hi_iv(&x2, &unit_normal_point(&center, r, &to));
                 if x1 != x2 {
                     inserts[k] = Some(Raw {
                         piece: Piece::Arc(Arc {
@@ -555,7 +594,15 @@ fn chain_side(res: &OffsetResult, r: &Rational, closed: bool) -> Result<Vec<Raw>
                 }
             }
             Some(Junction::Overlap { center }) => {
-                if p1 != p2 {
+                let d = dist_hi(&p1, &p2);
+                if p1 != p2 && d <= merge {
+                    // a connector shorter than `merge`: move the next start
+                    if let Piece::Bezier(b) = &raws[k1].piece {
+                        raws[k1].piece = Piece::Bezier(set_end(b, Some(&p1), None));
+                    }
+                    raws[k1].e += d;
+                    raws[k1].e_in += d;
+                } else if p1 != p2 {
                     let e_in = (dist_hi(&p1, &center).max(dist_hi(&p2, &center)) - r.approx())
                         .max(0.0)
                         * (1.0 + 1e-12);
@@ -777,8 +824,10 @@ fn raw_contours(
             ));
         }
     }
-    let a = chain_side(&minus, r, closed)?;
-    let b = reverse_side(chain_side(&plus, r, closed)?);
+    // joins and connectors shorter than this are merged into one exact point
+    let merge = opts.tol / 64.0;
+    let a = chain_side(&minus, r, closed, merge)?;
+    let b = reverse_side(chain_side(&plus, r, closed, merge)?);
     if closed {
         return Ok((vec![a, b], notes, Vec::new()));
     }
