@@ -61,12 +61,22 @@ fn output_points(s: &Stroke, n: usize) -> Vec<(f64, f64)> {
 /// Points of the exact boundary: exact offset points x ± r N and cap points
 /// whose sampled distance to x is ≥ r − small.
 fn boundary_points(curve: &[Bezier<Rational>], r: f64, closed: bool) -> Vec<(f64, f64)> {
+    boundary_points_n(curve, r, closed, 600)
+}
+
+/// [`boundary_points`] with `n` samples per input piece.
+fn boundary_points_n(
+    curve: &[Bezier<Rational>],
+    r: f64,
+    closed: bool,
+    n: usize,
+) -> Vec<(f64, f64)> {
     let cf: Vec<Bezier<f64>> = curve.iter().map(|b| b.map(Scalar::approx)).collect();
     let mut cand = Vec::new();
     for b in &cf {
         let h = b.hodograph();
-        for k in 0..=600 {
-            let t = k as f64 / 600.0;
+        for k in 0..=n {
+            let t = k as f64 / n as f64;
             let p = b.eval_fast(t);
             let d = h.eval_fast(t);
             let n = (-d.y / d.length(), d.x / d.length());
@@ -89,6 +99,23 @@ fn boundary_points(curve: &[Bezier<Rational>], r: f64, closed: bool) -> Vec<(f64
         .collect()
 }
 
+fn dist_to_polyline(pl: &[(f64, f64)], p: (f64, f64)) -> f64 {
+    let mut best = f64::INFINITY;
+    for w in pl.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+        let l2 = dx * dx + dy * dy;
+        let t = if l2 > 0.0 {
+            (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / l2).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        let (cx, cy) = (a.0 + t * dx, a.1 + t * dy);
+        best = best.min(((p.0 - cx).powi(2) + (p.1 - cy).powi(2)).sqrt());
+    }
+    best
+}
+
 fn dist_to_points(pts: &[(f64, f64)], p: (f64, f64)) -> f64 {
     pts.iter()
         .map(|q| ((q.0 - p.0).powi(2) + (q.1 - p.1).powi(2)).sqrt())
@@ -98,6 +125,11 @@ fn dist_to_points(pts: &[(f64, f64)], p: (f64, f64)) -> f64 {
 /// The independent check of (a) and (b) by sampling; `slack` covers the
 /// sampling density.
 fn sampled_check(curve: &[Bezier<Rational>], s: &Stroke, r: f64, tol: f64, slack: f64) {
+    sampled_check_n(curve, s, r, tol, slack, 600)
+}
+
+/// [`sampled_check`] with `n` boundary samples per input piece.
+fn sampled_check_n(curve: &[Bezier<Rational>], s: &Stroke, r: f64, tol: f64, slack: f64, n: usize) {
     let cf: Vec<Bezier<f64>> = curve.iter().map(|b| b.map(Scalar::approx)).collect();
     let out = output_points(s, 60);
     for p in &out {
@@ -107,9 +139,18 @@ fn sampled_check(curve: &[Bezier<Rational>], s: &Stroke, r: f64, tol: f64, slack
             "output point {p:?} at distance {d} from x (r = {r})"
         );
     }
-    let dense = output_points(s, 400);
-    for b in boundary_points(curve, r, s.closed_curve) {
-        let d = dist_to_points(&dense, b);
+    // distance to the polyline through each output piece's samples: the
+    // chords deviate from the piece by its sagitta (≪ slack at 400 samples)
+    let polylines: Vec<Vec<(f64, f64)>> = s
+        .contours
+        .iter()
+        .flat_map(|c| c.pieces.iter().map(|p| p.sample(400)))
+        .collect();
+    for b in boundary_points_n(curve, r, s.closed_curve, n) {
+        let d = polylines
+            .iter()
+            .map(|pl| dist_to_polyline(pl, b))
+            .fold(f64::INFINITY, f64::min);
         assert!(
             d <= tol + slack,
             "boundary point {b:?} is {d} from the output"
@@ -908,5 +949,148 @@ fn separate_contours_are_trimmed_together() {
             assert_eq!(s.crossings.len(), 2 * single.crossings.len());
         }
         sampled_check(&x, &s, 0.5, tol, 2e-2);
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Icon elements (issue 27): every ordinary SVG shape strokes to closed,
+// proven contours, checked against an independent dense-sampled oracle.
+// ---------------------------------------------------------------------------
+
+const ICONS: [(&str, &str); 6] = [
+    (
+        "circle",
+        r#"<svg viewBox="0 0 24 24"><circle cx="12" cy="12" r="3"/></svg>"#,
+    ),
+    (
+        "rect rx",
+        r#"<svg viewBox="0 0 24 24"><rect x="3" y="3" width="18" height="18" rx="1.5"/></svg>"#,
+    ),
+    (
+        "arc path",
+        r#"<svg viewBox="0 0 24 24"><path d="M12 2a10 10 0 1 0 10 10h-4a6 6 0 1 1-6-6z"/></svg>"#,
+    ),
+    (
+        "heart",
+        r#"<svg viewBox="0 0 24 24"><path d="M20.84 4.61a5.5 5.5 0 0 0-7.78 0L12 5.67l-1.06-1.06a5.5 5.5 0 0 0-7.78 7.78l1.06 1.06L12 21.23l7.78-7.78 1.06-1.06a5.5 5.5 0 0 0 0-7.78z"/></svg>"#,
+    ),
+    (
+        "polyline",
+        r#"<svg viewBox="0 0 24 24"><polyline points="4 17 10 11 4 5"/></svg>"#,
+    ),
+    (
+        "ellipse",
+        r#"<svg viewBox="0 0 24 24"><ellipse cx="12" cy="12" rx="8" ry="4"/></svg>"#,
+    ),
+];
+
+fn icon_stroke(name: &str, svg: &str, tol: f64) -> (Vec<Bezier<Rational>>, Stroke) {
+    let x = lncert::shape::parse_svg_document(svg).unwrap_or_else(|e| panic!("{name}: {e}"));
+    let mut o = StrokeOptions::new(q("1"), tol);
+    o.output = lncert::approx::Output::Cubic;
+    let s = stroke(&x, &o).unwrap_or_else(|e| panic!("{name}: {e:?}"));
+    (x, s)
+}
+
+#[test]
+fn icon_elements_stroke_to_closed_proven_outlines() {
+    let tol = 1e-2;
+    for (name, svg) in ICONS {
+        let (x, s) = icon_stroke(name, svg, tol);
+        assert!(
+            s.a.proven && s.b.proven,
+            "{name}: {:?} {:?} {:?}",
+            s.a,
+            s.b,
+            s.notes
+        );
+        check_closed_simple(&s);
+        let closed_input = !name.starts_with("polyline");
+        // a closed simple input: an outer contour and a hole; the polyline: one contour
+        let (ccw, cw) = s
+            .contours
+            .iter()
+            .fold((0, 0), |(a, b), c| match c.orientation {
+                Orientation::CounterClockwise => (a + 1, b),
+                Orientation::Clockwise => (a, b + 1),
+                _ => (a, b),
+            });
+        if closed_input {
+            assert_eq!((ccw, cw), (1, 1), "{name}: orientations");
+        } else {
+            assert_eq!((ccw, cw), (1, 0), "{name}: orientations");
+        }
+        // independent oracle: every output point is r ± tol from the input
+        // (dense sampling), every sampled boundary point within tol of the output
+        sampled_check_n(&x, &s, 1.0, tol, 2e-3, 120);
+    }
+}
+
+#[test]
+fn stroked_circle_is_the_exact_annulus() {
+    // exact oracle: the stroke of the circle |p − c| = 3 with r = 1 is the
+    // annulus 2 ≤ |p − c| ≤ 4; the input is the arc read within its reported
+    // approximation bound (≤ 1e-6), added to the slack
+    let tol = 1e-2;
+    let (_, s) = icon_stroke("circle", ICONS[0].1, tol);
+    assert!(s.proven());
+    let rad = |p: (f64, f64)| ((p.0 - 12.0).powi(2) + (p.1 - 12.0).powi(2)).sqrt();
+    let mut radii = Vec::new();
+    for c in &s.contours {
+        let pts: Vec<(f64, f64)> = c.pieces.iter().flat_map(|p| p.sample(200)).collect();
+        let lo = pts.iter().map(|p| rad(*p)).fold(f64::INFINITY, f64::min);
+        let hi = pts.iter().map(|p| rad(*p)).fold(0.0, f64::max);
+        radii.push((lo, hi, c.orientation));
+    }
+    radii.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let slack = tol + 1e-6;
+    assert!(
+        (radii[0].0 - 2.0).abs() <= slack && (radii[0].1 - 2.0).abs() <= slack,
+        "{radii:?}"
+    );
+    assert!(
+        (radii[1].0 - 4.0).abs() <= slack && (radii[1].1 - 4.0).abs() <= slack,
+        "{radii:?}"
+    );
+    assert_eq!(radii[0].2, Orientation::Clockwise);
+    assert_eq!(radii[1].2, Orientation::CounterClockwise);
+    // (b) on the exact annulus: its boundary circles are within tol of the output
+    let dense: Vec<(f64, f64)> = output_points(&s, 400);
+    for k in 0..720 {
+        let a = k as f64 / 720.0 * std::f64::consts::TAU;
+        for rr in [2.0, 4.0] {
+            let b = (12.0 + rr * a.cos(), 12.0 + rr * a.sin());
+            let d = dist_to_points(&dense, b);
+            assert!(
+                d <= slack + 2e-3,
+                "annulus point at radius {rr}, angle {a}: {d}"
+            );
+        }
+    }
+}
+
+#[test]
+fn near_g1_corners_are_joints_not_crossings() {
+    // tangents that agree to 10 digits (concave and convex side), and to 2
+    for d in [
+        "M 0 0 C 1 1 2 1 3 0 C 4 -1.0000000001 5 -1 6 0",
+        "M 0 0 C 1 1 2 1 3 0 C 4 -0.9999999999 5 -1 6 0",
+        "M 0 0 C 1 1 2 1 3 0 C 4 -1.01 5 -1 6 0",
+    ] {
+        let x = parse_curve(d).unwrap();
+        let mut o = StrokeOptions::new(q("1/2"), 1e-2);
+        o.output = lncert::approx::Output::Cubic;
+        let s = stroke(&x, &o).unwrap();
+        assert!(
+            s.proven(),
+            "{d}: {:?} {:?} {:?} {:?}",
+            s.a,
+            s.b,
+            s.c,
+            s.notes
+        );
+        check_closed_simple(&s);
+        assert_eq!(s.contours.len(), 1, "{d}");
+        sampled_check(&x, &s, 0.5, 1e-2, 2e-3);
     }
 }

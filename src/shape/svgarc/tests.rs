@@ -763,7 +763,10 @@ fn arc_pieces_join_with_exact_g1() {
         };
         assert!(pieces.len() >= 2, "{rx} {ry}: {} pieces", pieces.len());
         for w in pieces.windows(2) {
-            assert!(exactly_g1(&w[0], &w[1]), "{rx} {ry} {phi}: joint not exactly G1");
+            assert!(
+                exactly_g1(&w[0], &w[1]),
+                "{rx} {ry} {phi}: joint not exactly G1"
+            );
         }
     }
 }
