@@ -42,7 +42,7 @@ use crate::shape::ShapeDesc;
 use piece::Pieces;
 
 pub use cert::{Certificate, MapCover};
-pub use param::Parametric;
+pub use param::{ParamBox, Parametric};
 pub use same::verify_against;
 
 pub use search::{Config, CoverBox, OneSided};

@@ -6,4 +6,5 @@
 pub mod circle;
 pub mod ellipse;
 pub mod intersect;
+pub(crate) mod onside;
 pub mod trim;

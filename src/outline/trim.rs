@@ -416,6 +416,57 @@ struct Raw {
     /// For connectors: every point is within `e_in` of `S`.
     e_in: f64,
     kind: Kind,
+    /// For offset segments proven by the parametric path: the map from the
+    /// segment's parameter onto its span's exact offset (see [`Link`]).
+    link: Option<Link>,
+}
+
+/// How a raw offset segment's points correspond to exact offset points:
+/// every `B(s)` is within the raw piece's `e_in` of `E(t)` for some `t` in
+/// `span.0 + hull(c)·(span.1 − span.0)` over the map boxes whose range meets
+/// `s` (the parametric proof of [`crate::certify::param`]; `B` with its end
+/// moves, fact 4, which `e_in` includes).
+#[derive(Clone, Debug)]
+struct Link {
+    /// The input piece (index into the whole curve).
+    piece: usize,
+    /// Its span (dyadic floats).
+    span: (f64, f64),
+    /// The signed offset distance.
+    d: Rational,
+    /// The map's cover of the segment's parameter.
+    boxes: std::sync::Arc<Vec<crate::certify::ParamBox>>,
+    /// The raw piece runs against the segment's parameter (the `+r` side).
+    reversed: bool,
+}
+
+impl Link {
+    /// The exact parameters (on the input piece) whose offset points lie
+    /// within `e_in` of the raw piece's points over `[s0, s1]`, enclosed.
+    fn exact_range(&self, s0: f64, s1: f64) -> Option<(f64, f64)> {
+        let (lo, hi) = if self.reversed {
+            (1.0 - s1, 1.0 - s0)
+        } else {
+            (s0, s1)
+        };
+        let (mut u0, mut u1) = (f64::INFINITY, f64::NEG_INFINITY);
+        for b in self.boxes.iter() {
+            if b.t.1 >= lo && b.t.0 <= hi {
+                for c in b.c {
+                    u0 = u0.min(c);
+                    u1 = u1.max(c);
+                }
+            }
+        }
+        if !(u0 <= u1) || u0 < 0.0 || u1 > 1.0 {
+            return None;
+        }
+        let iv = |x: f64| Interval::try_from((x, x)).ok();
+        let (a, b) = (iv(self.span.0)?, iv(self.span.1)?);
+        let t0 = a + iv(u0)? * (b - a);
+        let t1 = a + iv(u1)? * (b - a);
+        Some((t0.inf().max(0.0), t1.sup().min(1.0)))
+    }
 }
 
 fn fsq(v: &V2<Rational>) -> Interval {
@@ -498,6 +549,7 @@ fn chain_side(
     r: &Rational,
     closed: bool,
     merge: f64,
+    first: usize,
 ) -> Result<Vec<Raw>, StrokeError> {
     let segs: Vec<(usize, Bezier<Rational>, f64)> = res
         .segments
@@ -511,13 +563,29 @@ fn chain_side(
     if segs.is_empty() {
         return Err(bad("curve", "no offset segments"));
     }
+    let link = |s: &crate::approx::OffsetSegment| -> Option<Link> {
+        let proof = s.proof.as_ref()?;
+        let map = proof.map.as_ref()?;
+        if map.source_a || map.boxes.is_empty() || !(s.error.1 <= res.tol) {
+            return None;
+        }
+        Some(Link {
+            piece: first + s.piece,
+            span: s.t,
+            d: res.distance.clone(),
+            boxes: std::sync::Arc::new(map.boxes.clone()),
+            reversed: false,
+        })
+    };
     let mut raws: Vec<Raw> = segs
         .iter()
-        .map(|(_, b, e)| Raw {
+        .zip(&res.segments)
+        .map(|((_, b, e), s)| Raw {
             piece: Piece::Bezier(b.clone()),
             e: *e,
             e_in: *e,
             kind: Kind::Boundary,
+            link: link(s),
         })
         .collect();
     let n = raws.len();
@@ -588,6 +656,7 @@ fn chain_side(
                         e: e1.max(e2),
                         e_in: 0.0,
                         kind: Kind::Boundary,
+                        link: None,
                     });
                 } else if let Piece::Bezier(b) = &raws[k1].piece {
                     let _ = b;
@@ -611,6 +680,7 @@ fn chain_side(
                         e: f64::INFINITY,
                         e_in,
                         kind: Kind::Connector,
+                        link: None,
                     });
                 }
             }
@@ -641,6 +711,10 @@ fn reverse_side(side: Vec<Raw>) -> Vec<Raw> {
         .rev()
         .map(|r| Raw {
             piece: r.piece.reversed(),
+            link: r.link.map(|l| Link {
+                reversed: !l.reversed,
+                ..l
+            }),
             ..r
         })
         .collect()
@@ -680,6 +754,7 @@ fn cap_piece(
                 e,
                 e_in,
                 kind: Kind::Butt,
+                link: None,
             })
         }
         Cap::Round => {
@@ -710,6 +785,7 @@ fn cap_piece(
                 e: e1.max(e2),
                 e_in: 0.0,
                 kind: Kind::Boundary,
+                link: None,
             })
         }
     }
@@ -797,6 +873,7 @@ fn raw_contours(
     curve: &[Bezier<Rational>],
     opts: &StrokeOptions,
     closed: bool,
+    first: usize,
 ) -> Result<(Vec<Vec<Raw>>, Vec<String>, Vec<CapReport>), StrokeError> {
     let r = &opts.radius;
     let tol_off = opts.tol / 8.0;
@@ -826,8 +903,17 @@ fn raw_contours(
     }
     // joins and connectors shorter than this are merged into one exact point
     let merge = opts.tol / 64.0;
-    let a = chain_side(&minus, r, closed, merge)?;
-    let b = reverse_side(chain_side(&plus, r, closed, merge)?);
+    // the exact-interval kept test is for a circular pen (offset sides)
+    let strip = |mut side: Vec<Raw>| {
+        if opts.ellipse.is_some() {
+            for raw in &mut side {
+                raw.link = None;
+            }
+        }
+        side
+    };
+    let a = strip(chain_side(&minus, r, closed, merge, first)?);
+    let b = strip(reverse_side(chain_side(&plus, r, closed, merge, first)?));
     if closed {
         return Ok((vec![a, b], notes, Vec::new()));
     }
@@ -900,6 +986,7 @@ fn ellipse_cap_piece(
             e: err,
             e_in: err,
             kind: Kind::Butt,
+            link: None,
         }]);
     }
     let cap = half_ellipse_cap(&c, pen, &dir_from, &out, opts.tol / 8.0)
@@ -932,6 +1019,7 @@ fn ellipse_cap_piece(
             e: cap.error,
             e_in: cap.error,
             kind: Kind::Boundary,
+            link: None,
         })
         .collect())
 }
@@ -1336,6 +1424,9 @@ struct Sub {
     delta: f64,
     /// The sub-piece's ends are crossing points (not raw piece ends).
     end_splits: [bool; 2],
+    /// Bézier: its parameter range on the raw piece (`pre` is the exact
+    /// restriction to it).
+    range: (Rational, Rational),
 }
 
 fn split_piece(raw: usize, p: &Piece, splits: &mut [Split]) -> Vec<Sub> {
@@ -1365,6 +1456,7 @@ fn split_piece(raw: usize, p: &Piece, splits: &mut [Split]) -> Vec<Sub> {
                     post: Piece::Bezier(post),
                     delta,
                     end_splits: [prev.is_some(), next.is_some()],
+                    range: (a, bb),
                 });
                 prev = next;
             }
@@ -1393,6 +1485,7 @@ fn split_piece(raw: usize, p: &Piece, splits: &mut [Split]) -> Vec<Sub> {
                     post: Piece::Arc(l),
                     delta: 0.0,
                     end_splits: [!first, true],
+                    range: (<Rational as Zero>::zero(), <Rational as One>::one()),
                 });
                 first = false;
                 cur = r;
@@ -1403,6 +1496,7 @@ fn split_piece(raw: usize, p: &Piece, splits: &mut [Split]) -> Vec<Sub> {
                 post: Piece::Arc(cur),
                 delta: 0.0,
                 end_splits: [!first, false],
+                range: (<Rational as Zero>::zero(), <Rational as One>::one()),
             });
             out
         }
@@ -1447,7 +1541,7 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
     let mut notes = Vec::new();
     let mut caps = Vec::new();
     for &(first, end, c_closed) in &comps {
-        let (rc, n, cp) = raw_contours(&curve[first..end], opts, c_closed)?;
+        let (rc, n, cp) = raw_contours(&curve[first..end], opts, c_closed, first)?;
         raw_contours_all.extend(rc);
         notes.extend(n);
         caps.extend(cp);
@@ -1663,6 +1757,9 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
         })
         .collect();
     let rf = form.reach;
+    let onside_input = form
+        .circle
+        .then(|| super::onside::Input::new(curve, &comps, &opts.radius));
     let kept_bounds: Vec<Option<f64>> = subs
         .par_iter()
         .zip(&estimates)
@@ -1674,6 +1771,30 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
             }
             if *est < rf - 4.0 * e_in.max(tol / 8.0) {
                 return None;
+            }
+            // one decision for the whole sub-piece where the exact offset
+            // points it stands for are proven on ∂S (module `onside`)
+            if let (Some(link), Some(input)) = (&raw.link, &onside_input) {
+                let budget = tol - e_in;
+                let range = (s.range.0.approx(), s.range.1.approx());
+                let pad = 1e-12;
+                if budget > 0.0 {
+                    if let Some((t0, t1)) = link.exact_range(range.0 - pad, range.1 + pad) {
+                        if let Some(l) =
+                            input.prove_interval(link.piece, &link.d, t0, t1, budget, 256)
+                        {
+                            return Some(e_in + l);
+                        }
+                        if dbg {
+                            eprintln!(
+                                "onside failed: raw {} piece {} t [{t0}, {t1}]",
+                                s.raw, link.piece
+                            );
+                        }
+                    } else if dbg {
+                        eprintln!("onside: no exact range for raw {}", s.raw);
+                    }
+                }
             }
             prove_kept(curve, &curve_f, &s.post, e_in, form, tol)
         })
@@ -1804,7 +1925,7 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
         note: if butt {
             "not claimed for butt caps (the region is not x ⊕ pen)".into()
         } else if a_ok {
-            format!("every kept sub-piece has a point proven outside S within {a_bound:.3e} and a point of S within its certified bound")
+            format!("every kept sub-piece is within {a_bound:.3e} of exact offset points proven on ∂S, or of a point proven outside S and a point of S")
         } else {
             "some sub-pieces could not be classified".into()
         },

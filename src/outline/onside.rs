@@ -1,0 +1,596 @@
+//! Exact offset points proven **on ∂S**, a parameter interval at a time
+//! (issue 27: a decision per sub-piece instead of one witness per `tol`).
+//!
+//! For an input piece `x = x_i`, a signed distance `d` (`|d| = r`) and a
+//! parameter interval `T`, let `E(t) = x(t) + d·N(t)` (`N` the left unit
+//! normal) be the exact offset. [`Input::on_boundary`] proves, in outward
+//! rounded interval arithmetic (no float shortcut), that **every** `E(t)`,
+//! `t ∈ T`, has `x(t)` as its unique nearest point on the whole input:
+//!
+//! * **local** (`K2`): on a window `W ⊇ T` of `x_i`,
+//!   `g(t') = |E(t) − x(t')|²` has `g″ = 2|x′|² − 2(E(t) − x(t'))·x″ > 0` for
+//!   every `t ∈ T`, `t' ∈ W` (interval hulls of the restricted control points
+//!   and hodographs). Since `g′(t) = −2 d N(t)·x′(t) = 0`, `g` is strictly
+//!   convex on `W` with its minimum `r²` at `t' = t` only. Where `W` reaches a
+//!   joint, the neighbour's window `W_j` is also proven convex in `t'`, and
+//!   the derivative at the joint points away from it: for a G¹ joint (exact
+//!   check) `g_j′ = λ g′` at the joint with `λ > 0`, and `g′ ≤ 0` at `t' = 0`
+//!   (resp. `≥ 0` at `1`) because the minimum is at `t ∈ W`; for a G⁰ joint
+//!   `(E(t) − c)·x_j′ > 0` at the joint (resp. `< 0`) is proven directly.
+//!   So `g_j` decreases towards the joint point `c`, where `g_j = g(joint) ≥ r²`
+//!   with equality only at the same point `c = x(t)`.
+//! * **far** (`K1`): every other part of every input piece has a bounding box
+//!   at squared distance `> r²` from the box of `E(T)` (subdividing `t'`).
+//!
+//! Then `f(E(t)) = r` with a unique nearest point, so `f` is differentiable
+//! at `E(t)` with gradient `(E(t) − x(t))/r ≠ 0`: points arbitrarily close to
+//! `E(t)` have `f > r`, and `E(t) ∈ ∂S`. The driver ([`Input::prove_interval`])
+//! splits `T` where a test fails; the parts left unproven (near crossings,
+//! cusps and concave corners) are charged by an enclosure of their arc length:
+//! every point of `E` over an unproven run is within the run's length of an
+//! endpoint of it that is proven (at least one leaf must be proven).
+//!
+//! See `proofs/trimming.md`, "Kept by exact ∂S intervals".
+
+use crate::curve::{Bezier, V2};
+use crate::scalar::{interval_from_rational, Interval, Rational};
+use num_traits::{Signed, Zero};
+
+type IB = Bezier<Interval>;
+type IV = V2<Interval>;
+
+fn point(x: f64) -> Interval {
+    Interval::try_from((x, x)).unwrap_or(Interval::ENTIRE)
+}
+
+fn hull(xs: impl Iterator<Item = Interval>) -> Interval {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for x in xs {
+        if x.is_empty() {
+            return Interval::ENTIRE;
+        }
+        lo = lo.min(x.inf());
+        hi = hi.max(x.sup());
+    }
+    Interval::try_from((lo, hi)).unwrap_or(Interval::ENTIRE)
+}
+
+fn bbox(b: &IB) -> IV {
+    V2::new(
+        hull(b.points().iter().map(|p| p.x)),
+        hull(b.points().iter().map(|p| p.y)),
+    )
+}
+
+fn dot(a: &IV, b: &IV) -> Interval {
+    a.x * b.x + a.y * b.y
+}
+
+/// The centre `c` of a box (a point) and the box minus it.
+fn centre(e: &IV) -> (IV, IV) {
+    let c = V2::new(point(e.x.mid()), point(e.y.mid()));
+    let eps = V2::new(e.x - c.x, e.y - c.y);
+    (c, eps)
+}
+
+fn coords(b: &IB) -> (Vec<Interval>, Vec<Interval>) {
+    (
+        b.points().iter().map(|p| p.x).collect(),
+        b.points().iter().map(|p| p.y).collect(),
+    )
+}
+
+fn add(a: &[Interval], b: &[Interval]) -> Vec<Interval> {
+    a.iter().zip(b).map(|(x, y)| *x + *y).collect()
+}
+
+/// `C(n, k)`, exact in `f64` for the degrees used here.
+fn binom(n: usize, k: usize) -> f64 {
+    (0..k)
+        .fold(1.0, |acc, i| acc * (n - i) as f64 / (i + 1) as f64)
+        .round()
+}
+
+/// The Bernstein coefficients of a product (interval arithmetic, outward).
+fn bprod(a: &[Interval], b: &[Interval]) -> Vec<Interval> {
+    if a.is_empty() || b.is_empty() {
+        return Vec::new();
+    }
+    let (m, n) = (a.len() - 1, b.len() - 1);
+    (0..=m + n)
+        .map(|k| {
+            let mut s = point(0.0);
+            for i in k.saturating_sub(n)..=k.min(m) {
+                let j = k - i;
+                let w = point(binom(m, i) * binom(n, j)) / point(binom(m + n, k));
+                s = s + w * a[i] * b[j];
+            }
+            s
+        })
+        .collect()
+}
+
+/// The Bernstein coefficients raised to degree `deg` (`≥` the current one).
+fn elevate(a: &[Interval], deg: usize) -> Vec<Interval> {
+    let n = a.len().saturating_sub(1);
+    if deg <= n {
+        return a.to_vec();
+    }
+    bprod(a, &vec![point(1.0); deg - n + 1])
+}
+
+/// A certain lower bound of the squared distance between two boxes.
+fn box_dist2_lo(a: &IV, b: &IV) -> f64 {
+    let gap = |p: Interval, q: Interval| -> Interval {
+        if p.sup() < q.inf() {
+            point(q.inf()) - point(p.sup())
+        } else if q.sup() < p.inf() {
+            point(p.inf()) - point(q.sup())
+        } else {
+            point(0.0)
+        }
+    };
+    let (gx, gy) = (gap(a.x, b.x), gap(a.y, b.y));
+    (gx * gx + gy * gy).inf()
+}
+
+/// A joint of two input pieces, seen from one of them.
+#[derive(Clone, Copy, Debug)]
+struct Joint {
+    /// The neighbour piece.
+    piece: usize,
+    /// The tangents are exactly parallel with the same direction.
+    g1: bool,
+}
+
+struct InPiece {
+    x: IB,
+    h: IB,
+    h2: IB,
+    /// The piece ending at this piece's start.
+    prev: Option<Joint>,
+    /// The piece starting at this piece's end.
+    next: Option<Joint>,
+}
+
+/// The input curve in interval form with its joints, and the pen radius.
+pub(crate) struct Input {
+    pieces: Vec<InPiece>,
+    r: Interval,
+    r2: Interval,
+}
+
+fn end_dir(b: &Bezier<Rational>, end: bool) -> Option<V2<Rational>> {
+    let p = b.points();
+    let n = p.len();
+    if end {
+        (0..n - 1)
+            .rev()
+            .map(|k| p[n - 1].sub(&p[k]))
+            .find(|v| !v.x.is_zero() || !v.y.is_zero())
+    } else {
+        (1..n)
+            .map(|k| p[k].sub(&p[0]))
+            .find(|v| !v.x.is_zero() || !v.y.is_zero())
+    }
+}
+
+fn same_direction(u: &V2<Rational>, v: &V2<Rational>) -> bool {
+    (&u.x * &v.y - &u.y * &v.x).is_zero() && (&u.x * &v.x + &u.y * &v.y).is_positive()
+}
+
+/// The widest window (parameter units) tried around an interval.
+const MAX_WINDOW: f64 = 1.0;
+/// Most neighbours a window runs through beyond a joint.
+const MAX_CHAIN: usize = 16;
+/// Subdivision depth of a far range.
+const FAR_DEPTH: u32 = 10;
+
+impl Input {
+    /// `comps`: the connected components `(first, end, closed)` of `curve`.
+    pub(crate) fn new(
+        curve: &[Bezier<Rational>],
+        comps: &[(usize, usize, bool)],
+        r: &Rational,
+    ) -> Self {
+        let mut pieces: Vec<InPiece> = curve
+            .iter()
+            .map(|b| {
+                let x = b.map(interval_from_rational);
+                let h = x.hodograph();
+                let h2 = h.hodograph();
+                InPiece {
+                    x,
+                    h,
+                    h2,
+                    prev: None,
+                    next: None,
+                }
+            })
+            .collect();
+        for &(first, end, closed) in comps {
+            let n = end - first;
+            let links = if closed { n } else { n.saturating_sub(1) };
+            for k in 0..links {
+                let (a, b) = (first + k, first + (k + 1) % n);
+                let g1 = match (end_dir(&curve[a], true), end_dir(&curve[b], false)) {
+                    (Some(u), Some(v)) => same_direction(&u, &v),
+                    _ => false,
+                };
+                pieces[a].next = Some(Joint { piece: b, g1 });
+                pieces[b].prev = Some(Joint { piece: a, g1 });
+            }
+        }
+        let ri = interval_from_rational(r);
+        Input {
+            pieces,
+            r: ri,
+            r2: ri * ri,
+        }
+    }
+
+    /// Enclosures over `t ∈ [t0, t1]` of `E(t)` and of the arc length of `E`.
+    fn offset_box(&self, i: usize, d: Interval, t0: f64, t1: f64) -> Option<(IV, f64)> {
+        let p = &self.pieces[i];
+        let (a, b) = (point(t0), point(t1));
+        let xb = bbox(&p.x.restrict(&a, &b));
+        let hb = bbox(&p.h.restrict(&a, &b));
+        let h2b = bbox(&p.h2.restrict(&a, &b));
+        let n2 = dot(&hb, &hb);
+        if !(n2.inf() > 0.0) || !n2.sup().is_finite() {
+            return None;
+        }
+        let len = n2.sqrt();
+        let e = V2::new(xb.x - d * hb.y / len, xb.y + d * hb.x / len);
+        // |E′| ≤ |x′| + |d|·|x′ × x″| / |x′|²
+        let cross = hb.x * h2b.y - hb.y * h2b.x;
+        let speed = len + d.abs() * cross.abs() / n2;
+        let arc = (speed * (b - a)).sup();
+        if !arc.is_finite() || !e.x.inf().is_finite() || !e.y.sup().is_finite() {
+            return None;
+        }
+        Some((e, arc))
+    }
+
+    /// `g″ > 0` on `E × [w0, w1]` of piece `j`: with `c` the centre of the
+    /// box `E` and `ε = E − c`, `g″/2 = |x′|² + (x − c)·x″ − ε·x″`, whose
+    /// Bernstein coefficients on the window (a polynomial part computed as
+    /// one, the small box `ε` apart) are all proven positive, halving the
+    /// window up to twice.
+    fn convex(&self, j: usize, e: &IV, w0: f64, w1: f64) -> bool {
+        self.convex_at(j, e, w0, w1, 2)
+    }
+
+    fn convex_at(&self, j: usize, e: &IV, w0: f64, w1: f64, depth: u32) -> bool {
+        let xr = self.pieces[j].x.restrict(&point(w0), &point(w1));
+        let n = xr.degree();
+        let (c, eps) = centre(e);
+        let h = xr.hodograph();
+        let h2 = h.hodograph();
+        let (xs, ys) = coords(&xr);
+        let dx: Vec<Interval> = xs.iter().map(|v| *v - c.x).collect();
+        let dy: Vec<Interval> = ys.iter().map(|v| *v - c.y).collect();
+        let (hx, hy) = coords(&h);
+        let (h2x, h2y) = coords(&h2);
+        let deg = (2 * n).saturating_sub(2).max(n);
+        let q = add(
+            &add(
+                &elevate(&bprod(&hx, &hx), deg),
+                &elevate(&bprod(&hy, &hy), deg),
+            ),
+            &add(
+                &elevate(&bprod(&dx, &h2x), deg),
+                &elevate(&bprod(&dy, &h2y), deg),
+            ),
+        );
+        let l = add(
+            &elevate(&h2x, deg)
+                .iter()
+                .map(|v| *v * eps.x)
+                .collect::<Vec<_>>(),
+            &elevate(&h2y, deg)
+                .iter()
+                .map(|v| *v * eps.y)
+                .collect::<Vec<_>>(),
+        );
+        if q.len() == l.len() && q.iter().zip(&l).all(|(a, b)| (*a - *b).inf() > 0.0) {
+            return true;
+        }
+        if depth == 0 {
+            return false;
+        }
+        let m = 0.5 * (w0 + w1);
+        self.convex_at(j, e, w0, m, depth - 1) && self.convex_at(j, e, m, w1, depth - 1)
+    }
+
+    /// Every point of piece `j` over `[a, b]` is at distance `> r` from the
+    /// box `e`: its bounding box is, or `|x − c|² − (r + ρ)² > 0` by Bernstein
+    /// coefficients (`c` the box's centre, `ρ ≥` its half diagonal, so every
+    /// point of the box is within `ρ` of `c`); subdividing `[a, b]`.
+    fn far(&self, j: usize, e: &IV, a: f64, b: f64, depth: u32) -> bool {
+        if b <= a {
+            return true;
+        }
+        let xr = self.pieces[j].x.restrict(&point(a), &point(b));
+        let xb = bbox(&xr);
+        if box_dist2_lo(e, &xb) > self.r2.sup() {
+            return true;
+        }
+        let (c, eps) = centre(e);
+        let (ex, ey) = (point(eps.x.mag()), point(eps.y.mag()));
+        let reach = self.r + (ex * ex + ey * ey).sqrt();
+        let (xs, ys) = coords(&xr);
+        let dx: Vec<Interval> = xs.iter().map(|v| *v - c.x).collect();
+        let dy: Vec<Interval> = ys.iter().map(|v| *v - c.y).collect();
+        let g = add(&bprod(&dx, &dx), &bprod(&dy, &dy));
+        let r2 = reach * reach;
+        if g.iter().all(|v| (*v - r2).inf() > 0.0) {
+            return true;
+        }
+        if depth == 0 {
+            return false;
+        }
+        let m = 0.5 * (a + b);
+        self.far(j, e, a, m, depth - 1) && self.far(j, e, m, b, depth - 1)
+    }
+
+    /// The widest window `[w0, w1] ⊇ [t0, t1]` of piece `j` on which `g` is
+    /// proven convex (`w` halved from `w_max`, not below `min_w`).
+    fn window(
+        &self,
+        j: usize,
+        e: &IV,
+        (t0, t1): (f64, f64),
+        w_max: f64,
+        min_w: f64,
+    ) -> Option<(f64, f64)> {
+        let mut w = w_max;
+        loop {
+            let (w0, w1) = ((t0 - w).max(0.0), (t1 + w).min(1.0));
+            if self.convex(j, e, w0, w1) {
+                return Some((w0, w1));
+            }
+            w *= 0.5;
+            if w < min_w {
+                return None;
+            }
+        }
+    }
+
+    /// `K1 ∧ K2` for `t ∈ [t0, t1]` of piece `i` (see the module docs): the
+    /// widest own window first, then narrower ones (a window that reaches a
+    /// concave joint fails where a narrower one does not).
+    fn holds(&self, i: usize, d: Interval, t0: f64, t1: f64) -> Option<f64> {
+        let (e, arc) = self.offset_box(i, d, t0, t1)?;
+        let min_w = (t1 - t0) / 4.0;
+        let mut w_max = MAX_WINDOW;
+        while w_max >= min_w {
+            let (w0, w1) = self.window(i, &e, (t0, t1), w_max, min_w)?;
+            if self.holds_with(i, &e, w0, w1) {
+                return Some(arc);
+            }
+            // a narrower window helps only where this one reached a piece end
+            // that the interval does not touch
+            if !((w0 == 0.0 && t0 > 0.0) || (w1 == 1.0 && t1 < 1.0)) {
+                return None;
+            }
+            w_max = ((t0 - w0).max(w1 - t1)) * 0.5;
+        }
+        None
+    }
+
+    /// The windows beyond the joint at the start (`forward = false`) or end
+    /// of piece `i`: whole neighbours while `g` is proven convex on them (and,
+    /// at a G⁰ joint, its derivative points towards `i`), then the widest
+    /// proven part of the next one. `None` when the first joint fails.
+    fn chain_windows(&self, i: usize, e: &IV, forward: bool) -> Option<Vec<(usize, f64, f64)>> {
+        let mut out: Vec<(usize, f64, f64)> = Vec::new();
+        let mut cur = i;
+        for step in 0..MAX_CHAIN {
+            let p = &self.pieces[cur];
+            let Some(jn) = (if forward { p.next } else { p.prev }) else {
+                break;
+            };
+            let j = jn.piece;
+            if j == i || out.iter().any(|w| w.0 == j) {
+                break;
+            }
+            let q = &self.pieces[j];
+            if !jn.g1 {
+                // g_j′ at the joint (towards i) must be ≤ 0: for a previous
+                // piece (E − c)·x_j′(1) > 0, for a next one (E − c)·x_j′(0) < 0
+                let (c, tj) = if forward {
+                    (&q.x.points()[0], &q.h.points()[0])
+                } else {
+                    (
+                        q.x.points().last().expect("nonempty"),
+                        q.h.points().last().expect("nonempty"),
+                    )
+                };
+                let s = dot(&V2::new(e.x - c.x, e.y - c.y), tj);
+                let ok = if forward {
+                    s.sup() < 0.0
+                } else {
+                    s.inf() > 0.0
+                };
+                if !ok {
+                    return if step == 0 { None } else { Some(out) };
+                }
+            }
+            if self.convex(j, e, 0.0, 1.0) {
+                out.push((j, 0.0, 1.0));
+                cur = j;
+                continue;
+            }
+            let at = if forward { (0.0, 0.0) } else { (1.0, 1.0) };
+            match self.window(j, e, at, 0.5, 1.0 / 1024.0) {
+                Some((w0, w1)) => out.push((j, w0, w1)),
+                None if step == 0 => return None,
+                None => {}
+            }
+            break;
+        }
+        Some(out)
+    }
+
+    fn holds_with(&self, i: usize, e: &IV, w0: f64, w1: f64) -> bool {
+        let mut windows: Vec<(usize, f64, f64)> = vec![(i, w0, w1)];
+        if w0 == 0.0 {
+            match self.chain_windows(i, e, false) {
+                Some(w) => windows.extend(w),
+                None => return false,
+            }
+        }
+        if w1 == 1.0 {
+            match self.chain_windows(i, e, true) {
+                Some(w) => windows.extend(w),
+                None => return false,
+            }
+        }
+        // far: everything outside the windows
+        for j in 0..self.pieces.len() {
+            let mut ranges: Vec<(f64, f64)> = windows
+                .iter()
+                .filter(|w| w.0 == j)
+                .map(|w| (w.1, w.2))
+                .collect();
+            ranges.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let mut at = 0.0;
+            for (a, b) in ranges.iter().copied().chain(std::iter::once((1.0, 1.0))) {
+                if a > at && !self.far(j, e, at, a, FAR_DEPTH) {
+                    return false;
+                }
+                at = at.max(b);
+            }
+        }
+        true
+    }
+
+    /// Proves `E(t) ∈ ∂S` on `[t0, t1]` of piece `i` except unproven runs,
+    /// splitting where a test fails. Returns the largest unproven run's arc
+    /// length bound (`0` when all is proven), or `None` when nothing is proven
+    /// or a run exceeds `budget`.
+    pub(crate) fn prove_interval(
+        &self,
+        i: usize,
+        d: &Rational,
+        t0: f64,
+        t1: f64,
+        budget: f64,
+        max_nodes: usize,
+    ) -> Option<f64> {
+        if !(0.0..=1.0).contains(&t0) || !(0.0..=1.0).contains(&t1) || t0 > t1 {
+            return None;
+        }
+        let di = interval_from_rational(d);
+        // leaves in order: (t0, t1, proven, arc)
+        let mut leaves: Vec<(bool, f64)> = Vec::new();
+        let mut todo = vec![(t0, t1)];
+        let mut nodes = 0;
+        while let Some((a, b)) = todo.pop() {
+            nodes += 1;
+            if nodes > max_nodes {
+                return None;
+            }
+            if let Some(arc) = self.holds(i, di, a, b) {
+                leaves.push((true, arc));
+                continue;
+            }
+            let arc = self
+                .offset_box(i, di, a, b)
+                .map(|x| x.1)
+                .unwrap_or(f64::INFINITY);
+            let m = 0.5 * (a + b);
+            if arc <= budget / 8.0 || !(a < m && m < b) {
+                leaves.push((false, arc));
+                continue;
+            }
+            todo.push((m, b));
+            todo.push((a, m));
+        }
+        if !leaves.iter().any(|l| l.0) {
+            return None;
+        }
+        let mut worst: f64 = 0.0;
+        let mut run: f64 = 0.0;
+        for (proven, arc) in leaves {
+            if proven {
+                run = 0.0;
+            } else {
+                run += arc;
+                worst = worst.max(run);
+            }
+        }
+        let worst = worst * (1.0 + 1e-12);
+        (worst <= budget).then_some(worst)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scalar::parse_rational;
+    use crate::shape::parse_curve;
+
+    fn q(s: &str) -> Rational {
+        parse_rational(s).unwrap()
+    }
+
+    #[test]
+    fn a_segment_s_offsets_are_boundary_and_a_cusp_region_is_not() {
+        let x = parse_curve("M 0 0 L 4 0").unwrap();
+        let inp = Input::new(&x, &[(0, 1, false)], &q("1"));
+        for d in ["1", "-1"] {
+            assert_eq!(inp.prove_interval(0, &q(d), 0.0, 1.0, 0.1, 64), Some(0.0));
+        }
+        // a circle of radius 3 read as four quarter cubics: the inner offset
+        // at r = 1 is proven; at r = 4 it is past the centre (inside S)
+        let c = parse_curve(
+            "M 3 0 C 3 1.6568542494923801 1.6568542494923801 3 0 3 \
+             C -1.6568542494923801 3 -3 1.6568542494923801 -3 0 \
+             C -3 -1.6568542494923801 -1.6568542494923801 -3 0 -3 \
+             C 1.6568542494923801 -3 3 -1.6568542494923801 3 0 Z",
+        )
+        .unwrap();
+        let inp = Input::new(&c, &[(0, 4, true)], &q("1"));
+        // left of travel (counter-clockwise) is the inside
+        assert_eq!(
+            inp.prove_interval(0, &q("1"), 0.0, 1.0, 0.1, 256),
+            Some(0.0)
+        );
+        assert_eq!(
+            inp.prove_interval(0, &q("-1"), 0.0, 1.0, 0.1, 256),
+            Some(0.0)
+        );
+        let inp4 = Input::new(&c, &[(0, 4, true)], &q("4"));
+        assert_eq!(inp4.prove_interval(0, &q("4"), 0.0, 1.0, 0.1, 256), None);
+        assert_eq!(
+            inp4.prove_interval(0, &q("-4"), 0.0, 1.0, 0.1, 256),
+            Some(0.0)
+        );
+    }
+
+    #[test]
+    fn crossing_ends_are_charged_not_proven() {
+        // two parallel segments 1.5 apart with r = 1: the inner offsets are
+        // inside S (the other segment is 0.5 away), the outer ones on ∂S
+        let x = parse_curve("M 0 0 L 4 0 M 0 1.5 L 4 1.5").unwrap();
+        let inp = Input::new(&x, &[(0, 1, false), (1, 2, false)], &q("1"));
+        assert_eq!(inp.prove_interval(0, &q("1"), 0.0, 1.0, 0.1, 256), None);
+        assert_eq!(
+            inp.prove_interval(0, &q("-1"), 0.0, 1.0, 0.1, 256),
+            Some(0.0)
+        );
+        // a corner: the outer offset of an L near the convex corner is proven
+        let l = parse_curve("M 0 0 L 4 0 L 4 4").unwrap();
+        let inp = Input::new(&l, &[(0, 2, false)], &q("1"));
+        // the right side of travel is outside the turn (a left turn)
+        assert_eq!(
+            inp.prove_interval(0, &q("-1"), 0.0, 1.0, 0.1, 256),
+            Some(0.0)
+        );
+        // the inner side ends in the concave corner: its end is charged
+        let inner = inp.prove_interval(0, &q("1"), 0.0, 1.0, 2.0, 256);
+        assert!(matches!(inner, Some(l) if l > 0.0), "{inner:?}");
+    }
+}
