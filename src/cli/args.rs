@@ -230,6 +230,48 @@ pub fn point_json(p: &V2<Rational>) -> serde_json::Value {
     serde_json::json!([q(&p.x), q(&p.y)])
 }
 
+/// The exact square root of `r ≥ 0` when it is rational.
+fn rational_sqrt(r: &Rational) -> Option<Rational> {
+    use num_traits::Signed;
+    if r.is_negative() {
+        return None;
+    }
+    let (n, d) = (r.numer(), r.denom());
+    let (sn, sd) = (n.sqrt(), d.sqrt());
+    (&sn * &sn == *n && &sd * &sd == *d).then(|| Rational::new(sn, sd))
+}
+
+/// The one JSON form of an arc in every output (`stroke` outlines,
+/// `offset`'s join arcs and exact arc offsets), the shape language's
+/// `{"arc": {"center", "radius", "from", "to", "clockwise"}}` (what
+/// `hausdorff` and `verify --against` read): the arc is travelled from `from`
+/// to `to`, clockwise when `clockwise` is true. `from` and `to` are vectors
+/// from the centre: the radius vectors (`center + from` is the exact start
+/// point) whenever the points are rational — always in stroke outlines —
+/// and otherwise a direction of the same ray (its length irrational times
+/// the radius), as given.
+pub fn arc_json(
+    center: &V2<Rational>,
+    radius: &Rational,
+    from: &V2<Rational>,
+    to: &V2<Rational>,
+    clockwise: bool,
+) -> serde_json::Value {
+    let radial = |v: &V2<Rational>| -> V2<Rational> {
+        match rational_sqrt(&v.norm2()) {
+            Some(len) if len != Rational::from_integer(0.into()) => v.scale(&(radius / len)),
+            _ => v.clone(),
+        }
+    };
+    serde_json::json!({"arc": {
+        "center": point_json(center),
+        "radius": q(radius),
+        "from": point_json(&radial(from)),
+        "to": point_json(&radial(to)),
+        "clockwise": clockwise,
+    }})
+}
+
 /// A frame as the exact string `b0x,b0y;bmx,bmy;b3x,b3y`.
 pub fn show_frame(f: &LnFrame<Rational>) -> String {
     let p = |v: &V2<Rational>| format!("{},{}", q(&v.x), q(&v.y));

@@ -247,6 +247,8 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
     if a.trim {
         let sa = super::stroke::StrokeArgs {
             curve: a.curve.clone(),
+            glyph: None,
+            em: false,
             pen: String::new(),
             tol: a.tol.clone(),
             cap: "round".into(),

@@ -38,10 +38,12 @@
 //! | [`audit`] | `lncert audit` |
 //! | [`tangency`] | `lncert tangency` |
 //! | [`offset`], [`offset_svg`] | `lncert offset` and its picture |
+//! | [`curve_input`] | the `CURVE` argument of `offset` and `stroke` (curve files, arcs, circles, `--glyph`) |
 
 pub mod args;
 pub mod audit;
 pub mod convolve;
+pub mod curve_input;
 pub mod hausdorff;
 pub mod offset;
 pub mod offset_grid;

@@ -20,7 +20,8 @@
 //! reached within the limits (the best segments are still printed, with their
 //! certified bounds), 2 = bad input.
 
-use super::args::{bad, number, point_json, q};
+use super::args::{arc_json, bad, number, point_json, q};
+use super::curve_input::CurveInput;
 use super::{print_out, CliError};
 use lncert::approx::arc::{offset_arc, ArcOffset};
 use lncert::approx::prep::Junction;
@@ -29,7 +30,7 @@ use lncert::approx::{
     OffsetResult, Output, ProofPath,
 };
 use lncert::scalar::{interval_from_rational, Rational};
-use lncert::shape::{parse_arc_input, parse_curve_reported, InputApprox, TravelledArc};
+use lncert::shape::{InputApprox, TravelledArc};
 use serde_json::{json, Value};
 use std::path::PathBuf;
 
@@ -132,18 +133,6 @@ pub struct OffsetArgs {
     pub json: bool,
 }
 
-/// Largest font file read by `--glyph`.
-const MAX_FONT_BYTES: u64 = 64 << 20;
-
-fn read_text(path: &PathBuf) -> Result<String, CliError> {
-    let meta =
-        std::fs::metadata(path).map_err(|e| bad("CURVE", format!("{}: {e}", path.display())))?;
-    if meta.len() > super::hausdorff::MAX_FILE_BYTES {
-        return Err(bad("CURVE", format!("{}: file too large", path.display())));
-    }
-    std::fs::read_to_string(path).map_err(|e| bad("CURVE", format!("{}: {e}", path.display())))
-}
-
 pub fn offset_err(e: OffsetError) -> CliError {
     let OffsetError::Input { field, reason } = e;
     let flag = match field.as_str() {
@@ -221,43 +210,15 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             "G2 segments have degree n + 3 ≥ 4, which SVG path data cannot store: use --output cubic, --method ln-pair (cubic), or --curve-out",
         ));
     }
-    let (curve, approx) = match a.glyph {
-        Some(ch) => {
-            let meta = std::fs::metadata(&a.curve)
-                .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
-            if meta.len() > MAX_FONT_BYTES {
-                return Err(bad(
-                    "CURVE",
-                    format!("{}: font file too large", a.curve.display()),
-                ));
-            }
-            let data = std::fs::read(&a.curve)
-                .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
-            let mut outline =
-                lncert::shape::glyph_outline(&data, ch).map_err(|e| bad("--glyph", e))?;
-            if a.em {
-                let upem = lncert::shape::units_per_em(&data).map_err(|e| bad("--em", e))?;
-                if upem == 0 {
-                    return Err(bad("--em", "the font says 0 units per em"));
-                }
-                let k = Rational::new(1.into(), i64::from(upem).into());
-                outline = outline.iter().map(|b| b.map(|v| v * &k)).collect();
-            }
-            (outline, InputApprox::default())
-        }
-        None => {
-            let text = read_text(&a.curve)?;
-            if let Some(arcs) = parse_arc_input(&text) {
-                let arcs = arcs.map_err(|e| offset_err(e.into()))?;
-                return run_arcs(a, &arcs, &distance, tol);
-            }
-            parse_curve_reported(&text).map_err(|e| bad("CURVE", e))?
-        }
-    };
+    let input = super::curve_input::read_curve_input(&a.curve, a.glyph, a.em)?;
     if a.trim {
+        // the boundary of x ⊕ disk(|R|), as `lncert stroke --pen circle:|R|`
+        // computes it, for every input `stroke` reads (a circle included)
         let sa = super::stroke::StrokeArgs {
             curve: a.curve.clone(),
-            pen: String::new(),
+            glyph: a.glyph,
+            em: a.em,
+            pen: format!("circle:{}", num_traits::Signed::abs(&distance)),
             tol: a.tol.clone(),
             cap: "round".into(),
             output: a.output.clone(),
@@ -270,8 +231,13 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
         if r == Rational::from_integer(0.into()) {
             return Err(bad("--distance", "must be nonzero"));
         }
-        return super::stroke::run_with(&sa, &curve, lncert::outline::trim::PenShape::Circle(r));
+        return super::stroke::run_input(&sa, &input, lncert::outline::trim::PenShape::Circle(r));
     }
+    let (curve, approx) = match input {
+        CurveInput::Curve { pieces, approx } => (pieces, approx),
+        CurveInput::Arc(arc) => return run_arcs(a, &[*arc], &distance, tol),
+        CurveInput::Circle { arcs, .. } => return run_arcs(a, &arcs, &distance, tol),
+    };
     let mut opts = OffsetOptions::new(distance, tol);
     opts.method = method;
     opts.subdivision = super::args::subdivision(&a.subdivision, &a.method)?;
@@ -388,10 +354,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
                 Junction::Join { center, from, to, clockwise } => Some(json!({
                     "after_piece": c.after,
                     "absorbed": c.absorbed,
-                    "arc": {
-                        "center": point_json(center), "radius": q(&num_traits::Signed::abs(&res.distance)),
-                        "from": point_json(from), "to": point_json(to), "clockwise": clockwise,
-                    },
+                    "arc": arc_json(center, &num_traits::Signed::abs(&res.distance), from, to, *clockwise)["arc"],
                 })),
                 _ => None,
             }).collect::<Vec<_>>(),
@@ -583,10 +546,17 @@ fn run_arcs(
         .map(|x| offset_arc(x, d))
         .collect::<Result<Vec<_>, _>>()
         .map_err(offset_err)?;
+    // the one arc form of every JSON output (`args::arc_json`): travelled
+    // from `from` to `to` (the stored counter-clockwise arc reversed when
+    // travelled clockwise), as the shape language reads it back
     let arc_json = |o: &ArcOffset| match o {
         ArcOffset::Arc(t) => {
-            json!({"arc": {"center": point_json(&t.arc.center), "radius": q(&t.arc.radius),
-            "from": point_json(&t.arc.from), "to": point_json(&t.arc.to), "travel": if t.clockwise {"clockwise"} else {"counter-clockwise"}}})
+            let (from, to) = if t.clockwise {
+                (&t.arc.to, &t.arc.from)
+            } else {
+                (&t.arc.from, &t.arc.to)
+            };
+            arc_json(&t.arc.center, &t.arc.radius, from, to, t.clockwise)
         }
         ArcOffset::Collapsed { center } => json!({"collapsed_to": point_json(center)}),
     };

@@ -19,14 +19,28 @@
 //!   caps half ellipses made of proven cubics (error ≤ TOL/8, printed).
 //!   The curve must be G¹ (no join pieces for elliptical pens yet).
 //!
-//! Exit codes: 0 = all three claims proven, 3 = something undecided, 2 = bad
-//! input (naming the flag).
+//! `CURVE` is read as `lncert offset` reads it ([`super::curve_input`]):
+//! curve files and SVG documents (the approximation of SVG arcs reported,
+//! JSON `"input_approximation"`), `--glyph CHAR [--em]` with a font, and
+//! `{"circle"}`, whose stroke with a circular pen is exact ([`circle_stroke`]).
+//!
+//! JSON `outline.complete` is true only when the outline is decided: every
+//! contour closed and (a), (b), (c) proven; `outline.uncertain` lists the
+//! unproven claims (with their notes) and the open contours (by index).
+//!
+//! Exit codes: 0 = decided (all contours closed, all three claims proven),
+//! 3 = something undecided, 2 = bad input (naming the flag).
 
-use super::args::{bad, number, point_json, q};
+use super::args::{arc_json, bad, number, point_json, q};
+use super::curve_input::{read_curve_input, CurveInput};
 use super::{print_out, CliError};
-use lncert::outline::trim::{stroke, Cap, Claim, PenShape, Piece, Stroke, StrokeOptions};
+use lncert::curve::V2;
+use lncert::outline::circle::Arc;
+use lncert::outline::trim::{
+    stroke, Cap, Claim, Contour, Orientation, PenShape, Piece, Stroke, StrokeOptions,
+};
 use lncert::scalar::{interval_from_rational, Rational, Scalar};
-use lncert::shape::parse_curve;
+use lncert::shape::InputApprox;
 use serde_json::json;
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -34,8 +48,18 @@ use std::path::PathBuf;
 /// Arguments of `lncert stroke`.
 #[derive(clap::Args, Debug)]
 pub struct StrokeArgs {
-    /// The curve: a curve file (JSON Bézier / B-spline, SVG path data).
+    /// The curve file, read as `lncert offset` reads it (JSON Bézier /
+    /// B-spline, SVG path data or document, `{"circle": ...}`), or with
+    /// `--glyph` a TrueType/OpenType font.
     pub curve: PathBuf,
+    /// Stroke the outline of this character's glyph in the font CURVE (font
+    /// units; every contour, exactly as stored: quadratics or cubics).
+    #[arg(long)]
+    pub glyph: Option<char>,
+    /// With `--glyph`: coordinates in em (the outline divided by the font's
+    /// units per em, exactly).
+    #[arg(long, requires = "glyph")]
+    pub em: bool,
     /// The pen: `circle:R` (`R > 0`, exact) or `ellipse:A,B[,θ]` (semi-axes
     /// `A ≥ B > 0`, rotation `θ`: `pi/6`, `30deg` or radians).
     #[arg(long)]
@@ -96,13 +120,13 @@ fn piece_json(p: &Piece) -> serde_json::Value {
         Piece::Bezier(b) => {
             json!({"control_points": b.points().iter().map(point_json).collect::<Vec<_>>()})
         }
-        Piece::Arc(a) => json!({"arc": {
-            "center": point_json(&a.center),
-            "radius": q(&a.radius),
-            "from": point_json(&a.from.sub(&a.center)),
-            "to": point_json(&a.to.sub(&a.center)),
-            "clockwise": a.clockwise,
-        }}),
+        Piece::Arc(a) => arc_json(
+            &a.center,
+            &a.radius,
+            &a.from.sub(&a.center),
+            &a.to.sub(&a.center),
+            a.clockwise,
+        ),
     }
 }
 
@@ -237,24 +261,53 @@ pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
         return Err(bad("--tol", "must be a positive number"));
     }
     let pen = pen_shape(&a.pen, tol)?;
-    let meta = std::fs::metadata(&a.curve)
-        .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
-    if meta.len() > super::hausdorff::MAX_FILE_BYTES {
-        return Err(bad("CURVE", "file too large"));
+    let input = read_curve_input(&a.curve, a.glyph, a.em)?;
+    run_input(a, &input, pen)
+}
+
+/// [`run`] on a `CURVE` already read (`a.curve`, `a.glyph` and `a.pen` are not
+/// read): shared with `offset --trim`, so that both accept the same inputs.
+/// A `{"circle"}` with a circular pen is stroked exactly ([`circle_stroke`]);
+/// a single `{"arc"}`, or a circle with an elliptical pen, is refused (exit 2).
+pub fn run_input(a: &StrokeArgs, input: &CurveInput, pen: PenShape) -> Result<i32, CliError> {
+    let circle_pen = match &pen {
+        PenShape::Circle(r) => Some(r.clone()),
+        _ => None,
+    };
+    let opts = options(a, pen)?;
+    match input {
+        CurveInput::Curve { pieces, approx } => run_curve(a, pieces, approx, &opts),
+        CurveInput::Circle { center, radius, .. } => {
+            let Some(r) = circle_pen else {
+                return Err(bad(
+                    "CURVE",
+                    "a {\"circle\"} document is stroked exactly, with a circular pen only (--pen circle:R, or offset --trim); for an elliptical pen give the circle as an SVG <circle> (read as cubics within a certified bound)",
+                ));
+            };
+            let t0 = std::time::Instant::now();
+            let s = circle_stroke(center, radius, &r, opts.tol);
+            report(a, &s, &[], &InputApprox::default(), t0.elapsed().as_secs_f64())
+        }
+        CurveInput::Arc(_) => Err(bad(
+            "CURVE",
+            "an {\"arc\"} document cannot be stroked or trimmed (its end points, the caps' centres, are irrational in general): give the arc as SVG path data (an A command, read as cubics within a certified bound), or use offset without --trim for its exact one-sided offset",
+        )),
     }
-    let text = std::fs::read_to_string(&a.curve)
-        .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
-    let curve = parse_curve(&text).map_err(|e| bad("CURVE", e))?;
-    run_with(a, &curve, pen)
 }
 
 /// [`run`] on a curve already read and a pen already parsed (`a.curve` and
-/// `a.pen` are not read): shared with `offset --trim` and `convolve --trim`.
+/// `a.pen` are not read): shared with `convolve --trim`.
 pub fn run_with(
     a: &StrokeArgs,
     curve: &[lncert::curve::Bezier<Rational>],
     pen: PenShape,
 ) -> Result<i32, CliError> {
+    let opts = options(a, pen)?;
+    run_curve(a, curve, &InputApprox::default(), &opts)
+}
+
+/// The options of a run, every flag checked before any work.
+fn options(a: &StrokeArgs, pen: PenShape) -> Result<StrokeOptions, CliError> {
     let tol_q = number("--tol", &a.tol)?;
     let tol = interval_from_rational(&tol_q).inf();
     if !(tol.is_finite() && tol > 0.0) {
@@ -294,8 +347,18 @@ pub fn run_with(
             ))
         }
     };
+    Ok(opts)
+}
+
+/// The stroke of polynomial pieces by [`stroke`].
+fn run_curve(
+    a: &StrokeArgs,
+    curve: &[lncert::curve::Bezier<Rational>],
+    approx: &InputApprox,
+    opts: &StrokeOptions,
+) -> Result<i32, CliError> {
     let t0 = std::time::Instant::now();
-    let s = stroke(curve, &opts).map_err(|e| {
+    let s = stroke(curve, opts).map_err(|e| {
         bad(
             match e.field.as_str() {
                 "radius" | "pen" => "--pen",
@@ -305,22 +368,160 @@ pub fn run_with(
             e.reason,
         )
     })?;
-    let secs = t0.elapsed().as_secs_f64();
-    let code = if s.proven() {
+    report(a, &s, curve, approx, t0.elapsed().as_secs_f64())
+}
+
+/// One exact circle contour of radius `radius` about `center`: four quarter
+/// arcs whose end points `center ± radius·e` are exact rational points on it.
+fn circle_contour(center: &V2<Rational>, radius: &Rational, clockwise: bool) -> Contour {
+    let (one, zero) = (
+        Rational::from_integer(1.into()),
+        Rational::from_integer(0.into()),
+    );
+    let dirs = [
+        V2::new(one.clone(), zero.clone()),
+        V2::new(zero.clone(), one.clone()),
+        V2::new(-one.clone(), zero.clone()),
+        V2::new(zero, -one),
+    ];
+    let mut pts: Vec<V2<Rational>> = dirs.iter().map(|d| center.add(&d.scale(radius))).collect();
+    if clockwise {
+        pts.reverse();
+    }
+    let pieces: Vec<Piece> = (0..4)
+        .map(|k| {
+            Piece::Arc(Arc {
+                center: center.clone(),
+                radius: radius.clone(),
+                from: pts[k].clone(),
+                to: pts[(k + 1) % 4].clone(),
+                clockwise,
+            })
+        })
+        .collect();
+    let area = pieces.iter().map(Piece::area_term).try_fold(
+        interval_from_rational(&Rational::from_integer(0.into())),
+        |s, t| t.map(|t| s + t),
+    );
+    let (lo, hi) = area.map_or((f64::NEG_INFINITY, f64::INFINITY), |i| (i.inf(), i.sup()));
+    Contour {
+        pieces,
+        closed: true,
+        // a circle travelled counter-clockwise encloses the area +π r²
+        // (exact); the enclosure above agrees
+        orientation: if clockwise {
+            Orientation::Clockwise
+        } else {
+            Orientation::CounterClockwise
+        },
+        area: (lo, hi),
+    }
+}
+
+/// The exact stroke of the circle `(c, ρ)` with the disk of radius `r`:
+/// `S = {p : ρ − r ≤ |p − c| ≤ ρ + r}`, whose boundary is the circle of radius
+/// `ρ + r` (counter-clockwise) and, when `r < ρ`, the hole of radius `ρ − r`
+/// (clockwise); for `r ≥ ρ` the disk is filled. Every output point is exactly
+/// on `∂S` and every point of `∂S` is on the output: claims (a), (b) with
+/// bound 0; (c) because concentric circles of different radii do not meet.
+pub fn circle_stroke(c: &V2<Rational>, rho: &Rational, r: &Rational, tol: f64) -> Stroke {
+    let mut contours = vec![circle_contour(c, &(rho + r), false)];
+    let hole = rho > r;
+    if hole {
+        contours.push(circle_contour(c, &(rho - r), true));
+    }
+    let boundary = if hole {
+        format!(
+            "the circles of radius {} and {} about the centre",
+            rho + r,
+            rho - r
+        )
+    } else {
+        format!(
+            "the circle of radius {} about the centre (the pen's radius is at least the circle's: the disk is filled)",
+            rho + r
+        )
+    };
+    let exact = |what: &str| {
+        Claim {
+        proven: true,
+        bound: 0.0,
+        note: format!("exact: ∂S is {boundary}, and the output is exactly {what} (four quarter arcs per circle, their end points exact rational points on it)"),
+    }
+    };
+    let pieces = contours.iter().map(|k| k.pieces.len()).sum();
+    Stroke {
+        a: exact(if hole { "these circles" } else { "this circle" }),
+        b: exact(if hole { "these circles" } else { "this circle" }),
+        c: Claim {
+            proven: true,
+            bound: 0.0,
+            note: format!(
+                "{} closed contour(s) of exact arcs{}; the outer one counter-clockwise{}",
+                contours.len(),
+                if hole { ": concentric circles of different radii do not meet" } else { "" },
+                if hole { ", the hole clockwise" } else { "" }
+            ),
+        },
+        contours,
+        crossings: Vec::new(),
+        raw_pieces: pieces,
+        raw_complete: true,
+        complete: true,
+        classified: Default::default(),
+        tol,
+        closed_curve: true,
+        notes: vec!["{\"circle\"} input: the stroke is computed exactly (concentric circles), no offset is approximated".to_string()],
+        pen: None,
+        caps: Vec::new(),
+    }
+}
+
+/// What keeps a stroke from being decided, for the JSON `uncertain` list:
+/// every claim not proven (with its note) and every open contour (by index).
+fn uncertain(s: &Stroke) -> Vec<serde_json::Value> {
+    let mut out = Vec::new();
+    for (name, c) in [("a", &s.a), ("b", &s.b), ("c", &s.c)] {
+        if !c.proven {
+            out.push(json!({"claim": name, "note": c.note}));
+        }
+    }
+    for (k, c) in s.contours.iter().enumerate() {
+        if !c.closed {
+            out.push(json!({"contour": k, "note": format!("contour {k} is open")}));
+        }
+    }
+    out
+}
+
+/// Prints a stroke (text or JSON) and writes `--svg`, `--path-out`; returns
+/// the exit code: 0 only when the outline is decided — every contour closed
+/// and claims (a), (b), (c) proven — and 3 otherwise.
+fn report(
+    a: &StrokeArgs,
+    s: &Stroke,
+    curve: &[lncert::curve::Bezier<Rational>],
+    approx: &InputApprox,
+    secs: f64,
+) -> Result<i32, CliError> {
+    let uncertain = uncertain(s);
+    // decided: every claim proven and every contour closed
+    let complete = uncertain.is_empty();
+    let code = if complete {
         super::EXIT_OK
     } else {
         super::EXIT_UNDECIDED
     };
-    let verdict = if s.proven() { "proven" } else { "undecided" };
-    let path = path_data(&s);
+    let verdict = if complete { "proven" } else { "undecided" };
+    let path = path_data(s);
     if let Some(p) = &a.path_out {
         let d = path.clone()?;
         std::fs::write(p, d + "\n").map_err(|e| bad("--path-out", e))?;
     }
     if let Some(p) = &a.svg {
         // the picture draws higher-degree pieces as their control polygons' chords
-        let d = path.clone().unwrap_or_else(|_| fallback_path(&s));
-        std::fs::write(p, svg(&s, &curve, &d)).map_err(|e| bad("--svg", e))?;
+        let d = path.clone().unwrap_or_else(|_| fallback_path(s));
+        std::fs::write(p, svg(s, curve, &d)).map_err(|e| bad("--svg", e))?;
     }
     if a.json {
         let doc = json!({
@@ -336,11 +537,14 @@ pub fn run_with(
                     "t": [c.t.0, c.t.1],
                     "certified": true,
                 })).collect::<Vec<_>>(),
-                "complete": s.complete,
+                "complete": complete,
+                "uncertain": uncertain,
+                "output_check_complete": s.complete,
+                "raw_check_complete": s.raw_complete,
                 "claims": {"a": claim_json(&s.a), "b": claim_json(&s.b), "c": claim_json(&s.c)},
                 "notes": s.notes,
             },
-            "pen": pen_json(&s, &a.pen),
+            "pen": pen_json(s, &a.pen),
             "caps": s.caps.iter().map(|c| json!({
                 "end": c.end,
                 "pieces": c.pieces,
@@ -352,10 +556,11 @@ pub fn run_with(
             "seconds": secs,
             "tol": a.tol,
             "verdict": verdict,
+            "input_approximation": approx.to_json(),
         });
         print_out(&format!("{doc}\n"));
     } else {
-        let mut out = String::new();
+        let mut out = super::offset::input_line("input", approx).unwrap_or_default();
         let _ = writeln!(
             out,
             "stroke: {} contours, {} pieces ({} raw, {} crossings cut), {:.2} s",
@@ -410,6 +615,16 @@ pub fn run_with(
         }
         for n in &s.notes {
             let _ = writeln!(out, "  note: {n}");
+        }
+        for u in &uncertain {
+            let _ = writeln!(
+                out,
+                "  not decided: {}",
+                match u.get("claim").and_then(|c| c.as_str()) {
+                    Some(c) => format!("claim ({c})"),
+                    None => u["note"].as_str().unwrap_or_default().to_string(),
+                }
+            );
         }
         let _ = writeln!(out, "verdict: {verdict}");
         print_out(&out);

@@ -1,0 +1,108 @@
+//! The `CURVE` argument of `lncert offset` and `lncert stroke` (and
+//! `offset --trim`), read one way for both: a curve file (`{"bezier": ...}`,
+//! `{"beziers": ...}`, `{"bspline": ...}`, SVG path data or an SVG document,
+//! with the report of what was approximated), an arc (`{"arc": {...}}`), a
+//! circle (`{"circle": {"center": [x, y], "radius": r}}`), or with `--glyph
+//! CHAR` a TrueType/OpenType font and the glyph's contours (`--em`: in em).
+
+use super::args::bad;
+use super::CliError;
+use lncert::curve::{Bezier, V2};
+use lncert::scalar::Rational;
+use lncert::shape::{parse_arc_input, parse_curve_reported, InputApprox, TravelledArc};
+use std::path::Path;
+
+/// Largest font file read by `--glyph`.
+pub const MAX_FONT_BYTES: u64 = 64 << 20;
+
+/// What `CURVE` holds.
+#[derive(Clone, Debug)]
+pub enum CurveInput {
+    /// Polynomial pieces, and what of the input was approximated to get them
+    /// (empty when the pieces are exactly the input).
+    Curve {
+        /// The pieces, exact.
+        pieces: Vec<Bezier<Rational>>,
+        /// The report of approximated SVG arcs, circles, ellipses, rounded rects.
+        approx: InputApprox,
+    },
+    /// One circular arc (`{"arc": ...}`), exact.
+    Arc(Box<TravelledArc>),
+    /// A full circle (`{"circle": ...}`), exact, travelled counter-clockwise.
+    Circle {
+        /// The centre.
+        center: V2<Rational>,
+        /// The radius (`> 0`).
+        radius: Rational,
+        /// The circle as its four counter-clockwise quarter arcs.
+        arcs: Vec<TravelledArc>,
+    },
+}
+
+/// Reads `path` as a text file of at most
+/// [`super::hausdorff::MAX_FILE_BYTES`] bytes.
+pub fn read_text(path: &Path) -> Result<String, CliError> {
+    let meta =
+        std::fs::metadata(path).map_err(|e| bad("CURVE", format!("{}: {e}", path.display())))?;
+    if meta.len() > super::hausdorff::MAX_FILE_BYTES {
+        return Err(bad("CURVE", format!("{}: file too large", path.display())));
+    }
+    std::fs::read_to_string(path).map_err(|e| bad("CURVE", format!("{}: {e}", path.display())))
+}
+
+/// The contours of the glyph of `ch` in the font file `path`, exactly as
+/// stored (font units, or em with `em`).
+pub fn read_glyph(path: &Path, ch: char, em: bool) -> Result<Vec<Bezier<Rational>>, CliError> {
+    let meta =
+        std::fs::metadata(path).map_err(|e| bad("CURVE", format!("{}: {e}", path.display())))?;
+    if meta.len() > MAX_FONT_BYTES {
+        return Err(bad(
+            "CURVE",
+            format!("{}: font file too large", path.display()),
+        ));
+    }
+    let data = std::fs::read(path).map_err(|e| bad("CURVE", format!("{}: {e}", path.display())))?;
+    let mut outline = lncert::shape::glyph_outline(&data, ch).map_err(|e| bad("--glyph", e))?;
+    if em {
+        let upem = lncert::shape::units_per_em(&data).map_err(|e| bad("--em", e))?;
+        if upem == 0 {
+            return Err(bad("--em", "the font says 0 units per em"));
+        }
+        let k = Rational::new(1.into(), i64::from(upem).into());
+        outline = outline.iter().map(|b| b.map(|v| v * &k)).collect();
+    }
+    Ok(outline)
+}
+
+/// Reads `CURVE` (with `--glyph CHAR`: a font), as `offset` and `stroke` do.
+pub fn read_curve_input(
+    path: &Path,
+    glyph: Option<char>,
+    em: bool,
+) -> Result<CurveInput, CliError> {
+    if let Some(ch) = glyph {
+        return Ok(CurveInput::Curve {
+            pieces: read_glyph(path, ch, em)?,
+            approx: InputApprox::default(),
+        });
+    }
+    if em {
+        return Err(bad("--em", "needs --glyph"));
+    }
+    let text = read_text(path)?;
+    if let Some(arcs) = parse_arc_input(&text) {
+        let mut arcs = arcs.map_err(|e| super::offset::offset_err(e.into()))?;
+        // an `{"arc"}` document is one arc, a `{"circle"}` four quarter arcs
+        return Ok(if arcs.len() == 1 {
+            CurveInput::Arc(Box::new(arcs.remove(0)))
+        } else {
+            CurveInput::Circle {
+                center: arcs[0].arc.center.clone(),
+                radius: arcs[0].arc.radius.clone(),
+                arcs,
+            }
+        });
+    }
+    let (pieces, approx) = parse_curve_reported(&text).map_err(|e| bad("CURVE", e))?;
+    Ok(CurveInput::Curve { pieces, approx })
+}
