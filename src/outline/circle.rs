@@ -344,6 +344,124 @@ fn no_circle_point_iv(b: &Bezier<Rational>, c: &V2<Rational>, r: &Rational) -> b
     one_sign(g, 10)
 }
 
+/// The exact Bernstein coefficients of `|B − c|² − r²`.
+fn circle_bernstein(b: &Bezier<Rational>, c: &V2<Rational>, r: &Rational) -> Vec<Rational> {
+    let (x, y) = b.coords();
+    let dx: Vec<Rational> = x.iter().map(|v| v - &c.x).collect();
+    let dy: Vec<Rational> = y.iter().map(|v| v - &c.y).collect();
+    let r2 = r * r;
+    bernstein_product(&dx, &dx)
+        .into_iter()
+        .zip(bernstein_product(&dy, &dy))
+        .map(|(p, q)| p + q - &r2)
+        .collect()
+}
+
+/// Every root on `[lo, hi]` of the polynomial with interval Bernstein
+/// coefficients `g` (on that range) is at a point of `B` outside the arc's
+/// range, or there is none: `g` of one strict sign on every part of a
+/// subdivision, or a part whose point enclosure `B([lo, hi]) − c` is proven
+/// outside the arc's range of directions ([`Arc::contains_dir`] on the box).
+fn no_hit(
+    g: Vec<Interval>,
+    b: &Bezier<Interval>,
+    c: &V2<Interval>,
+    arc: &Arc,
+    (lo, hi): (f64, f64),
+    depth: u32,
+) -> bool {
+    if g.iter().all(|v| v.inf() > 0.0) || g.iter().all(|v| v.sup() < 0.0) {
+        return true;
+    }
+    if hi - lo <= 1.0 / 64.0 {
+        let iv = |x: f64| Interval::try_from((x, x)).expect("finite");
+        let part = b.restrict(&iv(lo), &iv(hi));
+        let pts = part.points();
+        let hull = |f: &dyn Fn(&V2<Interval>) -> Interval| {
+            let (mut a, mut z) = (f64::INFINITY, f64::NEG_INFINITY);
+            for p in pts {
+                a = a.min(f(p).inf());
+                z = z.max(f(p).sup());
+            }
+            Interval::try_from((a, z)).ok()
+        };
+        if let (Some(x), Some(y)) = (hull(&|p| p.x), hull(&|p| p.y)) {
+            if arc.contains_dir(&V2::new(x - c.x, y - c.y)) == Some(false) {
+                return true;
+            }
+        }
+    }
+    // parts at a piece end go deeper: a second root a few ulps from a
+    // (nearly tangential) joint sits just outside the arc, and only a tiny
+    // part's point box shows it
+    let at_end = lo == 0.0 || hi == 1.0;
+    if depth == 0 && !(at_end && hi - lo > f64::powi(2.0, -50)) {
+        return false;
+    }
+    let (left, right) = crate::curve::bernstein_halves(&g);
+    let m = 0.5 * (lo + hi);
+    let d = depth.saturating_sub(1);
+    no_hit(left, b, c, arc, (lo, m), d) && no_hit(right, b, c, arc, (m, hi), d)
+}
+
+/// When `B(0)` or `B(1)` lies exactly on the circle: `g = |B − c|² − r²` is
+/// `t^a (1 − t)^b h` with `a`, `b` the multiplicities of the exact end roots
+/// (a vanishing first Bernstein coefficient divides out one factor `t`:
+/// `h_j = g_{j+1}·n/(j+1)`; likewise at `1`: `h_j = g_j·n/(n − j)`). When the
+/// interval Bernstein coefficients of `h` have one strict sign on every part
+/// of a subdivision, `h` has no root on `[0, 1]` and the end roots are all of
+/// `g`'s: returns them as hits (when in the arc's range; `multiple` for a
+/// double root, a tangential joint). `None`: not decided this way.
+fn end_roots_only(
+    b: &Bezier<Rational>,
+    c: &V2<Rational>,
+    r: &Rational,
+    arc: &Arc,
+) -> Option<Vec<ArcHit>> {
+    let mut g = circle_bernstein(b, c, r);
+    let (mut at0, mut at1) = (0usize, 0usize);
+    while g.len() > 1 && g[0].is_zero() {
+        let n = g.len() - 1;
+        g = (0..n)
+            .map(|j| &g[j + 1] * Rational::new(n.into(), (j + 1).into()))
+            .collect();
+        at0 += 1;
+    }
+    while g.len() > 1 && g[g.len() - 1].is_zero() {
+        let n = g.len() - 1;
+        g = (0..n)
+            .map(|j| &g[j] * Rational::new(n.into(), (n - j).into()))
+            .collect();
+        at1 += 1;
+    }
+    if at0 + at1 == 0 || g.iter().all(|v| v.is_zero()) {
+        return None;
+    }
+    let bi = b.map(interval_from_rational);
+    let ci = c.map(interval_from_rational);
+    if !no_hit(g.iter().map(interval_from_rational).collect(), &bi, &ci, arc, (0.0, 1.0), 14) {
+        return None;
+    }
+    let mut hits = Vec::new();
+    for (k, t) in [
+        (at0, <Rational as Zero>::zero()),
+        (at1, <Rational as One>::one()),
+    ] {
+        if k == 0 {
+            continue;
+        }
+        match arc.contains_dir(&b.eval(&t).sub(c)) {
+            Some(true) => hits.push(ArcHit {
+                t: (t.clone(), t),
+                multiple: k > 1,
+            }),
+            Some(false) => {}
+            None => return None,
+        }
+    }
+    Some(hits)
+}
+
 /// Every Bernstein coefficient of every part of a subdivision has one strict
 /// sign (neighbouring parts share their end coefficient, so the sign is the
 /// same everywhere): the polynomial has no root on `[0, 1]`.
@@ -380,6 +498,25 @@ pub fn bezier_arc(b: &Bezier<Rational>, arc: &Arc) -> ArcMeet {
     // strict sign on every part of a subdivision: no point on the circle
     if no_circle_point_iv(b, c, r) {
         return out;
+    }
+    // a joint: an end point of the piece exactly on the circle is an exact
+    // root; divided out (as often as it repeats), the rest of `g` is tested
+    // by the interval filter, and when it has no root the ends are all
+    if let Some(hits) = end_roots_only(b, c, r, arc) {
+        out.hits = hits;
+        return out;
+    }
+    // no end root: every root outside the arc's range, by intervals
+    {
+        let g = circle_bernstein(b, c, r);
+        if !g[0].is_zero() && !g[g.len() - 1].is_zero() {
+            let bi = b.map(interval_from_rational);
+            let ci = c.map(interval_from_rational);
+            let gi: Vec<Interval> = g.iter().map(interval_from_rational).collect();
+            if no_hit(gi, &bi, &ci, arc, (0.0, 1.0), 14) {
+                return out;
+            }
+        }
     }
     let g = circle_poly(b, c, r);
     if g.clone().trimmed().degree().is_none() {

@@ -32,6 +32,7 @@
 //!
 //! See `proofs/trimming.md`, "Kept by exact ∂S intervals".
 
+use super::circle::Arc;
 use crate::curve::{Bezier, V2};
 use crate::scalar::{interval_from_rational, Interval, Rational};
 use num_traits::{Signed, Zero};
@@ -119,6 +120,26 @@ fn elevate(a: &[Interval], deg: usize) -> Vec<Interval> {
     bprod(a, &vec![point(1.0); deg - n + 1])
 }
 
+/// The largest unproven run of `leaves` (in order: proven, length bound),
+/// rounded up; `None` when nothing is proven or a run exceeds `budget`.
+fn charge(leaves: &[(bool, f64)], budget: f64) -> Option<f64> {
+    if !leaves.iter().any(|l| l.0) {
+        return None;
+    }
+    let mut worst: f64 = 0.0;
+    let mut run: f64 = 0.0;
+    for &(proven, len) in leaves {
+        if proven {
+            run = 0.0;
+        } else {
+            run += len;
+            worst = worst.max(run);
+        }
+    }
+    let worst = worst * (1.0 + 1e-12);
+    (worst <= budget).then_some(worst)
+}
+
 /// A certain lower bound of the squared distance between two boxes.
 fn box_dist2_lo(a: &IV, b: &IV) -> f64 {
     let gap = |p: Interval, q: Interval| -> Interval {
@@ -156,6 +177,8 @@ struct InPiece {
 /// The input curve in interval form with its joints, and the pen radius.
 pub(crate) struct Input {
     pieces: Vec<InPiece>,
+    /// Exact end points of each piece (start, end).
+    ends: Vec<(V2<Rational>, V2<Rational>)>,
     r: Interval,
     r2: Interval,
 }
@@ -222,8 +245,16 @@ impl Input {
             }
         }
         let ri = interval_from_rational(r);
+        let ends = curve
+            .iter()
+            .map(|b| {
+                let p = b.points();
+                (p[0].clone(), p[p.len() - 1].clone())
+            })
+            .collect();
         Input {
             pieces,
+            ends,
             r: ri,
             r2: ri * ri,
         }
@@ -382,11 +413,12 @@ impl Input {
     /// The windows beyond the joint at the start (`forward = false`) or end
     /// of piece `i`: whole neighbours while `g` is proven convex on them (and,
     /// at a G⁰ joint, its derivative points towards `i`), then the widest
-    /// proven part of the next one. `None` when the first joint fails.
-    fn chain_windows(&self, i: usize, e: &IV, forward: bool) -> Option<Vec<(usize, f64, f64)>> {
+    /// proven part of the next one (windows only exempt parts from the far
+    /// test: a chain that stops early leaves more to it).
+    fn chain_windows(&self, i: usize, e: &IV, forward: bool) -> Vec<(usize, f64, f64)> {
         let mut out: Vec<(usize, f64, f64)> = Vec::new();
         let mut cur = i;
-        for step in 0..MAX_CHAIN {
+        for _ in 0..MAX_CHAIN {
             let p = &self.pieces[cur];
             let Some(jn) = (if forward { p.next } else { p.prev }) else {
                 break;
@@ -414,7 +446,7 @@ impl Input {
                     s.inf() > 0.0
                 };
                 if !ok {
-                    return if step == 0 { None } else { Some(out) };
+                    break;
                 }
             }
             if self.convex(j, e, 0.0, 1.0) {
@@ -423,31 +455,68 @@ impl Input {
                 continue;
             }
             let at = if forward { (0.0, 0.0) } else { (1.0, 1.0) };
-            match self.window(j, e, at, 0.5, 1.0 / 1024.0) {
-                Some((w0, w1)) => out.push((j, w0, w1)),
-                None if step == 0 => return None,
-                None => {}
+            if let Some((w0, w1)) = self.window(j, e, at, 0.5, 1.0 / 1024.0) {
+                out.push((j, w0, w1));
             }
             break;
         }
-        Some(out)
+        out
     }
 
     fn holds_with(&self, i: usize, e: &IV, w0: f64, w1: f64) -> bool {
         let mut windows: Vec<(usize, f64, f64)> = vec![(i, w0, w1)];
         if w0 == 0.0 {
-            match self.chain_windows(i, e, false) {
-                Some(w) => windows.extend(w),
-                None => return false,
-            }
+            windows.extend(self.chain_windows(i, e, false));
         }
         if w1 == 1.0 {
-            match self.chain_windows(i, e, true) {
-                Some(w) => windows.extend(w),
-                None => return false,
+            windows.extend(self.chain_windows(i, e, true));
+        }
+        self.far_outside(e, &windows)
+    }
+
+    /// The windows from the point `c` along every piece that ends or starts
+    /// there (the foot of a cap or join arc), with the derivative at `c`
+    /// proven to point towards it, continued through joints
+    /// ([`Input::chain_windows`]). `None` when some piece at `c` fails.
+    fn point_windows(&self, c: &V2<Rational>, e: &IV) -> Option<Vec<(usize, f64, f64)>> {
+        let ci = V2::new(interval_from_rational(&c.x), interval_from_rational(&c.y));
+        let diff = V2::new(e.x - ci.x, e.y - ci.y);
+        let mut out = Vec::new();
+        for (j, ends) in self.ends.iter().enumerate() {
+            let (at_start, at_end) = (ends.0 == *c, ends.1 == *c);
+            if at_start && at_end {
+                return None;
+            }
+            let p = &self.pieces[j];
+            if at_end {
+                // g_j′(1) = −2(p − c)·x_j′(1) < 0 and g_j convex: decreasing to c
+                let t = p.h.points().last().expect("nonempty");
+                if !(dot(&diff, t).inf() > 0.0) {
+                    return None;
+                }
+                let (w0, _) = self.window(j, e, (1.0, 1.0), MAX_WINDOW, 1.0 / 1024.0)?;
+                out.push((j, w0, 1.0));
+                if w0 == 0.0 {
+                    out.extend(self.chain_windows(j, e, false));
+                }
+            }
+            if at_start {
+                let t = &p.h.points()[0];
+                if !(dot(&diff, t).sup() < 0.0) {
+                    return None;
+                }
+                let (_, w1) = self.window(j, e, (0.0, 0.0), MAX_WINDOW, 1.0 / 1024.0)?;
+                out.push((j, 0.0, w1));
+                if w1 == 1.0 {
+                    out.extend(self.chain_windows(j, e, true));
+                }
             }
         }
-        // far: everything outside the windows
+        (!out.is_empty()).then_some(out)
+    }
+
+    /// Everything outside `windows` is farther than `r` from the box `e`.
+    fn far_outside(&self, e: &IV, windows: &[(usize, f64, f64)]) -> bool {
         for j in 0..self.pieces.len() {
             let mut ranges: Vec<(f64, f64)> = windows
                 .iter()
@@ -464,6 +533,57 @@ impl Input {
             }
         }
         true
+    }
+
+    /// Proves every point of an exact arc of radius `r` about an end point
+    /// or corner `c` of the input (a cap or join arc) on `∂S`, except
+    /// unproven runs (charged by the length of their tangent polygons, as in
+    /// [`Input::prove_interval`]): on each minor part, with `e` the box of
+    /// its hull, every piece at `c` has `g_j = |p − x_j|²` convex on a window
+    /// from `c` and decreasing towards it (so `≥ |p − c|² = r²`, equality at
+    /// `c` only), and everything else is farther than `r`.
+    pub(crate) fn prove_arc(&self, arc: &Arc, budget: f64, max_nodes: usize) -> Option<f64> {
+        let ri = interval_from_rational(&arc.radius);
+        if !(ri.inf() <= self.r.sup() && self.r.inf() <= ri.sup()) {
+            return None;
+        }
+        let mut parts = arc.minor_parts()?;
+        parts.reverse();
+        let mut leaves: Vec<(bool, f64)> = Vec::new();
+        let mut nodes = 0;
+        while let Some(a) = parts.pop() {
+            nodes += 1;
+            if nodes > max_nodes {
+                return None;
+            }
+            let h = a.hull()?;
+            let hv: Vec<IV> = h
+                .iter()
+                .map(|p| V2::new(interval_from_rational(&p.x), interval_from_rational(&p.y)))
+                .collect();
+            let e = V2::new(hull(hv.iter().map(|p| p.x)), hull(hv.iter().map(|p| p.y)));
+            let side = |p: &IV, q: &IV| {
+                let d = V2::new(q.x - p.x, q.y - p.y);
+                dot(&d, &d).sqrt().sup()
+            };
+            let len = side(&hv[0], &hv[1]) + side(&hv[1], &hv[2]);
+            let ok = self
+                .point_windows(&arc.center, &e)
+                .is_some_and(|w| self.far_outside(&e, &w));
+            if ok {
+                leaves.push((true, len));
+                continue;
+            }
+            match a.midpoint() {
+                Some(m) if len > budget / 8.0 => {
+                    let (l, r) = a.split_at(&m);
+                    parts.push(r);
+                    parts.push(l);
+                }
+                _ => leaves.push((false, len)),
+            }
+        }
+        charge(&leaves, budget)
     }
 
     /// Proves `E(t) ∈ ∂S` on `[t0, t1]` of piece `i` except unproven runs,
@@ -508,21 +628,7 @@ impl Input {
             todo.push((m, b));
             todo.push((a, m));
         }
-        if !leaves.iter().any(|l| l.0) {
-            return None;
-        }
-        let mut worst: f64 = 0.0;
-        let mut run: f64 = 0.0;
-        for (proven, arc) in leaves {
-            if proven {
-                run = 0.0;
-            } else {
-                run += arc;
-                worst = worst.max(run);
-            }
-        }
-        let worst = worst * (1.0 + 1e-12);
-        (worst <= budget).then_some(worst)
+        charge(&leaves, budget)
     }
 }
 

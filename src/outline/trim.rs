@@ -449,19 +449,29 @@ impl Link {
         } else {
             (s0, s1)
         };
+        let iv = |x: f64| Interval::try_from((x, x)).ok();
         let (mut u0, mut u1) = (f64::INFINITY, f64::NEG_INFINITY);
         for b in self.boxes.iter() {
             if b.t.1 >= lo && b.t.0 <= hi {
-                for c in b.c {
-                    u0 = u0.min(c);
-                    u1 = u1.max(c);
+                // φ on the part of the box inside [lo, hi]: the cubic's
+                // Bernstein coefficients restricted there (interval blossom)
+                let w = iv(b.t.1)? - iv(b.t.0)?;
+                let a = (iv(lo.max(b.t.0))? - iv(b.t.0)?) / w;
+                let z = (iv(hi.min(b.t.1))? - iv(b.t.0)?) / w;
+                let coef = Bezier::new(
+                    b.c.iter()
+                        .map(|&c| Some(V2::new(iv(c)?, iv(0.0)?)))
+                        .collect::<Option<Vec<_>>>()?,
+                );
+                for p in coef.restrict(&a, &z).points() {
+                    u0 = u0.min(p.x.inf());
+                    u1 = u1.max(p.x.sup());
                 }
             }
         }
         if !(u0 <= u1) || u0 < 0.0 || u1 > 1.0 {
             return None;
         }
-        let iv = |x: f64| Interval::try_from((x, x)).ok();
         let (a, b) = (iv(self.span.0)?, iv(self.span.1)?);
         let t0 = a + iv(u0)? * (b - a);
         let t1 = a + iv(u1)? * (b - a);
@@ -1773,7 +1783,19 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
                 return None;
             }
             // one decision for the whole sub-piece where the exact offset
-            // points it stands for are proven on ∂S (module `onside`)
+            // points it stands for are proven on ∂S (module `onside`); an
+            // exact cap or join arc is its own exact counterpart
+            if let (Piece::Arc(arc), Some(input)) = (&s.pre, &onside_input) {
+                let budget = tol - e_in;
+                if budget > 0.0 {
+                    if let Some(l) = input.prove_arc(arc, budget, 256) {
+                        return Some(e_in + l);
+                    }
+                }
+                if dbg {
+                    eprintln!("onside failed: raw {} (arc)", s.raw);
+                }
+            }
             if let (Some(link), Some(input)) = (&raw.link, &onside_input) {
                 let budget = tol - e_in;
                 let range = (s.range.0.approx(), s.range.1.approx());
