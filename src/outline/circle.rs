@@ -439,7 +439,14 @@ fn end_roots_only(
     }
     let bi = b.map(interval_from_rational);
     let ci = c.map(interval_from_rational);
-    if !no_hit(g.iter().map(interval_from_rational).collect(), &bi, &ci, arc, (0.0, 1.0), 14) {
+    if !no_hit(
+        g.iter().map(interval_from_rational).collect(),
+        &bi,
+        &ci,
+        arc,
+        (0.0, 1.0),
+        14,
+    ) {
         return None;
     }
     let mut hits = Vec::new();

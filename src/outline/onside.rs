@@ -120,6 +120,19 @@ fn elevate(a: &[Interval], deg: usize) -> Vec<Interval> {
     bprod(a, &vec![point(1.0); deg - n + 1])
 }
 
+/// The unproven run at the end of `leaves` (in order) is already longer
+/// than `budget`: the interval cannot be kept this way (stop early).
+fn run_over(leaves: &[(bool, f64)], budget: f64) -> bool {
+    let mut run = 0.0;
+    for &(proven, len) in leaves.iter().rev() {
+        if proven {
+            break;
+        }
+        run += len;
+    }
+    run > budget
+}
+
 /// The largest unproven run of `leaves` (in order: proven, length bound),
 /// rounded up; `None` when nothing is proven or a run exceeds `budget`.
 fn charge(leaves: &[(bool, f64)], budget: f64) -> Option<f64> {
@@ -580,7 +593,12 @@ impl Input {
                     parts.push(r);
                     parts.push(l);
                 }
-                _ => leaves.push((false, len)),
+                _ => {
+                    leaves.push((false, len));
+                    if run_over(&leaves, budget) {
+                        return None;
+                    }
+                }
             }
         }
         charge(&leaves, budget)
@@ -623,6 +641,9 @@ impl Input {
             let m = 0.5 * (a + b);
             if arc <= budget / 8.0 || !(a < m && m < b) {
                 leaves.push((false, arc));
+                if run_over(&leaves, budget) {
+                    return None;
+                }
                 continue;
             }
             todo.push((m, b));
@@ -637,6 +658,7 @@ mod tests {
     use super::*;
     use crate::scalar::parse_rational;
     use crate::shape::parse_curve;
+    use proptest::prelude::*;
 
     fn q(s: &str) -> Rational {
         parse_rational(s).unwrap()
@@ -698,5 +720,148 @@ mod tests {
         // the inner side ends in the concave corner: its end is charged
         let inner = inp.prove_interval(0, &q("1"), 0.0, 1.0, 2.0, 256);
         assert!(matches!(inner, Some(l) if l > 0.0), "{inner:?}");
+    }
+
+    // ----------------------------------------------------------------------
+    // Independent oracle: dense sampling of the input can only show a point
+    // of x closer than r to a point the lemma put on ∂S (a refutation).
+    // ----------------------------------------------------------------------
+
+    fn sampled_min_dist(curve: &[Bezier<f64>], p: (f64, f64)) -> f64 {
+        let mut best = f64::INFINITY;
+        for b in curve {
+            let d2 = |t: f64| {
+                let v = b.eval_fast(t);
+                (v.x - p.0).powi(2) + (v.y - p.1).powi(2)
+            };
+            let n = 2000;
+            let (mut bt, mut bd) = (0.0, f64::INFINITY);
+            for k in 0..=n {
+                let t = k as f64 / n as f64;
+                if d2(t) < bd {
+                    bd = d2(t);
+                    bt = t;
+                }
+            }
+            let (mut lo, mut hi) = (
+                (bt - 1.0 / n as f64).max(0.0),
+                (bt + 1.0 / n as f64).min(1.0),
+            );
+            for _ in 0..60 {
+                let (m1, m2) = (lo + (hi - lo) * 0.382, lo + (hi - lo) * 0.618);
+                if d2(m1) < d2(m2) {
+                    hi = m2;
+                } else {
+                    lo = m1;
+                }
+            }
+            best = best.min(d2(0.5 * (lo + hi))).min(bd);
+        }
+        best.sqrt()
+    }
+
+    fn offset_point(b: &Bezier<f64>, d: f64, t: f64) -> (f64, f64) {
+        let p = b.eval_fast(t);
+        let h = b.hodograph().eval_fast(t);
+        let l = h.length();
+        (p.x - d * h.y / l, p.y + d * h.x / l)
+    }
+
+    fn chain() -> impl Strategy<Value = Vec<Bezier<Rational>>> {
+        // 1 to 3 cubics joined end to start, coordinates on a 1/64 grid
+        let c = || (-128i64..=128).prop_map(|k| Rational::new(k.into(), 64.into()));
+        let pt = move || (c(), c()).prop_map(|(x, y)| V2::new(x, y));
+        (pt(), proptest::collection::vec((pt(), pt(), pt()), 1..=3)).prop_map(|(p0, rest)| {
+            let mut start = p0;
+            let mut out = Vec::new();
+            for (a, b, e) in rest {
+                out.push(Bezier::new(vec![start.clone(), a, b, e.clone()]));
+                start = e;
+            }
+            out
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(96))]
+
+        #[test]
+        fn proven_offset_points_have_no_closer_input_point(
+            curve in chain(),
+            rk in 1i64..=8,
+            left in any::<bool>(),
+            piece in 0usize..3,
+            a in 0.0f64..1.0,
+            w in 0.05f64..1.0,
+        ) {
+            let r = Rational::new(rk.into(), 8.into());
+            let rf = rk as f64 / 8.0;
+            let n = curve.len();
+            let i = piece % n;
+            let cf: Vec<Bezier<f64>> = curve.iter().map(|b| b.map(crate::scalar::Scalar::approx)).collect();
+            // regular pieces only (the lemma needs x′ ≠ 0 on T anyway)
+            let inp = Input::new(&curve, &[(0, n, false)], &r);
+            let d = if left { r.clone() } else { -r.clone() };
+            let (t0, t1) = (a, (a + w).min(1.0));
+            if let Some(l) = inp.prove_interval(i, &d, t0, t1, 0.05, 512) {
+                prop_assert!(l <= 0.05);
+                let df = if left { rf } else { -rf };
+                for k in 0..=40 {
+                    let t = t0 + (t1 - t0) * k as f64 / 40.0;
+                    if cf[i].hodograph().eval_fast(t).length() < 1e-9 {
+                        continue;
+                    }
+                    let e = offset_point(&cf[i], df, t);
+                    let m = sampled_min_dist(&cf, e);
+                    // on ∂S up to the charged runs: a sampled point of x
+                    // clearly closer than r − ℓ refutes the proof
+                    prop_assert!(
+                        m >= rf - l - 1e-9,
+                        "E({t}) = {e:?} has a point of x at {m} < r = {rf} (charged {l})"
+                    );
+                }
+            }
+        }
+
+        #[test]
+        fn proven_cap_points_have_no_closer_input_point(
+            curve in chain(),
+            rk in 1i64..=8,
+            clockwise in any::<bool>(),
+        ) {
+            let r = Rational::new(rk.into(), 8.into());
+            let rf = rk as f64 / 8.0;
+            let n = curve.len();
+            let cf: Vec<Bezier<f64>> = curve.iter().map(|b| b.map(crate::scalar::Scalar::approx)).collect();
+            let last = &cf[n - 1];
+            let h = last.hodograph().eval_fast(1.0);
+            prop_assume!(h.length() > 1e-6);
+            let c = curve[n - 1].points()[3].clone();
+            let nl = (-h.y, h.x);
+            let from = crate::outline::circle::snap(&c, &r, nl);
+            let to = crate::outline::circle::snap(&c, &r, (-nl.0, -nl.1));
+            let (Some(from), Some(to)) = (from, to) else { return Ok(()); };
+            let arc = Arc { center: c.clone(), radius: r.clone(), from, to, clockwise };
+            let inp = Input::new(&curve, &[(0, n, false)], &r);
+            if let Some(l) = inp.prove_arc(&arc, 0.05, 512) {
+                let cx = (crate::scalar::Scalar::approx(&c.x), crate::scalar::Scalar::approx(&c.y));
+                let (a0, a1) = {
+                    let f = |p: &V2<Rational>| {
+                        let (x, y) = (crate::scalar::Scalar::approx(&p.x) - cx.0, crate::scalar::Scalar::approx(&p.y) - cx.1);
+                        y.atan2(x)
+                    };
+                    (f(&arc.from), f(&arc.to))
+                };
+                let mut sweep = a1 - a0;
+                let tau = std::f64::consts::TAU;
+                if clockwise { while sweep > 0.0 { sweep -= tau; } } else { while sweep < 0.0 { sweep += tau; } }
+                for k in 0..=40 {
+                    let th = a0 + sweep * k as f64 / 40.0;
+                    let p = (cx.0 + rf * th.cos(), cx.1 + rf * th.sin());
+                    let m = sampled_min_dist(&cf, p);
+                    prop_assert!(m >= rf - l - 1e-9, "arc point {p:?}: a point of x at {m} < r = {rf}");
+                }
+            }
+        }
     }
 }

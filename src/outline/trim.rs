@@ -1246,11 +1246,26 @@ impl Part {
                 ((p.x, p.y), (d.y / l, -d.x / l))
             }
             Part::Arc(a) => {
-                let m = a.midpoint().unwrap_or_else(|| a.from.clone());
-                let v = approx_dir(&m.sub(&a.center));
+                // the middle of a minor part in floats (it only chooses a
+                // candidate): the centre plus r times the unit bisector
+                let (u, w) = (
+                    approx_dir(&a.from.sub(&a.center)),
+                    approx_dir(&a.to.sub(&a.center)),
+                );
+                let (lu, lw) = (u.0.hypot(u.1), w.0.hypot(w.1));
+                let bis = (u.0 / lu + w.0 / lw, u.1 / lu + w.1 / lw);
+                let lb = bis.0.hypot(bis.1);
+                let rf = a.radius.approx();
+                let cf = approx_dir(&a.center);
+                let mf = if lb > 1e-12 && lb.is_finite() {
+                    (cf.0 + rf * bis.0 / lb, cf.1 + rf * bis.1 / lb)
+                } else {
+                    approx_dir(&a.from)
+                };
+                let v = (mf.0 - cf.0, mf.1 - cf.1);
                 let l = (v.0 * v.0 + v.1 * v.1).sqrt().max(f64::MIN_POSITIVE);
                 let out = (v.0 / l, v.1 / l);
-                let mm = approx_dir(&m);
+                let mm = mf;
                 // right of travel: outward for counter-clockwise travel
                 if a.clockwise {
                     (mm, (-out.0, -out.1))
@@ -1788,7 +1803,7 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
             if let (Piece::Arc(arc), Some(input)) = (&s.pre, &onside_input) {
                 let budget = tol - e_in;
                 if budget > 0.0 {
-                    if let Some(l) = input.prove_arc(arc, budget, 256) {
+                    if let Some(l) = input.prove_arc(arc, budget, 2048) {
                         return Some(e_in + l);
                     }
                 }
@@ -1803,7 +1818,7 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
                 if budget > 0.0 {
                     if let Some((t0, t1)) = link.exact_range(range.0 - pad, range.1 + pad) {
                         if let Some(l) =
-                            input.prove_interval(link.piece, &link.d, t0, t1, budget, 256)
+                            input.prove_interval(link.piece, &link.d, t0, t1, budget, 2048)
                         {
                             return Some(e_in + l);
                         }
