@@ -560,6 +560,7 @@ fn chain_side(
     closed: bool,
     merge: f64,
     first: usize,
+    lines: Option<&[Bezier<Rational>]>,
 ) -> Result<Vec<Raw>, StrokeError> {
     let segs: Vec<(usize, Bezier<Rational>, f64)> = res
         .segments
@@ -590,12 +591,38 @@ fn chain_side(
     let mut raws: Vec<Raw> = segs
         .iter()
         .zip(&res.segments)
-        .map(|((_, b, e), s)| Raw {
-            piece: Piece::Bezier(b.clone()),
-            e: *e,
-            e_in: *e,
-            kind: Kind::Boundary,
-            link: link(s),
+        .map(|((_, b, e), s)| {
+            // a straight input piece with a rational unit normal: its exact
+            // offset is the piece translated, written exactly (error 0, the
+            // identity map), not the float construction
+            if let Some(x) = lines.and_then(|c| c.get(s.piece)) {
+                if let Some(exact) = exact_line_offset(x, &res.distance, s.t) {
+                    return Raw {
+                        piece: Piece::Bezier(exact),
+                        e: 0.0,
+                        e_in: 0.0,
+                        kind: Kind::Boundary,
+                        link: Some(Link {
+                            piece: first + s.piece,
+                            span: s.t,
+                            d: res.distance.clone(),
+                            boxes: std::sync::Arc::new(vec![crate::certify::ParamBox {
+                                t: (0.0, 1.0),
+                                c: [0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0],
+                                bound: 0.0,
+                            }]),
+                            reversed: false,
+                        }),
+                    };
+                }
+            }
+            Raw {
+                piece: Piece::Bezier(b.clone()),
+                e: *e,
+                e_in: *e,
+                kind: Kind::Boundary,
+                link: link(s),
+            }
         })
         .collect();
     let n = raws.len();
@@ -621,8 +648,8 @@ fn chain_side(
                 to,
                 clockwise,
             }) => {
-                let x1 = snap(&center, r, approx_dir(&from)).ok_or_else(|| bad("curve", "join"))?;
-                let x2 = snap(&center, r, approx_dir(&to)).ok_or_else(|| bad("curve", "join"))?;
+                let x1 = on_or_snap(&center, r, &p1, &from).ok_or_else(|| bad("curve", "join"))?;
+                let x2 = on_or_snap(&center, r, &p2, &to).ok_or_else(|| bad("curve", "join"))?;
                 let d1 = dist_hi(&p1, &x1);
                 let d2 = dist_hi(&p2, &x2);
                 let e1 = dist_hi_iv(&x1, &unit_normal_point(&center, r, &from));
@@ -644,16 +671,9 @@ fn chain_side(
                     raws[k1].e_in += d;
                     continue;
                 }
-                if let Piece::Bezier(b) = &raws[k].piece {
-                    raws[k].piece = Piece::Bezier(set_end(b, None, Some(&x1)));
-                }
-                raws[k].e += d1;
-                raws[k].e_in += d1;
-                if let Piece::Bezier(b) = &raws[k1].piece {
-                    raws[k1].piece = Piece::Bezier(set_end(b, Some(&x2), None));
-                }
-                raws[k1].e += d2;
-                raws[k1].e_in += d2;
+                let _ = (d1, d2);
+                attach(&mut raws[k], true, &x1, &center, merge);
+                attach(&mut raws[k1], false, &x2, &center, merge);
                 if x1 != x2 {
                     inserts[k] = Some(Raw {
                         piece: Piece::Arc(Arc {
@@ -716,6 +736,92 @@ fn chain_side(
     Ok(out)
 }
 
+/// The exact offset at signed distance `d` (to the left) of the span
+/// `[t₀, t₁]` of a straight piece `x` whose unit normal is rational: every
+/// hodograph control point a positive multiple of `v = x(1) − x(0)` (so
+/// `x′ ≠ 0` and the direction is constant) and `|v|` rational. Then
+/// `E(t) = x(t) + d·n` for the one normal `n = (−v_y, v_x)/|v|`: the control
+/// points shifted by `d·n`, restricted to the span — exactly `E` with the
+/// same parameter (the identity map).
+fn exact_line_offset(
+    x: &Bezier<Rational>,
+    d: &Rational,
+    t: (f64, f64),
+) -> Option<Bezier<Rational>> {
+    let p = x.points();
+    let v = p[p.len() - 1].sub(&p[0]);
+    for w in p.windows(2) {
+        let h = w[1].sub(&w[0]);
+        if !(&h.x * &v.y - &h.y * &v.x).is_zero() || !(&h.x * &v.x + &h.y * &v.y).is_positive() {
+            return None;
+        }
+    }
+    let n2 = &v.x * &v.x + &v.y * &v.y;
+    let (sn, sd) = (n2.numer().sqrt(), n2.denom().sqrt());
+    if &sn * &sn != *n2.numer() || &sd * &sd != *n2.denom() {
+        return None;
+    }
+    let len = Rational::new(sn, sd);
+    let shift = V2::new(-(&v.y) * d / &len, &v.x * d / &len);
+    let moved = Bezier::new(p.iter().map(|q| q.add(&shift)).collect());
+    Some(moved.restrict(&rational_from_f64(t.0)?, &rational_from_f64(t.1)?))
+}
+
+/// The end of a raw offset segment where it meets an exact arc about
+/// `center` at the arc's end point `x` (on the circle): the end control point
+/// becomes `x` (fact 4: the move is added to `e`, `e_in`), and the control
+/// point next to it is projected onto the circle's tangent at `x`, so the
+/// segment leaves the arc with an **exactly** common tangent (its float
+/// construction is tangent up to rounding, which would leave a second
+/// contact with the circle a few ulps from the joint that no interval test
+/// can place). Both moves add up: a point of the Bézier moves by at most
+/// `B_n(t)·δ_end + B_{n−1}(t)·δ_handle ≤ δ_end + δ_handle`. The projection
+/// is skipped for lines and when it would move the handle by more than
+/// `max_move`.
+fn attach(raw: &mut Raw, at_end: bool, x: &V2<Rational>, center: &V2<Rational>, max_move: f64) {
+    let Piece::Bezier(b) = &raw.piece else {
+        return;
+    };
+    let p = b.points();
+    let n = p.len() - 1;
+    let old = if at_end { &p[n] } else { &p[0] };
+    let d = dist_hi(old, x);
+    let mut pts = p.to_vec();
+    if at_end {
+        pts[n] = x.clone();
+    } else {
+        pts[0] = x.clone();
+    }
+    let mut moved = d;
+    if n >= 2 {
+        let k = if at_end { n - 1 } else { 1 };
+        // the tangent line at x: x + s·τ, τ ⟂ (x − c)
+        let tau = x.sub(center).rot90();
+        let t2 = tau.norm2();
+        if !t2.is_zero() {
+            let s = pts[k].sub(x).dot(&tau) / &t2;
+            let q = x.add(&tau.scale(&s));
+            let dq = dist_hi(&pts[k], &q);
+            if dq <= max_move {
+                pts[k] = q;
+                moved += dq;
+            }
+        }
+    }
+    raw.piece = Piece::Bezier(Bezier::new(pts));
+    raw.e += moved;
+    raw.e_in += moved;
+}
+
+/// `p` itself when it lies exactly on the circle (an exact offset end),
+/// else a rational point exactly on it in the direction `dir`.
+fn on_or_snap(c: &V2<Rational>, r: &Rational, p: &V2<Rational>, dir: &V2<Rational>) -> Option<V2<Rational>> {
+    if super::circle::on_circle(c, r, p) && !p.sub(c).dot(dir).is_negative() {
+        return Some(p.clone());
+    }
+    snap(c, r, approx_dir(dir))
+}
+
 fn reverse_side(side: Vec<Raw>) -> Vec<Raw> {
     side.into_iter()
         .rev()
@@ -739,6 +845,7 @@ fn cap_piece(
     cap: Cap,
     from_piece: &mut Raw,
     to_piece: &mut Raw,
+    max_move: f64,
 ) -> Result<Raw, StrokeError> {
     let c = if e == 0 {
         x.points()[0].clone()
@@ -768,20 +875,10 @@ fn cap_piece(
             })
         }
         Cap::Round => {
-            let x1 = snap(&c, r, approx_dir(&dir_from)).ok_or_else(|| bad("curve", "cap"))?;
-            let x2 = snap(&c, r, approx_dir(&dir_to)).ok_or_else(|| bad("curve", "cap"))?;
-            let d1 = dist_hi(&p1, &x1);
-            let d2 = dist_hi(&p2, &x2);
-            if let Piece::Bezier(b) = &from_piece.piece {
-                from_piece.piece = Piece::Bezier(set_end(b, None, Some(&x1)));
-            }
-            from_piece.e += d1;
-            from_piece.e_in += d1;
-            if let Piece::Bezier(b) = &to_piece.piece {
-                to_piece.piece = Piece::Bezier(set_end(b, Some(&x2), None));
-            }
-            to_piece.e += d2;
-            to_piece.e_in += d2;
+            let x1 = on_or_snap(&c, r, &p1, &dir_from).ok_or_else(|| bad("curve", "cap"))?;
+            let x2 = on_or_snap(&c, r, &p2, &dir_to).ok_or_else(|| bad("curve", "cap"))?;
+            attach(from_piece, true, &x1, &c, max_move);
+            attach(to_piece, false, &x2, &c, max_move);
             let e1 = dist_hi_iv(&x1, &unit_normal_point(&c, r, &dir_from));
             let e2 = dist_hi_iv(&x2, &unit_normal_point(&c, r, &dir_to));
             Ok(Raw {
@@ -922,8 +1019,12 @@ fn raw_contours(
         }
         side
     };
-    let a = strip(chain_side(&minus, r, closed, merge, first)?);
-    let b = strip(reverse_side(chain_side(&plus, r, closed, merge, first)?));
+    // exact offsets of straight pieces: for a circular pen only
+    let lines = opts.ellipse.is_none().then_some(curve);
+    let a = strip(chain_side(&minus, r, closed, merge, first, lines)?);
+    let b = strip(reverse_side(chain_side(
+        &plus, r, closed, merge, first, lines,
+    )?));
     if closed {
         return Ok((vec![a, b], notes, Vec::new()));
     }
@@ -935,7 +1036,7 @@ fn raw_contours(
         let (a_last, b_first) = (&mut a[na].clone(), &mut b[0].clone());
         let cap = match &opts.ellipse {
             Some(pen) => ellipse_cap_piece(x_end, 1, pen, opts, a_last, b_first, &mut caps)?,
-            None => vec![cap_piece(x_end, 1, r, opts.cap, a_last, b_first)?],
+            None => vec![cap_piece(x_end, 1, r, opts.cap, a_last, b_first, merge)?],
         };
         a[na] = a_last.clone();
         b[0] = b_first.clone();
@@ -945,7 +1046,7 @@ fn raw_contours(
         let (b_last, a_first) = (&mut b[nb].clone(), &mut a[0].clone());
         let cap = match &opts.ellipse {
             Some(pen) => ellipse_cap_piece(&curve[0], 0, pen, opts, b_last, a_first, &mut caps)?,
-            None => vec![cap_piece(&curve[0], 0, r, opts.cap, b_last, a_first)?],
+            None => vec![cap_piece(&curve[0], 0, r, opts.cap, b_last, a_first, merge)?],
         };
         b[nb] = b_last.clone();
         a[0] = a_first.clone();
