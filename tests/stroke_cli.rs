@@ -639,3 +639,28 @@ fn stroke_complete_means_decided() {
         "{text}"
     );
 }
+
+/// Glyph outlines that went undecided before issue 27 (straight pieces whose
+/// float offsets dipped into the join circles by a few ulps, crossings of
+/// straight pieces moved off their exact point, `o` out of its witness
+/// budget): decided now, every contour closed exactly (the geometry is
+/// checked against sampling in `tests/stroke.rs`; this pins the decisions).
+#[test]
+fn straight_glyph_pieces_are_decided() {
+    let Some(font) = common::dejavu() else {
+        eprintln!("DejaVu Sans not installed: skipped");
+        return;
+    };
+    let font = font.to_string_lossy().to_string();
+    for g in ["L", "]", "o", "4", "r"] {
+        let o = common::lncert(&[
+            "offset", &font, "--glyph", g, "--distance", "20", "--tol", "0.2", "--trim", "--json",
+        ]);
+        let j = json_of(&o);
+        assert_eq!(o.status.code(), Some(0), "{g}: {j}");
+        assert_eq!(j["outline"]["complete"], true, "{g}");
+        for c in j["outline"]["contours"].as_array().unwrap() {
+            assert!(closed_exactly(c), "{g}: contour not closed exactly");
+        }
+    }
+}

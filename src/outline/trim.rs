@@ -1629,6 +1629,29 @@ fn split_piece(raw: usize, p: &Piece, splits: &mut [Split]) -> Vec<Sub> {
     }
 }
 
+/// The crossing of two degree-1 pieces with non-parallel directions, exact:
+/// the point and both parameters (inside `[0, 1]`), `None` otherwise.
+fn segment_crossing(
+    a: &Bezier<Rational>,
+    b: &Bezier<Rational>,
+) -> Option<(V2<Rational>, Rational, Rational)> {
+    if a.degree() != 1 || b.degree() != 1 {
+        return None;
+    }
+    let (p, q) = (&a.points()[0], &a.points()[1]);
+    let (u, v) = (&b.points()[0], &b.points()[1]);
+    let (d1, d2) = (q.sub(p), v.sub(u));
+    let den = d1.cross(&d2);
+    if den.is_zero() {
+        return None;
+    }
+    let w = u.sub(p);
+    let s = w.cross(&d2) / &den;
+    let t = w.cross(&d1) / &den;
+    let unit = |x: &Rational| !x.is_negative() && *x <= <Rational as One>::one();
+    (unit(&s) && unit(&t)).then(|| (p.add(&d1.scale(&s)), s, t))
+}
+
 fn mid_rational(lo: f64, hi: f64) -> Option<Rational> {
     rational_from_f64(0.5 * lo + 0.5 * hi)
 }
@@ -1747,6 +1770,16 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
             mid_rational(c.point.1 .0, c.point.1 .1),
         );
         let (s, t) = (mid_rational(c.s.0, c.s.1), mid_rational(c.t.0, c.t.1));
+        // two straight segments: their crossing is rational, split exactly
+        // there (no end moves; an exact point keeps later joints exact)
+        let exact = match (&raws[i].piece, &raws[j].piece) {
+            (Piece::Bezier(a), Piece::Bezier(b)) => segment_crossing(a, b),
+            _ => None,
+        };
+        let (px, py, s, t) = match exact {
+            Some((p, s, t)) => (Some(p.x), Some(p.y), Some(s), Some(t)),
+            None => (px, py, s, t),
+        };
         if let (Some(xx), Some(xy), Some(s), Some(t)) = (px, py, s, t) {
             let point = V2::new(xx, xy);
             splits[i].push(Split {
