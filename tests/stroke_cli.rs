@@ -652,7 +652,7 @@ fn straight_glyph_pieces_are_decided() {
         return;
     };
     let font = font.to_string_lossy().to_string();
-    for g in ["L", "]", "o", "4", "r"] {
+    for g in ["L", "]", "o", "4", "r", "Y"] {
         let o = common::lncert(&[
             "offset", &font, "--glyph", g, "--distance", "20", "--tol", "0.2", "--trim", "--json",
         ]);

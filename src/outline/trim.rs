@@ -1652,6 +1652,19 @@ fn segment_crossing(
     (unit(&s) && unit(&t)).then(|| (p.add(&d1.scale(&s)), s, t))
 }
 
+/// The exact projection of `x` onto a degree-1 piece and its parameter,
+/// when that parameter is strictly inside `(0, 1)`.
+fn project_on_segment(a: &Bezier<Rational>, x: &V2<Rational>) -> Option<(V2<Rational>, Rational)> {
+    let (p, q) = (&a.points()[0], &a.points()[1]);
+    let d = q.sub(p);
+    let n2 = d.norm2();
+    if n2.is_zero() {
+        return None;
+    }
+    let u = x.sub(p).dot(&d) / n2;
+    (u.is_positive() && u < <Rational as One>::one()).then(|| (p.add(&d.scale(&u)), u))
+}
+
 fn mid_rational(lo: f64, hi: f64) -> Option<Rational> {
     rational_from_f64(0.5 * lo + 0.5 * hi)
 }
@@ -1778,7 +1791,24 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
         };
         let (px, py, s, t) = match exact {
             Some((p, s, t)) => (Some(p.x), Some(p.y), Some(s), Some(t)),
-            None => (px, py, s, t),
+            None => match (&raws[i].piece, &raws[j].piece, &px, &py) {
+                // one straight segment: the crossing point projected onto
+                // it exactly, so its halves stay on its line (a half tilted
+                // by an ulp would meet the next join arc almost tangentially)
+                (Piece::Bezier(a), _, Some(x), Some(y)) if a.degree() == 1 => {
+                    match project_on_segment(a, &V2::new(x.clone(), y.clone())) {
+                        Some((q, u)) => (Some(q.x), Some(q.y), Some(u), t),
+                        None => (px, py, s, t),
+                    }
+                }
+                (_, Piece::Bezier(b), Some(x), Some(y)) if b.degree() == 1 => {
+                    match project_on_segment(b, &V2::new(x.clone(), y.clone())) {
+                        Some((q, u)) => (Some(q.x), Some(q.y), s, Some(u)),
+                        None => (px, py, s, t),
+                    }
+                }
+                _ => (px, py, s, t),
+            },
         };
         if let (Some(xx), Some(xy), Some(s), Some(t)) = (px, py, s, t) {
             let point = V2::new(xx, xy);
