@@ -3,17 +3,12 @@
 //! B-spline input, and exit codes 0/1/2 with bad input naming the flag.
 
 mod common;
-use common::{dejavu, lncert, tmp};
+use common::{dejavu, json_of, lncert, tmp};
 
 use serde_json::Value;
 use std::process::Output;
 
 const CUBIC: &str = r#"{"bezier": [[-0.95, 0.7], [-0.3, 0.5], [0.3, -2.5], [0.9, -0.2]]}"#;
-
-fn json_of(o: &Output) -> Value {
-    serde_json::from_slice(&o.stdout)
-        .unwrap_or_else(|e| panic!("not JSON ({e}): {}", String::from_utf8_lossy(&o.stdout)))
-}
 
 #[test]
 fn json_document_certificate_and_svg() {

@@ -8,21 +8,33 @@
 
 mod common;
 
-use common::{dejavu, lncert, tmp};
+use common::{dejavu, json_of, lncert, tmp};
 use lncert::curve::V2;
 use lncert::parse_rational;
 use lncert::scalar::Rational;
 use serde_json::Value;
 use std::process::Output;
 
-fn json_of(o: &Output) -> Value {
-    serde_json::from_slice(&o.stdout).unwrap_or_else(|e| {
-        panic!(
-            "not JSON ({e}): {}\nstderr: {}",
-            String::from_utf8_lossy(&o.stdout),
-            String::from_utf8_lossy(&o.stderr)
-        )
-    })
+/// `lncert offset CURVE --distance D --tol 1e-3 --trim --json`, which must
+/// exit 0: its JSON document.
+fn trim_json(curve: &str, d: &str) -> Value {
+    let o = lncert(&[
+        "offset",
+        curve,
+        "--distance",
+        d,
+        "--tol",
+        "1e-3",
+        "--trim",
+        "--json",
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "D = {d}: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    json_of(&o)
 }
 
 fn rat(v: &Value) -> Rational {
@@ -100,23 +112,7 @@ fn offset_trim_of_a_circle_is_its_exact_stroke_with_claims() {
         ("3", vec!["6"]),
         ("-7/2", vec!["13/2"]),
     ] {
-        let o = lncert(&[
-            "offset",
-            c,
-            "--distance",
-            d,
-            "--tol",
-            "1e-3",
-            "--trim",
-            "--json",
-        ]);
-        assert_eq!(
-            o.status.code(),
-            Some(0),
-            "D = {d}: {}",
-            String::from_utf8_lossy(&o.stderr)
-        );
-        let doc = json_of(&o);
+        let doc = trim_json(c, d);
         assert!(
             doc.get("arcs").is_none() && doc.get("segments").is_none(),
             "D = {d}: a one-sided offset, not the trimmed outline: {doc}"
@@ -165,23 +161,7 @@ fn offset_trim_of_an_svg_circle_agrees_with_the_exact_circle() {
         "circle.svg",
         r#"<svg viewBox="0 0 24 24"><circle cx="12" cy="12" r="3"/></svg>"#,
     );
-    let o = lncert(&[
-        "offset",
-        svg.to_str().unwrap(),
-        "--distance",
-        "1",
-        "--tol",
-        "1e-3",
-        "--trim",
-        "--json",
-    ]);
-    assert_eq!(
-        o.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    let doc = json_of(&o);
+    let doc = trim_json(svg.to_str().unwrap(), "1");
     assert_eq!(doc["outline"]["complete"], true);
     let bound = doc["input_approximation"]["bound"].as_f64().unwrap();
     assert!(
@@ -654,7 +634,16 @@ fn straight_glyph_pieces_are_decided() {
     let font = font.to_string_lossy().to_string();
     for g in ["L", "]", "o", "4", "r", "Y"] {
         let o = common::lncert(&[
-            "offset", &font, "--glyph", g, "--distance", "20", "--tol", "0.2", "--trim", "--json",
+            "offset",
+            &font,
+            "--glyph",
+            g,
+            "--distance",
+            "20",
+            "--tol",
+            "0.2",
+            "--trim",
+            "--json",
         ]);
         let j = json_of(&o);
         assert_eq!(o.status.code(), Some(0), "{g}: {j}");

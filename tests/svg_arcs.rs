@@ -5,17 +5,12 @@
 //! `hausdorff`, text and `--json`).
 
 mod common;
-use common::{lncert, tmp};
+use common::{json_of, lncert, tmp};
 
 use lncert::certify::{hausdorff, Config};
 use lncert::shape::{parse_curve_reported, ShapeDesc};
 use serde_json::Value;
 use std::process::Output;
-
-fn json_of(o: &Output) -> Value {
-    serde_json::from_slice(&o.stdout)
-        .unwrap_or_else(|e| panic!("not JSON ({e}): {}", String::from_utf8_lossy(&o.stdout)))
-}
 
 /// Circular arcs whose end points are exact decimals on the circle
 /// (Pythagorean directions (0.96, 0.28), (0.6, 0.8)): the certified lower

@@ -85,11 +85,12 @@ fn add(a: &[Interval], b: &[Interval]) -> Vec<Interval> {
     a.iter().zip(b).map(|(x, y)| *x + *y).collect()
 }
 
-/// `C(n, k)`, exact in `f64` for the degrees used here.
-fn binom(n: usize, k: usize) -> f64 {
-    (0..k)
-        .fold(1.0, |acc, i| acc * (n - i) as f64 / (i + 1) as f64)
-        .round()
+/// An enclosure of `C(n, k)` (outward rounded: exact while it fits in
+/// `f64`'s 53 bits, still an enclosure for the high degrees where it does not).
+fn binom(n: usize, k: usize) -> Interval {
+    (0..k).fold(point(1.0), |acc, i| {
+        acc * point((n - i) as f64) / point((i + 1) as f64)
+    })
 }
 
 /// The Bernstein coefficients of a product (interval arithmetic, outward).
@@ -103,7 +104,7 @@ fn bprod(a: &[Interval], b: &[Interval]) -> Vec<Interval> {
             let mut s = point(0.0);
             for i in k.saturating_sub(n)..=k.min(m) {
                 let j = k - i;
-                let w = point(binom(m, i) * binom(n, j)) / point(binom(m + n, k));
+                let w = binom(m, i) * binom(n, j) / binom(m + n, k);
                 s = s + w * a[i] * b[j];
             }
             s
@@ -720,6 +721,25 @@ mod tests {
         // the inner side ends in the concave corner: its end is charged
         let inner = inp.prove_interval(0, &q("1"), 0.0, 1.0, 2.0, 256);
         assert!(matches!(inner, Some(l) if l > 0.0), "{inner:?}");
+    }
+
+    #[test]
+    fn interval_products_enclose_the_exact_ones_at_high_degree() {
+        // degree 40 × 40: binomials far beyond f64's 53 bits
+        let a: Vec<Rational> = (0..=40)
+            .map(|k| Rational::new(((k * 7) % 11 - 5).into(), 3.into()))
+            .collect();
+        let b: Vec<Rational> = (0..=40)
+            .map(|k| Rational::new(((k * 5) % 13 - 6).into(), 7.into()))
+            .collect();
+        let exact = crate::curve::bernstein_product(&a, &b);
+        let iv = |v: &[Rational]| v.iter().map(interval_from_rational).collect::<Vec<_>>();
+        let enclosed = bprod(&iv(&a), &iv(&b));
+        assert_eq!(exact.len(), enclosed.len());
+        for (e, i) in exact.iter().zip(&enclosed) {
+            let x = interval_from_rational(e);
+            assert!(i.inf() <= x.inf() && x.sup() <= i.sup(), "{e} not in {i:?}");
+        }
     }
 
     // ----------------------------------------------------------------------

@@ -651,7 +651,6 @@ fn chain_side(
                 let x1 = on_or_snap(&center, r, &p1, &from).ok_or_else(|| bad("curve", "join"))?;
                 let x2 = on_or_snap(&center, r, &p2, &to).ok_or_else(|| bad("curve", "join"))?;
                 let d1 = dist_hi(&p1, &x1);
-                let d2 = dist_hi(&p2, &x2);
                 let e1 = dist_hi_iv(&x1, &unit_normal_point(&center, r, &from));
                 let e2 = dist_hi_iv(&x2, &unit_normal_point(&center, r, &to));
                 let gap = dist_hi(&x1, &x2);
@@ -671,7 +670,6 @@ fn chain_side(
                     raws[k1].e_in += d;
                     continue;
                 }
-                let _ = (d1, d2);
                 attach(&mut raws[k], true, &x1, &center, merge);
                 attach(&mut raws[k1], false, &x2, &center, merge);
                 if x1 != x2 {
@@ -815,7 +813,12 @@ fn attach(raw: &mut Raw, at_end: bool, x: &V2<Rational>, center: &V2<Rational>, 
 
 /// `p` itself when it lies exactly on the circle (an exact offset end),
 /// else a rational point exactly on it in the direction `dir`.
-fn on_or_snap(c: &V2<Rational>, r: &Rational, p: &V2<Rational>, dir: &V2<Rational>) -> Option<V2<Rational>> {
+fn on_or_snap(
+    c: &V2<Rational>,
+    r: &Rational,
+    p: &V2<Rational>,
+    dir: &V2<Rational>,
+) -> Option<V2<Rational>> {
     if super::circle::on_circle(c, r, p) && !p.sub(c).dot(dir).is_negative() {
         return Some(p.clone());
     }
@@ -1046,7 +1049,9 @@ fn raw_contours(
         let (b_last, a_first) = (&mut b[nb].clone(), &mut a[0].clone());
         let cap = match &opts.ellipse {
             Some(pen) => ellipse_cap_piece(&curve[0], 0, pen, opts, b_last, a_first, &mut caps)?,
-            None => vec![cap_piece(&curve[0], 0, r, opts.cap, b_last, a_first, merge)?],
+            None => vec![cap_piece(
+                &curve[0], 0, r, opts.cap, b_last, a_first, merge,
+            )?],
         };
         b[nb] = b_last.clone();
         a[0] = a_first.clone();

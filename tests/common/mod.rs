@@ -175,6 +175,18 @@ pub fn lncert(args: &[&str]) -> std::process::Output {
         .expect("the binary runs")
 }
 
+/// The JSON document a run printed on stdout (panics with stdout and stderr
+/// when it is not JSON).
+pub fn json_of(o: &std::process::Output) -> serde_json::Value {
+    serde_json::from_slice(&o.stdout).unwrap_or_else(|e| {
+        panic!(
+            "not JSON ({e}): {}\nstderr: {}",
+            String::from_utf8_lossy(&o.stdout),
+            String::from_utf8_lossy(&o.stderr)
+        )
+    })
+}
+
 /// Writes `text` to `name` in a temporary directory of this test binary and
 /// process, and returns the path.
 pub fn tmp(name: &str, text: &str) -> std::path::PathBuf {
