@@ -245,12 +245,18 @@ fn isolate_joint(a: &Bezier<Rational>, ea: u8, b: &Bezier<Rational>, eb: u8) -> 
     let df = V2::new(v.x - u.x, v.y - u.y);
     if df.norm2() >= 1e-24 {
         let d = V2::new(rational_from_f64(df.x)?, rational_from_f64(df.y)?);
-        let mut eps = q(1, 8);
-        for _ in 0..24 {
+        // the whole pieces first (consecutive pieces of one offset side or
+        // input path: then nothing is left to solve), then ever smaller corners
+        let widths = [q(1, 1), q(1, 2), q(1, 4)]
+            .into_iter()
+            .chain(std::iter::successors(Some(q(1, 8)), |e| {
+                Some(e / Rational::from_integer(4.into()))
+            }))
+            .take(27);
+        for eps in widths {
             if monotone(a, ea, &eps, &d, -1) && monotone(b, eb, &eps, &d, 1) {
                 return Some(eps);
             }
-            eps /= Rational::from_integer(4.into());
         }
     }
     // both leave in (nearly) the same direction: a cusp of the curve the
@@ -533,6 +539,21 @@ fn pair(
     j: usize,
     sopts: &SolveOptions,
 ) -> Intersections {
+    // a straight piece: one exact univariate equation instead of the box search
+    if let Some(r) = segment_pair(pieces, i, j) {
+        return r;
+    }
+    pair_boxes(pieces, powers, i, j, sopts)
+}
+
+/// Two different pieces, by the box search.
+fn pair_boxes(
+    pieces: &[Bezier<Rational>],
+    powers: &[(Vec<Rational>, Vec<Rational>)],
+    i: usize,
+    j: usize,
+    sopts: &SolveOptions,
+) -> Intersections {
     let mut out = Intersections {
         pairs_solved: 1,
         ..Intersections::default()
@@ -587,6 +608,178 @@ fn pair(
         }
     }
     out
+}
+
+/// Two pieces of which at least one is a straight segment `A(s) = P + s·w`
+/// (`w ≠ 0`), solved exactly in one variable: `B(t)` meets the segment's
+/// line where `f(t) = w⊥ · (B(t) − P) = 0`, and then at `s(t) = w · (B(t) −
+/// P) / |w|²`. A shared end point of the pieces is a root of `f` at `t = 0`
+/// or `1`, divided out with its multiplicity; every other root in `[0, 1]`
+/// is isolated exactly (Sturm), and each is a crossing when it is simple and
+/// `s(t)` is enclosed strictly inside `(0, 1)` on its isolating interval,
+/// no contact when `s(t)` is enclosed outside `[0, 1]`, and undecided
+/// (`"tangential"` for a multiple root, `"boundary"` for a contact at an end
+/// of a piece) otherwise. The roots found are then **all** the contacts: no
+/// search, no budget. `None` (the box search decides) when neither piece is a
+/// segment of positive length or `B` lies on the segment's line.
+fn segment_pair(pieces: &[Bezier<Rational>], i: usize, j: usize) -> Option<Intersections> {
+    use crate::poly::{has_common_root_in, isolate_roots, refine_root, Poly, Span};
+    let (a, b) = (&pieces[i], &pieces[j]);
+    // the segment and the other piece; `swap`: the segment is piece j
+    let (seg, other, swap) = if a.degree() == 1 {
+        (a, b, false)
+    } else if b.degree() == 1 {
+        (b, a, true)
+    } else {
+        return None;
+    };
+    let p0 = &seg.points()[0];
+    let w = seg.points()[1].sub(p0);
+    let w2 = w.norm2();
+    if w2.is_zero() {
+        return None;
+    }
+    let nrm = w.rot90();
+    let fb: Vec<Rational> = other.points().iter().map(|v| nrm.dot(&v.sub(p0))).collect();
+    if fb.iter().all(Zero::is_zero) {
+        return None; // on the line: an overlap, for the box search to report
+    }
+    let mut f = Poly::from_bernstein(&fb).trimmed();
+    let mut out = Intersections {
+        pairs_solved: 1,
+        ..Intersections::default()
+    };
+    let (zero, one) = (<Rational as Zero>::zero(), <Rational as One>::one());
+    // shared end points: joints (the root divided out, with its multiplicity)
+    for ea in [0u8, 1] {
+        for eb in [0u8, 1] {
+            if end(seg, ea) != end(other, eb) {
+                continue;
+            }
+            out.joints.push(Joint {
+                pieces: (i, j),
+                at: if swap { (eb, ea) } else { (ea, eb) },
+            });
+            let root = if eb == 0 { zero.clone() } else { one.clone() };
+            while f.degree().is_some_and(|d| d > 0) && f.eval(&root).is_zero() {
+                f = deflate(&f, &root);
+            }
+        }
+    }
+    if f.degree().is_none_or(|d| d == 0) {
+        out.complete = true;
+        return Some(out);
+    }
+    let df = f.derivative();
+    let bi = other.map(interval_from_rational);
+    // s(t) exactly, and its exact enclosure on [lo, hi] ⊂ [0, 1] (term by
+    // term: each c·tᵏ is monotone for t ≥ 0)
+    let sb: Vec<Rational> = other
+        .points()
+        .iter()
+        .map(|v| w.dot(&v.sub(p0)) / &w2)
+        .collect();
+    let sp = Poly::from_bernstein(&sb);
+    let s_enc = |lo: &Rational, hi: &Rational| -> (Rational, Rational) {
+        let (mut a, mut b) = (zero.clone(), zero.clone());
+        let (mut pl, mut ph) = (one.clone(), one.clone());
+        for c in sp.coeffs() {
+            let (x, y) = (c * &pl, c * &ph);
+            if x <= y {
+                a += x;
+                b += y;
+            } else {
+                a += y;
+                b += x;
+            }
+            pl *= lo;
+            ph *= hi;
+        }
+        (a, b)
+    };
+    let target = q(1, 1 << 30) * q(1, 1 << 20);
+    for root in isolate_roots(&f, &Span::closed(zero.clone(), one.clone())) {
+        let mut r = root;
+        // Some(None): no contact; Some(Some(())): a crossing inside the segment
+        let mut verdict = None;
+        for _ in 0..24 {
+            let (lo, hi) = s_enc(&r.lo, &r.hi);
+            if hi.is_negative() || lo > one {
+                verdict = Some(None); // on the line, beyond the segment
+                break;
+            }
+            if lo.is_positive() && hi < one {
+                verdict = Some(Some(()));
+                break;
+            }
+            if r.is_exact() {
+                break; // B(t) is an end point of the segment
+            }
+            let width = r.width() / Rational::from_integer((1i64 << 16).into());
+            r = refine_root(&f, &r, &width);
+        }
+        let t_range = (
+            interval_from_rational(&r.lo).inf(),
+            interval_from_rational(&r.hi).sup(),
+        );
+        let undecided = |reason: &'static str| Undecided {
+            pieces: (i, j),
+            s: if swap { t_range } else { (0.0, 1.0) },
+            t: if swap { (0.0, 1.0) } else { t_range },
+            reason,
+        };
+        match verdict {
+            Some(None) => {}
+            Some(Some(_)) => {
+                let span = Span::closed(r.lo.clone(), r.hi.clone());
+                if has_common_root_in(&f, &df, &span) {
+                    out.undecided.push(undecided("tangential"));
+                    continue;
+                }
+                // a simple root: narrow it for a tight split point
+                let r = refine_root(&f, &r, &target);
+                if r.is_exact() && (r.lo == zero || r.lo == one) {
+                    // at an end of B (not a shared end point): a T-contact
+                    out.undecided.push(undecided("boundary"));
+                    continue;
+                }
+                let (t_lo, t_hi) = (
+                    interval_from_rational(&r.lo).inf(),
+                    interval_from_rational(&r.hi).sup(),
+                );
+                let (s_lo, s_hi) = s_enc(&r.lo, &r.hi);
+                let sr = (
+                    interval_from_rational(&s_lo).inf(),
+                    interval_from_rational(&s_hi).sup(),
+                );
+                let t_iv = Interval::try_from((t_lo, t_hi)).ok()?;
+                let pt = bi.eval(&t_iv);
+                let (s_rng, t_rng) = (sr, (t_lo, t_hi));
+                out.crossings.push(Crossing {
+                    pieces: (i, j),
+                    s: if swap { t_rng } else { s_rng },
+                    t: if swap { s_rng } else { t_rng },
+                    point: (range(pt.x), range(pt.y)),
+                });
+            }
+            None => out.undecided.push(undecided("boundary")),
+        }
+    }
+    out.complete = out.undecided.is_empty();
+    Some(out)
+}
+
+/// `f(t) / (t − r)` for a root `r` of `f` (synthetic division, exact).
+fn deflate(f: &crate::poly::Poly<Rational>, r: &Rational) -> crate::poly::Poly<Rational> {
+    let c = f.coeffs();
+    let n = c.len();
+    let mut out = vec![<Rational as Zero>::zero(); n.saturating_sub(1)];
+    let mut acc = <Rational as Zero>::zero();
+    for k in (1..n).rev() {
+        acc = &acc * r + &c[k];
+        out[k - 1] = acc.clone();
+    }
+    crate::poly::Poly::new(out).trimmed()
 }
 
 /// The self-intersections of one piece: the divided-difference system on
@@ -693,6 +886,60 @@ mod tests {
         let r = intersections(&c, &IntersectOptions::default());
         assert!(!r.complete);
         assert!(r.undecided.iter().any(|u| u.pieces == (0, 1)), "{r:?}");
+    }
+
+    /// The exact segment path against the box search, on segments and
+    /// curves with small integer control points (a deterministic generator):
+    /// the same crossings (each box of one holds a crossing of the other),
+    /// and the same joints.
+    #[test]
+    fn segment_path_agrees_with_the_box_search() {
+        let mut seed = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut next = |m: i64| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed % (2 * m as u64 + 1)) as i64 - m
+        };
+        let sopts = SolveOptions::default();
+        let mut compared = 0;
+        let mut crossings = 0;
+        for case in 0..300 {
+            let deg = 1 + case % 3;
+            let mut pt = || V2::new(q(next(6), 1), q(next(6), 1));
+            let seg = Bezier::new(vec![pt(), pt()]);
+            let mut pts: Vec<V2<Rational>> = (0..=deg).map(|_| pt()).collect();
+            // every fourth case shares an end point with the segment
+            if case % 4 == 1 {
+                pts[0] = seg.points()[1].clone();
+            }
+            let other = Bezier::new(pts);
+            let pieces = [seg, other];
+            let powers: Vec<_> = pieces.iter().map(power).collect();
+            let Some(fast) = segment_pair(&pieces, 0, 1) else {
+                continue;
+            };
+            let mut fast = fast;
+            let mut slow = pair_boxes(&pieces, &powers, 0, 1, &sopts);
+            fast.crossings.sort_by(|a, b| a.s.0.total_cmp(&b.s.0));
+            slow.crossings.sort_by(|a, b| a.s.0.total_cmp(&b.s.0));
+            if !fast.undecided.is_empty() || !slow.undecided.is_empty() {
+                continue;
+            }
+            compared += 1;
+            crossings += fast.crossings.len();
+            assert_eq!(
+                fast.crossings.len(),
+                slow.crossings.len(),
+                "{pieces:?}\n{fast:?}\n{slow:?}"
+            );
+            for (x, y) in fast.crossings.iter().zip(&slow.crossings) {
+                let meet = |a: (f64, f64), b: (f64, f64)| a.0 <= b.1 && b.0 <= a.1;
+                assert!(meet(x.s, y.s) && meet(x.t, y.t), "{x:?} vs {y:?}");
+            }
+            assert_eq!(fast.joints, slow.joints, "{pieces:?}");
+        }
+        assert!(compared > 150 && crossings > 50, "{compared} {crossings}");
     }
 
     #[test]
