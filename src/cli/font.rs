@@ -70,7 +70,7 @@ pub struct FontArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub offset: Option<String>,
     /// Stroke every glyph's contours with a disk of radius R font units.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub stroke: Option<String>,
     /// The tolerance to prove per glyph (font units), rounding included.
     #[arg(long, allow_hyphen_values = true)]
