@@ -96,7 +96,10 @@ fn formerly_singular_glyphs_are_offset() {
             eprintln!("skipped: {}", font.display());
             continue;
         }
-        let out = dir(&format!("sing-{}.ufo", font.file_stem().unwrap().to_string_lossy()));
+        let out = dir(&format!(
+            "sing-{}.ufo",
+            font.file_stem().unwrap().to_string_lossy()
+        ));
         let rep = out.with_extension("json");
         run_ok(&[
             "font",
@@ -211,7 +214,10 @@ fn ufo_polys(g: &norad::Glyph) -> Vec<Vec<(f64, f64)>> {
         let pts = &c.points;
         let n = pts.len();
         // start at the last on-curve point
-        let start = (0..n).rev().find(|&k| pts[k].typ != PointType::OffCurve).unwrap();
+        let start = (0..n)
+            .rev()
+            .find(|&k| pts[k].typ != PointType::OffCurve)
+            .unwrap();
         let mut cur = (pts[start].x, pts[start].y);
         let mut off: Vec<(f64, f64)> = Vec::new();
         let mut poly = Vec::new();
@@ -283,11 +289,21 @@ fn subset_ufo_is_written_proven_and_checked_independently() {
     names.sort();
     assert_eq!(names, ["A", "H", "l", "o", "period", "space"]);
     assert_eq!(
-        layer.get_glyph("A").unwrap().codepoints.iter().collect::<Vec<_>>(),
+        layer
+            .get_glyph("A")
+            .unwrap()
+            .codepoints
+            .iter()
+            .collect::<Vec<_>>(),
         ['A']
     );
     assert_eq!(
-        layer.get_glyph("period").unwrap().codepoints.iter().collect::<Vec<_>>(),
+        layer
+            .get_glyph("period")
+            .unwrap()
+            .codepoints
+            .iter()
+            .collect::<Vec<_>>(),
         ['.']
     );
     assert!(layer.get_glyph("space").unwrap().contours.is_empty());
@@ -295,7 +311,10 @@ fn subset_ufo_is_written_proven_and_checked_independently() {
     for g in r["glyphs"].as_array().unwrap() {
         let name = g["name"].as_str().unwrap();
         let glyph = layer.get_glyph(name).unwrap();
-        let mark = glyph.lib.get("org.lncert.proven").and_then(|v| v.as_boolean());
+        let mark = glyph
+            .lib
+            .get("org.lncert.proven")
+            .and_then(|v| v.as_boolean());
         let v = g["verdict"].as_str().unwrap();
         assert_eq!(mark, Some(v == "proven" || v == "empty"), "{name}: {g}");
         assert!(glyph.width > 0.0);
@@ -306,7 +325,10 @@ fn subset_ufo_is_written_proven_and_checked_independently() {
         proven += 1;
         let bound = g["bound"].as_f64().unwrap();
         assert!(bound <= 1.0, "{name}: bound {bound}");
-        assert_eq!(glyph.lib.get("org.lncert.bound").and_then(|v| v.as_real()), Some(bound));
+        assert_eq!(
+            glyph.lib.get("org.lncert.bound").and_then(|v| v.as_real()),
+            Some(bound)
+        );
         // integers on the grid
         for c in &glyph.contours {
             for p in &c.points {
@@ -342,7 +364,10 @@ fn subset_ufo_is_written_proven_and_checked_independently() {
                     continue;
                 }
                 let d = dist(p, &output);
-                assert!(d <= bound + eps, "{name}: exact boundary point {p:?} at {d} from the output");
+                assert!(
+                    d <= bound + eps,
+                    "{name}: exact boundary point {p:?} at {d} from the output"
+                );
             }
         }
         // orientation: outer contours clockwise, holes counter-clockwise
@@ -431,7 +456,10 @@ fn stroke_and_html_report_and_no_grid() {
     assert!(html.contains("<table") && html.contains("<svg"));
     let ufo = norad::Font::load(&out).unwrap();
     // a rectangle stroked: an outer and an inner contour
-    assert_eq!(ufo.default_layer().get_glyph("l").unwrap().contours.len(), 2);
+    assert_eq!(
+        ufo.default_layer().get_glyph("l").unwrap().contours.len(),
+        2
+    );
 }
 
 fn bad_input(args: &[&str], field: &str) {
@@ -449,7 +477,10 @@ fn typed_errors() {
     let out = dir("err.ufo");
     let o = out.to_str().unwrap();
     let base = |extra: &[&str]| -> Vec<String> {
-        let mut v: Vec<String> = ["font", f, "--out", o].iter().map(|s| s.to_string()).collect();
+        let mut v: Vec<String> = ["font", f, "--out", o]
+            .iter()
+            .map(|s| s.to_string())
+            .collect();
         v.extend(extra.iter().map(|s| s.to_string()));
         v
     };
@@ -459,32 +490,73 @@ fn typed_errors() {
         bad_input(&r, field);
     };
     check(&["--tol", "1"], "--offset"); // neither
-    check(&["--offset", "2", "--stroke", "2", "--tol", "1"], "--offset"); // both
+    check(
+        &["--offset", "2", "--stroke", "2", "--tol", "1"],
+        "--offset",
+    ); // both
     check(&["--offset", "0", "--tol", "1"], "--offset");
     check(&["--stroke", "-2", "--tol", "1"], "--stroke");
     check(&["--offset", "2", "--tol", "0"], "--tol");
     check(&["--offset", "2", "--tol", "-1"], "--tol");
-    check(&["--offset", "2", "--tol", "1", "--glyphs", "a,,b"], "--glyphs");
-    check(&["--offset", "2", "--tol", "1", "--glyphs", "Z-A"], "--glyphs");
-    check(&["--offset", "2", "--tol", "1", "--glyphs", "@nosuchglyph"], "--glyphs");
-    check(&["--offset", "2", "--tol", "1", "--glyphs", "uniE0FF0"], "--glyphs");
+    check(
+        &["--offset", "2", "--tol", "1", "--glyphs", "a,,b"],
+        "--glyphs",
+    );
+    check(
+        &["--offset", "2", "--tol", "1", "--glyphs", "Z-A"],
+        "--glyphs",
+    );
+    check(
+        &["--offset", "2", "--tol", "1", "--glyphs", "@nosuchglyph"],
+        "--glyphs",
+    );
+    check(
+        &["--offset", "2", "--tol", "1", "--glyphs", "uniE0FF0"],
+        "--glyphs",
+    );
     check(&["--offset", "2", "--tol", "1", "--grid", "1/3"], "--grid");
     check(&["--offset", "2", "--tol", "1", "--jobs", "0"], "--jobs");
-    check(&["--offset", "2", "--tol", "1", "--report", "r.txt"], "--report");
+    check(
+        &["--offset", "2", "--tol", "1", "--report", "r.txt"],
+        "--report",
+    );
     // an unreadable font
     let junk = common::tmp("junk.ttf", "not a font");
     bad_input(
-        &["font", junk.to_str().unwrap(), "--offset", "2", "--tol", "1", "--out", o],
+        &[
+            "font",
+            junk.to_str().unwrap(),
+            "--offset",
+            "2",
+            "--tol",
+            "1",
+            "--out",
+            o,
+        ],
         "IN",
     );
     bad_input(
-        &["font", "/nonexistent/font.ttf", "--offset", "2", "--tol", "1", "--out", o],
+        &[
+            "font",
+            "/nonexistent/font.ttf",
+            "--offset",
+            "2",
+            "--tol",
+            "1",
+            "--out",
+            o,
+        ],
         "IN",
     );
     // an existing output directory is refused without --force
     std::fs::create_dir_all(&out).unwrap();
-    check(&["--offset", "2", "--tol", "1", "--glyphs", "period"], "--out");
-    let v = base(&["--offset", "20", "--tol", "1", "--glyphs", "period", "--force"]);
+    check(
+        &["--offset", "2", "--tol", "1", "--glyphs", "period"],
+        "--out",
+    );
+    let v = base(&[
+        "--offset", "20", "--tol", "1", "--glyphs", "period", "--force",
+    ]);
     let r: Vec<&str> = v.iter().map(String::as_str).collect();
     run_ok(&r);
     assert!(out.join("glyphs").join("period.glif").exists());

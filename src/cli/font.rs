@@ -504,7 +504,8 @@ fn prove(data: &[u8], job: &Job, g: &mut GlyphResult) {
     let delta = sqrt_up(&move2);
     let bound = stroke_bound + arc_bound + delta;
     g.bound = bound;
-    if !(bound <= job.tol) {
+    // (a NaN bound is not proven either)
+    if bound.is_nan() || bound > job.tol {
         reasons.push(format!(
             "the bound {bound:.4} (stroke {stroke_bound:.4} + arcs {arc_bound:.2e} + rounding {delta:.4}) exceeds TOL {}",
             job.tol
@@ -618,9 +619,9 @@ fn write_ufo(
         job.op.describe()
     ));
     fi.ascender = Some(f64::from(info.ascender));
-    fi.descender = Some(f64::from(info.descender).into());
-    fi.x_height = info.x_height.map(|x| f64::from(x).into());
-    fi.cap_height = info.cap_height.map(|x| f64::from(x).into());
+    fi.descender = Some(f64::from(info.descender));
+    fi.x_height = info.x_height.map(f64::from);
+    fi.cap_height = info.cap_height.map(f64::from);
     let mut used = std::collections::HashSet::new();
     for r in results {
         let gi = &info.glyphs[usize::from(r.id)];
