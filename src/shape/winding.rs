@@ -117,7 +117,8 @@ fn sides_exact(f: &Poly<Rational>, t0: &Rational) -> (i32, i32) {
 ///     Bezier::new(vec![q(0, 4), q(0, 0)]),
 /// ];
 /// assert_eq!(winding_number(&sq, &q(2, 2)), Some(1));
-/// assert_eq!(winding_number(&sq, &q(2, 5)), Some(1));
+/// assert_eq!(winding_number(&sq, &q(2, 4)), Some(1)); // under the bump, level with two end points
+/// assert_eq!(winding_number(&sq, &q(2, 5)), None); // the top of the bump: on the curve
 /// assert_eq!(winding_number(&sq, &q(5, 2)), Some(0));
 /// assert_eq!(winding_number(&sq, &q(4, 2)), None);
 /// ```
