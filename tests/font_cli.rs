@@ -370,7 +370,7 @@ fn subset_ufo_is_written_proven_and_checked_independently() {
                 );
             }
         }
-        // orientation: outer contours clockwise, holes counter-clockwise
+        // orientation (the UFO convention): outer contours counter-clockwise, holes clockwise
         for (i, q) in output.iter().enumerate() {
             let depth = output
                 .iter()
@@ -379,7 +379,7 @@ fn subset_ufo_is_written_proven_and_checked_independently() {
                 .count();
             let a = area(q);
             assert!(
-                (depth % 2 == 0) == (a < 0.0),
+                (depth % 2 == 0) == (a > 0.0),
                 "{name}: contour {i} depth {depth} area {a}"
             );
         }

@@ -28,9 +28,10 @@
 //!   for `TOL − δ` (`0.9·TOL` without grid) so that the total can meet `TOL`.
 //! * Output: cubic pieces (and lines); the stroke's exact arcs are converted to
 //!   certified cubics ([`lncert::shape::svgarc::circular_arc_cubics`]) and
-//!   their bound charged. Contours are oriented by the font's convention
-//!   (TrueType: outer contours clockwise; CFF: counter-clockwise), the outer
-//!   ones found by exact nesting.
+//!   their bound charged. Contours are oriented by the UFO's convention
+//!   (PostScript: outer contours counter-clockwise, holes clockwise, for
+//!   TrueType and CFF input alike; a TrueType compiler such as ufo2ft
+//!   reverses them), the outer ones found by exact nesting.
 //! * The UFO: fontinfo (units per em, family, style `"<style> offset D"`,
 //!   ascender, descender, x height, cap height), every selected glyph with its
 //!   name, code points and the input's advance width (kept as it is). Each
@@ -544,8 +545,8 @@ fn prove(data: &[u8], job: &Job, g: &mut GlyphResult) {
             continue;
         }
         let outer = depth % 2 == 0;
-        // TrueType: outer clockwise (negative area); CFF: outer counter-clockwise
-        let want_positive = outer == job.cff;
+        // the UFO convention: outer counter-clockwise (positive area)
+        let want_positive = outer;
         if a.is_positive() == want_positive {
             oriented.push(rounded[i].clone());
         } else {
