@@ -9,6 +9,9 @@
 //!   [--global-bounds] [--no-certify] [--json]` — an offset approximant proven within a tolerance;
 //! * `lncert stroke CURVE --pen circle:R --tol T [--cap round|butt] [--svg OUT] [--path-out OUT]
 //!   [--json]` — the proven outline of a circular pen's stroke;
+//! * `lncert font IN --offset D | --stroke R --tol T --out OUT.ufo [--glyphs SPEC] [--grid G]
+//!   [--report FILE.json|FILE.html] [--jobs N] [--force] [--json]` — every glyph of a font
+//!   offset or stroked, each proven, written as a UFO ([`font`]);
 //! * `lncert verify CERT [--against A B] [--json]` — the independent certificate check, and
 //!   whether it speaks about the shapes `A`, `B`.
 //! * `lncert tangency --x1 X --y1 Y --u U --center OX,OY --radius R [...]` —
@@ -44,6 +47,7 @@ pub mod args;
 pub mod audit;
 pub mod convolve;
 pub mod curve_input;
+pub mod font;
 pub mod hausdorff;
 pub mod offset;
 pub mod offset_grid;
@@ -96,6 +100,8 @@ pub enum Command {
     Convolve(Box<convolve::ConvolveArgs>),
     /// The proven outline of a circular pen's stroke: closed, simple contours with exact arcs.
     Stroke(Box<stroke::StrokeArgs>),
+    /// A whole font offset or stroked, every glyph proven, written as a UFO.
+    Font(Box<font::FontArgs>),
     /// Re-check a Hausdorff tolerance certificate without searching.
     Verify(verify::VerifyArgs),
     /// Quartic LN curves tangent to a circle (seed 003 §4): all solutions, proven.
@@ -146,6 +152,7 @@ pub fn run(cli: Cli) -> i32 {
         Command::Offset(a) => a.json,
         Command::Convolve(a) => a.json,
         Command::Stroke(a) => a.json,
+        Command::Font(a) => a.json,
         Command::Verify(a) => a.json,
         Command::Tangency(a) => a.json,
     };
@@ -157,10 +164,12 @@ pub fn run(cli: Cli) -> i32 {
         Command::Offset(_) => "offset",
         Command::Convolve(_) => "convolve",
         Command::Stroke(_) => "stroke",
+        Command::Font(_) => "font",
         Command::Verify(_) => "verify",
         Command::Tangency(_) => "tangency",
     };
-    let progress = progress::Progress::start(name);
+    // `font` draws its own progress bar (glyph counts, ETA)
+    let progress = (name != "font").then(|| progress::Progress::start(name));
     let result = match cli.command {
         Command::Reproduce(a) => reproduce::run(&a),
         Command::Prop(a) => prop::run(&a),
@@ -169,10 +178,13 @@ pub fn run(cli: Cli) -> i32 {
         Command::Offset(a) => offset::run(&a),
         Command::Convolve(a) => convolve::run(&a),
         Command::Stroke(a) => stroke::run(&a),
+        Command::Font(a) => font::run(&a),
         Command::Verify(a) => verify::run(&a),
         Command::Tangency(a) => tangency::run(&a),
     };
-    progress.finish();
+    if let Some(p) = progress {
+        p.finish();
+    }
     match result {
         Ok(code) => code,
         Err(e) => {

@@ -6,6 +6,20 @@
 //! Each contour is closed (a line back to its start when the last point is
 //! not already there); zero-length pieces (a point repeated in the font) are
 //! dropped, since they are not curves.
+//!
+//! **Degenerate pieces are read as what they are** ([`regularize`]): a
+//! quadratic whose control point coincides with an end point, or a cubic whose
+//! two control points lie on its end points, is the straight segment between
+//! its end points (degree 1) — its derivative vanishes at an end, which the
+//! offset and stroke engines refuse as a singular curve; a quadratic whose
+//! control point lies on the line of its end points but outside their segment
+//! runs out to the turning point `e` and back, and is read as the two segments
+//! `p0 → e → p1` (`e` exact). The point set is the same in every case.
+//!
+//! Glyphs are found by character ([`glyph_outline`]), by id
+//! ([`glyph_outline_by_id`]) or by name ([`glyph_id_by_name`]); [`font_info`]
+//! lists every glyph with its name, code points (the Unicode cmap subtables)
+//! and advance width, and the font's metrics and names.
 
 use super::io::CurveParseError;
 use crate::curve::{Bezier, V2};
@@ -47,7 +61,7 @@ impl Outline {
             })
             .collect::<Option<Vec<_>>>();
         match exact {
-            Some(e) => self.pieces.push(Bezier::new(e)),
+            Some(e) => self.pieces.extend(regularize(Bezier::new(e))),
             None => {
                 self.error
                     .get_or_insert_with(|| bad("glyph", "a coordinate is not a finite number"));
@@ -77,6 +91,53 @@ impl ttf_parser::OutlineBuilder for Outline {
             }
         }
         self.start = None;
+    }
+}
+
+/// A piece read as what it is: a quadratic with its control point on an end
+/// point, or a cubic with both control points on its end points, is the
+/// segment between the end points; a quadratic whose control point lies on the
+/// line of its end points beyond them is the two segments out to its turning
+/// point and back. Anything else is returned unchanged. Exact.
+///
+/// # Examples
+/// ```
+/// use lncert::curve::{Bezier, V2};
+/// use lncert::shape::regularize;
+/// let p = |x: i64, y: i64| V2::new(lncert::Rational::from_integer(x.into()), lncert::Rational::from_integer(y.into()));
+/// // control point on the start point: a segment
+/// assert_eq!(regularize(Bezier::new(vec![p(0, 0), p(0, 0), p(4, 2)])), vec![Bezier::new(vec![p(0, 0), p(4, 2)])]);
+/// // control point beyond the end, on the line: out to x = 4.5 and back to 4
+/// let r = regularize(Bezier::new(vec![p(0, 0), p(6, 0), p(4, 0)]));
+/// assert_eq!(r.len(), 2);
+/// assert_eq!(r[0].points()[1].x, lncert::Rational::new(9.into(), 2.into()));
+/// ```
+pub fn regularize(b: Bezier<Rational>) -> Vec<Bezier<Rational>> {
+    let pts = b.points();
+    let line = |p: &V2<Rational>, q: &V2<Rational>| Bezier::new(vec![p.clone(), q.clone()]);
+    match pts.len() {
+        3 => {
+            let (p0, c, p1) = (&pts[0], &pts[1], &pts[2]);
+            if c == p0 || c == p1 {
+                return vec![line(p0, p1)];
+            }
+            let (a, d) = (c.sub(p0), p1.sub(c));
+            let zero = Rational::from_integer(0.into());
+            if a.cross(&d) == zero && a.dot(&d) < zero {
+                // B'(t) = 2((1 − t) a + t d) vanishes at t = a·a / (a·a − a·d)
+                let aa = a.dot(&a);
+                let t = &aa / (&aa - a.dot(&d));
+                let e = b.eval(&t);
+                return vec![line(p0, &e), line(&e, p1)];
+            }
+            vec![b]
+        }
+        // both control points on the end points (in any order): the curve runs
+        // monotonically along the chord, B(t) = p0 + s(t)(p3 − p0), s' ≥ 0
+        4 if pts[1..3].iter().all(|c| *c == pts[0] || *c == pts[3]) => {
+            vec![line(&pts[0], &pts[3])]
+        }
+        _ => vec![b],
     }
 }
 
@@ -116,6 +177,165 @@ pub fn glyph_outline(data: &[u8], ch: char) -> Result<Vec<Bezier<Rational>>, Cur
         return Err(CurveParseError::Empty {
             what: format!("the glyph for {ch:?}"),
         });
+    }
+    Ok(out.pieces)
+}
+
+fn face(data: &[u8]) -> Result<ttf_parser::Face<'_>, CurveParseError> {
+    ttf_parser::Face::parse(data, 0)
+        .map_err(|e| bad("font", format!("not a TrueType/OpenType font: {e}")))
+}
+
+/// One glyph of a font: id, name, code points, advance width.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct GlyphInfo {
+    /// The glyph id.
+    pub id: u16,
+    /// The glyph's name (`post` or CFF charset), `gidN` when the font has none.
+    pub name: String,
+    /// The Unicode code points mapped to it by the cmap (sorted).
+    pub codepoints: Vec<u32>,
+    /// The horizontal advance in font units (0 when the font has none).
+    pub advance: u16,
+}
+
+/// A font's names, metrics and glyph list (face 0).
+#[derive(Clone, Debug)]
+pub struct FontInfo {
+    /// Units per em.
+    pub units_per_em: u16,
+    /// Family name (name id 16, else 1), when the font has one.
+    pub family: Option<String>,
+    /// Style name (name id 17, else 2), when the font has one.
+    pub style: Option<String>,
+    /// Ascender (hhea / OS/2), font units.
+    pub ascender: i16,
+    /// Descender (negative below the baseline), font units.
+    pub descender: i16,
+    /// OS/2 x height, when the font has it.
+    pub x_height: Option<i16>,
+    /// OS/2 cap height, when the font has it.
+    pub cap_height: Option<i16>,
+    /// The outlines are CFF (cubic, outer contours counter-clockwise); else
+    /// TrueType `glyf` (quadratic, outer contours clockwise).
+    pub cff: bool,
+    /// Every glyph, by id.
+    pub glyphs: Vec<GlyphInfo>,
+}
+
+fn name_of(face: &ttf_parser::Face<'_>, ids: &[u16]) -> Option<String> {
+    for &id in ids {
+        let found = face
+            .names()
+            .into_iter()
+            .filter(|n| n.name_id == id && n.is_unicode())
+            .find_map(|n| n.to_string());
+        if found.is_some() {
+            return found;
+        }
+    }
+    None
+}
+
+/// The font's names, metrics and every glyph with its name, code points and
+/// advance width (face 0).
+///
+/// Errors: the font cannot be read (`font`).
+pub fn font_info(data: &[u8]) -> Result<FontInfo, CurveParseError> {
+    use ttf_parser::name_id;
+    let face = face(data)?;
+    let n = face.number_of_glyphs();
+    let mut cps: Vec<Vec<u32>> = vec![Vec::new(); usize::from(n)];
+    if let Some(cmap) = face.tables().cmap {
+        for sub in cmap.subtables {
+            if !sub.is_unicode() {
+                continue;
+            }
+            sub.codepoints(|cp| {
+                if let Some(g) = sub.glyph_index(cp) {
+                    if let Some(v) = cps.get_mut(usize::from(g.0)) {
+                        v.push(cp);
+                    }
+                }
+            });
+        }
+    }
+    let glyphs = (0..n)
+        .map(|id| {
+            let g = ttf_parser::GlyphId(id);
+            let mut codepoints = std::mem::take(&mut cps[usize::from(id)]);
+            codepoints.sort_unstable();
+            codepoints.dedup();
+            GlyphInfo {
+                id,
+                name: face
+                    .glyph_name(g)
+                    .map(str::to_string)
+                    .unwrap_or_else(|| format!("gid{id}")),
+                codepoints,
+                advance: face.glyph_hor_advance(g).unwrap_or(0),
+            }
+        })
+        .collect();
+    let t = face.tables();
+    Ok(FontInfo {
+        units_per_em: face.units_per_em(),
+        family: name_of(&face, &[name_id::TYPOGRAPHIC_FAMILY, name_id::FAMILY]),
+        style: name_of(&face, &[name_id::TYPOGRAPHIC_SUBFAMILY, name_id::SUBFAMILY]),
+        ascender: face.ascender(),
+        descender: face.descender(),
+        x_height: face.x_height(),
+        cap_height: face.capital_height(),
+        cff: t.glyf.is_none() && (t.cff.is_some() || t.cff2.is_some()),
+        glyphs,
+    })
+}
+
+/// The id of the glyph named `name` (face 0), if any.
+///
+/// Errors: the font cannot be read (`font`).
+pub fn glyph_id_by_name(data: &[u8], name: &str) -> Result<Option<u16>, CurveParseError> {
+    Ok(face(data)?.glyph_index_by_name(name).map(|g| g.0))
+}
+
+/// The id of the glyph of the code point `cp` (face 0), if any.
+///
+/// Errors: the font cannot be read (`font`).
+pub fn glyph_id_by_char(data: &[u8], ch: char) -> Result<Option<u16>, CurveParseError> {
+    Ok(face(data)?.glyph_index(ch).map(|g| g.0))
+}
+
+/// The outline of glyph `id` (face 0), in font units, exact, contour after
+/// contour; composites are decomposed. Empty for a glyph without outline
+/// (a space).
+///
+/// Errors: the font cannot be read (`font`), `id` is out of range or the
+/// outline holds a non-finite coordinate (`glyph`).
+pub fn glyph_outline_by_id(data: &[u8], id: u16) -> Result<Vec<Bezier<Rational>>, CurveParseError> {
+    let face = face(data)?;
+    if id >= face.number_of_glyphs() {
+        return Err(bad(
+            "glyph",
+            format!(
+                "glyph id {id} out of range (the font has {})",
+                face.number_of_glyphs()
+            ),
+        ));
+    }
+    let mut out = Outline {
+        pieces: Vec::new(),
+        start: None,
+        last: None,
+        error: None,
+    };
+    if face
+        .outline_glyph(ttf_parser::GlyphId(id), &mut out)
+        .is_none()
+    {
+        return Ok(Vec::new());
+    }
+    if let Some(e) = out.error {
+        return Err(e);
     }
     Ok(out.pieces)
 }

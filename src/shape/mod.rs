@@ -64,12 +64,16 @@ mod font;
 pub(crate) mod io;
 pub mod svgarc;
 mod svgdoc;
+mod winding;
 
 pub use arc::{parse_arc_input, TravelledArc};
 pub(crate) use desc::checked_offset;
 pub use desc::{ArcDesc, ShapeDesc, MAX_COORDINATE};
 #[cfg(feature = "font")]
-pub use font::{glyph_outline, units_per_em};
+pub use font::{
+    font_info, glyph_id_by_char, glyph_id_by_name, glyph_outline, glyph_outline_by_id, regularize,
+    units_per_em, FontInfo, GlyphInfo,
+};
 pub use io::{
     parse_curve, parse_curve_reported, parse_json_curve, parse_svg_path, parse_svg_path_reported,
     CurveParseError, MAX_BSPLINE_WORK, MAX_CONTROL_POINTS, MAX_NUMBER_CHARS, MAX_SEGMENTS,
@@ -77,6 +81,7 @@ pub use io::{
 };
 pub use svgarc::{format_up, ApproxElement, ApproxKind, InputApprox, ARC_TARGET_REL};
 pub use svgdoc::{parse_svg_document, parse_svg_document_reported};
+pub use winding::winding_number;
 
 /// Why a shape could not be built or read: the field and the reason.
 ///

@@ -438,6 +438,28 @@ pub(crate) fn svg_arc(
     }
 }
 
+/// A circular arc of radius `r > 0` from `p0` to `p1` (SVG's `A r r 0 large
+/// sweep p1` from `p0`; `sweep` true = increasing angle, counter-clockwise in
+/// y-up coordinates) as cubic pieces, with the certified Hausdorff bound of the
+/// pieces from the exact arc ([`ARC_TARGET_REL`]` · r` targeted). The first
+/// and last control points are `p0` and `p1` exactly. Empty when `p0 = p1`.
+///
+/// Errors: the reason (a radius too small for the chord is enlarged by SVG's
+/// rule, so callers with `p0`, `p1` on the circle get the arc itself).
+pub fn circular_arc_cubics(
+    p0: &V2<Rational>,
+    r: &Rational,
+    large: bool,
+    sweep: bool,
+    p1: &V2<Rational>,
+) -> Result<(Vec<Bezier<Rational>>, f64), String> {
+    match svg_arc(p0, r, r, &Rational::zero(), large, sweep, p1)? {
+        SvgArc::Omitted => Ok((Vec::new(), 0.0)),
+        SvgArc::Line => Err("the radius must be > 0".into()),
+        SvgArc::Cubics { pieces, bound } => Ok((pieces, bound)),
+    }
+}
+
 /// [`svg_arc`]'s centre parameterisation (F.6.5, F.6.6), or the special
 /// cases (omitted, line).
 fn svg_frame(

@@ -1,0 +1,981 @@
+//! `lncert font IN (--offset D | --stroke R) --tol T --out OUT.ufo [--glyphs SPEC]
+//! [--grid G | --grid none] [--report FILE.json|FILE.html] [--jobs N] [--force] [--json]`:
+//! every glyph of a TrueType/OpenType font offset or stroked, each proven on
+//! its own, written as a UFO (norad) with a report (`proofs/font.md`).
+//!
+//! * `--stroke R`: the outline of the region a disk of radius `R > 0` sweeps
+//!   along the glyph's contours ([`lncert::outline::trim::stroke`]).
+//! * `--offset D`: the boundary of the glyph's filled region (nonzero rule)
+//!   grown by `D > 0` or shrunk by `D < 0`: the stroke of radius `|D|`, of
+//!   which the contours outside the fill (`D > 0`) or inside it (`D < 0`) are
+//!   kept. In or out is decided exactly: the exact winding number of the
+//!   glyph's contours about a contour's first point
+//!   ([`lncert::shape::winding_number`]); the stroke's claim (a) puts every
+//!   output point at distance `≥ |D| − bound > 0` from the glyph's contours, so
+//!   a contour does not cross them and one point decides it. With `TOL ≥ |D|`
+//!   the selection is not proven.
+//! * `--glyphs SPEC`: a comma list of characters (`a`), ranges (`A-Z`),
+//!   code points (`uni0041`, `u1F600`) and names (`@period`, or `period`
+//!   when the item is not one character); default every glyph of the font
+//!   (glyphs without outline, such as the space, are written empty).
+//!   Composites are decomposed.
+//! * `--grid G` (default `1`: integer font units; a positive dyadic rational
+//!   such as `1/2`, or `none`): every control point is rounded to the grid
+//!   (`none`: to the nearest `f64`); the move of each control point is at most
+//!   `δ`, so the pieces move pointwise at most `δ` (Bernstein weights sum to
+//!   1), `δ` is charged to the bound, and claim (c) — closed, simple, disjoint
+//!   contours — is checked again on the rounded contours. The stroke is asked
+//!   for `TOL − δ` (`0.9·TOL` without grid) so that the total can meet `TOL`.
+//! * Output: cubic pieces (and lines); the stroke's exact arcs are converted to
+//!   certified cubics ([`lncert::shape::svgarc::circular_arc_cubics`]) and
+//!   their bound charged. Contours are oriented by the UFO's convention
+//!   (PostScript: outer contours counter-clockwise, holes clockwise, for
+//!   TrueType and CFF input alike; a TrueType compiler such as ufo2ft
+//!   reverses them), the outer ones found by exact nesting.
+//! * The UFO: fontinfo (units per em, family, style `"<style> offset D"`,
+//!   ascender, descender, x height, cap height), every selected glyph with its
+//!   name, code points and the input's advance width (kept as it is). Each
+//!   glyph's lib holds `org.lncert.proven` (bool), `org.lncert.bound` (the
+//!   certified bound, font units, when finite) and `org.lncert.reason` when
+//!   not proven; glyphs not proven are written with their best outline. An
+//!   existing `OUT` is refused unless `--force` (then replaced).
+//! * `--report FILE.json`: per glyph the name, id, code points, verdict
+//!   (`proven`, `not proven`, `error`, `empty`), reason, bound, pieces, time;
+//!   and the summary. `FILE.html`: a table with a picture per glyph (input
+//!   grey, output black).
+//! * `--jobs N`: rayon threads (default: all cores). A progress bar with the
+//!   glyph count and ETA is drawn on stderr when it is a terminal.
+//!
+//! Exit codes: 0 = every glyph proven (or empty), 3 = some glyph not proven or
+//! refused by the engine (still written, marked), 2 = bad input.
+
+use super::args::{bad, number};
+use super::CliError;
+use lncert::curve::{Bezier, V2};
+use lncert::outline::intersect::{intersections, IntersectOptions};
+use lncert::outline::trim::{stroke, Piece, StrokeOptions};
+use lncert::scalar::{interval_from_rational, rational_from_f64, Rational, Scalar};
+use lncert::shape::{font_info, glyph_outline_by_id, winding_number, FontInfo};
+use num_traits::{One, Signed, Zero};
+use rayon::prelude::*;
+use serde_json::json;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+/// Arguments of `lncert font`.
+#[derive(clap::Args, Debug)]
+pub struct FontArgs {
+    /// The font: TrueType or OpenType (`.ttf`, `.otf`).
+    pub input: PathBuf,
+    /// Grow (D > 0) or shrink (D < 0) every glyph's filled region by D font units.
+    #[arg(long, allow_hyphen_values = true)]
+    pub offset: Option<String>,
+    /// Stroke every glyph's contours with a disk of radius R font units.
+    #[arg(long, allow_hyphen_values = true)]
+    pub stroke: Option<String>,
+    /// The tolerance to prove per glyph (font units), rounding included.
+    #[arg(long, allow_hyphen_values = true)]
+    pub tol: String,
+    /// The UFO directory to write.
+    #[arg(long)]
+    pub out: PathBuf,
+    /// Which glyphs: chars, ranges A-Z, uniXXXX, @name (comma separated).
+    #[arg(long)]
+    pub glyphs: Option<String>,
+    /// The grid control points are rounded to (`1`, `1/2`, ... or `none`).
+    #[arg(long, default_value = "1")]
+    pub grid: String,
+    /// Write a report: `.json` or `.html`.
+    #[arg(long)]
+    pub report: Option<PathBuf>,
+    /// Threads (default: all cores).
+    #[arg(long)]
+    pub jobs: Option<usize>,
+    /// Replace an existing output directory.
+    #[arg(long)]
+    pub force: bool,
+    /// The summary as one JSON document on stdout.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// Largest font file read.
+const MAX_FONT_BYTES: u64 = super::curve_input::MAX_FONT_BYTES;
+
+/// Offset or stroke, with the exact distance.
+#[derive(Clone, Debug)]
+enum Op {
+    Offset(Rational),
+    Stroke(Rational),
+}
+
+impl Op {
+    fn radius(&self) -> Rational {
+        match self {
+            Op::Offset(d) => d.abs(),
+            Op::Stroke(r) => r.clone(),
+        }
+    }
+    fn describe(&self) -> String {
+        match self {
+            Op::Offset(d) => format!("offset {d}"),
+            Op::Stroke(r) => format!("stroke {r}"),
+        }
+    }
+}
+
+/// The verdict of one glyph.
+#[derive(Clone, Debug, PartialEq, Eq)]
+enum Verdict {
+    Proven,
+    NotProven,
+    Error,
+    Empty,
+}
+
+impl Verdict {
+    fn name(&self) -> &'static str {
+        match self {
+            Verdict::Proven => "proven",
+            Verdict::NotProven => "not proven",
+            Verdict::Error => "error",
+            Verdict::Empty => "empty",
+        }
+    }
+}
+
+/// One glyph's result.
+struct GlyphResult {
+    id: u16,
+    verdict: Verdict,
+    reason: String,
+    bound: f64,
+    /// The written contours (exact, after rounding), oriented.
+    contours: Vec<Vec<Bezier<Rational>>>,
+    /// The input's contours (for pictures).
+    input: Vec<Bezier<Rational>>,
+    ms: f64,
+}
+
+/// The settings shared by every glyph.
+struct Job {
+    op: Op,
+    tol: f64,
+    /// `Some(g)`: round to multiples of `g`; `None`: to the nearest f64.
+    grid: Option<Rational>,
+    cff: bool,
+}
+
+fn parse_grid(text: &str) -> Result<Option<Rational>, CliError> {
+    if text == "none" {
+        return Ok(None);
+    }
+    let g = number("--grid", text)?;
+    if !g.is_positive() {
+        return Err(bad("--grid", "must be > 0 (or none)"));
+    }
+    let d = g.denom().clone();
+    let two = num_bigint::BigInt::from(2);
+    let mut k = d;
+    while (&k % &two).is_zero() {
+        k /= &two;
+    }
+    if !k.is_one() {
+        return Err(bad(
+            "--grid",
+            "must be a dyadic rational (1, 1/2, 1/64, ...): its multiples are then exact floats in the UFO",
+        ));
+    }
+    Ok(Some(g))
+}
+
+/// Resolves `--glyphs` to glyph ids, in the order given, without repeats.
+fn select(spec: Option<&str>, info: &FontInfo, data: &[u8]) -> Result<Vec<u16>, CliError> {
+    let Some(spec) = spec else {
+        return Ok(info.glyphs.iter().map(|g| g.id).collect());
+    };
+    let by_cp = |cp: u32, item: &str| -> Result<u16, CliError> {
+        let ch = char::from_u32(cp)
+            .ok_or_else(|| bad("--glyphs", format!("{item:?}: not a Unicode scalar value")))?;
+        lncert::shape::glyph_id_by_char(data, ch)
+            .map_err(|e| bad("IN", e))?
+            .ok_or_else(|| {
+                bad(
+                    "--glyphs",
+                    format!("{item:?}: the font has no glyph for U+{cp:04X}"),
+                )
+            })
+    };
+    let by_name = |name: &str, item: &str| -> Result<u16, CliError> {
+        info.glyphs
+            .iter()
+            .find(|g| g.name == name)
+            .map(|g| g.id)
+            .ok_or_else(|| {
+                bad(
+                    "--glyphs",
+                    format!("{item:?}: the font has no glyph named {name:?}"),
+                )
+            })
+    };
+    let mut out: Vec<u16> = Vec::new();
+    for item in spec.split(',') {
+        if item.is_empty() {
+            return Err(bad(
+                "--glyphs",
+                "an empty item (two commas, or a comma at an end)",
+            ));
+        }
+        let chars: Vec<char> = item.chars().collect();
+        let ids: Vec<u16> = if let Some(name) = item.strip_prefix('@').filter(|n| !n.is_empty()) {
+            vec![by_name(name, item)?]
+        } else if chars.len() == 1 {
+            vec![by_cp(u32::from(chars[0]), item)?]
+        } else if chars.len() == 3 && chars[1] == '-' {
+            let (a, b) = (u32::from(chars[0]), u32::from(chars[2]));
+            if a > b {
+                return Err(bad("--glyphs", format!("{item:?}: an empty range")));
+            }
+            if b - a > 0x10000 {
+                return Err(bad(
+                    "--glyphs",
+                    format!("{item:?}: a range of more than 65536 code points"),
+                ));
+            }
+            (a..=b)
+                .filter(|&cp| char::from_u32(cp).is_some())
+                .map(|cp| by_cp(cp, item))
+                .collect::<Result<_, _>>()?
+        } else if let Some(hex) = item
+            .strip_prefix("uni")
+            .or_else(|| item.strip_prefix('u'))
+            .filter(|h| (4..=6).contains(&h.len()) && h.chars().all(|c| c.is_ascii_hexdigit()))
+        {
+            let cp = u32::from_str_radix(hex, 16).map_err(|e| bad("--glyphs", e))?;
+            vec![by_cp(cp, item)?]
+        } else {
+            vec![by_name(item, item)?]
+        };
+        for id in ids {
+            if !out.contains(&id) {
+                out.push(id);
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// `½∫(x dy − y dx)`, exact.
+fn area(c: &[Bezier<Rational>]) -> Rational {
+    let mut s = <Rational as Zero>::zero();
+    for b in c {
+        let (x, y) = b.power_coords();
+        let i = x.mul(&y.derivative()).sub(&y.mul(&x.derivative()));
+        for (k, a) in i.coeffs().iter().enumerate() {
+            s += a / Rational::from_integer((k as i64 + 1).into());
+        }
+    }
+    s / Rational::from_integer(2.into())
+}
+
+fn round_to(x: &Rational, grid: &Option<Rational>) -> Rational {
+    match grid {
+        Some(g) => (x / g).round() * g,
+        None => rational_from_f64(x.approx()).unwrap_or_else(|| x.clone()),
+    }
+}
+
+/// Upper bound of `√v`.
+fn sqrt_up(v: &Rational) -> f64 {
+    let s = interval_from_rational(v).sqrt();
+    if s.is_empty() {
+        f64::INFINITY
+    } else {
+        s.sup()
+    }
+}
+
+/// Claim (c) on Bézier contours: each closed, no crossing, and pieces meet only
+/// at the joints of consecutive pieces (certified, [`intersections`]).
+fn simple(contours: &[Vec<Bezier<Rational>>]) -> Result<(), String> {
+    let mut flat = Vec::new();
+    let mut at = Vec::new();
+    for (ci, c) in contours.iter().enumerate() {
+        if c.first().map(|b| &b.points()[0]) != c.last().and_then(|b| b.points().last()) {
+            return Err(format!("contour {ci} is not closed"));
+        }
+        for (k, b) in c.iter().enumerate() {
+            flat.push(b.clone());
+            at.push((ci, k));
+        }
+    }
+    let r = intersections(&flat, &IntersectOptions::default());
+    if !r.complete {
+        return Err(format!(
+            "the rounded contours' simplicity is undecided ({} regions)",
+            r.undecided.len()
+        ));
+    }
+    if !r.crossings.is_empty() {
+        return Err(format!(
+            "the rounded contours cross ({} crossings)",
+            r.crossings.len()
+        ));
+    }
+    for j in &r.joints {
+        let ((ca, ka), (cb, kb)) = (at[j.pieces.0], at[j.pieces.1]);
+        let n = contours[ca].len();
+        let consecutive = ca == cb && ((ka + 1) % n == kb || (kb + 1) % n == ka);
+        if !consecutive {
+            return Err(format!(
+                "contour {ca} piece {ka} and contour {cb} piece {kb} touch but are not consecutive"
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The whole proof of one glyph (see the module docs).
+fn process(data: &[u8], id: u16, job: &Job) -> GlyphResult {
+    let t0 = std::time::Instant::now();
+    let mut g = GlyphResult {
+        id,
+        verdict: Verdict::Error,
+        reason: String::new(),
+        bound: f64::INFINITY,
+        contours: Vec::new(),
+        input: Vec::new(),
+        ms: 0.0,
+    };
+    let res = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| prove(data, job, &mut g)));
+    if res.is_err() {
+        g.verdict = Verdict::Error;
+        g.reason = "internal error (a panic) while proving this glyph".into();
+    }
+    g.ms = t0.elapsed().as_secs_f64() * 1e3;
+    g
+}
+
+fn prove(data: &[u8], job: &Job, g: &mut GlyphResult) {
+    let pieces = match glyph_outline_by_id(data, g.id) {
+        Ok(p) => p,
+        Err(e) => {
+            g.reason = e.to_string();
+            return;
+        }
+    };
+    g.input = pieces.clone();
+    if pieces.is_empty() {
+        g.verdict = Verdict::Empty;
+        g.bound = 0.0;
+        return;
+    }
+    let r = job.op.radius();
+    let delta_grid = job
+        .grid
+        .as_ref()
+        .map(lncert::approx::fit::rounding_move)
+        .unwrap_or(0.0);
+    let mut reasons: Vec<String> = Vec::new();
+    let stroke_tol = if job.grid.is_some() {
+        if delta_grid < job.tol {
+            0.9 * (job.tol - delta_grid)
+        } else {
+            reasons.push(format!(
+                "the grid's rounding move {delta_grid:.4} is not below TOL {}",
+                job.tol
+            ));
+            job.tol / 2.0
+        }
+    } else {
+        0.9 * job.tol
+    };
+    let mut opts = StrokeOptions::new(r.clone(), stroke_tol);
+    opts.output = lncert::approx::Output::Cubic;
+    let s = match stroke(&pieces, &opts) {
+        Ok(s) => s,
+        Err(e) => {
+            g.reason = format!("the stroke engine refused the glyph: {e}");
+            return;
+        }
+    };
+    for (name, c) in [("a", &s.a), ("b", &s.b), ("c", &s.c)] {
+        if !c.proven {
+            reasons.push(format!("stroke claim ({name}) not proven: {}", c.note));
+        }
+    }
+    let stroke_bound = s.a.bound.max(s.b.bound);
+    // the selection of --offset
+    let mut kept = Vec::new();
+    for (k, c) in s.contours.iter().enumerate() {
+        let keep = match &job.op {
+            Op::Stroke(_) => true,
+            Op::Offset(d) => {
+                let p = c.pieces[0].start();
+                match winding_number(&pieces, p) {
+                    Some(w) => (w != 0) == d.is_negative(),
+                    None => {
+                        reasons.push(format!(
+                            "contour {k}: the winding number at its first point is undecided (kept)"
+                        ));
+                        true
+                    }
+                }
+            }
+        };
+        if keep {
+            kept.push(c);
+        }
+    }
+    if matches!(job.op, Op::Offset(_)) && !(stroke_bound < r.approx() && s.a.proven) {
+        reasons.push(format!(
+            "the in/out selection is not proven: it needs claim (a) with a bound below |D| = {r}"
+        ));
+    }
+    // arcs to cubics
+    let zero = <Rational as Zero>::zero();
+    let mut arc_bound: f64 = 0.0;
+    let mut contours: Vec<Vec<Bezier<Rational>>> = Vec::new();
+    for c in kept {
+        let mut out = Vec::new();
+        for p in &c.pieces {
+            match p {
+                Piece::Bezier(b) => out.push(b.clone()),
+                Piece::Arc(a) => {
+                    let (u, v) = (a.from.sub(&a.center), a.to.sub(&a.center));
+                    let cross = u.cross(&v);
+                    let large = if a.clockwise {
+                        cross > zero
+                    } else {
+                        cross < zero
+                    };
+                    match lncert::shape::svgarc::circular_arc_cubics(
+                        &a.from,
+                        &a.radius,
+                        large,
+                        !a.clockwise,
+                        &a.to,
+                    ) {
+                        Ok((cubics, bound)) => {
+                            arc_bound = arc_bound.max(bound);
+                            out.extend(cubics);
+                        }
+                        Err(e) => {
+                            reasons.push(format!("an arc could not be converted: {e}"));
+                            out.push(Bezier::new(vec![a.from.clone(), a.to.clone()]));
+                            arc_bound = f64::INFINITY;
+                        }
+                    }
+                }
+            }
+        }
+        contours.push(out);
+    }
+    // rounding
+    let mut move2 = <Rational as Zero>::zero();
+    let mut rounded: Vec<Vec<Bezier<Rational>>> = Vec::new();
+    for c in &contours {
+        let mut out = Vec::new();
+        for b in c {
+            let pts: Vec<V2<Rational>> = b
+                .points()
+                .iter()
+                .map(|p| {
+                    let q = V2::new(round_to(&p.x, &job.grid), round_to(&p.y, &job.grid));
+                    let d = q.sub(p);
+                    let m = d.dot(&d);
+                    if m > move2 {
+                        move2 = m;
+                    }
+                    q
+                })
+                .collect();
+            if b.degree() > 3 {
+                reasons.push(format!("a degree-{} piece has no UFO form", b.degree()));
+            }
+            if pts.iter().all(|p| *p == pts[0]) {
+                continue; // collapsed by the rounding
+            }
+            out.push(Bezier::new(pts));
+        }
+        if !out.is_empty() {
+            rounded.push(out);
+        }
+    }
+    let delta = sqrt_up(&move2);
+    let bound = stroke_bound + arc_bound + delta;
+    g.bound = bound;
+    // (a NaN bound is not proven either)
+    if bound.is_nan() || bound > job.tol {
+        reasons.push(format!(
+            "the bound {bound:.4} (stroke {stroke_bound:.4} + arcs {arc_bound:.2e} + rounding {delta:.4}) exceeds TOL {}",
+            job.tol
+        ));
+    }
+    let simple_ok = match simple(&rounded) {
+        Ok(()) => true,
+        Err(e) => {
+            reasons.push(e);
+            false
+        }
+    };
+    // orientation by exact nesting (meaningful when the contours are simple and disjoint)
+    let n = rounded.len();
+    let mut oriented = Vec::with_capacity(n);
+    for i in 0..n {
+        let p = rounded[i][0].points()[0].clone();
+        let mut depth = 0;
+        let mut decided = true;
+        for (j, other) in rounded.iter().enumerate() {
+            if j == i {
+                continue;
+            }
+            match winding_number(other, &p) {
+                Some(0) => {}
+                Some(_) => depth += 1,
+                None => decided = false,
+            }
+        }
+        let a = area(&rounded[i]);
+        if !decided || a.is_zero() {
+            if simple_ok {
+                reasons.push(format!("contour {i}: orientation undecided"));
+            }
+            oriented.push(rounded[i].clone());
+            continue;
+        }
+        let outer = depth % 2 == 0;
+        // the UFO convention: outer counter-clockwise (positive area)
+        let want_positive = outer;
+        if a.is_positive() == want_positive {
+            oriented.push(rounded[i].clone());
+        } else {
+            oriented.push(
+                rounded[i]
+                    .iter()
+                    .rev()
+                    .map(|b| {
+                        let mut p = b.points().to_vec();
+                        p.reverse();
+                        Bezier::new(p)
+                    })
+                    .collect(),
+            );
+        }
+    }
+    g.contours = oriented;
+    if reasons.is_empty() {
+        g.verdict = Verdict::Proven;
+    } else {
+        g.verdict = Verdict::NotProven;
+        reasons.truncate(6);
+        g.reason = reasons.join("; ");
+    }
+}
+
+/// The UFO contour of exact pieces (every coordinate an exact f64 after the rounding).
+fn ufo_contour(c: &[Bezier<Rational>]) -> norad::Contour {
+    use norad::{ContourPoint, PointType};
+    let pt = |p: &V2<Rational>, t: PointType| {
+        ContourPoint::new(p.x.approx(), p.y.approx(), t, false, None, None)
+    };
+    let mut pts = Vec::new();
+    for b in c {
+        let p = b.points();
+        match b.degree() {
+            1 => pts.push(pt(&p[1], PointType::Line)),
+            2 => {
+                pts.push(pt(&p[1], PointType::OffCurve));
+                pts.push(pt(&p[2], PointType::QCurve));
+            }
+            3 => {
+                pts.push(pt(&p[1], PointType::OffCurve));
+                pts.push(pt(&p[2], PointType::OffCurve));
+                pts.push(pt(&p[3], PointType::Curve));
+            }
+            _ => {
+                // no UFO form (reported): the chords of the control polygon
+                for q in &p[1..] {
+                    pts.push(pt(q, PointType::Line));
+                }
+            }
+        }
+    }
+    norad::Contour::new(pts, None)
+}
+
+fn write_ufo(
+    out: &Path,
+    info: &FontInfo,
+    job: &Job,
+    results: &[GlyphResult],
+) -> Result<(), CliError> {
+    let mut font = norad::Font::new();
+    let fi = &mut font.font_info;
+    fi.units_per_em = norad::fontinfo::NonNegativeIntegerOrFloat::new(f64::from(info.units_per_em));
+    fi.family_name = Some(info.family.clone().unwrap_or_else(|| "Untitled".into()));
+    fi.style_name = Some(format!(
+        "{} {}",
+        info.style.clone().unwrap_or_else(|| "Regular".into()),
+        job.op.describe()
+    ));
+    fi.ascender = Some(f64::from(info.ascender));
+    fi.descender = Some(f64::from(info.descender));
+    fi.x_height = info.x_height.map(f64::from);
+    fi.cap_height = info.cap_height.map(f64::from);
+    let mut used = std::collections::HashSet::new();
+    for r in results {
+        let gi = &info.glyphs[usize::from(r.id)];
+        let mut name = gi.name.clone();
+        if norad::Name::new(&name).is_err() || !used.insert(name.clone()) {
+            name = format!("gid{}", r.id);
+            used.insert(name.clone());
+        }
+        let mut glyph = norad::Glyph::new(&name);
+        glyph.width = f64::from(gi.advance);
+        glyph.codepoints = gi
+            .codepoints
+            .iter()
+            .filter_map(|&c| char::from_u32(c))
+            .collect();
+        glyph.contours = r.contours.iter().map(|c| ufo_contour(c)).collect();
+        let proven = matches!(r.verdict, Verdict::Proven | Verdict::Empty);
+        glyph
+            .lib
+            .insert("org.lncert.proven".into(), plist::Value::Boolean(proven));
+        if r.bound.is_finite() {
+            glyph
+                .lib
+                .insert("org.lncert.bound".into(), plist::Value::Real(r.bound));
+        }
+        if !proven {
+            glyph.lib.insert(
+                "org.lncert.reason".into(),
+                plist::Value::String(r.reason.clone()),
+            );
+        }
+        font.default_layer_mut().insert_glyph(glyph);
+    }
+    font.save(out)
+        .map_err(|e| bad("--out", format!("{}: {e}", out.display())))
+}
+
+fn report_json(
+    a: &FontArgs,
+    info: &FontInfo,
+    results: &[GlyphResult],
+    secs: f64,
+) -> serde_json::Value {
+    let count = |v: Verdict| results.iter().filter(|r| r.verdict == v).count();
+    json!({
+        "input": a.input.display().to_string(),
+        "operation": if a.offset.is_some() { "offset" } else { "stroke" },
+        "distance": a.offset.clone().or(a.stroke.clone()),
+        "tol": a.tol,
+        "grid": a.grid,
+        "glyphs": results.iter().map(|r| {
+            let gi = &info.glyphs[usize::from(r.id)];
+            json!({
+                "name": gi.name,
+                "id": r.id,
+                "codepoints": gi.codepoints.iter().map(|c| format!("U+{c:04X}")).collect::<Vec<_>>(),
+                "verdict": r.verdict.name(),
+                "reason": r.reason,
+                "bound": if r.bound.is_finite() { json!(r.bound) } else { json!(null) },
+                "contours": r.contours.len(),
+                "pieces": r.contours.iter().map(Vec::len).sum::<usize>(),
+                "ms": (r.ms * 10.0).round() / 10.0,
+            })
+        }).collect::<Vec<_>>(),
+        "summary": {
+            "glyphs": results.len(),
+            "proven": count(Verdict::Proven),
+            "not_proven": count(Verdict::NotProven),
+            "errors": count(Verdict::Error),
+            "empty": count(Verdict::Empty),
+            "seconds": secs,
+            "glyphs_per_second": if secs > 0.0 { results.len() as f64 / secs } else { 0.0 },
+        },
+    })
+}
+
+fn svg_path(c: &[Vec<Bezier<Rational>>]) -> String {
+    let mut d = String::new();
+    for k in c {
+        let Some(first) = k.first() else { continue };
+        let p = &first.points()[0];
+        let _ = write!(d, "M{:.1} {:.1}", p.x.approx(), p.y.approx());
+        for b in k {
+            let cmd = match b.degree() {
+                1 => "L",
+                2 => "Q",
+                3 => "C",
+                _ => "L",
+            };
+            d.push_str(cmd);
+            for q in &b.points()[1..] {
+                let _ = write!(d, "{:.1} {:.1} ", q.x.approx(), q.y.approx());
+            }
+        }
+        d.push('Z');
+    }
+    d
+}
+
+fn report_html(doc: &serde_json::Value, info: &FontInfo, results: &[GlyphResult]) -> String {
+    let esc = |s: &str| {
+        s.replace('&', "&amp;")
+            .replace('<', "&lt;")
+            .replace('>', "&gt;")
+            .replace('"', "&quot;")
+    };
+    let s = &doc["summary"];
+    let mut h = String::new();
+    let _ = write!(
+        h,
+        "<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>lncert font report</title>\
+         <style>body{{font-family:sans-serif}}td,th{{border:1px solid #ccc;padding:2px 6px}}\
+         table{{border-collapse:collapse}}.no{{background:#fdd}}</style></head><body>\
+         <h1>lncert font: {}</h1><p>{} {}, TOL {}, grid {}: {} glyphs, {} proven, {} not proven, \
+         {} errors, {} empty, {:.1} s</p><table><tr><th>glyph</th><th>code points</th><th>verdict</th>\
+         <th>bound</th><th>pieces</th><th>ms</th><th>picture</th><th>reason</th></tr>",
+        esc(&doc["input"].to_string()),
+        doc["operation"].as_str().unwrap_or_default(),
+        esc(&doc["distance"].to_string()),
+        esc(&doc["tol"].to_string()),
+        esc(&doc["grid"].to_string()),
+        s["glyphs"],
+        s["proven"],
+        s["not_proven"],
+        s["errors"],
+        s["empty"],
+        s["seconds"].as_f64().unwrap_or(0.0),
+    );
+    let upm = f64::from(info.units_per_em.max(1));
+    for (r, j) in results
+        .iter()
+        .zip(doc["glyphs"].as_array().into_iter().flatten())
+    {
+        let input = svg_path(std::slice::from_ref(&r.input));
+        let output = svg_path(&r.contours);
+        let (lo, hi) = (-0.5 * upm, 1.5 * upm);
+        let _ = write!(
+            h,
+            "<tr class=\"{}\"><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td>\
+             <td><svg width=\"80\" height=\"80\" viewBox=\"{lo} {lo} {} {}\"><g transform=\"translate(0 {}) scale(1 -1)\">\
+             <path d=\"{input}\" fill=\"#ccc\"/><path d=\"{output}\" fill=\"none\" stroke=\"#000\" stroke-width=\"{}\"/>\
+             </g></svg></td><td>{}</td></tr>",
+            if r.verdict == Verdict::NotProven || r.verdict == Verdict::Error { "no" } else { "" },
+            esc(j["name"].as_str().unwrap_or_default()),
+            esc(&j["codepoints"].to_string()),
+            r.verdict.name(),
+            if r.bound.is_finite() { format!("{:.3}", r.bound) } else { "–".into() },
+            j["pieces"],
+            j["ms"],
+            hi - lo,
+            hi - lo,
+            upm,
+            upm / 100.0,
+            esc(&r.reason),
+        );
+    }
+    h.push_str("</table></body></html>\n");
+    h
+}
+
+/// Runs `lncert font`.
+pub fn run(a: &FontArgs) -> Result<i32, CliError> {
+    let op = match (&a.offset, &a.stroke) {
+        (Some(d), None) => {
+            let d = number("--offset", d)?;
+            if d.is_zero() {
+                return Err(bad("--offset", "must not be 0"));
+            }
+            Op::Offset(d)
+        }
+        (None, Some(r)) => {
+            let r = number("--stroke", r)?;
+            if !r.is_positive() {
+                return Err(bad("--stroke", "the pen radius must be > 0"));
+            }
+            Op::Stroke(r)
+        }
+        _ => {
+            return Err(bad(
+                "--offset",
+                "give exactly one of --offset D and --stroke R",
+            ))
+        }
+    };
+    let tol_q = number("--tol", &a.tol)?;
+    let tol = interval_from_rational(&tol_q).inf();
+    if !(tol.is_finite() && tol > 0.0) {
+        return Err(bad("--tol", "must be a positive number"));
+    }
+    let grid = parse_grid(&a.grid)?;
+    let jobs = match a.jobs {
+        Some(0) => return Err(bad("--jobs", "must be at least 1")),
+        Some(n) if n > 1024 => return Err(bad("--jobs", "at most 1024")),
+        j => j,
+    };
+    // output paths before any work
+    if a.out.as_os_str().is_empty() {
+        return Err(bad("--out", "empty path"));
+    }
+    if a.out.exists() && !a.force {
+        return Err(bad(
+            "--out",
+            format!("{} exists (give --force to replace it)", a.out.display()),
+        ));
+    }
+    if a.out.exists() && !a.out.is_dir() {
+        return Err(bad(
+            "--out",
+            format!("{} is a file, not a UFO directory", a.out.display()),
+        ));
+    }
+    if let Some(parent) = a.out.parent().filter(|p| !p.as_os_str().is_empty()) {
+        if !parent.is_dir() {
+            return Err(bad(
+                "--out",
+                format!("the directory {} does not exist", parent.display()),
+            ));
+        }
+    }
+    let html = match &a.report {
+        Some(p) => {
+            let ext = p.extension().and_then(|e| e.to_str()).unwrap_or_default();
+            let html = match ext {
+                "json" => false,
+                "html" | "htm" => true,
+                _ => return Err(bad("--report", "must end in .json or .html")),
+            };
+            super::args::output_file("--report", p)?;
+            html
+        }
+        None => false,
+    };
+    // the font
+    let ext = a
+        .input
+        .extension()
+        .and_then(|e| e.to_str())
+        .unwrap_or_default()
+        .to_ascii_lowercase();
+    if ext == "ufo" || a.input.is_dir() {
+        return Err(bad(
+            "IN",
+            "UFO input is not supported yet: give a .ttf or .otf font",
+        ));
+    }
+    let meta = std::fs::metadata(&a.input)
+        .map_err(|e| bad("IN", format!("{}: {e}", a.input.display())))?;
+    if meta.len() > MAX_FONT_BYTES {
+        return Err(bad(
+            "IN",
+            format!("{}: font file too large", a.input.display()),
+        ));
+    }
+    let data =
+        std::fs::read(&a.input).map_err(|e| bad("IN", format!("{}: {e}", a.input.display())))?;
+    let info = font_info(&data).map_err(|e| bad("IN", e))?;
+    let ids = select(a.glyphs.as_deref(), &info, &data)?;
+    let job = Job {
+        op,
+        tol,
+        grid,
+        cff: info.cff,
+    };
+    // the work
+    let t0 = std::time::Instant::now();
+    let mut builder = rayon::ThreadPoolBuilder::new();
+    if let Some(n) = jobs {
+        builder = builder.num_threads(n);
+    }
+    let pool = builder.build().map_err(|e| bad("--jobs", e))?;
+    let bar = progress_bar(ids.len());
+    let results: Vec<GlyphResult> = pool.install(|| {
+        ids.par_iter()
+            .map(|&id| {
+                let r = process(&data, id, &job);
+                if let Some(b) = &bar {
+                    b.inc(1);
+                }
+                r
+            })
+            .collect()
+    });
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    let secs = t0.elapsed().as_secs_f64();
+    if a.out.exists() && a.force {
+        std::fs::remove_dir_all(&a.out)
+            .map_err(|e| bad("--out", format!("{}: {e}", a.out.display())))?;
+    }
+    write_ufo(&a.out, &info, &job, &results)?;
+    let doc = report_json(a, &info, &results, secs);
+    if let Some(p) = &a.report {
+        let text = if html {
+            report_html(&doc, &info, &results)
+        } else {
+            format!("{doc:#}\n")
+        };
+        std::fs::write(p, text).map_err(|e| bad("--report", format!("{}: {e}", p.display())))?;
+    }
+    let s = &doc["summary"];
+    let all = s["proven"].as_u64().unwrap_or(0) + s["empty"].as_u64().unwrap_or(0);
+    let code = if all == results.len() as u64 {
+        super::EXIT_OK
+    } else {
+        super::EXIT_UNDECIDED
+    };
+    if a.json {
+        super::print_out(&format!(
+            "{}\n",
+            json!({"summary": s, "out": a.out.display().to_string(), "exit_code": code})
+        ));
+    } else {
+        let mut out = String::new();
+        for r in &results {
+            if matches!(r.verdict, Verdict::NotProven | Verdict::Error) {
+                let _ = writeln!(
+                    out,
+                    "  {} {}: {}",
+                    info.glyphs[usize::from(r.id)].name,
+                    r.verdict.name(),
+                    r.reason
+                );
+            }
+        }
+        let _ = writeln!(
+            out,
+            "font: {} glyphs ({}), {} proven, {} not proven, {} errors, {} empty, {:.1} s ({:.1} glyphs/s); wrote {}",
+            results.len(),
+            job.op.describe(),
+            s["proven"],
+            s["not_proven"],
+            s["errors"],
+            s["empty"],
+            secs,
+            s["glyphs_per_second"].as_f64().unwrap_or(0.0),
+            a.out.display()
+        );
+        super::print_out(&out);
+    }
+    Ok(code)
+}
+
+fn progress_bar(n: usize) -> Option<indicatif::ProgressBar> {
+    use std::io::IsTerminal;
+    if !std::io::stderr().is_terminal() {
+        return None;
+    }
+    let b = indicatif::ProgressBar::new(n as u64);
+    if let Ok(style) = indicatif::ProgressStyle::with_template(
+        "lncert font {bar:30} {pos}/{len} glyphs, {elapsed} elapsed, ETA {eta}",
+    ) {
+        b.set_style(style);
+    }
+    Some(b)
+}
