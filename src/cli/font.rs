@@ -163,7 +163,6 @@ struct Job {
     tol: f64,
     /// `Some(g)`: round to multiples of `g`; `None`: to the nearest f64.
     grid: Option<Rational>,
-    cff: bool,
 }
 
 fn parse_grid(text: &str) -> Result<Option<Rational>, CliError> {
@@ -880,12 +879,7 @@ pub fn run(a: &FontArgs) -> Result<i32, CliError> {
         std::fs::read(&a.input).map_err(|e| bad("IN", format!("{}: {e}", a.input.display())))?;
     let info = font_info(&data).map_err(|e| bad("IN", e))?;
     let ids = select(a.glyphs.as_deref(), &info, &data)?;
-    let job = Job {
-        op,
-        tol,
-        grid,
-        cff: info.cff,
-    };
+    let job = Job { op, tol, grid };
     // the work
     let t0 = std::time::Instant::now();
     let mut builder = rayon::ThreadPoolBuilder::new();

@@ -85,29 +85,67 @@ fn add(a: &[Interval], b: &[Interval]) -> Vec<Interval> {
     a.iter().zip(b).map(|(x, y)| *x + *y).collect()
 }
 
-/// An enclosure of `C(n, k)` (outward rounded: exact while it fits in
-/// `f64`'s 53 bits, still an enclosure for the high degrees where it does not).
+/// Rows of Pascal's triangle held exactly in `f64` (every entry below 2⁵³).
+const EXACT_ROWS: usize = 56;
+
+/// `C(n, k)` for `n < EXACT_ROWS`, exact `f64`s (sums of exact integers below
+/// 2⁵³ are exact), computed once.
+fn pascal() -> &'static [Vec<f64>] {
+    static ROWS: std::sync::OnceLock<Vec<Vec<f64>>> = std::sync::OnceLock::new();
+    ROWS.get_or_init(|| {
+        let mut rows: Vec<Vec<f64>> = vec![vec![1.0]];
+        for n in 1..EXACT_ROWS {
+            let prev = &rows[n - 1];
+            let row = (0..=n)
+                .map(|k| {
+                    let a = if k > 0 { prev[k - 1] } else { 0.0 };
+                    let b = if k < n { prev[k] } else { 0.0 };
+                    a + b
+                })
+                .collect();
+            rows.push(row);
+        }
+        rows
+    })
+}
+
+/// An enclosure of `C(n, k)`: exact from the table below [`EXACT_ROWS`], an
+/// outward rounded product beyond (still an enclosure at any degree).
 fn binom(n: usize, k: usize) -> Interval {
+    if n < EXACT_ROWS {
+        return point(pascal()[n][k]);
+    }
     (0..k).fold(point(1.0), |acc, i| {
         acc * point((n - i) as f64) / point((i + 1) as f64)
     })
 }
 
-/// The Bernstein coefficients of a product (interval arithmetic, outward).
+/// The Bernstein coefficients of a product (interval arithmetic, outward):
+/// in the scaled basis `C(n, i)·a_i` a product is a convolution, so
+/// `c_k = Σ C(m, i) C(n, j) a_i b_j / C(m + n, k)` with one division per
+/// coefficient.
 fn bprod(a: &[Interval], b: &[Interval]) -> Vec<Interval> {
     if a.is_empty() || b.is_empty() {
         return Vec::new();
     }
     let (m, n) = (a.len() - 1, b.len() - 1);
+    let sa: Vec<Interval> = a
+        .iter()
+        .enumerate()
+        .map(|(i, x)| binom(m, i) * *x)
+        .collect();
+    let sb: Vec<Interval> = b
+        .iter()
+        .enumerate()
+        .map(|(j, x)| binom(n, j) * *x)
+        .collect();
     (0..=m + n)
         .map(|k| {
             let mut s = point(0.0);
             for i in k.saturating_sub(n)..=k.min(m) {
-                let j = k - i;
-                let w = binom(m, i) * binom(n, j) / binom(m + n, k);
-                s = s + w * a[i] * b[j];
+                s = s + sa[i] * sb[k - i];
             }
-            s
+            s / binom(m + n, k)
         })
         .collect()
 }
@@ -721,6 +759,22 @@ mod tests {
         // the inner side ends in the concave corner: its end is charged
         let inner = inp.prove_interval(0, &q("1"), 0.0, 1.0, 2.0, 256);
         assert!(matches!(inner, Some(l) if l > 0.0), "{inner:?}");
+    }
+
+    #[test]
+    fn the_binomial_table_is_exact() {
+        for n in 0..EXACT_ROWS {
+            for k in 0..=n {
+                let exact = crate::poly::binomial_big(n, k);
+                let b = binom(n, k);
+                assert_eq!(b.inf(), b.sup());
+                assert_eq!(
+                    format!("{}", b.inf() as u64),
+                    exact.to_string(),
+                    "C({n}, {k})"
+                );
+            }
+        }
     }
 
     #[test]

@@ -1308,25 +1308,65 @@ pub(crate) fn outside(curve: &[Bezier<Rational>], w: &V2<Rational>, form: &Form)
 // ---------------------------------------------------------------------------
 // sub-pieces and their parts
 
-/// A part of a sub-piece: its hull points and how to split it.
+/// A part of a sub-piece: boxes enclosing its hull points and how to split
+/// it. A Bézier part is held in interval form: its control points are
+/// enclosures of the exact ones (outward rounded de Casteljau halves), so
+/// every statement proven about the boxes' hull holds for the exact part.
 #[derive(Clone, Debug)]
 #[allow(clippy::large_enum_variant)]
 enum Part {
-    Bez(Bezier<Rational>),
+    Bez(Bezier<Interval>),
     Arc(Arc),
 }
 
+fn iv_point(p: &V2<Rational>) -> V2<Interval> {
+    p.map(interval_from_rational)
+}
+
+/// An upper bound of `|p − w|` over the box `p`.
+fn box_dist_hi(p: &V2<Interval>, w: &V2<Interval>) -> f64 {
+    let (dx, dy) = (p.x - w.x, p.y - w.y);
+    let d = (dx * dx + dy * dy).sqrt();
+    if d.is_empty() {
+        f64::INFINITY
+    } else {
+        d.sup()
+    }
+}
+
+/// The halves of an interval Bézier at `t = 1/2` by de Casteljau in the
+/// convex form `(p + q)/2` (exact scaling by a power of two: the boxes' widths
+/// average instead of growing, as they would with `p + t(q − p)`).
+fn halves_iv(b: &Bezier<Interval>) -> (Bezier<Interval>, Bezier<Interval>) {
+    let half = Interval::try_from((0.5, 0.5)).unwrap_or(Interval::ENTIRE);
+    let mut p = b.points().to_vec();
+    let n = p.len();
+    let mut left = Vec::with_capacity(n);
+    let mut right = Vec::with_capacity(n);
+    left.push(p[0].clone());
+    right.push(p[n - 1].clone());
+    for r in 1..n {
+        for i in 0..n - r {
+            p[i] = V2::new((p[i].x + p[i + 1].x) * half, (p[i].y + p[i + 1].y) * half);
+        }
+        left.push(p[0].clone());
+        right.push(p[n - 1 - r].clone());
+    }
+    right.reverse();
+    (Bezier::new(left), Bezier::new(right))
+}
+
 impl Part {
-    fn hull(&self) -> Option<Vec<V2<Rational>>> {
+    fn hull(&self) -> Option<Vec<V2<Interval>>> {
         match self {
             Part::Bez(b) => Some(b.points().to_vec()),
-            Part::Arc(a) => a.hull().map(|h| h.to_vec()),
+            Part::Arc(a) => a.hull().map(|h| h.iter().map(iv_point).collect()),
         }
     }
     fn halves(&self) -> Option<(Part, Part)> {
         match self {
             Part::Bez(b) => {
-                let (l, r) = b.split(&Rational::new(1.into(), 2.into()));
+                let (l, r) = halves_iv(b);
                 Some((Part::Bez(l), Part::Bez(r)))
             }
             Part::Arc(a) => {
@@ -1340,7 +1380,7 @@ impl Part {
     fn mid_right_normal(&self) -> ((f64, f64), (f64, f64)) {
         match self {
             Part::Bez(b) => {
-                let bf = b.map(Scalar::approx);
+                let bf = b.map(|i| i.mid());
                 let p = bf.eval_fast(0.5);
                 let h = bf.hodograph();
                 let mut d = h.eval_fast(0.5);
@@ -1383,14 +1423,15 @@ impl Part {
     }
     fn initial(p: &Piece) -> Option<Vec<Part>> {
         match p {
-            Piece::Bezier(b) => Some(vec![Part::Bez(b.clone())]),
+            Piece::Bezier(b) => Some(vec![Part::Bez(b.map(interval_from_rational))]),
             Piece::Arc(a) => Some(a.minor_parts()?.into_iter().map(Part::Arc).collect()),
         }
     }
 }
 
-fn hull_radius_hi(h: &[V2<Rational>], w: &V2<Rational>) -> f64 {
-    h.iter().map(|p| dist_hi(p, w)).fold(0.0, f64::max)
+fn hull_radius_hi(h: &[V2<Interval>], w: &V2<Rational>) -> f64 {
+    let w = iv_point(w);
+    h.iter().map(|p| box_dist_hi(p, &w)).fold(0.0, f64::max)
 }
 
 /// Kept test: every point of the piece is within the returned bound of a
@@ -1498,8 +1539,19 @@ fn prove_removed(
     if !shrink.is_positive() {
         return None;
     }
-    let re2 = &form.d * &shrink * &shrink;
-    let l2 = lambda * lambda;
+    let re2 = interval_from_rational(&(&form.d * &shrink * &shrink)).inf();
+    let l2 = interval_from_rational(&(lambda * lambda)).inf();
+    let near: Vec<V2<Interval>> = near.iter().map(iv_point).collect();
+    let fa = [&form.a, &form.b, &form.c].map(interval_from_rational);
+    let two = Interval::try_from((2.0, 2.0)).ok()?;
+    let value_hi = |z: &V2<Interval>| {
+        let v = fa[0] * z.x * z.x + two * fa[1] * z.x * z.y + fa[2] * z.y * z.y;
+        if v.is_empty() {
+            f64::INFINITY
+        } else {
+            v.sup()
+        }
+    };
     let mut todo: Vec<(Part, u32)> = Part::initial(piece)?.into_iter().map(|p| (p, 0)).collect();
     let mut used = false;
     let mut n = 0;
@@ -1509,17 +1561,19 @@ fn prove_removed(
             return None;
         }
         let hull = part.hull()?;
-        if near
-            .iter()
-            .any(|x| hull.iter().all(|p| p.sub(x).norm2() < l2))
-        {
+        if near.iter().any(|x| {
+            hull.iter().all(|p| {
+                let d = p.sub(x).norm2();
+                !d.is_empty() && d.sup() < l2
+            })
+        }) {
             used = true;
             continue;
         }
         let (m, _) = part.mid_right_normal();
         let (_, i, t) = foot(curve_f, form, m);
-        let y = curve[i].eval(&rational_from_f64(t)?);
-        if hull.iter().all(|p| form.value(&p.sub(&y)) < re2) {
+        let y = iv_point(&curve[i].eval(&rational_from_f64(t)?));
+        if hull.iter().all(|p| value_hi(&p.sub(&y)) < re2) {
             continue;
         }
         if depth >= 16 {
@@ -1950,6 +2004,9 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
             foot(&curve_f, form, m).0
         })
         .collect();
+    if dbg {
+        eprintln!("estimates: {:?}", t0.elapsed());
+    }
     let rf = form.reach;
     let onside_input = form
         .circle
@@ -1958,53 +2015,63 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
         .par_iter()
         .zip(&estimates)
         .map(|(s, est)| {
-            let raw = &raws[s.raw];
-            let e_in = raw.e_in + s.delta;
-            if raw.kind == Kind::Butt {
-                return Some(e_in);
-            }
-            if *est < rf - 4.0 * e_in.max(tol / 8.0) {
-                return None;
-            }
-            // one decision for the whole sub-piece where the exact offset
-            // points it stands for are proven on ∂S (module `onside`); an
-            // exact cap or join arc is its own exact counterpart
-            if let (Piece::Arc(arc), Some(input)) = (&s.pre, &onside_input) {
-                let budget = tol - e_in;
-                if budget > 0.0 {
-                    if let Some(l) = input.prove_arc(arc, budget, 2048) {
-                        return Some(e_in + l);
-                    }
+            let tt = std::time::Instant::now();
+            let r = (|| {
+                let raw = &raws[s.raw];
+                let e_in = raw.e_in + s.delta;
+                if raw.kind == Kind::Butt {
+                    return Some(e_in);
                 }
-                if dbg {
-                    eprintln!("onside failed: raw {} (arc)", s.raw);
+                if *est < rf - 4.0 * e_in.max(tol / 8.0) {
+                    return None;
                 }
-            }
-            if let (Some(link), Some(input)) = (&raw.link, &onside_input) {
-                let budget = tol - e_in;
-                let range = (s.range.0.approx(), s.range.1.approx());
-                let pad = 1e-12;
-                if budget > 0.0 {
-                    if let Some((t0, t1)) = link.exact_range(range.0 - pad, range.1 + pad) {
-                        if let Some(l) =
-                            input.prove_interval(link.piece, &link.d, t0, t1, budget, 2048)
-                        {
+                // one decision for the whole sub-piece where the exact offset
+                // points it stands for are proven on ∂S (module `onside`); an
+                // exact cap or join arc is its own exact counterpart
+                if let (Piece::Arc(arc), Some(input)) = (&s.pre, &onside_input) {
+                    let budget = tol - e_in;
+                    if budget > 0.0 {
+                        if let Some(l) = input.prove_arc(arc, budget, 2048) {
                             return Some(e_in + l);
                         }
-                        if dbg {
-                            eprintln!(
-                                "onside failed: raw {} piece {} t [{t0}, {t1}]",
-                                s.raw, link.piece
-                            );
-                        }
-                    } else if dbg {
-                        eprintln!("onside: no exact range for raw {}", s.raw);
+                    }
+                    if dbg {
+                        eprintln!("onside failed: raw {} (arc)", s.raw);
                     }
                 }
+                if let (Some(link), Some(input)) = (&raw.link, &onside_input) {
+                    let budget = tol - e_in;
+                    let range = (s.range.0.approx(), s.range.1.approx());
+                    let pad = 1e-12;
+                    if budget > 0.0 {
+                        if let Some((t0, t1)) = link.exact_range(range.0 - pad, range.1 + pad) {
+                            if let Some(l) =
+                                input.prove_interval(link.piece, &link.d, t0, t1, budget, 2048)
+                            {
+                                return Some(e_in + l);
+                            }
+                            if dbg {
+                                eprintln!(
+                                    "onside failed: raw {} piece {} t [{t0}, {t1}]",
+                                    s.raw, link.piece
+                                );
+                            }
+                        } else if dbg {
+                            eprintln!("onside: no exact range for raw {}", s.raw);
+                        }
+                    }
+                }
+                prove_kept(curve, &curve_f, &s.post, e_in, form, tol)
+            })();
+            if dbg {
+                eprintln!("kept raw {} {:?} {:?}", s.raw, tt.elapsed(), r);
             }
-            prove_kept(curve, &curve_f, &s.post, e_in, form, tol)
+            r
         })
         .collect();
+    if dbg {
+        eprintln!("kept: {:?}", t0.elapsed());
+    }
     let near: Vec<V2<Rational>> = subs
         .iter()
         .zip(&kept_bounds)
@@ -2029,7 +2096,12 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
             if k.is_some() || raw.kind != Kind::Boundary {
                 return None;
             }
-            prove_removed(curve, &curve_f, &s.pre, raw.e, form, &near, &lambda)
+            let tt = std::time::Instant::now();
+            let r = prove_removed(curve, &curve_f, &s.pre, raw.e, form, &near, &lambda);
+            if dbg {
+                eprintln!("removed raw {} {:?} {:?}", s.raw, tt.elapsed(), r);
+            }
+            r
         })
         .collect();
     let mut classified = Classified::default();
@@ -2186,11 +2258,17 @@ fn pinched_loops(pieces: &[&Piece], lambda: &Rational) -> Vec<usize> {
     let n = pieces.len();
     let mut dropped = vec![false; n];
     let mut loops: Vec<(V2<Rational>, Vec<usize>)> = Vec::new();
+    let l2_lo = interval_from_rational(&l2).inf();
     let near = |p: &Piece, x: &V2<Rational>| {
+        let x = iv_point(x);
         Part::initial(p).is_some_and(|parts| {
             parts.iter().all(|part| {
-                part.hull()
-                    .is_some_and(|h| h.iter().all(|q| q.sub(x).norm2() < l2))
+                part.hull().is_some_and(|h| {
+                    h.iter().all(|q| {
+                        let d = q.sub(&x).norm2();
+                        !d.is_empty() && d.sup() < l2_lo
+                    })
+                })
             })
         })
     };
