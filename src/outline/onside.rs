@@ -18,7 +18,12 @@
 //!   (resp. `≥ 0` at `1`) because the minimum is at `t ∈ W`; for a G⁰ joint
 //!   `(E(t) − c)·x_j′ > 0` at the joint (resp. `< 0`) is proven directly.
 //!   So `g_j` decreases towards the joint point `c`, where `g_j = g(joint) ≥ r²`
-//!   with equality only at the same point `c = x(t)`.
+//!   with equality only at the same point `c = x(t)`. A window from a joint
+//!   or from the foot `c` of a cap or join arc may instead be **monotone**:
+//!   `g′/2 = (x − E)·x′` of one strict sign on it (Bernstein coefficients),
+//!   `g` decreasing towards `c` — needed where the input bends more sharply
+//!   than the pen (curvature radius below `r`), so `g` is not convex there
+//!   although `c` is still the nearest point.
 //! * **far** (`K1`): every other part of every input piece has a bounding box
 //!   at squared distance `> r²` from the box of `E(T)` (subdividing `t'`).
 //!
@@ -386,6 +391,55 @@ impl Input {
         self.convex_at(j, e, w0, m, depth - 1) && self.convex_at(j, e, m, w1, depth - 1)
     }
 
+    /// `g′` has the strict sign `sign` on `E × [w0, w1]` of piece `j`: with
+    /// `c` the centre of the box `E` and `ε = E − c`, `g′/2 = (x − c)·x′ −
+    /// ε·x′`, whose Bernstein coefficients on the window are all proven of
+    /// that sign (halving the window up to twice). `sign > 0`: `g` strictly
+    /// increases on the window, so a window from a point `x(w0)` where
+    /// `g = r²` holds no other point as near; `sign < 0` the mirror image.
+    fn monotone(&self, j: usize, e: &IV, w0: f64, w1: f64, sign: i8, depth: u32) -> bool {
+        let xr = self.pieces[j].x.restrict(&point(w0), &point(w1));
+        let n = xr.degree();
+        if n == 0 {
+            return false;
+        }
+        let (c, eps) = centre(e);
+        let h = xr.hodograph();
+        let (xs, ys) = coords(&xr);
+        let dx: Vec<Interval> = xs.iter().map(|v| *v - c.x).collect();
+        let dy: Vec<Interval> = ys.iter().map(|v| *v - c.y).collect();
+        let (hx, hy) = coords(&h);
+        let deg = 2 * n - 1;
+        let q = add(&bprod(&dx, &hx), &bprod(&dy, &hy));
+        let l = add(
+            &elevate(&hx, deg)
+                .iter()
+                .map(|v| *v * eps.x)
+                .collect::<Vec<_>>(),
+            &elevate(&hy, deg)
+                .iter()
+                .map(|v| *v * eps.y)
+                .collect::<Vec<_>>(),
+        );
+        let ok = q.len() == l.len()
+            && q.iter().zip(&l).all(|(a, b)| {
+                let v = *a - *b;
+                if sign > 0 {
+                    v.inf() > 0.0
+                } else {
+                    v.sup() < 0.0
+                }
+            });
+        if ok {
+            return true;
+        }
+        if depth == 0 {
+            return false;
+        }
+        let m = 0.5 * (w0 + w1);
+        self.monotone(j, e, w0, m, sign, depth - 1) && self.monotone(j, e, m, w1, sign, depth - 1)
+    }
+
     /// Every point of piece `j` over `[a, b]` is at distance `> r` from the
     /// box `e`: its bounding box is, or `|x − c|² − (r + ρ)² > 0` by Bernstein
     /// coefficients (`c` the box's centre, `ρ ≥` its half diagonal, so every
@@ -428,9 +482,18 @@ impl Input {
         min_w: f64,
     ) -> Option<(f64, f64)> {
         let mut w = w_max;
+        // a window from an end of the piece towards which g decreases (the
+        // foot of a cap or join, a joint of a chain) may also be monotone
+        let end_sign = match (t0, t1) {
+            (a, b) if a == 0.0 && b == 0.0 => Some(1),
+            (a, b) if a == 1.0 && b == 1.0 => Some(-1),
+            _ => None,
+        };
         loop {
             let (w0, w1) = ((t0 - w).max(0.0), (t1 + w).min(1.0));
-            if self.convex(j, e, w0, w1) {
+            if self.convex(j, e, w0, w1)
+                || end_sign.is_some_and(|sg| self.monotone(j, e, w0, w1, sg, 2))
+            {
                 return Some((w0, w1));
             }
             w *= 0.5;
@@ -501,7 +564,11 @@ impl Input {
                     break;
                 }
             }
-            if self.convex(j, e, 0.0, 1.0) {
+            // g_j towards the joint: convex (its derivative there points to
+            // i, shown above or by the G¹ argument), or monotone decreasing
+            // towards it over the whole piece
+            let towards = if forward { 1 } else { -1 };
+            if self.convex(j, e, 0.0, 1.0) || self.monotone(j, e, 0.0, 1.0, towards, 2) {
                 out.push((j, 0.0, 1.0));
                 cur = j;
                 continue;
@@ -591,7 +658,7 @@ impl Input {
     /// or corner `c` of the input (a cap or join arc) on `∂S`, except
     /// unproven runs (charged by the length of their tangent polygons, as in
     /// [`Input::prove_interval`]): on each minor part, with `e` the box of
-    /// its hull, every piece at `c` has `g_j = |p − x_j|²` convex on a window
+    /// its hull, every piece at `c` has `g_j = |p − x_j|²` convex or monotone on a window
     /// from `c` and decreasing towards it (so `≥ |p − c|² = r²`, equality at
     /// `c` only), and everything else is farther than `r`.
     pub(crate) fn prove_arc(&self, arc: &Arc, budget: f64, max_nodes: usize) -> Option<f64> {
