@@ -220,20 +220,28 @@ fn away(b: &Bezier<Rational>, e: u8) -> Option<V2<f64>> {
 /// `d · b`, oriented away from the end, has the strict sign `sign`: every
 /// Bernstein coefficient of `(d · b)′` over the range, times the orientation,
 /// has that sign (exact).
+///
+/// In outward rounded interval arithmetic (the restriction in the convex
+/// form, so an enclosure of the exact restricted coefficients): a strict sign
+/// of every enclosure is a strict sign of every exact coefficient.
 fn monotone(b: &Bezier<Rational>, e: u8, eps: &Rational, d: &V2<Rational>, sign: i8) -> bool {
     let (lo, hi) = corner_range(e, eps);
-    let h = b.restrict(&lo, &hi).hodograph();
+    let iv = b.map(interval_from_rational);
+    let h = iv
+        .restrict(&interval_from_rational(&lo), &interval_from_rational(&hi))
+        .hodograph();
+    let di = d.map(interval_from_rational);
     let orient = if e == 0 { 1 } else { -1 };
     h.points().iter().all(|c| {
-        let v = d.dot(c);
-        let s = if v.is_positive() {
+        let v = di.dot(c);
+        let s = if v.inf() > 0.0 {
             1
-        } else if v.is_negative() {
+        } else if v.sup() < 0.0 {
             -1
         } else {
             0
         };
-        s * orient == sign
+        s != 0 && s * orient == sign
     })
 }
 
@@ -644,22 +652,66 @@ fn segment_pair(pieces: &[Bezier<Rational>], i: usize, j: usize) -> Option<Inter
     if fb.iter().all(Zero::is_zero) {
         return None; // on the line: an overlap, for the box search to report
     }
-    let mut f = Poly::from_bernstein(&fb).trimmed();
     let mut out = Intersections {
         pairs_solved: 1,
         ..Intersections::default()
     };
     let (zero, one) = (<Rational as Zero>::zero(), <Rational as One>::one());
+    let mut shared = [false; 2];
+    for ea in [0u8, 1] {
+        for eb in [0u8, 1] {
+            if end(seg, ea) == end(other, eb) {
+                shared[eb as usize] = true;
+                out.joints.push(Joint {
+                    pieces: (i, j),
+                    at: if swap { (eb, ea) } else { (ea, eb) },
+                });
+            }
+        }
+    }
+    // B on one side of the line: the Bernstein coefficients of f, apart from
+    // the zeros of a shared end point, all of one strict sign (f = Σ f_k B_k
+    // with B_k > 0 inside): no contact but the joints
+    let n = fb.len();
+    let z0 = if shared[0] {
+        fb.iter().take_while(|c| c.is_zero()).count()
+    } else {
+        0
+    };
+    let z1 = if shared[1] {
+        fb.iter().rev().take_while(|c| c.is_zero()).count()
+    } else {
+        0
+    };
+    if z0 + z1 < n {
+        let mid = &fb[z0..n - z1];
+        if mid.iter().all(|c| c.is_positive()) || mid.iter().all(|c| c.is_negative()) {
+            out.complete = true;
+            return Some(out);
+        }
+    }
+    // no shared end: B's parts that stay on one side of the line or project
+    // beyond the segment's ends (interval Bernstein coefficients of f and of
+    // s(t) = w·(B − P)/|w|², halved a few times) hold no contact
+    if !shared[0] && !shared[1] {
+        let fi: Vec<Interval> = fb.iter().map(interval_from_rational).collect();
+        let si: Vec<Interval> = other
+            .points()
+            .iter()
+            .map(|v| interval_from_rational(&(w.dot(&v.sub(p0)) / &w2)))
+            .collect();
+        if no_contact(&fi, &si, 5) {
+            out.complete = true;
+            return Some(out);
+        }
+    }
+    let mut f = Poly::from_bernstein(&fb).trimmed();
     // shared end points: joints (the root divided out, with its multiplicity)
     for ea in [0u8, 1] {
         for eb in [0u8, 1] {
             if end(seg, ea) != end(other, eb) {
                 continue;
             }
-            out.joints.push(Joint {
-                pieces: (i, j),
-                at: if swap { (eb, ea) } else { (ea, eb) },
-            });
             let root = if eb == 0 { zero.clone() } else { one.clone() };
             while f.degree().is_some_and(|d| d > 0) && f.eval(&root).is_zero() {
                 f = deflate(&f, &root);
@@ -767,6 +819,46 @@ fn segment_pair(pieces: &[Bezier<Rational>], i: usize, j: usize) -> Option<Inter
     }
     out.complete = out.undecided.is_empty();
     Some(out)
+}
+
+/// The Bernstein coefficients (intervals) of `f` on `[0, 1]` have one strict
+/// sign, or those of `s` are all below 0 or all above 1, on every part after
+/// up to `depth` halvings (outward rounded, convex form `(a + b)/2`).
+fn no_contact(f: &[Interval], s: &[Interval], depth: u32) -> bool {
+    let strict = f.iter().all(|c| c.inf() > 0.0) || f.iter().all(|c| c.sup() < 0.0);
+    let beyond = s.iter().all(|c| c.sup() < 0.0) || s.iter().all(|c| c.inf() > 1.0);
+    if strict || beyond {
+        return true;
+    }
+    if depth == 0 {
+        return false;
+    }
+    let (fl, fr) = halves_scalar(f);
+    let (sl, sr) = halves_scalar(s);
+    no_contact(&fl, &sl, depth - 1) && no_contact(&fr, &sr, depth - 1)
+}
+
+/// De Casteljau halves of interval Bernstein coefficients, in the convex form.
+fn halves_scalar(c: &[Interval]) -> (Vec<Interval>, Vec<Interval>) {
+    let half = Interval::try_from((0.5, 0.5)).unwrap_or(Interval::ENTIRE);
+    let mut p = c.to_vec();
+    let n = p.len();
+    let mut left = Vec::with_capacity(n);
+    let mut right = Vec::with_capacity(n);
+    if n == 0 {
+        return (left, right);
+    }
+    left.push(p[0]);
+    right.push(p[n - 1]);
+    for r in 1..n {
+        for i in 0..n - r {
+            p[i] = (p[i] + p[i + 1]) * half;
+        }
+        left.push(p[0]);
+        right.push(p[n - 1 - r]);
+    }
+    right.reverse();
+    (left, right)
 }
 
 /// `f(t) / (t − r)` for a root `r` of `f` (synthetic division, exact).
