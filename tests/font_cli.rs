@@ -548,6 +548,22 @@ fn typed_errors() {
         ],
         "IN",
     );
+    // a directory that is not a UFO, and a UFO glyph with a component cycle
+    let not_ufo = dir("not.ufo");
+    std::fs::create_dir_all(&not_ufo).unwrap();
+    bad_input(
+        &[
+            "font",
+            not_ufo.to_str().unwrap(),
+            "--offset",
+            "2",
+            "--tol",
+            "1",
+            "--out",
+            o,
+        ],
+        "IN",
+    );
     // an existing output directory is refused without --force
     std::fs::create_dir_all(&out).unwrap();
     check(
@@ -560,4 +576,103 @@ fn typed_errors() {
     let r: Vec<&str> = v.iter().map(String::as_str).collect();
     run_ok(&r);
     assert!(out.join("glyphs").join("period.glif").exists());
+}
+
+/// A hand-written UFO (`tests/data/small.ufo`): a contour of off-curve points
+/// only and a `qcurve` run (implied on-curve points), a composite of two
+/// components (one scaled by 0.7, offset 400.3: exact decimals) over its own
+/// contour, a space; every glyph proven, the width 600.5 kept.
+#[test]
+fn ufo_input_with_quadratic_runs_and_components() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/small.ufo");
+    let out = dir("small-bold.ufo");
+    let o = run_ok(&[
+        "font",
+        src.to_str().unwrap(),
+        "--offset",
+        "10",
+        "--tol",
+        "1",
+        "--out",
+        out.to_str().unwrap(),
+        "--force",
+        "--json",
+    ]);
+    let doc: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(doc["summary"]["glyphs"], 4, "{doc}");
+    assert_eq!(doc["summary"]["proven"], 3, "{doc}");
+    assert_eq!(doc["summary"]["empty"], 1, "{doc}");
+    assert_eq!(o.status.code(), Some(0));
+    let ufo = norad::Font::load(&out).unwrap();
+    let layer = ufo.default_layer();
+    let h = layer.get_glyph("H").unwrap();
+    assert_eq!(h.width, 600.5);
+    assert_eq!(h.codepoints.iter().collect::<Vec<_>>(), vec!['H']);
+    // the bars and the crossbar overlap: one outline grown by 10
+    assert_eq!(h.contours.len(), 1);
+    let xs: Vec<f64> = h.contours[0].points.iter().map(|p| p.x).collect();
+    let (lo, hi) = xs
+        .iter()
+        .fold((f64::MAX, f64::MIN), |(a, b), &x| (a.min(x), b.max(x)));
+    // left bar from x = 70, right bar (scaled 0.7 about 0, moved 400.3) to 505.3
+    assert!(
+        (lo - 60.0).abs() <= 1.0 && (hi - 515.3).abs() <= 1.0,
+        "{lo} {hi}"
+    );
+    // the o: outer and inner contour
+    assert_eq!(layer.get_glyph("o").unwrap().contours.len(), 2);
+    assert_eq!(ufo.font_info.units_per_em.map(|u| u.as_f64()), Some(1000.0));
+    assert_eq!(layer.get_glyph("space").unwrap().width, 250.0);
+}
+
+/// A UFO written by `lncert font` from DejaVu Sans is read back as input and
+/// stroked: the round trip of the whole pipeline. (`--grid none` in the
+/// first pass: on the integer grid the rounded arc cubics meet at tiny kinks,
+/// where today's stroke engine leaves some contours open — `l`, `period` at
+/// `--stroke 5` — a limit of the engine, not of the reader.)
+#[test]
+fn ufo_written_from_dejavu_is_read_back() {
+    let Some(sans) = dejavu() else { return };
+    let first = dir("roundtrip-1.ufo");
+    let second = dir("roundtrip-2.ufo");
+    let o = run_ok(&[
+        "font",
+        sans.to_str().unwrap(),
+        "--glyphs",
+        "l,o,O,period",
+        "--offset",
+        "20",
+        "--tol",
+        "1",
+        "--grid",
+        "none",
+        "--out",
+        first.to_str().unwrap(),
+        "--force",
+        "--json",
+    ]);
+    assert_eq!(o.status.code(), Some(0));
+    let o = run_ok(&[
+        "font",
+        first.to_str().unwrap(),
+        "--glyphs",
+        "l,o,O,@period",
+        "--stroke",
+        "5",
+        "--tol",
+        "1",
+        "--out",
+        second.to_str().unwrap(),
+        "--force",
+        "--json",
+    ]);
+    let doc: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(doc["summary"]["glyphs"], 4, "{doc}");
+    assert_eq!(doc["summary"]["proven"], 4, "{doc}");
+    let ufo = norad::Font::load(&second).unwrap();
+    // an O stroked: each of its two contours gives two
+    assert_eq!(
+        ufo.default_layer().get_glyph("O").unwrap().contours.len(),
+        4
+    );
 }

@@ -57,8 +57,10 @@ pub mod prop;
 pub mod report;
 pub mod reproduce;
 pub mod stroke;
+pub mod stroke_doc;
 pub mod svg;
 pub mod tangency;
+pub mod ufo_input;
 pub mod verify;
 
 use clap::{Parser, Subcommand};
