@@ -248,6 +248,28 @@ fn ufo_polys(g: &norad::Glyph) -> Vec<Vec<(f64, f64)>> {
                     off.clear();
                     cur = xy;
                 }
+                PointType::QCurve => {
+                    // a TrueType run: implied on-curve points between off-curve points
+                    let mut from = cur;
+                    for (i, &c) in off.iter().enumerate() {
+                        let to = match off.get(i + 1) {
+                            Some(&n) => ((c.0 + n.0) / 2.0, (c.1 + n.1) / 2.0),
+                            None => xy,
+                        };
+                        for s in 0..100 {
+                            let t = s as f64 / 100.0;
+                            let u = 1.0 - t;
+                            let w = [u * u, 2.0 * u * t, t * t];
+                            poly.push((
+                                w[0] * from.0 + w[1] * c.0 + w[2] * to.0,
+                                w[0] * from.1 + w[1] * c.1 + w[2] * to.1,
+                            ));
+                        }
+                        from = to;
+                    }
+                    off.clear();
+                    cur = xy;
+                }
                 t => panic!("unexpected point type {t:?}"),
             }
         }
@@ -674,5 +696,82 @@ fn ufo_written_from_dejavu_is_read_back() {
     assert_eq!(
         ufo.default_layer().get_glyph("O").unwrap().contours.len(),
         4
+    );
+}
+
+/// `--output quadratic` (TrueType): the stroke's sides fitted by quadratics,
+/// its round joins by certified quadratics ([`lncert::certify::circular_arc_quadratics`]),
+/// on the integer grid; every glyph proven, only `qcurve` and `line` points
+/// written, and every written point at distance 40 ± bound from the input.
+#[test]
+fn quadratic_output_on_the_grid() {
+    let Some(sans) = dejavu() else { return };
+    let out = dir("quadratic.ufo");
+    let rep = dir("quadratic.json");
+    let o = run_ok(&[
+        "font",
+        sans.to_str().unwrap(),
+        "--glyphs",
+        "l,o,A,period",
+        "--offset",
+        "40",
+        "--tol",
+        "1",
+        "--output",
+        "quadratic",
+        "--jobs",
+        "2",
+        "--out",
+        out.to_str().unwrap(),
+        "--report",
+        rep.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0));
+    let r = report(&rep);
+    assert_eq!(r["output"], "quadratic");
+    assert_eq!(r["summary"]["proven"], 4, "{r}");
+    let ufo = norad::Font::load(&out).unwrap();
+    for g in &r["glyphs"].as_array().unwrap()[..] {
+        let name = g["name"].as_str().unwrap();
+        let bound = g["bound"].as_f64().unwrap();
+        assert!(bound <= 1.0);
+        let glyph = ufo.default_layer().get_glyph(name).unwrap();
+        for c in &glyph.contours {
+            for p in &c.points {
+                assert!(
+                    matches!(
+                        p.typ,
+                        norad::PointType::Line
+                            | norad::PointType::QCurve
+                            | norad::PointType::OffCurve
+                    ),
+                    "{name}: {p:?}"
+                );
+                assert!(p.x.fract() == 0.0 && p.y.fract() == 0.0, "{name}: {p:?}");
+            }
+        }
+        let input = input_polys(&sans, name);
+        for q in ufo_polys(glyph) {
+            for p in q {
+                let d = dist(p, &input);
+                assert!((d - 40.0).abs() <= bound + 0.05, "{name}: {p:?} at {d}");
+            }
+        }
+    }
+    // the invalid value is a typed error
+    bad_input(
+        &[
+            "font",
+            sans.to_str().unwrap(),
+            "--offset",
+            "40",
+            "--tol",
+            "1",
+            "--output",
+            "cubicle",
+            "--out",
+            dir("q-err.ufo").to_str().unwrap(),
+        ],
+        "--output",
     );
 }

@@ -83,6 +83,11 @@ pub struct FontArgs {
     /// Which glyphs: chars, ranges A-Z, uniXXXX, @name (comma separated).
     #[arg(long)]
     pub glyphs: Option<String>,
+    /// The pieces written: `cubic` (PostScript-style) or `quadratic`
+    /// (TrueType-style: the stroke's sides fitted by quadratics, its arcs by
+    /// certified quadratics).
+    #[arg(long, default_value = "cubic")]
+    pub output: String,
     /// The grid control points are rounded to (`1`, `1/2`, ... or `none`).
     #[arg(long, default_value = "1")]
     pub grid: String,
@@ -164,7 +169,8 @@ struct Job {
     tol: f64,
     /// `Some(g)`: round to multiples of `g`; `None`: to the nearest f64.
     grid: Option<Rational>,
-    cff: bool,
+    /// Quadratic output (`--output quadratic`).
+    quadratic: bool,
 }
 
 fn parse_grid(text: &str) -> Result<Option<Rational>, CliError> {
@@ -425,7 +431,13 @@ fn prove(src: &Source, job: &Job, g: &mut GlyphResult) {
         0.9 * job.tol
     };
     let mut opts = StrokeOptions::new(r.clone(), stroke_tol);
-    opts.output = lncert::approx::Output::Cubic;
+    opts.output = if job.quadratic {
+        lncert::approx::Output::Quadratic
+    } else {
+        lncert::approx::Output::Cubic
+    };
+    // what is left of TOL for the arcs' quadratics (cubic arcs take ~1e-7 r)
+    let arc_target = 0.05 * (job.tol - delta_grid).max(job.tol / 2.0);
     let s = match stroke(&pieces, &opts) {
         Ok(s) => s,
         Err(e) => {
@@ -475,6 +487,26 @@ fn prove(src: &Source, job: &Job, g: &mut GlyphResult) {
         for p in &c.pieces {
             match p {
                 Piece::Bezier(b) => out.push(b.clone()),
+                Piece::Arc(a) if job.quadratic => {
+                    match lncert::certify::circular_arc_quadratics(
+                        &a.center,
+                        &a.radius,
+                        &a.from,
+                        &a.to,
+                        a.clockwise,
+                        arc_target,
+                    ) {
+                        Ok((quads, bound)) => {
+                            arc_bound = arc_bound.max(bound);
+                            out.extend(quads);
+                        }
+                        Err(e) => {
+                            reasons.push(format!("an arc could not be converted: {e}"));
+                            out.push(Bezier::new(vec![a.from.clone(), a.to.clone()]));
+                            arc_bound = f64::INFINITY;
+                        }
+                    }
+                }
                 Piece::Arc(a) => {
                     let (u, v) = (a.from.sub(&a.center), a.to.sub(&a.center));
                     let cross = u.cross(&v);
@@ -708,6 +740,7 @@ fn report_json(
         "distance": a.offset.clone().or(a.stroke.clone()),
         "tol": a.tol,
         "grid": a.grid,
+        "output": a.output,
         "glyphs": results.iter().map(|r| {
             let gi = &info.glyphs[usize::from(r.id)];
             json!({
@@ -848,6 +881,16 @@ pub fn run(a: &FontArgs) -> Result<i32, CliError> {
         return Err(bad("--tol", "must be a positive number"));
     }
     let grid = parse_grid(&a.grid)?;
+    let quadratic = match a.output.as_str() {
+        "cubic" => false,
+        "quadratic" => true,
+        o => {
+            return Err(bad(
+                "--output",
+                format!("expected cubic or quadratic, got {o:?}"),
+            ))
+        }
+    };
     let jobs = match a.jobs {
         Some(0) => return Err(bad("--jobs", "must be at least 1")),
         Some(n) if n > 1024 => return Err(bad("--jobs", "at most 1024")),
@@ -920,7 +963,7 @@ pub fn run(a: &FontArgs) -> Result<i32, CliError> {
         op,
         tol,
         grid,
-        cff: info.cff,
+        quadratic,
     };
     // the work
     let t0 = std::time::Instant::now();
