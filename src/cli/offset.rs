@@ -257,7 +257,9 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     opts.certify = !a.no_certify;
     opts.smooth_kinks = output != Output::Native && !a.keep_kinks;
     if let Some(g) = &grid {
-        if output == Output::Cubic && lncert::approx::fit::rounding_move(g) >= tol {
+        if matches!(output, Output::Cubic | Output::Quadratic)
+            && lncert::approx::fit::rounding_move(g) >= tol
+        {
             return super::offset_grid::run(a, &curve, &opts);
         }
     }
