@@ -145,7 +145,7 @@ fn attempt(
         };
         let h =
             hausdorff(&ShapeDesc::Curve(vec![q.clone()]), &arc, &cfg).map_err(|e| e.to_string())?;
-        if !(h.hi <= target) {
+        if h.hi.is_nan() || h.hi > target {
             return Err(format!("piece {k}: certified only within {:e}", h.hi));
         }
         bound = bound.max(h.hi);

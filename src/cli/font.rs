@@ -29,7 +29,10 @@
 //!   for `TOL − δ` (`0.9·TOL` without grid) so that the total can meet `TOL`.
 //! * Output: cubic pieces (and lines); the stroke's exact arcs are converted to
 //!   certified cubics ([`lncert::shape::svgarc::circular_arc_cubics`]) and
-//!   their bound charged. Contours are oriented by the UFO's convention
+//!   their bound charged. `--output quadratic` (TrueType): the stroke's sides
+//!   are fitted by quadratics and its arcs replaced by quadratics certified by
+//!   the Hausdorff search ([`lncert::certify::circular_arc_quadratics`],
+//!   target `0.05 (TOL − δ)`), written as `qcurve` points. Contours are oriented by the UFO's convention
 //!   (PostScript: outer contours counter-clockwise, holes clockwise, for
 //!   TrueType and CFF input alike; a TrueType compiler such as ufo2ft
 //!   reverses them), the outer ones found by exact nesting.

@@ -19,6 +19,9 @@
 //!   caps half ellipses made of proven cubics (error ≤ TOL/8, printed).
 //!   The curve must be G¹ (no join pieces for elliptical pens yet).
 //!
+//! Without `--pen`, an SVG document is stroked element by element, each with
+//! a circle of its own `stroke-width / 2` ([`super::stroke_doc`]).
+//!
 //! `CURVE` is read as `lncert offset` reads it ([`super::curve_input`]):
 //! curve files and SVG documents (the approximation of SVG arcs reported,
 //! JSON `"input_approximation"`), `--glyph CHAR [--em]` with a font, and

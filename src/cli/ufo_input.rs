@@ -237,7 +237,7 @@ pub fn read_ufo(path: &Path) -> Result<UfoSource, String> {
     }
     let fi = &font.font_info;
     let upm = fi.units_per_em.map_or(1000.0, |u| u.as_f64());
-    if !(upm >= 1.0 && upm <= 16384.0) {
+    if !(1.0..=16384.0).contains(&upm) {
         return Err(format!("unitsPerEm {upm} is out of range (1 to 16384)"));
     }
     let metric = |v: Option<f64>| v.map(|x| x.round().clamp(-32768.0, 32767.0) as i16);

@@ -196,7 +196,8 @@ impl InputApprox {
             ApproxKind::RoundedRect,
         ]
         .iter()
-        .filter_map(|&k| (count(k) > 0).then(|| format!("{} {}", count(k), k.noun())))
+        .filter(|&&k| count(k) > 0)
+        .map(|&k| format!("{} {}", count(k), k.noun()))
         .collect();
         let mut parts = Vec::new();
         if !what.is_empty() {

@@ -206,7 +206,7 @@ fn rational_rotation(deg: &Rational) -> Result<(Rational, Rational, f64), String
         si - interval_from_rational(&s),
     );
     let err = (dc * dc + ds * ds).sqrt().sup();
-    if !(err <= TRANSFORM_TARGET) {
+    if err.is_nan() || err > TRANSFORM_TARGET {
         return Err(format!(
             "the rational rotation found is not within {TRANSFORM_TARGET:e} (certified {err:e})"
         ));
@@ -243,7 +243,7 @@ fn rational_tan(deg: &Rational) -> Result<(Rational, f64), String> {
         return Err("the angle is too close to 90° for tan θ to be enclosed".to_string());
     }
     let err = (si / ci - interval_from_rational(&t)).mag();
-    if !(err <= TRANSFORM_TARGET * to_f64(&scale).max(1.0)) {
+    if err.is_nan() || err > TRANSFORM_TARGET * to_f64(&scale).max(1.0) {
         return Err(format!(
             "the rational tangent found is not within {TRANSFORM_TARGET:e} (certified {err:e})"
         ));
@@ -415,11 +415,11 @@ fn displacement(factors: &[Factor], pieces: &[Bezier<Rational>], b: f64) -> f64 
             let lip_above = factors[..i].iter().fold(point(1.0), |acc, g| {
                 acc * point(g.approx.as_ref().map_or_else(|| g.m.norm_sup(), |a| a.lip))
             });
-            total = total + lip_above * point(a.err) * (far + pad);
+            total += lip_above * point(a.err) * (far + pad);
         }
         if i > 0 {
             pts = pts.iter().map(|p| f.m.apply(p)).collect();
-            pad = pad * point(f.m.norm_sup());
+            pad *= point(f.m.norm_sup());
         }
     }
     up(total)
@@ -805,7 +805,7 @@ fn property<'a>(node: roxmltree::Node<'a, '_>, name: &str) -> Option<&'a str> {
             .filter_map(|decl| decl.split_once(':'))
             .filter(|(k, _)| k.trim() == name)
             .map(|(_, v)| v.trim().trim_end_matches("!important").trim())
-            .last()
+            .next_back()
     });
     from_style
         .or_else(|| node.attribute(name).map(str::trim))
