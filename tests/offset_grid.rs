@@ -183,6 +183,8 @@ fn quadratics_on_the_grid_below_the_rounding_move() {
             assert_eq!(segs[n - 1].bezier.points()[2], segs[0].bezier.points()[0]);
         }
         sampled_agrees(&x, q(d).approx(), &r);
+        // two per quadratic: the shared end points counted once
+        assert_eq!(r.control_points(), 2 * r.segments.len());
         let cert = r.certificate.as_ref().expect("a certificate");
         assert!(lncert::verify(&cert.to_json_string()).is_ok());
     }

@@ -134,12 +134,18 @@ impl GridOffset {
     pub fn reached(&self) -> bool {
         self.unreached.is_empty()
     }
-    /// Control points in all (4 per cubic, shared end points counted once per
-    /// closed contour).
+    /// Control points in all (4 per cubic, 3 per quadratic, shared end points
+    /// counted once per closed contour).
     pub fn control_points(&self) -> usize {
         self.contours
             .iter()
-            .map(|&(_, n, closed)| 3 * n + usize::from(!closed))
+            .map(|&(first, n, closed)| {
+                let inner: usize = self.segments[first..first + n]
+                    .iter()
+                    .map(|s| s.bezier.degree())
+                    .sum();
+                inner + usize::from(!closed)
+            })
             .sum()
     }
     /// The cubics as one exact shape (the certificate's `b`).
