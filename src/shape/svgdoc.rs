@@ -726,9 +726,10 @@ pub fn parse_svg_document_reported(
 /// let e = parse_svg_document_elements(doc).unwrap();
 /// assert_eq!(e.len(), 2);
 /// assert_eq!(e[0].at, "svg/use[0]/#a");
-/// assert_eq!(e[0].pieces[0].points()[0].x, 5.into());
+/// let q = |x: i64| lncert::Rational::from_integer(x.into());
+/// assert_eq!(e[0].pieces[0].points()[0].x, q(5));
 /// assert!(e[0].stroked && !e[1].stroked);
-/// assert_eq!(e[1].pen_radius, Ok(2.into()));
+/// assert_eq!(e[1].pen_radius, Ok(q(2)));
 /// ```
 pub fn parse_svg_document_elements(text: &str) -> Result<Vec<SvgElement>, CurveParseError> {
     if text.len() > MAX_DOCUMENT_BYTES {
