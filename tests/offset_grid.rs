@@ -1,5 +1,5 @@
-//! Offsets as cubics on a grid finer than rounding allows
-//! (`lncert::approx::gridfit`, `offset --output cubic --grid G --tol T` with
+//! Offsets as cubics (and quadratics) on a grid finer than rounding allows
+//! (`lncert::approx::gridfit`, `offset --output cubic|quadratic --grid G --tol T` with
 //! `T ≤ G·√2/2`): every control point is a grid multiple, contours close
 //! exactly, the certificate verifies, dense samples of the exact offset
 //! (computed directly) agree with the bound, and an offset whose end no grid
@@ -148,11 +148,98 @@ fn bad_grid_options_are_typed_errors() {
         .to_string()
         .contains("grid"));
     let mut o = opts("40", 0.2, "1");
-    o.output = Output::Quadratic;
+    o.output = Output::Native;
     assert!(offset_on_grid(&x, &o)
         .unwrap_err()
         .to_string()
         .contains("output"));
+}
+
+/// Quadratic output (TrueType) on the grid below the rounding move: the same
+/// partition, joints and proofs, one inner control point per piece; every
+/// point a grid multiple, contours closed exactly, the certificate verifies,
+/// and dense samples agree with the bound.
+#[test]
+fn quadratics_on_the_grid_below_the_rounding_move() {
+    let x = parse_curve(SMOOTH).unwrap();
+    for d in ["40", "-25"] {
+        let mut o = opts(d, 0.2, "1");
+        o.output = Output::Quadratic;
+        let r = offset_on_grid(&x, &o).unwrap();
+        assert!(r.reached(), "d = {d}: unreached {:?}", r.unreached);
+        assert!(r.certified_hi <= 0.2);
+        for s in &r.segments {
+            assert_eq!(s.bezier.degree(), 2);
+            for p in s.bezier.points() {
+                assert!(p.x.fract() == 0.0 && p.y.fract() == 0.0, "{p:?}");
+            }
+        }
+        for &(first, n, closed) in &r.contours {
+            let segs = &r.segments[first..first + n];
+            for w in segs.windows(2) {
+                assert_eq!(w[0].bezier.points()[2], w[1].bezier.points()[0]);
+            }
+            assert!(closed);
+            assert_eq!(segs[n - 1].bezier.points()[2], segs[0].bezier.points()[0]);
+        }
+        sampled_agrees(&x, q(d).approx(), &r);
+        // two per quadratic: the shared end points counted once
+        assert_eq!(r.control_points(), 2 * r.segments.len());
+        let cert = r.certificate.as_ref().expect("a certificate");
+        assert!(lncert::verify(&cert.to_json_string()).is_ok());
+    }
+}
+
+/// The CLI: DejaVu Sans "O" grown by 60 font units in em, quadratics on
+/// integer font units within 1e-4 em (0.2 units), verified against the files.
+#[test]
+fn cli_glyph_quadratics_on_integer_font_units() {
+    let Some(font) = dejavu() else { return };
+    let (cert, exact, path) = (
+        tmp("gridq-cert.json", ""),
+        tmp("gridq-exact.json", ""),
+        tmp("gridq-path.txt", ""),
+    );
+    let out = lncert(&[
+        "offset",
+        font.to_str().unwrap(),
+        "--glyph",
+        "O",
+        "--em",
+        "--distance",
+        "60/2048",
+        "--tol",
+        "1e-4",
+        "--output",
+        "quadratic",
+        "--grid",
+        "1/2048",
+        "--json",
+        "--certificate",
+        cert.to_str().unwrap(),
+        "--exact-out",
+        exact.to_str().unwrap(),
+        "--path-out",
+        path.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(0));
+    let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(doc["degree"], 2);
+    assert_eq!(doc["output"], "quadratic");
+    assert!(std::fs::read_to_string(&path).unwrap().contains(" Q "));
+    let v = lncert(&[
+        "verify",
+        cert.to_str().unwrap(),
+        "--against",
+        exact.to_str().unwrap(),
+        path.to_str().unwrap(),
+    ]);
+    assert_eq!(
+        v.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&v.stdout)
+    );
 }
 
 /// The command: a glyph in em, `--grid 1/2048` (integer font units of
@@ -226,7 +313,7 @@ fn cli_glyph_on_integer_font_units() {
 fn cli_grid_refusals_name_the_flag() {
     let f = tmp("grid-smooth.txt", SMOOTH);
     let f = f.to_str().unwrap();
-    // quadratics cannot go below the rounding move
+    // native segments (degree n + 3) cannot go below the rounding move
     let out = lncert(&[
         "offset",
         f,
@@ -235,7 +322,7 @@ fn cli_grid_refusals_name_the_flag() {
         "--tol",
         "0.2",
         "--output",
-        "quadratic",
+        "native",
         "--grid",
         "1",
     ]);

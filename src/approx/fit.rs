@@ -655,7 +655,7 @@ pub fn check_grid(grid: &Rational, tol: f64, scale: f64) -> Result<f64, OffsetEr
             "grid",
             format!(
                 "rounding to {grid} moves the curve by up to {mv:e} (grid·√2/2) ≥ the tolerance {tol:e}: \
-                 it cannot be reached by rounding; use a finer grid, or --output cubic, whose \
+                 it cannot be reached by rounding; use a finer grid, or --output cubic or quadratic, whose \
                  end points are then placed where the exact curve passes near a grid point"
             ),
         ));

@@ -1,6 +1,7 @@
 //! Offsets fitted **on a grid finer than the tolerance allows rounding**:
-//! cubic splines whose every control point is a grid multiple (integer font
-//! units) proven within a tolerance below the rounding move `grid·√2/2`.
+//! cubic (or quadratic, `Output::Quadratic`: TrueType) splines whose every
+//! control point is a grid multiple (integer font units) proven within a
+//! tolerance below the rounding move `grid·√2/2`.
 //!
 //! Rounding a fitted spline to the grid moves a shared end point up to
 //! `grid·√2/2` off the exact curve, so below that tolerance the end points
@@ -20,7 +21,11 @@
 //! 3. fits a cubic between consecutive joints (G² Hermite, least squares and
 //!    chord-thirds candidates, Nelder–Mead on the sampled error, as
 //!    [`super::fit`]), then moves its two inner control points over the grid
-//!    (coordinate descent on the sampled two-sided error);
+//!    (coordinate descent on the sampled two-sided error); a quadratic takes
+//!    its control point at the intersection of the exact end tangents
+//!    ([`fit::tangent_quadratic`]; tangents that do not meet ahead split the
+//!    span) and moves it over the grid the same way. Nothing of steps 1, 2
+//!    and 4 depends on the degree: the proof is the same;
 //! 4. proves each cubic against the exact curve **between its two joint
 //!    positions** — one or more exact spans or sub-arcs, so the targets of the
 //!    cubics partition the exact outline — with the certification engine; a
@@ -129,12 +134,18 @@ impl GridOffset {
     pub fn reached(&self) -> bool {
         self.unreached.is_empty()
     }
-    /// Control points in all (4 per cubic, shared end points counted once per
-    /// closed contour).
+    /// Control points in all (4 per cubic, 3 per quadratic, shared end points
+    /// counted once per closed contour).
     pub fn control_points(&self) -> usize {
         self.contours
             .iter()
-            .map(|&(_, n, closed)| 3 * n + usize::from(!closed))
+            .map(|&(first, n, closed)| {
+                let inner: usize = self.segments[first..first + n]
+                    .iter()
+                    .map(|s| s.bezier.degree())
+                    .sum();
+                inner + usize::from(!closed)
+            })
             .sum()
     }
     /// The cubics as one exact shape (the certificate's `b`).
@@ -254,6 +265,8 @@ struct Ctx<'a> {
     max_boxes: usize,
     /// Splits after failed proofs, in all (`OffsetOptions::max_segments`).
     max_splits: usize,
+    /// Quadratic output (TrueType): one inner control point per piece.
+    quadratic: bool,
 }
 
 struct Contour {
@@ -670,6 +683,9 @@ impl Ctx<'_> {
             k1,
         };
         let pts: Vec<DVec2> = dense.iter().map(|d| d.1).collect();
+        if self.quadratic {
+            return self.fit_quadratic(&e, &pts, a.g, b.g);
+        }
         let interior: Vec<V2<f64>> = pts[1..pts.len() - 1]
             .iter()
             .step_by(3)
@@ -727,6 +743,39 @@ impl Ctx<'_> {
         fit::round_to_grid(&out, &self.grid).filter(|r| *r == out)
     }
 
+    /// The quadratic between two grid joints: the control point at the end
+    /// tangents' intersection ([`fit::tangent_quadratic`]; `None` when they do
+    /// not meet ahead — the caller splits), moved onto the grid, then
+    /// coordinate descent of that one point on the sampled two-sided error.
+    fn fit_quadratic(&self, e: &FitEnds, pts: &[DVec2], a: DVec2, b: DVec2) -> Option<Bezier<f64>> {
+        let v = |p: DVec2| V2::new(p.x, p.y);
+        let first = fit::tangent_quadratic(e)?;
+        let mut q = self.exact_grid(dv(&first.points()[1]))?;
+        let make = |q: DVec2| Bezier::new(vec![v(a), v(q), v(b)]);
+        let mut err = two_sided(pts, &make(q));
+        for _ in 0..96 {
+            let mut improved = false;
+            for d in [
+                DVec2::new(self.gf, 0.0),
+                DVec2::new(-self.gf, 0.0),
+                DVec2::new(0.0, self.gf),
+                DVec2::new(0.0, -self.gf),
+            ] {
+                let e2 = two_sided(pts, &make(q + d));
+                if e2 < err {
+                    err = e2;
+                    q += d;
+                    improved = true;
+                }
+            }
+            if !improved {
+                break;
+            }
+        }
+        let out = make(q);
+        fit::round_to_grid(&out, &self.grid).filter(|r| *r == out)
+    }
+
     fn target_of(&self, part: &Part, u0: f64, u1: f64) -> Option<Target> {
         match part {
             Part::Span { piece, .. } => Some(Target::Span {
@@ -762,6 +811,23 @@ impl Ctx<'_> {
 /// The sampled two-sided distance between the exact samples (a polyline) and
 /// a cubic (float estimate: chooses candidates only).
 fn two_sided(exact: &[DVec2], c: &Bezier<f64>) -> f64 {
+    // a quadratic is measured as its exact degree elevation (the same curve)
+    let elevated;
+    let c = if c.degree() == 2 {
+        let p = c.points();
+        let third = |a: &V2<f64>, b: &V2<f64>| {
+            V2::new(a.x + (b.x - a.x) * 2.0 / 3.0, a.y + (b.y - a.y) * 2.0 / 3.0)
+        };
+        elevated = Bezier::new(vec![
+            p[0].clone(),
+            third(&p[0], &p[1]),
+            third(&p[2], &p[1]),
+            p[2].clone(),
+        ]);
+        &elevated
+    } else {
+        c
+    };
     let ab = fit::sampled_error(exact, c);
     let ba = (0..=32)
         .map(|i| {
@@ -940,8 +1006,13 @@ impl Ctx<'_> {
         // is reported unreached
         let placeholder = |targets: Option<Vec<Target>>| {
             let v = |p: DVec2| V2::new(p.x, p.y);
+            let bezier = if self.quadratic {
+                Bezier::new(vec![v(a.g), v(a.g), v(b.g)])
+            } else {
+                Bezier::new(vec![v(a.g), v(a.g), v(b.g), v(b.g)])
+            };
             vec![Built {
-                bezier: Bezier::new(vec![v(a.g), v(a.g), v(b.g), v(b.g)]),
+                bezier,
                 targets: targets.unwrap_or_default(),
                 bounds: None,
                 error: (0.0, f64::INFINITY),
@@ -1062,10 +1133,10 @@ pub fn offset_on_grid(
     let Some(grid) = opts.grid.clone() else {
         return Err(bad("grid", "offset_on_grid needs a grid"));
     };
-    if opts.output != Output::Cubic {
+    if !matches!(opts.output, Output::Cubic | Output::Quadratic) {
         return Err(bad(
             "output",
-            "a tolerance below the grid's rounding move is supported for cubic output only",
+            "a tolerance below the grid's rounding move is supported for cubic and quadratic output only",
         ));
     }
     let shape = super::check_options(curve, &{
@@ -1093,6 +1164,7 @@ pub fn offset_on_grid(
         tol: opts.tol,
         max_boxes: opts.max_boxes,
         max_splits: opts.max_segments,
+        quadratic: opts.output == Output::Quadratic,
     };
     // contours of the input: pieces joined end to start
     let mut groups: Vec<(usize, usize)> = Vec::new();

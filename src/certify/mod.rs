@@ -29,6 +29,7 @@
 //! assert!(r.lo <= 0.25 && 0.25 <= r.hi && r.hi - r.lo <= 1e-6 * r.hi);
 //! ```
 
+mod arcquad;
 mod bern;
 mod cert;
 mod jet;
@@ -41,6 +42,7 @@ pub mod verify;
 use crate::shape::ShapeDesc;
 use piece::Pieces;
 
+pub use arcquad::circular_arc_quadratics;
 pub use cert::{Certificate, MapCover};
 pub use param::{ParamBox, Parametric};
 pub use same::verify_against;

@@ -249,7 +249,7 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
             curve: a.curve.clone(),
             glyph: None,
             em: false,
-            pen: String::new(),
+            pen: Some(String::new()),
             tol: a.tol.clone(),
             cap: "round".into(),
             output: a.output.clone(),

@@ -25,6 +25,10 @@ pub enum CurveInput {
         pieces: Vec<Bezier<Rational>>,
         /// The report of approximated SVG arcs, circles, ellipses, rounded rects.
         approx: InputApprox,
+        /// The coordinates are SVG's (path data or a document): y points down
+        /// on the screen, and pictures are drawn without flipping y. JSON
+        /// curves and font glyphs are y-up.
+        y_down: bool,
     },
     /// One circular arc (`{"arc": ...}`), exact.
     Arc(Box<TravelledArc>),
@@ -84,6 +88,7 @@ pub fn read_curve_input(
         return Ok(CurveInput::Curve {
             pieces: read_glyph(path, ch, em)?,
             approx: InputApprox::default(),
+            y_down: false,
         });
     }
     if em {
@@ -104,5 +109,10 @@ pub fn read_curve_input(
         });
     }
     let (pieces, approx) = parse_curve_reported(&text).map_err(|e| bad("CURVE", e))?;
-    Ok(CurveInput::Curve { pieces, approx })
+    let y_down = !text.trim_start().starts_with('{');
+    Ok(CurveInput::Curve {
+        pieces,
+        approx,
+        y_down,
+    })
 }

@@ -1,6 +1,7 @@
 //! `lncert font IN (--offset D | --stroke R) --tol T --out OUT.ufo [--glyphs SPEC]
 //! [--grid G | --grid none] [--report FILE.json|FILE.html] [--jobs N] [--force] [--json]`:
-//! every glyph of a TrueType/OpenType font offset or stroked, each proven on
+//! every glyph of a TrueType/OpenType font or a UFO (a directory, or a name
+//! ending in `.ufo`: [`super::ufo_input`]) offset or stroked, each proven on
 //! its own, written as a UFO (norad) with a report (`proofs/font.md`).
 //!
 //! * `--stroke R`: the outline of the region a disk of radius `R > 0` sweeps
@@ -28,7 +29,10 @@
 //!   for `TOL − δ` (`0.9·TOL` without grid) so that the total can meet `TOL`.
 //! * Output: cubic pieces (and lines); the stroke's exact arcs are converted to
 //!   certified cubics ([`lncert::shape::svgarc::circular_arc_cubics`]) and
-//!   their bound charged. Contours are oriented by the UFO's convention
+//!   their bound charged. `--output quadratic` (TrueType): the stroke's sides
+//!   are fitted by quadratics and its arcs replaced by quadratics certified by
+//!   the Hausdorff search ([`lncert::certify::circular_arc_quadratics`],
+//!   target `0.05 (TOL − δ)`), written as `qcurve` points. Contours are oriented by the UFO's convention
 //!   (PostScript: outer contours counter-clockwise, holes clockwise, for
 //!   TrueType and CFF input alike; a TrueType compiler such as ufo2ft
 //!   reverses them), the outer ones found by exact nesting.
@@ -65,7 +69,7 @@ use std::path::{Path, PathBuf};
 /// Arguments of `lncert font`.
 #[derive(clap::Args, Debug)]
 pub struct FontArgs {
-    /// The font: TrueType or OpenType (`.ttf`, `.otf`).
+    /// The font: TrueType or OpenType (`.ttf`, `.otf`), or a UFO directory.
     pub input: PathBuf,
     /// Grow (D > 0) or shrink (D < 0) every glyph's filled region by D font units.
     #[arg(long, allow_hyphen_values = true)]
@@ -82,6 +86,11 @@ pub struct FontArgs {
     /// Which glyphs: chars, ranges A-Z, uniXXXX, @name (comma separated).
     #[arg(long)]
     pub glyphs: Option<String>,
+    /// The pieces written: `cubic` (PostScript-style) or `quadratic`
+    /// (TrueType-style: the stroke's sides fitted by quadratics, its arcs by
+    /// certified quadratics).
+    #[arg(long, default_value = "cubic")]
+    pub output: String,
     /// The grid control points are rounded to (`1`, `1/2`, ... or `none`).
     #[arg(long, default_value = "1")]
     pub grid: String,
@@ -163,6 +172,8 @@ struct Job {
     tol: f64,
     /// `Some(g)`: round to multiples of `g`; `None`: to the nearest f64.
     grid: Option<Rational>,
+    /// Quadratic output (`--output quadratic`).
+    quadratic: bool,
 }
 
 fn parse_grid(text: &str) -> Result<Option<Rational>, CliError> {
@@ -189,21 +200,19 @@ fn parse_grid(text: &str) -> Result<Option<Rational>, CliError> {
 }
 
 /// Resolves `--glyphs` to glyph ids, in the order given, without repeats.
-fn select(spec: Option<&str>, info: &FontInfo, data: &[u8]) -> Result<Vec<u16>, CliError> {
+fn select(spec: Option<&str>, info: &FontInfo, src: &Source) -> Result<Vec<u16>, CliError> {
     let Some(spec) = spec else {
         return Ok(info.glyphs.iter().map(|g| g.id).collect());
     };
     let by_cp = |cp: u32, item: &str| -> Result<u16, CliError> {
         let ch = char::from_u32(cp)
             .ok_or_else(|| bad("--glyphs", format!("{item:?}: not a Unicode scalar value")))?;
-        lncert::shape::glyph_id_by_char(data, ch)
-            .map_err(|e| bad("IN", e))?
-            .ok_or_else(|| {
-                bad(
-                    "--glyphs",
-                    format!("{item:?}: the font has no glyph for U+{cp:04X}"),
-                )
-            })
+        src.id_by_char(ch)?.ok_or_else(|| {
+            bad(
+                "--glyphs",
+                format!("{item:?}: the font has no glyph for U+{cp:04X}"),
+            )
+        })
     };
     let by_name = |name: &str, item: &str| -> Result<u16, CliError> {
         info.glyphs
@@ -334,8 +343,43 @@ fn simple(contours: &[Vec<Bezier<Rational>>]) -> Result<(), String> {
     Ok(())
 }
 
+/// Where the glyphs come from.
+enum Source {
+    /// A TrueType/OpenType file's bytes.
+    Binary(Vec<u8>),
+    /// A UFO, read and decomposed ([`super::ufo_input`]).
+    Ufo(super::ufo_input::UfoSource),
+}
+
+impl Source {
+    fn outline(&self, id: u16) -> Result<Vec<Bezier<Rational>>, String> {
+        match self {
+            Source::Binary(data) => glyph_outline_by_id(data, id).map_err(|e| e.to_string()),
+            Source::Ufo(u) => u
+                .outlines
+                .get(usize::from(id))
+                .cloned()
+                .unwrap_or_else(|| Err(format!("glyph id {id} out of range"))),
+        }
+    }
+    fn id_by_char(&self, ch: char) -> Result<Option<u16>, CliError> {
+        match self {
+            Source::Binary(data) => {
+                lncert::shape::glyph_id_by_char(data, ch).map_err(|e| bad("IN", e))
+            }
+            Source::Ufo(u) => Ok(u.by_codepoint.get(&u32::from(ch)).copied()),
+        }
+    }
+    fn width(&self, info: &FontInfo, id: u16) -> f64 {
+        match self {
+            Source::Binary(_) => f64::from(info.glyphs[usize::from(id)].advance),
+            Source::Ufo(u) => u.widths[usize::from(id)],
+        }
+    }
+}
+
 /// The whole proof of one glyph (see the module docs).
-fn process(data: &[u8], id: u16, job: &Job) -> GlyphResult {
+fn process(src: &Source, id: u16, job: &Job) -> GlyphResult {
     let t0 = std::time::Instant::now();
     let mut g = GlyphResult {
         id,
@@ -346,7 +390,7 @@ fn process(data: &[u8], id: u16, job: &Job) -> GlyphResult {
         input: Vec::new(),
         ms: 0.0,
     };
-    let res = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| prove(data, job, &mut g)));
+    let res = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| prove(src, job, &mut g)));
     if res.is_err() {
         g.verdict = Verdict::Error;
         g.reason = "internal error (a panic) while proving this glyph".into();
@@ -355,11 +399,11 @@ fn process(data: &[u8], id: u16, job: &Job) -> GlyphResult {
     g
 }
 
-fn prove(data: &[u8], job: &Job, g: &mut GlyphResult) {
-    let pieces = match glyph_outline_by_id(data, g.id) {
+fn prove(src: &Source, job: &Job, g: &mut GlyphResult) {
+    let pieces = match src.outline(g.id) {
         Ok(p) => p,
         Err(e) => {
-            g.reason = e.to_string();
+            g.reason = e;
             return;
         }
     };
@@ -390,7 +434,13 @@ fn prove(data: &[u8], job: &Job, g: &mut GlyphResult) {
         0.9 * job.tol
     };
     let mut opts = StrokeOptions::new(r.clone(), stroke_tol);
-    opts.output = lncert::approx::Output::Cubic;
+    opts.output = if job.quadratic {
+        lncert::approx::Output::Quadratic
+    } else {
+        lncert::approx::Output::Cubic
+    };
+    // what is left of TOL for the arcs' quadratics (cubic arcs take ~1e-7 r)
+    let arc_target = 0.05 * (job.tol - delta_grid).max(job.tol / 2.0);
     let s = match stroke(&pieces, &opts) {
         Ok(s) => s,
         Err(e) => {
@@ -440,6 +490,26 @@ fn prove(data: &[u8], job: &Job, g: &mut GlyphResult) {
         for p in &c.pieces {
             match p {
                 Piece::Bezier(b) => out.push(b.clone()),
+                Piece::Arc(a) if job.quadratic => {
+                    match lncert::certify::circular_arc_quadratics(
+                        &a.center,
+                        &a.radius,
+                        &a.from,
+                        &a.to,
+                        a.clockwise,
+                        arc_target,
+                    ) {
+                        Ok((quads, bound)) => {
+                            arc_bound = arc_bound.max(bound);
+                            out.extend(quads);
+                        }
+                        Err(e) => {
+                            reasons.push(format!("an arc could not be converted: {e}"));
+                            out.push(Bezier::new(vec![a.from.clone(), a.to.clone()]));
+                            arc_bound = f64::INFINITY;
+                        }
+                    }
+                }
                 Piece::Arc(a) => {
                     let (u, v) = (a.from.sub(&a.center), a.to.sub(&a.center));
                     let cross = u.cross(&v);
@@ -606,6 +676,7 @@ fn ufo_contour(c: &[Bezier<Rational>]) -> norad::Contour {
 fn write_ufo(
     out: &Path,
     info: &FontInfo,
+    src: &Source,
     job: &Job,
     results: &[GlyphResult],
 ) -> Result<(), CliError> {
@@ -631,7 +702,7 @@ fn write_ufo(
             used.insert(name.clone());
         }
         let mut glyph = norad::Glyph::new(&name);
-        glyph.width = f64::from(gi.advance);
+        glyph.width = src.width(info, r.id);
         glyph.codepoints = gi
             .codepoints
             .iter()
@@ -672,6 +743,7 @@ fn report_json(
         "distance": a.offset.clone().or(a.stroke.clone()),
         "tol": a.tol,
         "grid": a.grid,
+        "output": a.output,
         "glyphs": results.iter().map(|r| {
             let gi = &info.glyphs[usize::from(r.id)];
             json!({
@@ -812,6 +884,16 @@ pub fn run(a: &FontArgs) -> Result<i32, CliError> {
         return Err(bad("--tol", "must be a positive number"));
     }
     let grid = parse_grid(&a.grid)?;
+    let quadratic = match a.output.as_str() {
+        "cubic" => false,
+        "quadratic" => true,
+        o => {
+            return Err(bad(
+                "--output",
+                format!("expected cubic or quadratic, got {o:?}"),
+            ))
+        }
+    };
     let jobs = match a.jobs {
         Some(0) => return Err(bad("--jobs", "must be at least 1")),
         Some(n) if n > 1024 => return Err(bad("--jobs", "at most 1024")),
@@ -861,25 +943,31 @@ pub fn run(a: &FontArgs) -> Result<i32, CliError> {
         .and_then(|e| e.to_str())
         .unwrap_or_default()
         .to_ascii_lowercase();
-    if ext == "ufo" || a.input.is_dir() {
-        return Err(bad(
-            "IN",
-            "UFO input is not supported yet: give a .ttf or .otf font",
-        ));
-    }
-    let meta = std::fs::metadata(&a.input)
-        .map_err(|e| bad("IN", format!("{}: {e}", a.input.display())))?;
-    if meta.len() > MAX_FONT_BYTES {
-        return Err(bad(
-            "IN",
-            format!("{}: font file too large", a.input.display()),
-        ));
-    }
-    let data =
-        std::fs::read(&a.input).map_err(|e| bad("IN", format!("{}: {e}", a.input.display())))?;
-    let info = font_info(&data).map_err(|e| bad("IN", e))?;
-    let ids = select(a.glyphs.as_deref(), &info, &data)?;
-    let job = Job { op, tol, grid };
+    let (src, info) = if ext == "ufo" || a.input.is_dir() {
+        let u = super::ufo_input::read_ufo(&a.input).map_err(|e| bad("IN", e))?;
+        let info = u.info.clone();
+        (Source::Ufo(u), info)
+    } else {
+        let meta = std::fs::metadata(&a.input)
+            .map_err(|e| bad("IN", format!("{}: {e}", a.input.display())))?;
+        if meta.len() > MAX_FONT_BYTES {
+            return Err(bad(
+                "IN",
+                format!("{}: font file too large", a.input.display()),
+            ));
+        }
+        let data = std::fs::read(&a.input)
+            .map_err(|e| bad("IN", format!("{}: {e}", a.input.display())))?;
+        let info = font_info(&data).map_err(|e| bad("IN", e))?;
+        (Source::Binary(data), info)
+    };
+    let ids = select(a.glyphs.as_deref(), &info, &src)?;
+    let job = Job {
+        op,
+        tol,
+        grid,
+        quadratic,
+    };
     // the work
     let t0 = std::time::Instant::now();
     let mut builder = rayon::ThreadPoolBuilder::new();
@@ -891,7 +979,7 @@ pub fn run(a: &FontArgs) -> Result<i32, CliError> {
     let results: Vec<GlyphResult> = pool.install(|| {
         ids.par_iter()
             .map(|&id| {
-                let r = process(&data, id, &job);
+                let r = process(&src, id, &job);
                 if let Some(b) = &bar {
                     b.inc(1);
                 }
@@ -907,7 +995,7 @@ pub fn run(a: &FontArgs) -> Result<i32, CliError> {
         std::fs::remove_dir_all(&a.out)
             .map_err(|e| bad("--out", format!("{}: {e}", a.out.display())))?;
     }
-    write_ufo(&a.out, &info, &job, &results)?;
+    write_ufo(&a.out, &info, &src, &job, &results)?;
     let doc = report_json(a, &info, &results, secs);
     if let Some(p) = &a.report {
         let text = if html {

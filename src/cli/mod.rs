@@ -42,6 +42,8 @@
 //! | [`tangency`] | `lncert tangency` |
 //! | [`offset`], [`offset_svg`] | `lncert offset` and its picture |
 //! | [`curve_input`] | the `CURVE` argument of `offset` and `stroke` (curve files, arcs, circles, `--glyph`) |
+//! | [`stroke_doc`] | `lncert stroke DOC.svg` without `--pen`: each element with its own `stroke-width` |
+//! | [`ufo_input`] | UFO input of `lncert font` (norad; qcurve runs, components decomposed exactly) |
 
 pub mod args;
 pub mod audit;
@@ -57,8 +59,10 @@ pub mod prop;
 pub mod report;
 pub mod reproduce;
 pub mod stroke;
+pub mod stroke_doc;
 pub mod svg;
 pub mod tangency;
+pub mod ufo_input;
 pub mod verify;
 
 use clap::{Parser, Subcommand};

@@ -218,7 +218,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             curve: a.curve.clone(),
             glyph: a.glyph,
             em: a.em,
-            pen: format!("circle:{}", num_traits::Signed::abs(&distance)),
+            pen: Some(format!("circle:{}", num_traits::Signed::abs(&distance))),
             tol: a.tol.clone(),
             cap: "round".into(),
             output: a.output.clone(),
@@ -233,8 +233,12 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
         }
         return super::stroke::run_input(&sa, &input, lncert::outline::trim::PenShape::Circle(r));
     }
-    let (curve, approx) = match input {
-        CurveInput::Curve { pieces, approx } => (pieces, approx),
+    let (curve, approx, y_down) = match input {
+        CurveInput::Curve {
+            pieces,
+            approx,
+            y_down,
+        } => (pieces, approx, y_down),
         CurveInput::Arc(arc) => return run_arcs(a, &[*arc], &distance, tol),
         CurveInput::Circle { arcs, .. } => return run_arcs(a, &arcs, &distance, tol),
     };
@@ -253,7 +257,9 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     opts.certify = !a.no_certify;
     opts.smooth_kinks = output != Output::Native && !a.keep_kinks;
     if let Some(g) = &grid {
-        if output == Output::Cubic && lncert::approx::fit::rounding_move(g) >= tol {
+        if matches!(output, Output::Cubic | Output::Quadratic)
+            && lncert::approx::fit::rounding_move(g) >= tol
+        {
             return super::offset_grid::run(a, &curve, &opts);
         }
     }
@@ -290,7 +296,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
         }
     }
     if let Some(path) = &a.svg {
-        let svg = super::offset_svg::render(&curve, &res);
+        let svg = super::offset_svg::render(&curve, &res, y_down);
         std::fs::write(path, svg).map_err(|e| bad("--svg", format!("{}: {e}", path.display())))?;
     }
     if let Some(path) = &a.curve_out {

@@ -1,4 +1,4 @@
-//! `lncert offset … --output cubic --grid G --tol T` with `T ≤ G·√2/2`: the
+//! `lncert offset … --output cubic|quadratic --grid G --tol T` with `T ≤ G·√2/2`: the
 //! tolerance is below what rounding a fitted spline to the grid can keep, so
 //! the joints are placed where the exact offset passes near a grid point and
 //! every cubic is proven against the exact curve between its joints
@@ -23,7 +23,8 @@ fn target_json(t: &Target) -> serde_json::Value {
     }
 }
 
-/// SVG path data of the cubics, one subpath per contour (`Z` when closed).
+/// SVG path data of the cubics (`C`) or quadratics (`Q`), one subpath per
+/// contour (`Z` when closed).
 pub fn path_data(r: &GridOffset) -> String {
     let mut out = String::new();
     for &(first, n, closed) in &r.contours {
@@ -32,7 +33,7 @@ pub fn path_data(r: &GridOffset) -> String {
             if k == 0 {
                 out += &format!("M {} {}", exact_decimal(p[0].x), exact_decimal(p[0].y));
             }
-            out += " C";
+            out += if p.len() == 3 { " Q" } else { " C" };
             for c in &p[1..] {
                 out += &format!(" {} {}", exact_decimal(c.x), exact_decimal(c.y));
             }
@@ -99,8 +100,8 @@ pub fn run(
     if a.json {
         let doc = json!({
             "method": "grid-fit",
-            "output": "cubic",
-            "degree": 3,
+            "output": opts.output.name(),
+            "degree": if opts.output == lncert::approx::Output::Quadratic { 2 } else { 3 },
             "grid": {"grid": q(&grid), "rounding_move": lncert::approx::fit::rounding_move(&grid), "how": how},
             "distance": q(&opts.distance),
             "tol": a.tol,
@@ -132,10 +133,11 @@ pub fn run(
         ));
     } else {
         let mut s = format!(
-            "offset at distance {} on the grid {}: {} cubic segment(s) in {} contour(s), {} control points, every coordinate a multiple of the grid\n",
+            "offset at distance {} on the grid {}: {} {} segment(s) in {} contour(s), {} control points, every coordinate a multiple of the grid\n",
             q(&opts.distance),
             q(&grid),
             r.segments.len(),
+            opts.output.name(),
             r.contours.len(),
             r.control_points()
         );

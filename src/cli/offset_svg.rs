@@ -64,8 +64,10 @@ fn poly(points: &[V2<f64>], map: &dyn Fn(&V2<f64>) -> (f64, f64)) -> String {
         .join(" ")
 }
 
-/// The SVG document.
-pub fn render(curve: &[Bezier<Rational>], res: &OffsetResult) -> String {
+/// The SVG document. `y_down`: the input's coordinates are SVG's (path data
+/// or a document), drawn as a browser draws the input; otherwise y points up
+/// (JSON curves, glyphs), and the picture flips it.
+pub fn render(curve: &[Bezier<Rational>], res: &OffsetResult, y_down: bool) -> String {
     let d = res.distance.approx();
     let input: Vec<Bezier<f64>> = curve.iter().map(|b| b.map(|v| v.approx())).collect();
     let exact = exact_samples(curve, d);
@@ -102,7 +104,14 @@ pub fn render(curve: &[Bezier<Rational>], res: &OffsetResult) -> String {
     }
     let span = (x1 - x0).max(y1 - y0).max(1e-300);
     let sc = ((W - 2.0 * PAD) / span).min((H_MAIN - 2.0 * PAD) / span);
-    let map = |p: &V2<f64>| (PAD + (p.x - x0) * sc, H_MAIN - PAD - (p.y - y0) * sc);
+    let map = |p: &V2<f64>| {
+        let y = if y_down {
+            PAD + (p.y - y0) * sc
+        } else {
+            H_MAIN - PAD - (p.y - y0) * sc
+        };
+        (PAD + (p.x - x0) * sc, y)
+    };
     let mut s = String::new();
     let _ = writeln!(
         s,

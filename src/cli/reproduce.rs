@@ -160,7 +160,7 @@ fn write_strokes(dir: &std::path::Path, runs: &[Run]) -> Result<Vec<PathBuf>, Cl
                 .collect();
         let path = dir.join(format!("{name}.svg"));
         let d = super::stroke::path_data(s).unwrap_or_else(|_| super::stroke::fallback_path(s));
-        let svg = super::stroke::svg(s, &r.curve, &d);
+        let svg = super::stroke::svg(&[s], &r.curve, &d, false);
         std::fs::write(&path, svg).map_err(|e| {
             super::args::bad("--out", format!("cannot write {}: {e}", path.display()))
         })?;
@@ -178,7 +178,7 @@ fn write_font_h(dir: &std::path::Path) -> Result<PathBuf, CliError> {
     let x = seed001::nonic().map_err(fail)?;
     let d = super::stroke::path_data(&s).unwrap_or_else(|_| super::stroke::fallback_path(&s));
     let path = dir.join("font-H.svg");
-    std::fs::write(&path, super::stroke::svg(&s, &x, &d))
+    std::fs::write(&path, super::stroke::svg(&[&s], &x, &d, false))
         .map_err(|e| super::args::bad("--out", format!("cannot write {}: {e}", path.display())))?;
     Ok(path)
 }

@@ -19,6 +19,9 @@
 //!   caps half ellipses made of proven cubics (error ≤ TOL/8, printed).
 //!   The curve must be G¹ (no join pieces for elliptical pens yet).
 //!
+//! Without `--pen`, an SVG document is stroked element by element, each with
+//! a circle of its own `stroke-width / 2` ([`super::stroke_doc`]).
+//!
 //! `CURVE` is read as `lncert offset` reads it ([`super::curve_input`]):
 //! curve files and SVG documents (the approximation of SVG arcs reported,
 //! JSON `"input_approximation"`), `--glyph CHAR [--em]` with a font, and
@@ -61,9 +64,11 @@ pub struct StrokeArgs {
     #[arg(long, requires = "glyph")]
     pub em: bool,
     /// The pen: `circle:R` (`R > 0`, exact) or `ellipse:A,B[,θ]` (semi-axes
-    /// `A ≥ B > 0`, rotation `θ`: `pi/6`, `30deg` or radians).
+    /// `A ≥ B > 0`, rotation `θ`: `pi/6`, `30deg` or radians). Without it, an
+    /// SVG document is stroked element by element, each with its own
+    /// `stroke-width` (a circle of radius width/2 in document units).
     #[arg(long)]
-    pub pen: String,
+    pub pen: Option<String>,
     /// The tolerance to prove for claims (a) and (b).
     #[arg(long, allow_hyphen_values = true)]
     pub tol: String,
@@ -192,11 +197,20 @@ pub fn path_data(s: &Stroke) -> Result<String, CliError> {
     Ok(d.trim_end().to_string())
 }
 
-/// The picture: the filled outline (path data `path`) over the skeleton.
-pub fn svg(s: &Stroke, curve: &[lncert::curve::Bezier<Rational>], path: &str) -> String {
+/// The picture: the filled outlines (path data `path`) over the skeleton.
+/// `y_down`: the coordinates are SVG's (the input was SVG path data or a
+/// document), drawn as a browser draws the input; otherwise y points up
+/// (JSON curves, glyphs, the seeds' figures) and the picture flips it
+/// (`scale(1,-1)`).
+pub fn svg(
+    strokes: &[&Stroke],
+    curve: &[lncert::curve::Bezier<Rational>],
+    path: &str,
+    y_down: bool,
+) -> String {
     let mut lo = (f64::INFINITY, f64::INFINITY);
     let mut hi = (f64::NEG_INFINITY, f64::NEG_INFINITY);
-    for c in &s.contours {
+    for c in strokes.iter().flat_map(|s| &s.contours) {
         for p in &c.pieces {
             for v in [p.start(), p.end()] {
                 lo = (lo.0.min(f(&v.x)), lo.1.min(f(&v.y)));
@@ -238,14 +252,19 @@ pub fn svg(s: &Stroke, curve: &[lncert::curve::Bezier<Rational>], path: &str) ->
             let _ = write!(skel, "L {} ", pts.join(" L "));
         }
     }
+    let (top, flip) = if y_down {
+        (lo.1 - m, "")
+    } else {
+        (-hi.1 - m, " transform=\"scale(1,-1)\"")
+    };
     format!(
         "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"{} {} {} {}\" width=\"800\">\n\
-         <g transform=\"scale(1,-1)\">\n\
+         <g{flip}>\n\
          <path d=\"{path}\" fill=\"#9cc3e6\" fill-rule=\"nonzero\" stroke=\"#1f4e79\" stroke-width=\"{}\"/>\n\
          <path d=\"{skel}\" fill=\"none\" stroke=\"#c00000\" stroke-width=\"{}\"/>\n\
          </g>\n</svg>\n",
         lo.0 - m,
-        -hi.1 - m,
+        top,
         w + 2.0 * m,
         h + 2.0 * m,
         w.max(h) / 400.0,
@@ -260,7 +279,10 @@ pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
     if !(tol.is_finite() && tol > 0.0) {
         return Err(bad("--tol", "must be a positive number"));
     }
-    let pen = pen_shape(&a.pen, tol)?;
+    let Some(pen) = &a.pen else {
+        return super::stroke_doc::run(a);
+    };
+    let pen = pen_shape(pen, tol)?;
     let input = read_curve_input(&a.curve, a.glyph, a.em)?;
     run_input(a, &input, pen)
 }
@@ -276,7 +298,11 @@ pub fn run_input(a: &StrokeArgs, input: &CurveInput, pen: PenShape) -> Result<i3
     };
     let opts = options(a, pen)?;
     match input {
-        CurveInput::Curve { pieces, approx } => run_curve(a, pieces, approx, &opts),
+        CurveInput::Curve {
+            pieces,
+            approx,
+            y_down,
+        } => run_curve(a, pieces, approx, &opts, *y_down),
         CurveInput::Circle { center, radius, .. } => {
             let Some(r) = circle_pen else {
                 return Err(bad(
@@ -286,7 +312,14 @@ pub fn run_input(a: &StrokeArgs, input: &CurveInput, pen: PenShape) -> Result<i3
             };
             let t0 = std::time::Instant::now();
             let s = circle_stroke(center, radius, &r, opts.tol);
-            report(a, &s, &[], &InputApprox::default(), t0.elapsed().as_secs_f64())
+            report(
+                a,
+                &s,
+                &[],
+                &InputApprox::default(),
+                t0.elapsed().as_secs_f64(),
+                false,
+            )
         }
         CurveInput::Arc(_) => Err(bad(
             "CURVE",
@@ -303,11 +336,11 @@ pub fn run_with(
     pen: PenShape,
 ) -> Result<i32, CliError> {
     let opts = options(a, pen)?;
-    run_curve(a, curve, &InputApprox::default(), &opts)
+    run_curve(a, curve, &InputApprox::default(), &opts, false)
 }
 
 /// The options of a run, every flag checked before any work.
-fn options(a: &StrokeArgs, pen: PenShape) -> Result<StrokeOptions, CliError> {
+pub(crate) fn options(a: &StrokeArgs, pen: PenShape) -> Result<StrokeOptions, CliError> {
     let tol_q = number("--tol", &a.tol)?;
     let tol = interval_from_rational(&tol_q).inf();
     if !(tol.is_finite() && tol > 0.0) {
@@ -356,19 +389,23 @@ fn run_curve(
     curve: &[lncert::curve::Bezier<Rational>],
     approx: &InputApprox,
     opts: &StrokeOptions,
+    y_down: bool,
 ) -> Result<i32, CliError> {
     let t0 = std::time::Instant::now();
-    let s = stroke(curve, opts).map_err(|e| {
-        bad(
-            match e.field.as_str() {
-                "radius" | "pen" => "--pen",
-                "tol" => "--tol",
-                _ => "CURVE",
-            },
-            e.reason,
-        )
-    })?;
-    report(a, &s, curve, approx, t0.elapsed().as_secs_f64())
+    let s = stroke(curve, opts).map_err(stroke_err)?;
+    report(a, &s, curve, approx, t0.elapsed().as_secs_f64(), y_down)
+}
+
+/// A stroke engine error, naming the flag.
+pub(crate) fn stroke_err(e: lncert::outline::trim::StrokeError) -> CliError {
+    bad(
+        match e.field.as_str() {
+            "radius" | "pen" => "--pen",
+            "tol" => "--tol",
+            _ => "CURVE",
+        },
+        e.reason,
+    )
 }
 
 /// One exact circle contour of radius `radius` about `center`: four quarter
@@ -479,7 +516,7 @@ pub fn circle_stroke(c: &V2<Rational>, rho: &Rational, r: &Rational, tol: f64) -
 
 /// What keeps a stroke from being decided, for the JSON `uncertain` list:
 /// every claim not proven (with its note) and every open contour (by index).
-fn uncertain(s: &Stroke) -> Vec<serde_json::Value> {
+pub(crate) fn uncertain(s: &Stroke) -> Vec<serde_json::Value> {
     let mut out = Vec::new();
     for (name, c) in [("a", &s.a), ("b", &s.b), ("c", &s.c)] {
         if !c.proven {
@@ -503,6 +540,7 @@ fn report(
     curve: &[lncert::curve::Bezier<Rational>],
     approx: &InputApprox,
     secs: f64,
+    y_down: bool,
 ) -> Result<i32, CliError> {
     let uncertain = uncertain(s);
     // decided: every claim proven and every contour closed
@@ -521,10 +559,30 @@ fn report(
     if let Some(p) = &a.svg {
         // the picture draws higher-degree pieces as their control polygons' chords
         let d = path.clone().unwrap_or_else(|_| fallback_path(s));
-        std::fs::write(p, svg(s, curve, &d)).map_err(|e| bad("--svg", e))?;
+        std::fs::write(p, svg(&[s], curve, &d, y_down)).map_err(|e| bad("--svg", e))?;
     }
     if a.json {
-        let doc = json!({
+        let mut doc = stroke_json(s, a.pen.as_deref().unwrap_or_default());
+        doc["seconds"] = json!(secs);
+        doc["tol"] = json!(a.tol);
+        doc["verdict"] = json!(verdict);
+        doc["input_approximation"] = approx.to_json();
+        print_out(&format!("{doc}\n"));
+    } else {
+        let mut out = super::offset::input_line("input", approx).unwrap_or_default();
+        out += &stroke_text(s, secs);
+        let _ = writeln!(out, "verdict: {verdict}");
+        print_out(&out);
+    }
+    Ok(code)
+}
+
+/// The JSON of one stroke: `outline` (contours, intersections, `complete`,
+/// `uncertain`, claims, notes), `pen`, `caps`, `raw_pieces`, `pieces`.
+pub(crate) fn stroke_json(s: &Stroke, pen_given: &str) -> serde_json::Value {
+    let uncertain = uncertain(s);
+    let complete = uncertain.is_empty();
+    json!({
             "outline": {
                 "contours": s.contours.iter().map(|c| json!({
                     "closed": c.closed,
@@ -544,7 +602,7 @@ fn report(
                 "claims": {"a": claim_json(&s.a), "b": claim_json(&s.b), "c": claim_json(&s.c)},
                 "notes": s.notes,
             },
-            "pen": pen_json(s, &a.pen),
+            "pen": pen_json(s, pen_given),
             "caps": s.caps.iter().map(|c| json!({
                 "end": c.end,
                 "pieces": c.pieces,
@@ -553,83 +611,80 @@ fn report(
             })).collect::<Vec<_>>(),
             "raw_pieces": s.raw_pieces,
             "pieces": s.pieces(),
-            "seconds": secs,
-            "tol": a.tol,
-            "verdict": verdict,
-            "input_approximation": approx.to_json(),
-        });
-        print_out(&format!("{doc}\n"));
-    } else {
-        let mut out = super::offset::input_line("input", approx).unwrap_or_default();
+
+    })
+}
+
+/// The text lines of one stroke (contours, claims, notes, what is not decided).
+pub(crate) fn stroke_text(s: &Stroke, secs: f64) -> String {
+    let uncertain = uncertain(s);
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "stroke: {} contours, {} pieces ({} raw, {} crossings cut), {:.2} s",
+        s.contours.len(),
+        s.pieces(),
+        s.raw_pieces,
+        s.crossings.len(),
+        secs
+    );
+    if let Some(p) = &s.pen {
         let _ = writeln!(
             out,
-            "stroke: {} contours, {} pieces ({} raw, {} crossings cut), {:.2} s",
-            s.contours.len(),
-            s.pieces(),
-            s.raw_pieces,
-            s.crossings.len(),
-            secs
-        );
-        if let Some(p) = &s.pen {
-            let _ = writeln!(
-                out,
-                "  pen used (exact): {}, M = [[{}, {}], [{}, {}]]{}",
-                p.description,
-                q(&p.m[0][0]),
-                q(&p.m[0][1]),
-                q(&p.m[1][0]),
-                q(&p.m[1][1]),
-                if p.margin > 0.0 {
-                    format!(
+            "  pen used (exact): {}, M = [[{}, {}], [{}, {}]]{}",
+            p.description,
+            q(&p.m[0][0]),
+            q(&p.m[0][1]),
+            q(&p.m[1][0]),
+            q(&p.m[1][1]),
+            if p.margin > 0.0 {
+                format!(
                         " (rotation within {:.1e} rad of the one given; the claims are for this exact pen)",
                         p.rotation_error
                     )
-                } else {
-                    String::new()
-                }
-            );
-        }
-        for c in &s.caps {
-            let _ = writeln!(
-                out,
-                "  {} cap: {} cubics, certified within {:.3e} of the exact half ellipse",
-                c.end, c.pieces, c.error
-            );
-        }
-        for (k, c) in s.contours.iter().enumerate() {
-            let _ = writeln!(
-                out,
-                "  contour {k}: {} pieces, {}, {}",
-                c.pieces.len(),
-                if c.closed { "closed" } else { "open" },
-                c.orientation.name()
-            );
-        }
-        for (name, c) in [("a", &s.a), ("b", &s.b), ("c", &s.c)] {
-            let _ = writeln!(
-                out,
-                "  ({name}) {}: {}",
-                if c.proven { "proven" } else { "undecided" },
-                c.note
-            );
-        }
-        for n in &s.notes {
-            let _ = writeln!(out, "  note: {n}");
-        }
-        for u in &uncertain {
-            let _ = writeln!(
-                out,
-                "  not decided: {}",
-                match u.get("claim").and_then(|c| c.as_str()) {
-                    Some(c) => format!("claim ({c})"),
-                    None => u["note"].as_str().unwrap_or_default().to_string(),
-                }
-            );
-        }
-        let _ = writeln!(out, "verdict: {verdict}");
-        print_out(&out);
+            } else {
+                String::new()
+            }
+        );
     }
-    Ok(code)
+    for c in &s.caps {
+        let _ = writeln!(
+            out,
+            "  {} cap: {} cubics, certified within {:.3e} of the exact half ellipse",
+            c.end, c.pieces, c.error
+        );
+    }
+    for (k, c) in s.contours.iter().enumerate() {
+        let _ = writeln!(
+            out,
+            "  contour {k}: {} pieces, {}, {}",
+            c.pieces.len(),
+            if c.closed { "closed" } else { "open" },
+            c.orientation.name()
+        );
+    }
+    for (name, c) in [("a", &s.a), ("b", &s.b), ("c", &s.c)] {
+        let _ = writeln!(
+            out,
+            "  ({name}) {}: {}",
+            if c.proven { "proven" } else { "undecided" },
+            c.note
+        );
+    }
+    for n in &s.notes {
+        let _ = writeln!(out, "  note: {n}");
+    }
+    for u in &uncertain {
+        let _ = writeln!(
+            out,
+            "  not decided: {}",
+            match u.get("claim").and_then(|c| c.as_str()) {
+                Some(c) => format!("claim ({c})"),
+                None => u["note"].as_str().unwrap_or_default().to_string(),
+            }
+        );
+    }
+    out
 }
 
 /// The pen actually used: the circle's radius, or the exact ellipse matrix.

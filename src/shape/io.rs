@@ -772,6 +772,7 @@ impl<'a> SvgParser<'a> {
                             at: format!("byte {at}"),
                             pieces: n,
                             bound,
+                            detail: String::new(),
                         });
                     }
                 }

@@ -80,7 +80,10 @@ pub use io::{
     MAX_SVG_BYTES,
 };
 pub use svgarc::{format_up, ApproxElement, ApproxKind, InputApprox, ARC_TARGET_REL};
-pub use svgdoc::{parse_svg_document, parse_svg_document_reported};
+pub use svgdoc::{
+    parse_svg_document, parse_svg_document_elements, parse_svg_document_reported, SvgElement,
+    MAX_USE_DEPTH, TRANSFORM_TARGET,
+};
 pub use winding::winding_number;
 
 /// Why a shape could not be built or read: the field and the reason.

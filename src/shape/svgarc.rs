@@ -73,6 +73,13 @@ pub enum ApproxKind {
     Ellipse,
     /// An SVG `<rect>` with rounded corners.
     RoundedRect,
+    /// An element under `rotate(θ)` with `cos θ` or `sin θ` irrational: mapped
+    /// by an exactly rational rotation within a certified angle (its pieces
+    /// are exact images, not approximations; the bound is the displacement).
+    Rotation,
+    /// An element under `skewX(θ)`/`skewY(θ)` with `tan θ` irrational: mapped
+    /// by the skew of a rational `t` within a certified `|tan θ − t|`.
+    Skew,
 }
 
 impl ApproxKind {
@@ -82,7 +89,14 @@ impl ApproxKind {
             ApproxKind::Circle => "circle(s)",
             ApproxKind::Ellipse => "ellipse(s)",
             ApproxKind::RoundedRect => "rounded rect(s)",
+            ApproxKind::Rotation => "element(s) under an irrational rotate",
+            ApproxKind::Skew => "element(s) under an irrational skew",
         }
+    }
+    /// An approximated curve (replaced by cubic pieces), rather than an
+    /// exactly mapped element under an approximated transform.
+    pub fn is_curve(self) -> bool {
+        !matches!(self, ApproxKind::Rotation | ApproxKind::Skew)
     }
 }
 
@@ -94,11 +108,17 @@ pub struct ApproxElement {
     /// Where it is: `byte 12` of path data, or the element of an SVG document
     /// (`svg/g[0]/circle[1]`, `svg/path[0].d, byte 12`).
     pub at: String,
-    /// The cubic pieces that replace it.
+    /// The cubic pieces that replace it (for [`ApproxKind::Rotation`] and
+    /// [`ApproxKind::Skew`]: the element's pieces, mapped exactly by the
+    /// rational transform).
     pub pieces: usize,
     /// The certified bound: the Hausdorff distance between the pieces and the
     /// exact element is at most this (an `f64` rounded up).
     pub bound: f64,
+    /// What was used instead of the exact input, when it is not a cubic
+    /// chain (the exact rational rotation or skew and its certified error);
+    /// empty for arcs.
+    pub detail: String,
 }
 
 /// The report of a curve reader: every input element that was *approximated*
@@ -126,9 +146,14 @@ impl InputApprox {
     pub fn is_empty(&self) -> bool {
         self.elements.is_empty()
     }
-    /// Total cubic pieces that replace approximated elements.
+    /// Total cubic pieces that replace approximated curves (arcs, circles,
+    /// ellipses, rounded rects).
     pub fn pieces(&self) -> usize {
-        self.elements.iter().map(|e| e.pieces).sum()
+        self.elements
+            .iter()
+            .filter(|e| e.kind.is_curve())
+            .map(|e| e.pieces)
+            .sum()
     }
     /// The overall certified bound: the Hausdorff distance between the curve
     /// read and the exact input is at most this (0 when nothing was approximated).
@@ -163,23 +188,39 @@ impl InputApprox {
         if self.is_empty() {
             return None;
         }
-        let kinds = [
+        let count = |k: ApproxKind| self.elements.iter().filter(|e| e.kind == k).count();
+        let what: Vec<String> = [
             ApproxKind::Arc,
             ApproxKind::Circle,
             ApproxKind::Ellipse,
             ApproxKind::RoundedRect,
-        ];
-        let what: Vec<String> = kinds
-            .iter()
-            .filter_map(|&k| {
-                let n = self.elements.iter().filter(|e| e.kind == k).count();
-                (n > 0).then(|| format!("{n} {}", k.noun()))
-            })
-            .collect();
+        ]
+        .iter()
+        .filter(|&&k| count(k) > 0)
+        .map(|&k| format!("{} {}", count(k), k.noun()))
+        .collect();
+        let mut parts = Vec::new();
+        if !what.is_empty() {
+            parts.push(format!(
+                "{} approximated by {} cubic pieces",
+                what.join(", "),
+                self.pieces()
+            ));
+        }
+        for k in [ApproxKind::Rotation, ApproxKind::Skew] {
+            if let Some(first) = self.elements.iter().find(|e| e.kind == k) {
+                parts.push(format!(
+                    "{} {} mapped exactly by a rational matrix ({}{})",
+                    count(k),
+                    k.noun(),
+                    first.detail,
+                    if count(k) > 1 { ", …" } else { "" }
+                ));
+            }
+        }
         Some(format!(
-            "{} approximated by {} cubic pieces, certified within {}",
-            what.join(", "),
-            self.pieces(),
+            "{}, certified within {}",
+            parts.join("; "),
             format_up(self.bound())
         ))
     }

@@ -1,0 +1,164 @@
+//! `lncert stroke DOC.svg --tol T` without `--pen`: an SVG document stroked
+//! as a browser strokes it — every drawn element whose computed `stroke` is
+//! not `none` (SVG's initial value is `none`) with a circular pen of radius
+//! `stroke-width / 2` in document units (the element's own `stroke-width`,
+//! from its attribute, its `style` or an ancestor; default 1; scaled by its
+//! transform, which must be a similarity with a rational scale, or the pen
+//! would be an ellipse: refused, naming the element). Elements with a zero
+//! width draw nothing and are skipped. What is skipped or instanced
+//! (`display`, `visibility`, `<defs>`, `<use>`) is
+//! [`lncert::shape::parse_svg_document_elements`]'s.
+//!
+//! Every element is stroked and proven on its own (claims (a)–(c) of
+//! `lncert stroke`, in parallel); the run is decided (exit 0) when every
+//! element's stroke is. `--svg` draws all outlines (y down, as the input),
+//! `--path-out` writes them one after the other (each element's contours
+//! are oriented; their union is the nonzero fill). JSON: `{"elements":
+//! [{"at", "pen_radius", "stroke_width", "input_approximation", "verdict",
+//! "outline", ...}], "verdict", "seconds", "tol", "input_approximation"}`.
+
+use super::args::{bad, q};
+use super::stroke::{options, path_data, stroke_err, stroke_json, stroke_text, StrokeArgs};
+use super::{print_out, CliError};
+use lncert::outline::trim::{stroke, PenShape, Stroke};
+use lncert::scalar::Rational;
+use lncert::shape::{parse_svg_document_elements, InputApprox, SvgElement};
+use num_traits::Zero;
+use rayon::prelude::*;
+use serde_json::json;
+use std::fmt::Write as _;
+
+/// The elements to stroke and their pens, every one checked before any work.
+fn stroked(elements: &[SvgElement]) -> Result<Vec<(&SvgElement, Rational)>, CliError> {
+    let mut out = Vec::new();
+    for e in elements.iter().filter(|e| e.stroked) {
+        if e.stroke_width.is_zero() {
+            continue;
+        }
+        let r = e
+            .pen_radius
+            .clone()
+            .map_err(|reason| bad("CURVE", reason))?;
+        out.push((e, r));
+    }
+    if out.is_empty() {
+        return Err(bad(
+            "--pen",
+            "no element of the document is stroked (stroke unset or none — SVG's initial stroke is none — or stroke-width 0): give --pen to stroke every element with one pen",
+        ));
+    }
+    Ok(out)
+}
+
+/// Runs the per-element stroke of an SVG document.
+pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
+    if a.glyph.is_some() {
+        return Err(bad("--pen", "required with --glyph"));
+    }
+    let text = super::curve_input::read_text(&a.curve)?;
+    if !text.trim_start().starts_with('<') {
+        return Err(bad(
+            "--pen",
+            "required unless CURVE is an SVG document (only a document carries its own stroke-width)",
+        ));
+    }
+    let elements = parse_svg_document_elements(&text).map_err(|e| bad("CURVE", e))?;
+    let jobs = stroked(&elements)?;
+    // every flag checked once, before any work
+    options(a, PenShape::Circle(jobs[0].1.clone()))?;
+    let t0 = std::time::Instant::now();
+    let strokes: Vec<(Stroke, f64)> = jobs
+        .par_iter()
+        .map(|(e, r)| {
+            let t = std::time::Instant::now();
+            let opts = options(a, PenShape::Circle(r.clone()))?;
+            let s = stroke(&e.pieces, &opts)
+                .map_err(stroke_err)
+                .map_err(|err| bad("CURVE", format!("{}: {}", e.at, err)))?;
+            Ok((s, t.elapsed().as_secs_f64()))
+        })
+        .collect::<Result<_, CliError>>()?;
+    let secs = t0.elapsed().as_secs_f64();
+    let mut approx = InputApprox::default();
+    for (e, _) in &jobs {
+        approx.elements.extend(e.approx.elements.iter().cloned());
+    }
+    let decided: Vec<bool> = strokes
+        .iter()
+        .map(|(s, _)| super::stroke::uncertain(s).is_empty())
+        .collect();
+    let all = decided.iter().all(|d| *d);
+    let verdict = if all { "proven" } else { "undecided" };
+    let refs: Vec<&Stroke> = strokes.iter().map(|(s, _)| s).collect();
+    if let Some(p) = &a.path_out {
+        let mut d = Vec::new();
+        for s in &refs {
+            d.push(path_data(s)?);
+        }
+        std::fs::write(p, d.join(" ") + "\n").map_err(|e| bad("--path-out", e))?;
+    }
+    if let Some(p) = &a.svg {
+        let d: Vec<String> = refs
+            .iter()
+            .map(|s| path_data(s).unwrap_or_else(|_| super::stroke::fallback_path(s)))
+            .collect();
+        let skeleton: Vec<_> = jobs
+            .iter()
+            .flat_map(|(e, _)| e.pieces.iter().cloned())
+            .collect();
+        std::fs::write(p, super::stroke::svg(&refs, &skeleton, &d.join(" "), true))
+            .map_err(|e| bad("--svg", e))?;
+    }
+    if a.json {
+        let elements: Vec<serde_json::Value> = jobs
+            .iter()
+            .zip(&strokes)
+            .zip(&decided)
+            .map(|(((e, r), (s, t)), d)| {
+                let mut v = stroke_json(s, &format!("circle:{}", q(r)));
+                v["at"] = json!(e.at);
+                v["pen_radius"] = json!(q(r));
+                v["stroke_width"] = json!(q(&e.stroke_width));
+                v["input_approximation"] = e.approx.to_json();
+                v["seconds"] = json!(t);
+                v["verdict"] = json!(if *d { "proven" } else { "undecided" });
+                v
+            })
+            .collect();
+        let doc = json!({
+            "elements": elements,
+            "seconds": secs,
+            "tol": a.tol,
+            "verdict": verdict,
+            "input_approximation": approx.to_json(),
+        });
+        print_out(&format!("{doc}\n"));
+    } else {
+        let mut out = super::offset::input_line("input", &approx).unwrap_or_default();
+        let _ = writeln!(
+            out,
+            "{} element(s) stroked with their own stroke-width, {:.2} s",
+            jobs.len(),
+            secs
+        );
+        for (((e, r), (s, t)), d) in jobs.iter().zip(&strokes).zip(&decided) {
+            let _ = writeln!(
+                out,
+                "element {} (pen circle:{}): {}",
+                e.at,
+                q(r),
+                if *d { "proven" } else { "undecided" }
+            );
+            for line in stroke_text(s, *t).lines() {
+                let _ = writeln!(out, "  {line}");
+            }
+        }
+        let _ = writeln!(out, "verdict: {verdict}");
+        print_out(&out);
+    }
+    Ok(if all {
+        super::EXIT_OK
+    } else {
+        super::EXIT_UNDECIDED
+    })
+}
