@@ -129,7 +129,7 @@ fn binom(n: usize, k: usize) -> Interval {
 /// in the scaled basis `C(n, i)·a_i` a product is a convolution, so
 /// `c_k = Σ C(m, i) C(n, j) a_i b_j / C(m + n, k)` with one division per
 /// coefficient.
-fn bprod(a: &[Interval], b: &[Interval]) -> Vec<Interval> {
+pub(crate) fn bprod(a: &[Interval], b: &[Interval]) -> Vec<Interval> {
     if a.is_empty() || b.is_empty() {
         return Vec::new();
     }
