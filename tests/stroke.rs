@@ -58,13 +58,8 @@ fn output_points(s: &Stroke, n: usize) -> Vec<(f64, f64)> {
         .collect()
 }
 
-/// Points of the exact boundary: exact offset points x ± r N and cap points
-/// whose sampled distance to x is ≥ r − small.
-fn boundary_points(curve: &[Bezier<Rational>], r: f64, closed: bool) -> Vec<(f64, f64)> {
-    boundary_points_n(curve, r, closed, 600)
-}
-
-/// [`boundary_points`] with `n` samples per input piece.
+/// Points of the exact boundary, `n` samples per input piece: exact offset
+/// points x ± r N and cap points whose sampled distance to x is ≥ r − small.
 fn boundary_points_n(
     curve: &[Bezier<Rational>],
     r: f64,

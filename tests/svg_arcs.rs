@@ -9,8 +9,6 @@ use common::{json_of, lncert, tmp};
 
 use lncert::certify::{hausdorff, Config};
 use lncert::shape::{parse_curve_reported, ShapeDesc};
-use serde_json::Value;
-use std::process::Output;
 
 /// Circular arcs whose end points are exact decimals on the circle
 /// (Pythagorean directions (0.96, 0.28), (0.6, 0.8)): the certified lower
