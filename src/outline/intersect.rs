@@ -732,23 +732,7 @@ fn segment_pair(pieces: &[Bezier<Rational>], i: usize, j: usize) -> Option<Inter
         .map(|v| w.dot(&v.sub(p0)) / &w2)
         .collect();
     let sp = Poly::from_bernstein(&sb);
-    let s_enc = |lo: &Rational, hi: &Rational| -> (Rational, Rational) {
-        let (mut a, mut b) = (zero.clone(), zero.clone());
-        let (mut pl, mut ph) = (one.clone(), one.clone());
-        for c in sp.coeffs() {
-            let (x, y) = (c * &pl, c * &ph);
-            if x <= y {
-                a += x;
-                b += y;
-            } else {
-                a += y;
-                b += x;
-            }
-            pl *= lo;
-            ph *= hi;
-        }
-        (a, b)
-    };
+    let s_enc = |lo: &Rational, hi: &Rational| sp.range_on_nonnegative(lo, hi);
     let target = q(1, 1 << 30) * q(1, 1 << 20);
     for root in isolate_roots(&f, &Span::closed(zero.clone(), one.clone())) {
         let mut r = root;
@@ -833,32 +817,9 @@ fn no_contact(f: &[Interval], s: &[Interval], depth: u32) -> bool {
     if depth == 0 {
         return false;
     }
-    let (fl, fr) = halves_scalar(f);
-    let (sl, sr) = halves_scalar(s);
+    let (fl, fr) = crate::curve::bernstein_halves(f);
+    let (sl, sr) = crate::curve::bernstein_halves(s);
     no_contact(&fl, &sl, depth - 1) && no_contact(&fr, &sr, depth - 1)
-}
-
-/// De Casteljau halves of interval Bernstein coefficients, in the convex form.
-fn halves_scalar(c: &[Interval]) -> (Vec<Interval>, Vec<Interval>) {
-    let half = Interval::try_from((0.5, 0.5)).unwrap_or(Interval::ENTIRE);
-    let mut p = c.to_vec();
-    let n = p.len();
-    let mut left = Vec::with_capacity(n);
-    let mut right = Vec::with_capacity(n);
-    if n == 0 {
-        return (left, right);
-    }
-    left.push(p[0]);
-    right.push(p[n - 1]);
-    for r in 1..n {
-        for i in 0..n - r {
-            p[i] = (p[i] + p[i + 1]) * half;
-        }
-        left.push(p[0]);
-        right.push(p[n - 1 - r]);
-    }
-    right.reverse();
-    (left, right)
 }
 
 /// `f(t) / (t − r)` for a root `r` of `f` (synthetic division, exact).

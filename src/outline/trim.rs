@@ -1385,25 +1385,17 @@ fn box_dist_hi(p: &V2<Interval>, w: &V2<Interval>) -> f64 {
 }
 
 /// The halves of an interval Bézier at `t = 1/2` by de Casteljau in the
-/// convex form `(p + q)/2` (exact scaling by a power of two: the boxes' widths
-/// average instead of growing, as they would with `p + t(q − p)`).
+/// convex form `(p + q)/2` ([`crate::curve::bernstein_halves`] per
+/// coordinate: the boxes' widths average instead of growing, as they would
+/// with `p + t(q − p)`).
 fn halves_iv(b: &Bezier<Interval>) -> (Bezier<Interval>, Bezier<Interval>) {
-    let half = Interval::try_from((0.5, 0.5)).unwrap_or(Interval::ENTIRE);
-    let mut p = b.points().to_vec();
-    let n = p.len();
-    let mut left = Vec::with_capacity(n);
-    let mut right = Vec::with_capacity(n);
-    left.push(p[0].clone());
-    right.push(p[n - 1].clone());
-    for r in 1..n {
-        for i in 0..n - r {
-            p[i] = V2::new((p[i].x + p[i + 1].x) * half, (p[i].y + p[i + 1].y) * half);
-        }
-        left.push(p[0].clone());
-        right.push(p[n - 1 - r].clone());
-    }
-    right.reverse();
-    (Bezier::new(left), Bezier::new(right))
+    use crate::curve::bernstein_halves;
+    let (xs, ys): (Vec<Interval>, Vec<Interval>) = b.points().iter().map(|p| (p.x, p.y)).unzip();
+    let ((xl, xr), (yl, yr)) = (bernstein_halves(&xs), bernstein_halves(&ys));
+    let zip = |x: Vec<Interval>, y: Vec<Interval>| {
+        Bezier::new(x.into_iter().zip(y).map(|(a, b)| V2::new(a, b)).collect())
+    };
+    (zip(xl, yl), zip(xr, yr))
 }
 
 impl Part {

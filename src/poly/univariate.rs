@@ -252,3 +252,42 @@ mod tests {
         assert_eq!(r.coeffs(), &[q("1"), q("4"), q("4")]);
     }
 }
+
+impl Poly<crate::scalar::Rational> {
+    /// An exact enclosure `[a, b]` of the values on `[lo, hi]` with
+    /// `0 ≤ lo ≤ hi`: term by term, since each `c·tᵏ` is monotone for `t ≥ 0`
+    /// (cheap, and tight on narrow intervals such as isolating intervals).
+    ///
+    /// # Examples
+    /// ```
+    /// use lncert::poly::Poly;
+    /// use lncert::scalar::Rational;
+    /// let q = |n: i64| Rational::from_integer(n.into());
+    /// let p = Poly::new(vec![q(1), q(-3), q(1)]); // 1 − 3t + t²
+    /// let (a, b) = p.range_on_nonnegative(&q(1), &q(2));
+    /// assert!(a <= q(-1) && q(-1) <= b); // p(1) = −1, p(2) = −1
+    /// ```
+    pub fn range_on_nonnegative(
+        &self,
+        lo: &crate::scalar::Rational,
+        hi: &crate::scalar::Rational,
+    ) -> (crate::scalar::Rational, crate::scalar::Rational) {
+        use num_traits::{One, Zero};
+        type Q = crate::scalar::Rational;
+        let (mut a, mut b) = (<Q as Zero>::zero(), <Q as Zero>::zero());
+        let (mut pl, mut ph) = (<Q as One>::one(), <Q as One>::one());
+        for c in &self.c {
+            let (x, y) = (c * &pl, c * &ph);
+            if x <= y {
+                a += x;
+                b += y;
+            } else {
+                a += y;
+                b += x;
+            }
+            pl *= lo;
+            ph *= hi;
+        }
+        (a, b)
+    }
+}

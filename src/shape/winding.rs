@@ -34,28 +34,6 @@ fn sign(x: &Rational) -> i32 {
     }
 }
 
-/// An enclosure of `p` on `[lo, hi] ⊂ [0, ∞)` (term by term: `tᵏ` is monotone).
-fn enclose(p: &Poly<Rational>, lo: &Rational, hi: &Rational) -> (Rational, Rational) {
-    let (mut a, mut b) = (Rational::zero(), Rational::zero());
-    let (mut pl, mut ph) = (
-        Rational::from_integer(1.into()),
-        Rational::from_integer(1.into()),
-    );
-    for c in p.coeffs() {
-        let (x, y) = (c * &pl, c * &ph);
-        if x <= y {
-            a += x;
-            b += y;
-        } else {
-            a += y;
-            b += x;
-        }
-        pl *= lo;
-        ph *= hi;
-    }
-    (a, b)
-}
-
 /// Sign of `g` at the root of `f` isolated by `r` (`None`: undecided after
 /// the refinement budget, i.e. `g` vanishes there or nearly).
 fn sign_at_root(f: &Poly<Rational>, r: &RealRoot, g: &Poly<Rational>) -> Option<i32> {
@@ -67,7 +45,7 @@ fn sign_at_root(f: &Poly<Rational>, r: &RealRoot, g: &Poly<Rational>) -> Option<
     }
     let mut r = r.clone();
     for _ in 0..64 {
-        let (a, b) = enclose(g, &r.lo, &r.hi);
+        let (a, b) = g.range_on_nonnegative(&r.lo, &r.hi);
         if a.is_positive() {
             return Some(1);
         }
