@@ -293,6 +293,46 @@ fn round_to(x: &Rational, grid: &Option<Rational>) -> Rational {
     }
 }
 
+/// The largest squared distance between the exact control points `p` and
+/// control points `q_i` on the segment `a b` (`q_0 = a`, `q_n = b`, inner ones
+/// the projections clamped to the segment, made monotone): the Bézier with
+/// the `q_i` traces the segment exactly once, and it is within
+/// `max |p_i − q_i|` of the Bézier with the `p_i` at every parameter.
+fn segment_move2(p: &[V2<Rational>], a: &V2<Rational>, b: &V2<Rational>) -> Rational {
+    let zero = <Rational as Zero>::zero();
+    let one = Rational::from_integer(1.into());
+    let d = b.sub(a);
+    let l2 = d.dot(&d);
+    let n = p.len() - 1;
+    let mut ts: Vec<Rational> = Vec::with_capacity(n + 1);
+    for (i, pi) in p.iter().enumerate() {
+        let t = if i == 0 {
+            zero.clone()
+        } else if i == n {
+            one.clone()
+        } else {
+            let t = pi.sub(a).dot(&d) / &l2;
+            t.max(zero.clone()).min(one.clone())
+        };
+        ts.push(t);
+    }
+    // monotone: each inner parameter at least the previous one
+    for i in 1..=n {
+        if ts[i] < ts[i - 1] {
+            ts[i] = ts[i - 1].clone();
+        }
+    }
+    p.iter()
+        .zip(&ts)
+        .map(|(pi, t)| {
+            let q = a.add(&d.scale(t));
+            let e = q.sub(pi);
+            e.dot(&e)
+        })
+        .max()
+        .unwrap_or(zero)
+}
+
 /// Upper bound of `√v`.
 fn sqrt_up(v: &Rational) -> f64 {
     let s = interval_from_rational(v).sqrt();
@@ -564,6 +604,19 @@ fn prove(src: &Source, job: &Job, g: &mut GlyphResult) {
             }
             if pts.iter().all(|p| *p == pts[0]) {
                 continue; // collapsed by the rounding
+            }
+            let n = pts.len() - 1;
+            if n >= 2 && (pts[0] == pts[1] || pts[n - 1] == pts[n]) && pts[0] != pts[n] {
+                // a short piece whose end tangent the rounding erased: written
+                // as the segment between its rounded ends, charged with the
+                // distance of each exact control point to its projection on
+                // that segment (a collinear monotone Bézier traces the segment)
+                let m = segment_move2(b.points(), &pts[0], &pts[n]);
+                if m > move2 {
+                    move2 = m;
+                }
+                out.push(Bezier::new(vec![pts[0].clone(), pts[n].clone()]));
+                continue;
             }
             out.push(Bezier::new(pts));
         }

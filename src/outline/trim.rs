@@ -1503,7 +1503,17 @@ fn prove_kept(
         let base = (2.0 * e_in).max(rf * 1e-12);
         // floats choose the candidates only: `outside` decides
         let (deficit, dirs) = if form.circle {
-            ((rf - est).max(0.0), vec![nr])
+            // away from the float foot y (outward whichever way the piece
+            // travels), then the right normal of travel
+            let y = curve_f[fi].eval_fast(ft);
+            let (zx, zy) = (m.0 - y.x, m.1 - y.y);
+            let zl = zx.hypot(zy);
+            let mut dirs = Vec::with_capacity(2);
+            if zl > 0.0 && zl.is_finite() {
+                dirs.push((zx / zl, zy / zl));
+            }
+            dirs.push(nr);
+            ((rf - est).max(0.0), dirs)
         } else {
             // along the ray from the foot y: the pen boundary is |m − y|(1/γ − 1)
             // away (γ the gauge); push along the piece's normal and along the
@@ -1525,8 +1535,16 @@ fn prove_kept(
             }
             (deficit, dirs)
         };
-        'tries: for k in [1.25, 2.0, 3.0] {
-            let eta = base * k + deficit;
+        // the float deficit is an estimate: scaled up with the tries, and at
+        // last a push of a fraction of the budget (a witness a hair outside
+        // needs a proof finer than the subdivision can give)
+        let tries = [
+            1.25 * (base + deficit),
+            2.0 * (base + deficit),
+            3.0 * (base + deficit),
+            deficit + budget / 16.0,
+        ];
+        'tries: for eta in tries {
             let mut over = true;
             for d in &dirs {
                 let w = (m.0 + eta * d.0, m.1 + eta * d.1);
@@ -2193,26 +2211,41 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
     if dbg {
         eprintln!("classified: {:?}", t0.elapsed());
     }
-    // --- pinched loops: kept pieces that close a loop at an exact point X of
-    // the output, every hull point within λ of X, are dropped (the λ rule of
-    // the removal: a boundary point near them is within e + λ of X)
+    // --- pinched loops and spurs: kept pieces that close a loop at an exact
+    // point X of the output, or dangle from one, each within a certified reach
+    // of the pieces that stay at X, are dropped (a boundary point near them
+    // is within e + δ + reach of the output)
     let kept_idx: Vec<usize> = (0..subs.len()).filter(|&k| keep[k]).collect();
-    let lambda_loop = rational_from_f64(0.75 * tol).unwrap_or_else(<Rational as Zero>::zero);
+    // a spur may reach as far from the live pieces as keeps (b) within tol
+    let spur_caps: Vec<f64> = kept_idx
+        .iter()
+        .map(|&k| {
+            let raw = &raws[subs[k].raw];
+            if raw.kind == Kind::Boundary {
+                tol - raw.e - subs[k].delta
+            } else {
+                // a connector or butt chord stands for no point of ∂S
+                tol
+            }
+        })
+        .collect();
     let dropped = pinched_loops(
         &kept_idx.iter().map(|&k| &subs[k].post).collect::<Vec<_>>(),
-        &lambda_loop,
+        &spur_caps,
     );
     if !dropped.is_empty() {
-        for &d in &dropped {
+        for &(d, reach) in &dropped {
             let k = kept_idx[d];
             keep[k] = false;
             let raw = &raws[subs[k].raw];
-            b_bound = b_bound.max(raw.e + subs[k].delta + 0.75 * tol);
+            if raw.kind == Kind::Boundary {
+                b_bound = b_bound.max(raw.e + subs[k].delta + reach);
+            }
         }
         fail(
             &mut notes,
             format!(
-                "{} kept pieces forming pinched loops or spurs within 3·tol/4 of an output point dropped",
+                "{} kept pieces forming pinched loops or spurs dropped (each within a certified reach of the pieces that stay at its point, added to (b))",
                 dropped.len()
             ),
         );
@@ -2232,8 +2265,8 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
         eprintln!("checked: {:?}", t0.elapsed());
         for (k, s) in subs.iter().enumerate() {
             eprintln!(
-                "sub {k}: raw {} keep {} kept {:?} removed {:?} est {:.6} delta {:.2e}",
-                s.raw, keep[k], kept_bounds[k], removed[k], estimates[k], s.delta
+                "sub {k}: raw {} [{:.6}, {:.6}] keep {} kept {:?} removed {:?} est {:.6} delta {:.2e}",
+                s.raw, s.range.0.approx(), s.range.1.approx(), keep[k], kept_bounds[k], removed[k], estimates[k], s.delta
             );
         }
     }
@@ -2287,33 +2320,37 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
     })
 }
 
-/// Indices of pieces forming *pinched loops*: a chain of pieces
-/// `p_i, …, p_j` (following exact end = start) that starts and ends at one
-/// exact point `X` which is also the end or start of a piece outside the
-/// chain, with every hull point strictly within `lambda` of `X` — and of
-/// *spurs*: a piece with a dangling end (no live piece continues it) whose
-/// hull is within `lambda` of its other end `Y`, an end of another live piece.
-/// Finally every dropped loop or spur's point must still end a live piece
-/// (else it is restored).
-fn pinched_loops(pieces: &[&Piece], lambda: &Rational) -> Vec<usize> {
-    let l2 = lambda * lambda;
+/// Pieces to drop from the output, each with its certified *reach*: an upper
+/// bound of the distance from any of its points to the pieces that stay.
+///
+/// - *Pinched loops*: a chain of pieces `p_i, …, p_j` (following exact
+///   end = start) that starts and ends at one exact point `X` where another
+///   live piece starts, every piece within its cap of `X` or of the live
+///   pieces at `X` outside the chain ([`reach_hi`]).
+/// - *Spurs*: a piece with a dangling end (no live piece continues it), within
+///   its cap of its other end `Y` or of the live pieces at `Y`.
+///
+/// `caps[k]` is how far piece `k` may be from the output for claim (b) to
+/// stay within tol. Every dropped group is re-checked against the final live
+/// pieces (a piece it was measured against may have been dropped after it)
+/// and restored if the check fails; restoring only adds pieces, so this
+/// repeats until nothing changes. Finally every dropped group's point must
+/// still end a live piece.
+fn pinched_loops(pieces: &[&Piece], caps: &[f64]) -> Vec<(usize, f64)> {
     let n = pieces.len();
     let mut dropped = vec![false; n];
-    let mut loops: Vec<(V2<Rational>, Vec<usize>)> = Vec::new();
-    let l2_lo = interval_from_rational(&l2).inf();
-    let near = |p: &Piece, x: &V2<Rational>| {
-        let x = iv_point(x);
-        Part::initial(p).is_some_and(|parts| {
-            parts.iter().all(|part| {
-                part.hull().is_some_and(|h| {
-                    h.iter().all(|q| {
-                        let d = q.sub(&x).norm2();
-                        !d.is_empty() && d.sup() < l2_lo
-                    })
-                })
+    // the live pieces at `x` outside `chain`
+    let live_at = |x: &V2<Rational>, chain: &[usize], dropped: &[bool]| -> Vec<&Piece> {
+        (0..n)
+            .filter(|&j| {
+                !chain.contains(&j)
+                    && !dropped[j]
+                    && (pieces[j].start() == x || pieces[j].end() == x)
             })
-        })
+            .map(|j| pieces[j])
+            .collect()
     };
+    let mut groups: Vec<(V2<Rational>, Vec<usize>)> = Vec::new();
     for s in 0..n {
         if dropped[s] {
             continue;
@@ -2326,11 +2363,12 @@ fn pinched_loops(pieces: &[&Piece], lambda: &Rational) -> Vec<usize> {
         if starts < 2 {
             continue;
         }
-        // follow the chain from s while it stays near X
+        // follow the chain from s while it stays near X and the pieces there
         let mut chain = vec![s];
         let mut cur = s;
         let closed = loop {
-            if !near(pieces[cur], &x) {
+            let refs = live_at(&x, &chain, &dropped);
+            if reach_hi(pieces[cur], &refs, &x, caps[cur]).is_none() {
                 break false;
             }
             let end = pieces[cur].end();
@@ -2351,12 +2389,10 @@ fn pinched_loops(pieces: &[&Piece], lambda: &Rational) -> Vec<usize> {
             for &k in &chain {
                 dropped[k] = true;
             }
-            loops.push((x, chain));
+            groups.push((x, chain));
         }
     }
-    // spurs: a piece one of whose ends no other live piece continues, its
-    // hull within `lambda` of its other end `Y` (which another piece ends or
-    // starts at)
+    // spurs
     loop {
         let mut changed = false;
         for k in 0..n {
@@ -2387,9 +2423,9 @@ fn pinched_loops(pieces: &[&Piece], lambda: &Rational) -> Vec<usize> {
             } else {
                 continue;
             };
-            if near(pieces[k], &y) {
+            if reach_hi(pieces[k], &live_at(&y, &[k], &dropped), &y, caps[k]).is_some() {
                 dropped[k] = true;
-                loops.push((y, vec![k]));
+                groups.push((y, vec![k]));
                 changed = true;
             }
         }
@@ -2397,29 +2433,152 @@ fn pinched_loops(pieces: &[&Piece], lambda: &Rational) -> Vec<usize> {
             break;
         }
     }
-    // the argument of (b) needs X in the output: a loop or spur whose point
-    // is no longer an end of a live piece is restored (restoring only adds
-    // pieces: repeat until nothing changes)
+    // re-check against the final live pieces; a group's point must still end
+    // a live piece (the argument of (b) needs X in the output)
+    let mut reach = vec![None; n];
     loop {
         let mut changed = false;
-        for (x, chain) in &loops {
+        for (x, chain) in &groups {
             if chain.iter().all(|&k| !dropped[k]) {
                 continue;
             }
-            let witnessed =
-                (0..n).any(|k| !dropped[k] && (pieces[k].start() == x || pieces[k].end() == x));
-            if !witnessed {
-                for &k in chain {
-                    dropped[k] = false;
+            let refs = live_at(x, chain, &dropped);
+            let reaches: Option<Vec<f64>> = if refs.is_empty() {
+                None
+            } else {
+                chain
+                    .iter()
+                    .map(|&k| reach_hi(pieces[k], &refs, x, caps[k]))
+                    .collect()
+            };
+            match reaches {
+                Some(r) => {
+                    for (&k, r) in chain.iter().zip(r) {
+                        reach[k] = Some(r);
+                    }
                 }
-                changed = true;
+                None => {
+                    for &k in chain {
+                        dropped[k] = false;
+                        reach[k] = None;
+                    }
+                    changed = true;
+                }
             }
         }
         if !changed {
             break;
         }
     }
-    (0..n).filter(|&k| dropped[k]).collect()
+    (0..n)
+        .filter(|&k| dropped[k])
+        .filter_map(|k| reach[k].map(|r| (k, r)))
+        .collect()
+}
+
+/// A certified upper bound of `sup_{p ∈ piece} dist(p, refs ∪ {y})` if it is
+/// at most `cap`: the piece is halved (interval Bézier halves, exact arc
+/// midpoints) until each part's hull lies within `cap` of one point proven on
+/// a reference piece (a point of the exact piece enclosed in intervals, the
+/// float nearest point only choosing where) or of `y`.
+fn reach_hi(piece: &Piece, refs: &[&Piece], y: &V2<Rational>, cap: f64) -> Option<f64> {
+    if !(cap > 0.0) {
+        return None;
+    }
+    let yi = iv_point(y);
+    let mut todo: Vec<(Part, u32)> = Part::initial(piece)?.into_iter().map(|p| (p, 0)).collect();
+    let mut worst: f64 = 0.0;
+    let mut budget = 256usize;
+    while let Some((part, depth)) = todo.pop() {
+        let h = part.hull()?;
+        let far = |q: &V2<Interval>| h.iter().map(|p| box_dist_hi(p, q)).fold(0.0, f64::max);
+        let c = {
+            let k = h.len() as f64;
+            let (sx, sy) = h
+                .iter()
+                .fold((0.0, 0.0), |(x, y), p| (x + p.x.mid(), y + p.y.mid()));
+            (sx / k, sy / k)
+        };
+        let mut best = far(&yi);
+        for r in refs {
+            if let Some(q) = nearest_on(r, c) {
+                best = best.min(far(&q));
+            }
+        }
+        if best <= cap {
+            worst = worst.max(best);
+            continue;
+        }
+        if depth >= 14 || budget == 0 {
+            return None;
+        }
+        budget -= 1;
+        let (l, r) = part.halves()?;
+        todo.push((l, depth + 1));
+        todo.push((r, depth + 1));
+    }
+    Some(worst)
+}
+
+/// A point of the exact piece (enclosed in intervals) near the float point
+/// `c`: the float nearest point chooses a dyadic parameter (Bézier) or one of
+/// the exact points of the arc's halvings.
+fn nearest_on(piece: &Piece, c: (f64, f64)) -> Option<V2<Interval>> {
+    let d2 = |x: f64, y: f64| (x - c.0) * (x - c.0) + (y - c.1) * (y - c.1);
+    match piece {
+        Piece::Bezier(b) => {
+            let bf = b.map(|x| x.approx());
+            let f = |t: f64| {
+                let v = bf.eval_fast(t);
+                d2(v.x, v.y)
+            };
+            let n = 64;
+            let (mut bt, mut bd) = (0.0, f64::INFINITY);
+            for k in 0..=n {
+                let t = k as f64 / n as f64;
+                let d = f(t);
+                if d < bd {
+                    (bt, bd) = (t, d);
+                }
+            }
+            let (mut lo, mut hi) = (
+                (bt - 1.0 / n as f64).max(0.0),
+                (bt + 1.0 / n as f64).min(1.0),
+            );
+            for _ in 0..60 {
+                let (m1, m2) = (lo + (hi - lo) * 0.382, lo + (hi - lo) * 0.618);
+                if f(m1) < f(m2) {
+                    hi = m2;
+                } else {
+                    lo = m1;
+                }
+            }
+            let t = rational_from_f64(0.5 * (lo + hi))?;
+            let ti = interval_from_rational(&t);
+            let p = b.map(interval_from_rational).eval(&ti);
+            (!p.x.is_empty() && !p.y.is_empty()).then_some(p)
+        }
+        Piece::Arc(a) => {
+            let mut pts = vec![a.from.clone(), a.to.clone()];
+            let mut todo = vec![(a.clone(), 0)];
+            while let Some((arc, depth)) = todo.pop() {
+                if depth >= 4 {
+                    continue;
+                }
+                let Some(m) = arc.midpoint() else { continue };
+                let (l, r) = arc.split_at(&m);
+                pts.push(m);
+                todo.push((l, depth + 1));
+                todo.push((r, depth + 1));
+            }
+            pts.iter()
+                .min_by(|p, q| {
+                    let (pf, qf) = (approx_dir(p), approx_dir(q));
+                    d2(pf.0, pf.1).total_cmp(&d2(qf.0, qf.1))
+                })
+                .map(iv_point)
+        }
+    }
 }
 
 /// Chains pieces into contours by exact shared end points.
@@ -2596,6 +2755,113 @@ fn check_simple(contours: &[Contour], iopts: &IntersectOptions) -> (bool, bool, 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Dense float distance from the point to the piece (a lower bound of
+    /// nothing, an estimate: the certified reach must not be below it).
+    fn sampled_dist(p: (f64, f64), q: &Piece) -> f64 {
+        q.sample(4000)
+            .iter()
+            .map(|v| (v.0 - p.0).hypot(v.1 - p.1))
+            .fold(f64::INFINITY, f64::min)
+    }
+
+    fn xorshift(seed: &mut u64) -> i64 {
+        *seed ^= *seed << 13;
+        *seed ^= *seed >> 7;
+        *seed ^= *seed << 17;
+        (*seed % 2001) as i64 - 1000
+    }
+
+    #[test]
+    fn the_certified_reach_is_never_below_the_sampled_distance() {
+        let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
+        let mut seed = 0x9e37_79b9_7f4a_7c15_u64;
+        let (mut decided, mut refused) = (0, 0);
+        for _ in 0..60 {
+            // a short cubic near the start of a reference cubic (a spur at Y)
+            let y = V2::new(q(xorshift(&mut seed), 100), q(xorshift(&mut seed), 100));
+            let mut r = vec![y.clone()];
+            let mut c = vec![y.clone()];
+            for _ in 0..3 {
+                r.push(V2::new(
+                    &r[r.len() - 1].x + q(xorshift(&mut seed).abs() + 100, 50),
+                    &r[r.len() - 1].y + q(xorshift(&mut seed), 200),
+                ));
+                c.push(V2::new(
+                    &c[c.len() - 1].x + q(xorshift(&mut seed).abs(), 2000),
+                    &c[c.len() - 1].y + q(xorshift(&mut seed), 2000),
+                ));
+            }
+            let spur = Piece::Bezier(Bezier::new(c));
+            let refp = Piece::Bezier(Bezier::new(r));
+            let sampled = spur
+                .sample(400)
+                .iter()
+                .map(|&p| {
+                    sampled_dist(p, &refp).min((p.0 - y.x.approx()).hypot(p.1 - y.y.approx()))
+                })
+                .fold(0.0, f64::max);
+            for cap in [0.05, 0.2, 1.0] {
+                match reach_hi(&spur, &[&refp], &y, cap) {
+                    Some(reach) => {
+                        decided += 1;
+                        assert!(reach <= cap, "{reach} above the cap {cap}");
+                        assert!(
+                            reach >= sampled - 1e-9,
+                            "certified reach {reach} below the sampled {sampled}"
+                        );
+                    }
+                    None => {
+                        refused += 1;
+                        // refused only where the cap is not far above the truth
+                        assert!(sampled > cap / 4.0, "refused: sampled {sampled}, cap {cap}");
+                    }
+                }
+            }
+        }
+        assert!(
+            decided > 20 && refused > 5,
+            "{decided} decided, {refused} refused"
+        );
+    }
+
+    #[test]
+    fn a_spur_near_the_output_is_dropped_and_a_far_one_is_kept() {
+        let q = |n: i64| Rational::from_integer(n.into());
+        let p = |x: i64, y: i64| V2::new(q(x), q(y));
+        let seg = |a: V2<Rational>, b: V2<Rational>| Piece::Bezier(Bezier::new(vec![a, b]));
+        // a closed square with a short spur at (10, 0) running along the edge
+        // back toward (9, 0) at a height of 1/100, and a long one sticking out
+        let near = Piece::Bezier(Bezier::new(vec![
+            p(10, 0),
+            V2::new(
+                Rational::new(29.into(), 3.into()),
+                Rational::new(1.into(), 100.into()),
+            ),
+            V2::new(
+                Rational::new(28.into(), 3.into()),
+                Rational::new(1.into(), 100.into()),
+            ),
+            V2::new(q(9), Rational::new(1.into(), 100.into())),
+        ]));
+        let far = seg(p(10, 10), p(15, 15));
+        let pieces = [
+            seg(p(0, 0), p(10, 0)),
+            near,
+            seg(p(10, 0), p(10, 10)),
+            far,
+            seg(p(10, 10), p(0, 10)),
+            seg(p(0, 10), p(0, 0)),
+        ];
+        let refs: Vec<&Piece> = pieces.iter().collect();
+        let caps = vec![0.5; pieces.len()];
+        let dropped = pinched_loops(&refs, &caps);
+        assert_eq!(dropped.len(), 1, "{dropped:?}");
+        let (k, reach) = dropped[0];
+        assert_eq!(k, 1);
+        // the spur's far end is 1/100 above the edge
+        assert!((0.01..0.5).contains(&reach), "{reach}");
+    }
 
     #[test]
     fn interval_areas_enclose_the_exact_ones() {
