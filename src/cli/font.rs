@@ -1114,3 +1114,69 @@ fn progress_bar(n: usize) -> Option<indicatif::ProgressBar> {
     }
     Some(b)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Dense two-sided check of [`segment_move2`]: every sampled point of the
+    /// exact piece is within the bound of the segment, and every point of the
+    /// segment within the bound of a sampled point of the piece (plus the
+    /// sampling step).
+    #[test]
+    fn the_segment_replacing_a_degenerate_rounded_piece_is_within_the_charged_move() {
+        let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
+        let mut seed = 0x2545_f491_4f6c_dd1d_u64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed % 2001) as i64 - 1000
+        };
+        let grid = Some(Rational::from_integer(1.into()));
+        for _ in 0..200 {
+            // a short piece (about a unit long) at an arbitrary place
+            let (x0, y0) = (q(next(), 7), q(next(), 3));
+            let pts: Vec<V2<Rational>> = (0..4)
+                .map(|_| V2::new(&x0 + q(next(), 700), &y0 + q(next(), 700)))
+                .collect();
+            let r = |p: &V2<Rational>| V2::new(round_to(&p.x, &grid), round_to(&p.y, &grid));
+            let (a, b) = (r(&pts[0]), r(&pts[3]));
+            if a == b {
+                continue;
+            }
+            let bound = sqrt_up(&segment_move2(&pts, &a, &b));
+            let f = |p: &V2<Rational>| (p.x.approx(), p.y.approx());
+            let exact = Bezier::new(pts.clone()).map(|x| x.approx());
+            let curve: Vec<(f64, f64)> = (0..=2000)
+                .map(|k| {
+                    let v = exact.eval_fast(k as f64 / 2000.0);
+                    (v.x, v.y)
+                })
+                .collect();
+            let (af, bf) = (f(&a), f(&b));
+            let seg_dist = |p: (f64, f64)| {
+                let d = (bf.0 - af.0, bf.1 - af.1);
+                let t = (((p.0 - af.0) * d.0 + (p.1 - af.1) * d.1) / (d.0 * d.0 + d.1 * d.1))
+                    .clamp(0.0, 1.0);
+                (af.0 + t * d.0 - p.0).hypot(af.1 + t * d.1 - p.1)
+            };
+            for &p in &curve {
+                assert!(seg_dist(p) <= bound + 1e-9, "{} > {bound}", seg_dist(p));
+            }
+            let step = curve
+                .windows(2)
+                .map(|w| (w[1].0 - w[0].0).hypot(w[1].1 - w[0].1))
+                .fold(0.0, f64::max);
+            for k in 0..=500 {
+                let t = k as f64 / 500.0;
+                let s = (af.0 + t * (bf.0 - af.0), af.1 + t * (bf.1 - af.1));
+                let d = curve
+                    .iter()
+                    .map(|c| (c.0 - s.0).hypot(c.1 - s.1))
+                    .fold(f64::INFINITY, f64::min);
+                assert!(d <= bound + step + 1e-9, "segment point {d} > {bound}");
+            }
+        }
+    }
+}
