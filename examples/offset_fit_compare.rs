@@ -1,7 +1,7 @@
 //! Control points of the offset at a proven tolerance: lncert's fitted cubics
 //! (`Output::Cubic`), lncert's native G² segments (degree `n + 3`) and kurbo
 //! 0.13's `offset_cubic`, with kurbo's error **certified** against the exact
-//! offset (issue 16, item 4; the table in the README's "Fitted output").
+//! offset (issue 16, item 4; the table in docs/fitted-output.md).
 //!
 //! ```sh
 //! cargo run --release --example offset_fit_compare            # TOL 1e-1 … 1e-5

@@ -46,7 +46,7 @@
 //!   sup_{x ∈ X} dist(x, Y)`). kurbo → ∂S is large when kurbo keeps loops or
 //!   inner parts that are not on ∂S (kurbo's fill is right under the nonzero
 //!   rule; the *path* is not the boundary). `✗` marks `lo > TOL` (proven
-//!   above TOL; no row of the README's run has it), `✓` marks `hi ≤ TOL` for
+//!   above TOL; no row of the run in docs/comparisons.md has it), `✓` marks `hi ≤ TOL` for
 //!   ∂S → kurbo (kurbo covers the boundary within its tolerance).
 
 use kurbo::{BezPath, PathEl, Point};

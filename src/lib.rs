@@ -69,6 +69,15 @@
 //! ```
 
 pub mod approx;
+
+// The Rust examples of the README and of docs/library.md, compiled and run as
+// doctests by `cargo test` (never part of the built library).
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
+#[cfg(doctest)]
+#[doc = include_str!("../docs/library.md")]
+pub struct LibraryDocDoctests;
 // Internal: the self-audit behind `lncert audit` and the fuzz targets.
 #[cfg(feature = "arbitrary")]
 #[doc(hidden)]

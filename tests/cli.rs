@@ -1,5 +1,6 @@
-//! Integration tests of the `lncert` binary: the CLI contract of `DESIGN.md`
-//! (exact output, one JSON document, exit codes 0/1/2, messages naming the field).
+//! Integration tests of the `lncert` binary: the CLI contract of
+//! `docs/architecture.md` (exact output, one JSON document, exit codes 0/1/2,
+//! messages naming the field).
 
 mod common;
 use common::lncert;

@@ -67,7 +67,7 @@ fn exact_dist2_upper(p: &V2<Rational>, b: &Bezier<Rational>) -> Rational {
         let (v, d, dd) = (bf.eval_fast(t), h1.eval_fast(t), h2.eval_fast(t));
         let g = (v.x - px) * d.x + (v.y - py) * d.y;
         let h = d.length_squared() + (v.x - px) * dd.x + (v.y - py) * dd.y;
-        if !(h > 0.0) {
+        if h.is_nan() || h <= 0.0 {
             break;
         }
         t = (t - g / h).clamp(0.0, 1.0);
@@ -87,7 +87,7 @@ fn check(a: &Bezier<Rational>, b: &Bezier<Rational>) -> Result<(), TestCaseError
         return Ok(());
     };
     let est = sampled_estimate(&sa, &sb, 64).unwrap();
-    if !(est > 1e-9) {
+    if est.is_nan() || est <= 1e-9 {
         return Ok(());
     }
     let tol = est * 1.02;
@@ -199,7 +199,7 @@ fn the_parametric_path_decides_most_pairs() {
             continue;
         };
         let est = sampled_estimate(&sa, &sb, 64).unwrap();
-        if !(est > 1e-9) {
+        if est.is_nan() || est <= 1e-9 {
             continue;
         }
         let cfg = Config {

@@ -341,7 +341,7 @@ proptest! {
         let d = PairDecision { c0, c1, rho_left: q(rn, 100) };
         let exact = d.decide::<Rational>();
         prop_assert!(exact.is_some());
-        if let Some(v) = d.decide::<Interval>() { prop_assert_eq!(Some(v), exact.clone()); }
+        if let Some(v) = d.decide::<Interval>() { prop_assert_eq!(Some(v), exact); }
         prop_assert_eq!(filtered(&d), exact);
     }
 }

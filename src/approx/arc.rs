@@ -19,7 +19,8 @@ use num_traits::{Signed, Zero};
 pub enum ArcOffset {
     /// The concentric arc of radius `|γ ∓ d|` (directions negated when the
     /// offset passes through the centre).
-    Arc(TravelledArc),
+    /// (Boxed: an exact arc is far larger than the collapsed point.)
+    Arc(Box<TravelledArc>),
     /// `d` equals the radius on the concave side: the offset collapses to the
     /// centre (every point is a cusp of the offset).
     Collapsed {
@@ -68,8 +69,8 @@ pub fn offset_arc(a: &TravelledArc, d: &Rational) -> Result<ArcOffset, OffsetErr
     } else {
         arc.radius = rho;
     }
-    Ok(ArcOffset::Arc(TravelledArc {
+    Ok(ArcOffset::Arc(Box::new(TravelledArc {
         arc,
         clockwise: a.clockwise,
-    }))
+    })))
 }

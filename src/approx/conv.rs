@@ -335,7 +335,8 @@ fn rational_rotation(
         }
     }
     let th = theta.enclosure();
-    if !(th.mag() < 1e6) {
+    let mag = th.mag();
+    if mag.is_nan() || mag >= 1e6 {
         return Err(pen_err(
             "pen.angle",
             "the angle must be at most 1e6 radians in magnitude",

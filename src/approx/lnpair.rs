@@ -197,7 +197,8 @@ pub fn ln_pair_pen(
             // a pen corner (e0 = e1): the pen segment is one point
             (e0.clone(), 1.0)
         } else {
-            if !(sq * uq > 0.0) {
+            let cross = sq * uq;
+            if cross.is_nan() || cross <= 0.0 {
                 return Err(NoPair::TangentsDoNotMeet);
             }
             (e0.add(&t0.scale(&sq)), uq / sq)
@@ -374,7 +375,8 @@ pub fn mid_angle_param(x: &Bezier<f64>) -> f64 {
 pub fn chord_param(x: &Bezier<f64>, pair: &LnPairPiece) -> f64 {
     let p = pair.offset.points();
     let chord = p[p.len() - 1].sub(&p[0]);
-    if !(chord.norm2() > 0.0) {
+    let n2 = chord.norm2();
+    if n2.is_nan() || n2 <= 0.0 {
         return mid_angle_param(x);
     }
     angle_param(x, &chord).unwrap_or_else(|| mid_angle_param(x))
@@ -485,7 +487,7 @@ pub fn k_piece_split(x: &Bezier<f64>, max_turn: f64) -> Vec<f64> {
         return Vec::new();
     };
     let total = cum[N];
-    if !(total.abs() >= max_turn) || !total.is_finite() {
+    if !total.is_finite() || max_turn.is_nan() || total.abs() < max_turn {
         return Vec::new();
     }
     let k = (total.abs() / max_turn).floor() as usize + 1;

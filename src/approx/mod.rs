@@ -458,7 +458,8 @@ enum Kernel {
         df: f64,
     },
     Conv {
-        pen: conv::Pen,
+        // boxed: a pen (exact matrix, rotation, margin) is far larger than an offset's distance
+        pen: Box<conv::Pen>,
         qf: [f64; 3],
         sigma: i8,
     },
@@ -1184,7 +1185,7 @@ pub fn convolve(
         })
         .collect();
     let kernel = Kernel::Conv {
-        pen: pen.clone(),
+        pen: Box::new(pen.clone()),
         qf: pen.q_f64(),
         sigma: side,
     };

@@ -279,6 +279,9 @@ pub fn offset_cusps(piece: usize, x: &Bezier<Rational>, d: &Rational) -> Vec<Off
 }
 
 /// What happens at the junction of two consecutive input pieces.
+// One value per junction of the input (never in bulk), matched by field in
+// several layers: boxing the exact join data would buy nothing.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug, PartialEq)]
 pub enum Junction {
     /// The pieces do not meet (`end ≠ start`): separate components.

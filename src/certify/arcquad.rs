@@ -38,7 +38,7 @@ fn f(r: &Rational) -> f64 {
 /// distance from the exact arc, aiming at `target` (`> 0`). Empty when
 /// `from = to`.
 ///
-/// Errors: the reason (a non-finite float, no proof within [`MAX_PIECES`]).
+/// Errors: the reason (a non-finite float, no proof within 256 pieces).
 ///
 /// # Examples
 /// ```

@@ -142,7 +142,7 @@ pub(crate) fn box_bound(a: &Piece, b: &Piece, t: (f64, f64), c: [f64; 4]) -> Opt
     let tb = Interval::try_from((t.0, t.1)).ok()?;
     let tc = point(0.5 * (t.0 + t.1));
     let w = point(t.1) - point(t.0);
-    if !(w.inf() > 0.0) {
+    if w.inf().is_nan() || w.inf() <= 0.0 {
         return None;
     }
     let d1 = [ci[1] - ci[0], ci[2] - ci[1], ci[3] - ci[2]];
@@ -184,7 +184,7 @@ fn end_terms(a: &Piece) -> Option<f64> {
         let over =
             a.iv.eval(Jet::variable(Interval::try_from((lo, hi)).ok()?))?;
         let speed = crate::scalar::ScalarSqrt::sqrt(&(over.0.d.sqr() + over.1.d.sqr()))?;
-        total = total + speed * (point(hi) - point(lo));
+        total += speed * (point(hi) - point(lo));
     }
     total.sup().is_finite().then_some(total.sup())
 }
@@ -204,7 +204,7 @@ pub(crate) fn prove(a: &Piece, b: &Piece, goal: Goal, max_boxes: usize) -> Optio
         Goal::Tol(_) => return None,
         Goal::Gap { .. } => f64::INFINITY,
     };
-    if !(budget >= 0.0) {
+    if budget.is_nan() || budget < 0.0 {
         return None;
     }
     // lower bounds: witnesses B(t), dist(B(t), A) ≥ lower_distance ≤ h(B, A) ≤ d_H

@@ -472,7 +472,7 @@ pub(crate) trait Pieces {
 impl Pieces for ShapeDesc {
     fn pieces(&self) -> Result<Vec<Piece>, CertifyError> {
         match self {
-            ShapeDesc::Curve(c) => Ok(c.iter().map(|b| Piece::bezier(b)).collect()),
+            ShapeDesc::Curve(c) => Ok(c.iter().map(Piece::bezier).collect()),
             ShapeDesc::Arc(a) => Ok(vec![Piece::arc(a)?]),
             ShapeDesc::Offset { curve, distance } => {
                 let r2 = distance * distance;

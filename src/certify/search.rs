@@ -193,7 +193,7 @@ pub(crate) fn foot_newton(piece: &Piece, q: (f64, f64), guess: f64) -> f64 {
     // offset's cusp): run it again while it still improves.
     for _ in 0..8 {
         let next = newton_foot(piece, q, cur, &d2);
-        if !(next.1 < cur.1) {
+        if next.1.is_nan() || cur.1.is_nan() || next.1 >= cur.1 {
             break;
         }
         cur = next;
@@ -299,7 +299,7 @@ fn newton_foot(
         let (ex, ey) = (x.v - q.0, y.v - q.1);
         let g = ex * x.d + ey * y.d;
         let h = x.d * x.d + y.d * y.d + ex * x.dd + ey * y.dd;
-        if !(h > 0.0) {
+        if h.is_nan() || h <= 0.0 {
             break;
         }
         // Newton with backtracking: halve the step until φ does not grow.
@@ -728,8 +728,7 @@ pub(crate) fn one_sided(
             }
         }
     }
-    loop {
-        let Some(top) = heap.peek() else { break };
+    while let Some(top) = heap.peek() {
         let hi = top.b.bound;
         // Without a tolerance the goal is the relative gap; with one, it is the
         // verdict (refined down to a 1e-12 relative gap if need be).

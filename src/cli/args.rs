@@ -286,6 +286,27 @@ pub fn show_tau(t: &Tau<Rational>) -> String {
     }
 }
 
+/// `--subdivision a|b|c` (seed 000 §5's rules); a rule other than `a` needs
+/// `--method ln-pair`.
+pub fn subdivision(
+    text: &str,
+    method: &str,
+) -> Result<lncert::approx::lnpair::Subdivision, CliError> {
+    let rule = lncert::approx::lnpair::Subdivision::parse(text).ok_or_else(|| {
+        bad(
+            "--subdivision",
+            format!("unknown rule {text:?}; expected a (mid-angle), b (chord) or c (weighted)"),
+        )
+    })?;
+    if rule != lncert::approx::lnpair::Subdivision::MidAngle && method != "ln-pair" {
+        return Err(bad(
+            "--subdivision",
+            "the rules are seed 000 §5's, for LN pairs: use --method ln-pair (G² spans are halved)",
+        ));
+    }
+    Ok(rule)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -313,25 +334,4 @@ mod tests {
         assert_eq!(tau("--tau", "-inf").unwrap(), Tau::Infinite);
         assert_eq!(show_tau(&tau("--tau", "-3/2").unwrap()), "-3/2");
     }
-}
-
-/// `--subdivision a|b|c` (seed 000 §5's rules); a rule other than `a` needs
-/// `--method ln-pair`.
-pub fn subdivision(
-    text: &str,
-    method: &str,
-) -> Result<lncert::approx::lnpair::Subdivision, CliError> {
-    let rule = lncert::approx::lnpair::Subdivision::parse(text).ok_or_else(|| {
-        bad(
-            "--subdivision",
-            format!("unknown rule {text:?}; expected a (mid-angle), b (chord) or c (weighted)"),
-        )
-    })?;
-    if rule != lncert::approx::lnpair::Subdivision::MidAngle && method != "ln-pair" {
-        return Err(bad(
-            "--subdivision",
-            "the rules are seed 000 §5's, for LN pairs: use --method ln-pair (G² spans are halved)",
-        ));
-    }
-    Ok(rule)
 }

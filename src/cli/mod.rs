@@ -1,4 +1,5 @@
-//! The `lncert` command line (the contract is in `DESIGN.md`, "The CLI contract").
+//! The `lncert` command line (the contract is in `docs/architecture.md`, "The CLI contract";
+//! the manual is `docs/cli.md`).
 //!
 //! * `lncert reproduce [--json] [--out DIR]` — every claim of [`lncert::reproduce`];
 //! * `lncert prop ID [ARGS] [--json]` — one proposition on user data;

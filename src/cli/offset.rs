@@ -403,6 +403,9 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     })
 }
 
+// The report's parts, each already computed by the caller (most as the pairs
+// they are printed in): a struct for one call would only repeat them.
+#[allow(clippy::too_many_arguments)]
 fn text_report(
     res: &OffsetResult,
     (method, output): (OffsetMethod, Output),

@@ -1,7 +1,8 @@
 //! `lncert reproduce [--json] [--out DIR]`: runs [`lncert::reproduce::run_all`]
 //! and prints every claim with its verdict, then a summary.
 //!
-//! Exit code 0 if no claim is `undecided`, else 1. `--out DIR` also writes one
+//! Exit code 0 if no claim is `undecided`, else 3 (errata and refuted
+//! claims are findings, not failures: they exit 0). `--out DIR` also writes one
 //! SVG picture per Fig. 5 case of seed 000 (see [`super::svg`]), seed 001
 //! Fig. 2(a), seed 000 Fig. 7(a), the proven font 'H' of seed 000 Fig. 7(c)
 //! (`font-H.svg`) and one per proven stroke outline (`stroke-….svg`).

@@ -178,6 +178,9 @@ impl Bezier<f64> {
 mod smallvec_like {
     use super::V2;
     use glam::DVec2;
+    // The inline array is the point of the type (no heap allocation up to 16
+    // points): boxing it, as clippy suggests, would defeat it.
+    #[allow(clippy::large_enum_variant)]
     pub enum Buf {
         Inline([DVec2; 16], usize),
         Heap(Vec<DVec2>),
@@ -225,6 +228,9 @@ mod smallvec_like {
 /// // (1 - t) * t = B^2_1 / 2
 /// assert_eq!(bernstein_product(&[1.0, 0.0], &[0.0, 1.0]), vec![0.0, 0.5, 0.0]);
 /// ```
+// The index form mirrors the formula (i and j = k - i index a, b and the
+// binomials together).
+#[allow(clippy::needless_range_loop)]
 pub fn bernstein_product<S: Scalar>(a: &[S], b: &[S]) -> Vec<S> {
     if a.is_empty() || b.is_empty() {
         return Vec::new();

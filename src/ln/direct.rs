@@ -28,9 +28,8 @@ use crate::scalar::Rational;
 pub fn singular_points(curve: &Bezier<Rational>, span: &Span) -> Option<Vec<RealRoot>> {
     let (x, y) = curve.hodograph().power_coords();
     let g = poly_gcd(&x, &y);
-    if g.clone().trimmed().degree().is_none() {
-        return None;
-    }
+    // no degree: the gcd is zero, the hodograph vanishes identically
+    g.clone().trimmed().degree()?;
     Some(isolate_roots(&g, span))
 }
 

@@ -109,7 +109,7 @@ impl<S: Scalar> CompatiblePair<S> {
     pub fn new(left: LnFrame<S>, right: LnFrame<S>) -> Result<Self, LnError> {
         let c0 = parallel_ratio(&left.d0(), &right.d0(), "right.bm-right.b0")?;
         let c1 = parallel_ratio(&left.d1(), &right.d1(), "right.b3-right.bm")?;
-        match c0.sign().mul(c1.sign()) {
+        match c0.sign() * c1.sign() {
             Sign::Positive => Ok(CompatiblePair {
                 left,
                 right,

@@ -226,33 +226,6 @@ pub fn binomial(n: usize, k: usize) -> i64 {
     r as i64
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::scalar::parse_rational;
-
-    fn q(s: &str) -> Rational {
-        parse_rational(s).unwrap()
-    }
-
-    #[test]
-    fn bernstein_round_trip_exact() {
-        let p = Poly::new(vec![q("1/3"), q("-2"), q("5/7"), q("4")]);
-        for n in 3..7 {
-            let b = p.to_bernstein(n).unwrap();
-            assert_eq!(Poly::from_bernstein(&b).trimmed(), p.clone().trimmed());
-        }
-        assert!(p.to_bernstein(2).is_none());
-    }
-
-    #[test]
-    fn compose_affine_shifts() {
-        let p = Poly::new(vec![q("0"), q("0"), q("1")]); // t^2
-        let r = p.compose_affine(&q("1"), &q("2")); // (1+2t)^2
-        assert_eq!(r.coeffs(), &[q("1"), q("4"), q("4")]);
-    }
-}
-
 impl Poly<crate::scalar::Rational> {
     /// An exact enclosure `[a, b]` of the values on `[lo, hi]` with
     /// `0 ≤ lo ≤ hi`: term by term, since each `c·tᵏ` is monotone for `t ≥ 0`
@@ -289,5 +262,32 @@ impl Poly<crate::scalar::Rational> {
             ph *= hi;
         }
         (a, b)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scalar::parse_rational;
+
+    fn q(s: &str) -> Rational {
+        parse_rational(s).unwrap()
+    }
+
+    #[test]
+    fn bernstein_round_trip_exact() {
+        let p = Poly::new(vec![q("1/3"), q("-2"), q("5/7"), q("4")]);
+        for n in 3..7 {
+            let b = p.to_bernstein(n).unwrap();
+            assert_eq!(Poly::from_bernstein(&b).trimmed(), p.clone().trimmed());
+        }
+        assert!(p.to_bernstein(2).is_none());
+    }
+
+    #[test]
+    fn compose_affine_shifts() {
+        let p = Poly::new(vec![q("0"), q("0"), q("1")]); // t^2
+        let r = p.compose_affine(&q("1"), &q("2")); // (1+2t)^2
+        assert_eq!(r.coeffs(), &[q("1"), q("4"), q("4")]);
     }
 }

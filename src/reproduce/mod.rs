@@ -49,6 +49,9 @@ impl std::fmt::Display for Verdict {
     }
 }
 
+/// A group of claims, pushed by one function (an `Err` becomes one undecided claim).
+type ClaimGroup = fn(&mut Vec<Claim>) -> Result<(), String>;
+
 /// One checked claim of a seed.
 #[derive(Clone, Debug, Serialize)]
 pub struct Claim {

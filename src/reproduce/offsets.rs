@@ -75,8 +75,11 @@ fn points(v: &Value) -> Result<Vec<V2<Rational>>, String> {
         .collect()
 }
 
+/// One test curve: `(name, pieces, distances)`.
+pub type TestCurve = (String, Vec<Bezier<Rational>>, Vec<Rational>);
+
 /// The test curves as Bézier pieces: `(name, pieces, distances)`.
-pub fn test_curves() -> Result<Vec<(String, Vec<Bezier<Rational>>, Vec<Rational>)>, String> {
+pub fn test_curves() -> Result<Vec<TestCurve>, String> {
     let doc: Value = serde_json::from_str(CURVES).map_err(|e| e.to_string())?;
     let mut out = Vec::new();
     for name in [

@@ -2,7 +2,7 @@
 //! hodographs, convolution and its cusp), Fig. 9/10 (Prop 6.1's critical points).
 
 use super::printed::{constant_of, parse_expr, PrintedValue, Val};
-use super::{data, Claim, Verdict};
+use super::{data, Claim, ClaimGroup, Verdict};
 use crate::curve::{Bezier, V2};
 use crate::ln::circle::ArcApprox;
 use crate::ln::cubic::{deltas_from_rho, tau_from_rho, LnFrame, Tau};
@@ -582,7 +582,7 @@ fn fig10(out: &mut Vec<Claim>) -> R<()> {
 }
 
 pub(super) fn claims(out: &mut Vec<Claim>) {
-    let parts: [(&str, fn(&mut Vec<Claim>) -> R<()>); 4] = [
+    let parts: [(&str, ClaimGroup); 4] = [
         ("fig4", fig4),
         ("fig5a", |o| fig5(o, "a")),
         ("fig5b", |o| fig5(o, "b")),

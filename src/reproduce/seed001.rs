@@ -3,7 +3,7 @@
 //! and 0.3, rotated by π/6 — see proofs/001-convolution.md for why full axes),
 //! approximated by seed 001's G² method on both sides and certified at
 //! `TOL = 1e-1 … 1e-5`: seed 001 Table 2, lncert's column beside the printed
-//! [12] (LN-pair) column. Also the cusp counts of §4, decided exactly.
+//! \[12\] (LN-pair) column. Also the cusp counts of §4, decided exactly.
 
 use super::{json_rational, Claim, Verdict};
 use crate::approx::conv::{conv_cusps, Angle, Pen};

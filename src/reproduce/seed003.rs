@@ -2,7 +2,7 @@
 //! exactly in Q(√3) from the printed end points and normals), Prop 7.1's range.
 
 use super::seed000::{judge, show};
-use super::{data, Claim, Verdict};
+use super::{data, Claim, ClaimGroup, Verdict};
 use crate::curve::V2;
 use crate::ln::cubic::{deltas_from_tau, LnFrame, Tau};
 use crate::ln::direct::{is_regular_on, normal_form_regular};
@@ -224,7 +224,7 @@ fn prop_7_1(out: &mut Vec<Claim>) -> R<()> {
 }
 
 pub(super) fn claims(out: &mut Vec<Claim>) {
-    let parts: [(&str, fn(&mut Vec<Claim>) -> R<()>); 3] = [
+    let parts: [(&str, ClaimGroup); 3] = [
         ("prop2.1", prop_2_1_example),
         ("sec6", sec6),
         ("prop7.1", prop_7_1),

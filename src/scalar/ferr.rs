@@ -158,7 +158,7 @@ impl Scalar for FloatErr {
         }
         // a lower bound of |a| − ea (the subtraction may round up by u)
         let m = (a - self.e) * (1.0 - 4.0 * U);
-        if !(m > 0.0) {
+        if m.is_nan() || m <= 0.0 {
             return None;
         }
         let v = 1.0 / self.v;

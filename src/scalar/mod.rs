@@ -85,8 +85,12 @@ impl Sign {
             s => s,
         }
     }
-    /// The sign of a product.
-    pub fn mul(self, o: Sign) -> Sign {
+}
+
+/// The sign of a product.
+impl Mul for Sign {
+    type Output = Sign;
+    fn mul(self, o: Sign) -> Sign {
         use Sign::*;
         match (self, o) {
             (Zero, _) | (_, Zero) => Zero,

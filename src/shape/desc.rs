@@ -380,8 +380,9 @@ impl ShapeDesc {
             let r1 = point(Some(&rows[1]), "convolution.ellipse[1]")?;
             let side = match m.get("side") {
                 None => 1,
-                Some(v) if v.to_string() == "1" => 1,
-                Some(v) if v.to_string() == "-1" => -1,
+                // the integers 1 and -1 (not 1.0, not the string "1")
+                Some(v) if v.as_i64() == Some(1) => 1,
+                Some(v) if v.as_i64() == Some(-1) => -1,
                 Some(v) => {
                     return Err(err(
                         "convolution.side",

@@ -21,7 +21,7 @@
 //! | curves from JSON (`bezier`, `beziers`, `bspline`) and SVG path data, every number exact ([`parse_curve`]) | `io` |
 //! | whole SVG documents ([`parse_svg_document`]) | `svgdoc` |
 //! | SVG elliptical arcs, circles, ellipses, rounded rects as cubic pieces with a certified Hausdorff bound, and the report of what was approximated ([`InputApprox`]) | [`svgarc`] |
-//! | font glyphs ([`glyph_outline`], feature `font`) | `font` |
+//! | font glyphs (`glyph_outline`, feature `font`) | `font` |
 //!
 //! Every reader and constructor reports a [`ShapeError`] (or, for the curve
 //! readers, a [`CurveParseError`]) naming the field and the reason, and every

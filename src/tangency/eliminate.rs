@@ -190,8 +190,8 @@ pub fn exact_solutions(sys: &TangencySystem, a2_window: &(Rational, Rational)) -
     let p_hi = b.neg().sub(&a.scale(hi));
     for root in isolate_roots(&rt, &Span::closed(zero.clone(), u.clone())) {
         let sa = sign_at_root(&a, &rt, &root);
-        let s_lo = sign_at_root(&p_lo, &rt, &root).mul(sa);
-        let s_hi = sign_at_root(&p_hi, &rt, &root).mul(sa);
+        let s_lo = sign_at_root(&p_lo, &rt, &root) * sa;
+        let s_hi = sign_at_root(&p_hi, &rt, &root) * sa;
         let inside = |s: Sign, want: Sign| s == want || s == Sign::Zero;
         if s_lo == Sign::Unknown || s_hi == Sign::Unknown {
             out.degenerate.push(root);

@@ -44,7 +44,7 @@ impl T3 {
     /// `√self`; `None` if the value may be ≤ 0.
     fn sqrt(self) -> Option<T3> {
         let [a, b, c] = self.0;
-        if !(a.inf() > 0.0) {
+        if a.inf().is_nan() || a.inf() <= 0.0 {
             return None;
         }
         let w = a.sqrt();
@@ -349,7 +349,7 @@ pub(crate) fn check_map_box(
     }
     let (i0, i1) = (interval_from_rational(t0), interval_from_rational(t1));
     let w = i1 - i0;
-    if !(w.inf() > 0.0) {
+    if w.inf().is_nan() || w.inf() <= 0.0 {
         return Err("the box is too narrow to enclose its width".to_string());
     }
     let d1 = [ci[1] - ci[0], ci[2] - ci[1], ci[3] - ci[2]];
