@@ -148,7 +148,7 @@ pub(crate) fn bprod(a: &[Interval], b: &[Interval]) -> Vec<Interval> {
         .map(|k| {
             let mut s = point(0.0);
             for i in k.saturating_sub(n)..=k.min(m) {
-                s = s + sa[i] * sb[k - i];
+                s += sa[i] * sb[k - i];
             }
             s / binom(m + n, k)
         })
@@ -325,7 +325,7 @@ impl Input {
         let hb = bbox(&p.h.restrict(&a, &b));
         let h2b = bbox(&p.h2.restrict(&a, &b));
         let n2 = dot(&hb, &hb);
-        if !(n2.inf() > 0.0) || !n2.sup().is_finite() {
+        if n2.inf().is_nan() || n2.inf() <= 0.0 || !n2.sup().is_finite() {
             return None;
         }
         let len = n2.sqrt();
@@ -610,7 +610,7 @@ impl Input {
             if at_end {
                 // g_j′(1) = −2(p − c)·x_j′(1) < 0 and g_j convex: decreasing to c
                 let t = p.h.points().last().expect("nonempty");
-                if !(dot(&diff, t).inf() > 0.0) {
+                if dot(&diff, t).inf().partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
                     return None;
                 }
                 let (w0, _) = self.window(j, e, (1.0, 1.0), MAX_WINDOW, 1.0 / 1024.0)?;
@@ -621,7 +621,7 @@ impl Input {
             }
             if at_start {
                 let t = &p.h.points()[0];
-                if !(dot(&diff, t).sup() < 0.0) {
+                if dot(&diff, t).sup().partial_cmp(&0.0) != Some(std::cmp::Ordering::Less) {
                     return None;
                 }
                 let (_, w1) = self.window(j, e, (0.0, 0.0), MAX_WINDOW, 1.0 / 1024.0)?;

@@ -277,7 +277,7 @@ impl Piece {
 fn bezier_area_iv(b: &Bezier<Rational>) -> Option<Interval> {
     let n = b.degree();
     if n == 0 {
-        return Some(Interval::try_from((0.0, 0.0)).ok()?);
+        return Interval::try_from((0.0, 0.0)).ok();
     }
     let x = b.map(interval_from_rational);
     let h = x.hodograph();
@@ -287,7 +287,7 @@ fn bezier_area_iv(b: &Bezier<Rational>) -> Option<Interval> {
     let c = super::onside::bprod(&ys, &hx);
     let mut s = Interval::try_from((0.0, 0.0)).ok()?;
     for (u, v) in a.iter().zip(&c) {
-        s = s + (*u - *v);
+        s += *u - *v;
     }
     let m = Interval::try_from(((2 * n) as f64, (2 * n) as f64)).ok()?;
     let two = Interval::try_from((2.0, 2.0)).ok()?;
@@ -495,7 +495,7 @@ impl Link {
                 }
             }
         }
-        if !(u0 <= u1) || u0 < 0.0 || u1 > 1.0 {
+        if u0.is_nan() || u1.is_nan() || u0 > u1 || u0 < 0.0 || u1 > 1.0 {
             return None;
         }
         let (a, b) = (iv(self.span.0)?, iv(self.span.1)?);
@@ -603,7 +603,7 @@ fn chain_side(
     let link = |s: &crate::approx::OffsetSegment| -> Option<Link> {
         let proof = s.proof.as_ref()?;
         let map = proof.map.as_ref()?;
-        if map.source_a || map.boxes.is_empty() || !(s.error.1 <= res.tol) {
+        if map.source_a || map.boxes.is_empty() || s.error.1.is_nan() || s.error.1 > res.tol {
             return None;
         }
         Some(Link {
@@ -2482,7 +2482,7 @@ fn pinched_loops(pieces: &[&Piece], caps: &[f64]) -> Vec<(usize, f64)> {
 /// a reference piece (a point of the exact piece enclosed in intervals, the
 /// float nearest point only choosing where) or of `y`.
 fn reach_hi(piece: &Piece, refs: &[&Piece], y: &V2<Rational>, cap: f64) -> Option<f64> {
-    if !(cap > 0.0) {
+    if cap.is_nan() || cap <= 0.0 {
         return None;
     }
     let yi = iv_point(y);
