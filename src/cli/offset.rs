@@ -214,17 +214,16 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
         )
     })?;
     let (output, grid) = output_and_grid(&a.output, a.grid.as_deref())?;
-    let svg_data = [
-        ("--path-out", a.path_out.is_some()),
-        ("--out", a.out.is_some()),
-    ];
-    if let Some((flag, _)) = svg_data.iter().find(|(_, given)| *given && !a.trim) {
-        if method == OffsetMethod::G2 && output == Output::Native {
-            return Err(bad(
+    // path data (also inside --out's document) has no command above degree 3
+    let path_flag = [("--path-out", &a.path_out), ("--out", &a.out)]
+        .into_iter()
+        .find(|(_, p)| p.is_some())
+        .map(|(flag, _)| flag);
+    if let (Some(flag), OffsetMethod::G2, Output::Native) = (path_flag, method, output) {
+        return Err(bad(
             flag,
             "G2 segments have degree n + 3 ≥ 4, which SVG path data cannot store: use --output cubic, --method ln-pair (cubic), or --curve-out",
         ));
-        }
     }
     let input = super::curve_input::read_curve_input(&a.curve, a.glyph, a.em)?;
     if a.trim {
