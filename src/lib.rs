@@ -28,7 +28,7 @@
 //! | curves and propositions | [`curve`] (Bézier, B-spline), [`ln`] (the seeds' propositions) |
 //! | the geometry model | [`shape`] (exact shapes, readers, limits) |
 //! | engines | [`certify`] (Hausdorff bounds, certificates, [`verify`]), [`approx`] (proven offsets), [`tangency`] (seed 003's circle tangency) |
-//! | writers and bridges | [`write`] (path data, SVG documents), `kurbo_bridge` (feature `kurbo`: both ways), `gen` (features `proptest` / `arbitrary`) |
+//! | writers and bridges | [`write`](mod@write) (path data, SVG documents), `kurbo_bridge` (feature `kurbo`: both ways), `gen` (features `proptest` / `arbitrary`) |
 //!
 //! Dependencies point down the table. The engines' internals (search,
 //! parametric proofs, jets, Bernstein hulls, the piece parametrisations) are

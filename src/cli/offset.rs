@@ -100,7 +100,7 @@ pub struct OffsetArgs {
     /// `"false"`, in the input's frame (an SVG document's `viewBox` kept, y
     /// down as the input; y-up input flipped upright). Pieces of degree ≤ 3
     /// only, as `--path-out`. With `--trim`: the outline, filled.
-    #[arg(long)]
+    #[arg(long, value_name = "FILE.svg")]
     pub out: Option<PathBuf>,
     /// Also compute seed 000's error measure (8) per LN-pair segment.
     #[arg(long)]

@@ -96,7 +96,7 @@ pub struct StrokeArgs {
     /// input's frame: an SVG document's `viewBox` (and size) kept and y down
     /// as the input; y-up input (JSON curves, glyphs) flipped upright. For an
     /// SVG document without `--pen`: one `<path>` per stroked element.
-    #[arg(long)]
+    #[arg(long, value_name = "FILE.svg")]
     pub out: Option<PathBuf>,
     /// One JSON document on stdout.
     #[arg(long)]
