@@ -1,6 +1,8 @@
 //! The kurbo bridge (feature `kurbo`): kurbo's curves as lncert shapes,
 //! converted **exactly** (every `f64` is a dyadic rational; nothing is
-//! rounded), and certified verdicts on tolerance claims about them.
+//! rounded), certified verdicts on tolerance claims about them, and lncert's
+//! results back out as kurbo paths (exact rationals rounded to the nearest
+//! `f64`: [`path_from_beziers`], [`path_from_contours`]).
 //!
 //! | kurbo | lncert |
 //! |---|---|
@@ -8,6 +10,7 @@
 //! | [`kurbo::CubicBez`], [`kurbo::QuadBez`], [`kurbo::Line`] | [`shape_from_cubic`], [`shape_from_quad`], [`shape_from_line`] |
 //! | [`kurbo::Circle`] | [`shapes_from_circle`]: four quarter arcs, exactly (centre and radius are floats, the directions `(±1, 0)`, `(0, ±1)`) |
 //! | [`kurbo::Arc`] (circular: `radii.x == radii.y`) | [`arc_enclosure`]: an exact lncert arc **and** a proven `eps` with `d_H(kurbo's arc, lncert's arc) ≤ eps` (kurbo's end points are `cos`/`sin` of angles: not exact numbers) |
+//! | out: [`kurbo::BezPath`] | [`path_from_beziers`] (Bézier pieces), [`path_from_contours`] (outlines: stroke contours, arcs as kurbo's cubics within a tolerance) |
 //!
 //! [`certify_within`] decides `d_H(a, b) ≤ tol` for any two shapes,
 //! [`certify_union_within`] for unions of shapes (a circle is the union of its
@@ -32,7 +35,7 @@
 use crate::certify::piece::Pieces;
 use crate::certify::{hausdorff, hausdorff_pieces, Config};
 use crate::curve::{Bezier, V2};
-use crate::scalar::{rational_from_f64, sin_cos_enclosure, Interval, Rational, ScalarSqrt};
+use crate::scalar::{rational_from_f64, sin_cos_enclosure, Interval, Rational, Scalar, ScalarSqrt};
 use crate::shape::{ArcDesc, ShapeDesc};
 use crate::Error;
 use kurbo::{Arc, BezPath, Circle, CubicBez, Line, PathEl, Point, QuadBez};
@@ -124,6 +127,178 @@ pub fn shape_from_path(path: &BezPath) -> Result<ShapeDesc, Error> {
         }
     }
     Ok(ShapeDesc::curve(pieces)?)
+}
+
+/// A point of lncert's as kurbo's: each coordinate the nearest `f64`.
+fn kpoint(p: &V2<Rational>, field: &str) -> Result<Point, Error> {
+    let (x, y) = (p.x.approx(), p.y.approx());
+    if !(x.is_finite() && y.is_finite()) {
+        return Err(Error {
+            field: field.to_string(),
+            reason: "a coordinate beyond the f64 range".to_string(),
+        });
+    }
+    Ok(Point::new(x, y))
+}
+
+/// One Bézier piece appended to `path` (from its current point): `LineTo`,
+/// `QuadTo` or `CurveTo`; a higher degree has no kurbo element.
+fn push_bezier(path: &mut BezPath, b: &Bezier<Rational>, field: &str) -> Result<(), Error> {
+    let p = b
+        .points()
+        .iter()
+        .map(|v| kpoint(v, field))
+        .collect::<Result<Vec<_>, _>>()?;
+    match p[..] {
+        [_, p1] => path.line_to(p1),
+        [_, p1, p2] => path.quad_to(p1, p2),
+        [_, p1, p2, p3] => path.curve_to(p1, p2, p3),
+        _ => {
+            return Err(Error {
+                field: field.to_string(),
+                reason: format!(
+                "a degree-{} Bézier piece has no kurbo path element (degree ≤ 3: fit it as cubics)",
+                p.len() - 1
+            ),
+            })
+        }
+    }
+    Ok(())
+}
+
+/// Bézier pieces (a curve as lncert reads it) as a kurbo path, the reverse
+/// of [`shape_from_path`]: a `MoveTo` wherever a piece does not start exactly
+/// where the previous one ended, then one `LineTo` / `QuadTo` / `CurveTo`
+/// per piece, every coordinate the nearest `f64` (exact for pieces read from
+/// floats, so that [`shape_from_path`] gives the same pieces back). No
+/// `ClosePath`: a curve is not a region. Errors name the piece (`pieces[2]`):
+/// a degree above 3, a coordinate beyond the `f64` range.
+///
+/// # Examples
+/// ```
+/// use lncert::kurbo_bridge::{path_from_beziers, shape_from_path};
+/// let c = lncert::parse_curve("M 0 0 Q 1 1 2 0 L 3 0").unwrap();
+/// let path = path_from_beziers(&c).unwrap();
+/// assert_eq!(path.elements().len(), 3);
+/// assert_eq!(shape_from_path(&path).unwrap(), lncert::ShapeDesc::curve(c).unwrap());
+/// ```
+pub fn path_from_beziers(pieces: &[Bezier<Rational>]) -> Result<BezPath, Error> {
+    let mut path = BezPath::new();
+    let mut last: Option<&V2<Rational>> = None;
+    for (i, b) in pieces.iter().enumerate() {
+        let field = format!("pieces[{i}]");
+        let pts = b.points();
+        if last != Some(&pts[0]) {
+            path.move_to(kpoint(&pts[0], &field)?);
+        }
+        push_bezier(&mut path, b, &field)?;
+        last = pts.last();
+    }
+    Ok(path)
+}
+
+/// Outline contours (such as a stroke's, [`crate::outline::trim::stroke`]) as
+/// a kurbo path: per contour a `MoveTo`, one element per Bézier piece (as in
+/// [`path_from_beziers`]), each exact arc as kurbo's cubic approximation of
+/// the circular arc within `arc_tolerance` (`kurbo::Arc::append_iter`), its
+/// last point replaced by the arc's exact end point rounded (so consecutive
+/// pieces still meet exactly), and a `ClosePath` after a closed contour. The
+/// orientation is kept: kurbo's signed area (`Shape::area`) of a stroke's
+/// outline is positive (outer contours counter-clockwise, holes clockwise).
+/// Errors name the piece (`contours[0].pieces[3]`): a degree above 3, a
+/// coordinate beyond the `f64` range; or `arc_tolerance` (not `> 0`).
+///
+/// # Examples
+/// ```
+/// use kurbo::Shape;
+/// use lncert::kurbo_bridge::path_from_contours;
+/// use lncert::outline::trim::{Contour, Orientation, Piece};
+/// use lncert::outline::circle::Arc;
+/// use lncert::V2;
+/// let q = |x: i64| lncert::Rational::from_integer(x.into());
+/// // a unit circle as two exact half arcs, counter-clockwise
+/// let half = |from: V2<_>, to: V2<_>| Piece::Arc(Arc {
+///     center: V2::new(q(0), q(0)), radius: q(1), from, to, clockwise: false });
+/// let c = Contour {
+///     pieces: vec![half(V2::new(q(1), q(0)), V2::new(q(-1), q(0))),
+///                  half(V2::new(q(-1), q(0)), V2::new(q(1), q(0)))],
+///     closed: true, orientation: Orientation::CounterClockwise, area: (3.14, 3.15),
+/// };
+/// let path = path_from_contours(&[c], 1e-6).unwrap();
+/// assert!((path.area() - std::f64::consts::PI).abs() < 1e-5);
+/// ```
+pub fn path_from_contours(
+    contours: &[crate::outline::trim::Contour],
+    arc_tolerance: f64,
+) -> Result<BezPath, Error> {
+    use crate::outline::trim::Piece;
+    if !(arc_tolerance.is_finite() && arc_tolerance > 0.0) {
+        return Err(Error {
+            field: "arc_tolerance".to_string(),
+            reason: format!("{arc_tolerance}: must be a finite number > 0"),
+        });
+    }
+    let mut path = BezPath::new();
+    for (i, c) in contours.iter().enumerate() {
+        let Some(first) = c.pieces.first() else {
+            continue;
+        };
+        path.move_to(kpoint(first.start(), &format!("contours[{i}].pieces[0]"))?);
+        for (j, p) in c.pieces.iter().enumerate() {
+            let field = format!("contours[{i}].pieces[{j}]");
+            match p {
+                Piece::Bezier(b) => push_bezier(&mut path, b, &field)?,
+                Piece::Arc(a) => push_arc(&mut path, a, arc_tolerance, &field)?,
+            }
+        }
+        if c.closed {
+            path.close_path();
+        }
+    }
+    Ok(path)
+}
+
+/// An exact arc as kurbo's cubics (see [`path_from_contours`]). The travelled
+/// angle is `atan2(u × v, u · v)` of the exact end directions `u`, `v`, taken
+/// in `(0, 2π]` counter-clockwise or `[−2π, 0)` clockwise (a whole turn when
+/// the end points are equal): the side is decided exactly, also for tiny arcs.
+fn push_arc(
+    path: &mut BezPath,
+    a: &crate::outline::circle::Arc,
+    tol: f64,
+    field: &str,
+) -> Result<(), Error> {
+    use std::f64::consts::TAU;
+    let center = kpoint(&a.center, field)?;
+    let end = kpoint(&a.to, field)?;
+    let (u, v) = (a.from.sub(&a.center), a.to.sub(&a.center));
+    let turn = u.cross(&v).approx().atan2(u.dot(&v).approx());
+    let sweep = match (a.clockwise, a.from == a.to) {
+        (false, true) => TAU,
+        (true, true) => -TAU,
+        (false, false) if turn > 0.0 => turn,
+        (false, false) => turn + TAU,
+        (true, false) if turn < 0.0 => turn,
+        (true, false) => turn - TAU,
+    };
+    let (ux, uy) = (u.x.approx(), u.y.approx());
+    let r = a.radius.approx();
+    let arc = Arc {
+        center,
+        radii: kurbo::Vec2::new(r, r),
+        start_angle: uy.atan2(ux),
+        sweep_angle: sweep,
+        x_rotation: 0.0,
+    };
+    let mut els: Vec<PathEl> = arc.append_iter(tol).collect();
+    match els.last_mut() {
+        Some(PathEl::CurveTo(_, _, p3)) => *p3 = end,
+        _ => path.line_to(end),
+    }
+    for el in els {
+        path.push(el);
+    }
+    Ok(())
 }
 
 /// A cubic, exactly.

@@ -16,6 +16,7 @@
 //! | certify a Hausdorff distance or a tolerance | [`hausdorff`], [`HausdorffConfig`], [`HausdorffBounds`], [`Certificate`] |
 //! | re-check a certificate | [`verify`] |
 //! | a proven offset | [`offset`], [`OffsetOptions`], [`OffsetResult`], [`union_certificate`] |
+//! | results out: SVG path data, SVG documents (kurbo `BezPath`: `kurbo_bridge`) | [`write::path_data`], [`write::offset_path_data`], [`svg_document`], [`SvgShape`], [`SvgOptions`] |
 //! | circle tangency (seed 003 §4) | [`TangencySystem`], [`TangencyProblem`], [`solve_complete`] |
 //! | property tests of your own geometry code | `lncert::gen` (feature `proptest`: strategies; `arbitrary`: fuzz inputs) |
 //!
@@ -27,7 +28,7 @@
 //! | curves and propositions | [`curve`] (Bézier, B-spline), [`ln`] (the seeds' propositions) |
 //! | the geometry model | [`shape`] (exact shapes, readers, limits) |
 //! | engines | [`certify`] (Hausdorff bounds, certificates, [`verify`]), [`approx`] (proven offsets), [`tangency`] (seed 003's circle tangency) |
-//! | bridges | `kurbo_bridge` (feature `kurbo`), `gen` (features `proptest` / `arbitrary`) |
+//! | writers and bridges | [`write`](mod@write) (path data, SVG documents), `kurbo_bridge` (feature `kurbo`: both ways), `gen` (features `proptest` / `arbitrary`) |
 //!
 //! Dependencies point down the table. The engines' internals (search,
 //! parametric proofs, jets, Bernstein hulls, the piece parametrisations) are
@@ -100,6 +101,7 @@ pub mod reproduce;
 pub mod scalar;
 pub mod shape;
 pub mod tangency;
+pub mod write;
 
 pub use approx::{offset, union_certificate, OffsetMethod, OffsetOptions, OffsetResult};
 pub use certify::verify::{verify, Valid};
@@ -112,6 +114,7 @@ pub use shape::{parse_curve, ArcDesc, ShapeDesc, ShapeError, TravelledArc};
 pub use tangency::complete::SolveOptions;
 pub use tangency::solve::{solve_complete, TangencyProblem, TangencyReport};
 pub use tangency::system::TangencySystem;
+pub use write::{svg_document, SvgOptions, SvgShape};
 
 /// The one error of the root API: which field of the input, and why.
 ///

@@ -347,7 +347,7 @@ fn cli_stroke_json_path_and_exit_codes() {
     assert_eq!(doc["outline"]["claims"]["c"]["proven"], true);
     let d = std::fs::read_to_string(&path_out).unwrap();
     assert!(
-        d.starts_with("M ") && d.contains(" A 1/2 1/2 ") && d.trim_end().ends_with('Z'),
+        d.starts_with("M ") && d.contains(" A 0.5 0.5 ") && d.trim_end().ends_with('Z'),
         "{d}"
     );
     // bad input: exit 2, naming the flag

@@ -252,10 +252,11 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
             pen: Some(String::new()),
             tol: a.tol.clone(),
             cap: "round".into(),
-            output: a.output.clone(),
+            output: Some(a.output.clone()),
             method: a.method.clone(),
             svg: a.svg.clone(),
             path_out: None,
+            out: None,
             json: a.json,
         };
         return super::stroke::run_with(&sa, &curve, lncert::outline::trim::PenShape::Ellipse(pen));

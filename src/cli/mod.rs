@@ -7,9 +7,9 @@
 //! * `lncert hausdorff A B [--rel R] [--tol T] [--certificate OUT] [--json]` — certified
 //!   Hausdorff bounds and tolerance certificates;
 //! * `lncert offset CURVE --distance R --tol T [--method g2|ln-pair] [--certificate OUT] [--svg OUT]
-//!   [--global-bounds] [--no-certify] [--json]` — an offset approximant proven within a tolerance;
+//!   [--out FILE.svg] [--global-bounds] [--no-certify] [--json]` — an offset approximant proven within a tolerance;
 //! * `lncert stroke CURVE --pen circle:R --tol T [--cap round|butt] [--svg OUT] [--path-out OUT]
-//!   [--json]` — the proven outline of a circular pen's stroke;
+//!   [--out FILE.svg] [--json]` — the proven outline of a circular pen's stroke;
 //! * `lncert font IN --offset D | --stroke R --tol T --out OUT.ufo [--glyphs SPEC] [--grid G]
 //!   [--report FILE.json|FILE.html] [--jobs N] [--force] [--json]` — every glyph of a font
 //!   offset or stroked, each proven, written as a UFO ([`font`]);
@@ -43,6 +43,7 @@
 //! | [`tangency`] | `lncert tangency` |
 //! | [`offset`], [`offset_svg`] | `lncert offset` and its picture |
 //! | [`curve_input`] | the `CURVE` argument of `offset` and `stroke` (curve files, arcs, circles, `--glyph`) |
+//! | [`svg_out`] | `--out FILE.svg` of `stroke` and `offset`: the results as an SVG document in the input's frame |
 //! | [`stroke_doc`] | `lncert stroke DOC.svg` without `--pen`: each element with its own `stroke-width` |
 //! | [`ufo_input`] | UFO input of `lncert font` (norad; qcurve runs, components decomposed exactly) |
 
@@ -62,6 +63,7 @@ pub mod reproduce;
 pub mod stroke;
 pub mod stroke_doc;
 pub mod svg;
+pub mod svg_out;
 pub mod tangency;
 pub mod ufo_input;
 pub mod verify;

@@ -95,6 +95,13 @@ pub struct OffsetArgs {
     /// only: `--method ln-pair`), numbers that read back to the same floats.
     #[arg(long)]
     pub path_out: Option<PathBuf>,
+    /// Write the approximant as an SVG document (FILE.svg): one `<path>`
+    /// (a line, `fill="none"`), marked `data-lncert-proven="true"` or
+    /// `"false"`, in the input's frame (an SVG document's `viewBox` kept, y
+    /// down as the input; y-up input flipped upright). Pieces of degree ≤ 3
+    /// only, as `--path-out`. With `--trim`: the outline, filled.
+    #[arg(long, value_name = "FILE.svg")]
+    pub out: Option<PathBuf>,
     /// Also compute seed 000's error measure (8) per LN-pair segment.
     #[arg(long)]
     pub paper_error: bool,
@@ -194,6 +201,9 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             super::args::output_file(flag, p)?;
         }
     }
+    if let Some(p) = &a.out {
+        super::svg_out::check(p)?;
+    }
     let distance = number("--distance", &a.distance)?;
     let tol_q = number("--tol", &a.tol)?;
     let tol = interval_from_rational(&tol_q).inf();
@@ -204,9 +214,14 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
         )
     })?;
     let (output, grid) = output_and_grid(&a.output, a.grid.as_deref())?;
-    if a.path_out.is_some() && method == OffsetMethod::G2 && output == Output::Native {
+    // path data (also inside --out's document) has no command above degree 3
+    let path_flag = [("--path-out", &a.path_out), ("--out", &a.out)]
+        .into_iter()
+        .find(|(_, p)| p.is_some())
+        .map(|(flag, _)| flag);
+    if let (Some(flag), OffsetMethod::G2, Output::Native) = (path_flag, method, output) {
         return Err(bad(
-            "--path-out",
+            flag,
             "G2 segments have degree n + 3 ≥ 4, which SVG path data cannot store: use --output cubic, --method ln-pair (cubic), or --curve-out",
         ));
     }
@@ -221,10 +236,11 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             pen: Some(format!("circle:{}", num_traits::Signed::abs(&distance))),
             tol: a.tol.clone(),
             cap: "round".into(),
-            output: a.output.clone(),
+            output: Some(a.output.clone()),
             method: a.method.clone(),
             svg: a.svg.clone(),
             path_out: a.path_out.clone(),
+            out: a.out.clone(),
             json: a.json,
         };
         let r = num_traits::Signed::abs(&distance);
@@ -260,7 +276,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
         if matches!(output, Output::Cubic | Output::Quadratic)
             && lncert::approx::fit::rounding_move(g) >= tol
         {
-            return super::offset_grid::run(a, &curve, &opts);
+            return super::offset_grid::run(a, &curve, &opts, y_down);
         }
     }
     let start = std::time::Instant::now();
@@ -312,12 +328,18 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             .map_err(|e| bad("--exact-out", format!("{}: {e}", path.display())))?;
     }
     if let Some(path) = &a.path_out {
-        let text = svg_path_data(&res.segments, &join_commands(&res))?;
+        let text = lncert::write::offset_path_data(&res).map_err(|e| bad("--path-out", e))? + "\n";
         std::fs::write(path, text)
             .map_err(|e| bad("--path-out", format!("{}: {e}", path.display())))?;
     }
     // unproven: every segment within tol by its sampled estimate (res.reached())
     let within = res.reached() && (hi <= tol || !proven);
+    if let Some(path) = &a.out {
+        let frame = super::svg_out::frame(&a.curve, a.glyph.is_some(), y_down)?;
+        let shape = lncert::write::SvgShape::offset(&res).map_err(|e| bad("--out", e))?;
+        let shape = super::svg_out::proven(shape, within && proven);
+        super::svg_out::write(path, &[shape], &frame)?;
+    }
     let verdict = match (within, proven) {
         (true, true) => "certified",
         (true, false) => "unproven: within tol by a sampled estimate",
@@ -576,8 +598,8 @@ fn run_arcs(
     if a.svg.is_some() {
         eprintln!("note: --svg: no picture for an exact arc offset");
     }
-    if a.curve_out.is_some() || a.path_out.is_some() || a.exact_out.is_some() {
-        eprintln!("note: --curve-out/--path-out/--exact-out: the offset of an arc is an exact arc (printed above); no curve file is written");
+    if a.curve_out.is_some() || a.path_out.is_some() || a.exact_out.is_some() || a.out.is_some() {
+        eprintln!("note: --curve-out/--path-out/--exact-out/--out: the offset of an arc is an exact arc (printed above); no file is written");
     }
     if a.certificate.is_some() {
         eprintln!("note: --certificate: the offset of an arc is computed exactly; no certificate is needed or written");
@@ -604,137 +626,4 @@ fn run_arcs(
         print_out(&s);
     }
     Ok(0)
-}
-
-/// The segments as SVG path data: `M` at the start of each run of segments
-/// that meet exactly, then `L`/`Q`/`C` by degree. Every number is the *exact*
-/// decimal value of its float (a dyadic rational has a finite decimal
-/// expansion): lncert reads it back as the same rational, and any float reader
-/// rounds it to the same float — the path data is the certified curve.
-/// The join arcs of a result for path data: `(piece after which it comes,
-/// radius as a decimal, SVG sweep flag)` — sweep 1 for a
-/// counter-clockwise turn (the positive angle direction of the path's own
-/// coordinates), 0 for clockwise.
-fn join_commands(res: &OffsetResult) -> Vec<(usize, String, u8)> {
-    // the shortest decimal of the nearest float: an SVG arc is defined by its
-    // end points, the radius only picks the circle through them
-    let radius = format!(
-        "{}",
-        lncert::scalar::Scalar::approx(&num_traits::Signed::abs(&res.distance))
-    );
-    res.corners
-        .iter()
-        .filter(|c| !c.absorbed)
-        .filter_map(|c| match &c.kind {
-            Junction::Join { clockwise, .. } => {
-                Some((c.after, radius.clone(), if *clockwise { 0 } else { 1 }))
-            }
-            _ => None,
-        })
-        .collect()
-}
-
-/// SVG path data of the segments (`L`, `Q`, `C`; every number the exact
-/// decimal value of its float), with the join arcs as `A` commands from the
-/// end of the piece before the corner to the start of the next (their end
-/// points are the segments' float end points, within rounding of the exact
-/// arc's; a reader approximates them, as lncert's reader does with a
-/// certified bound).
-pub fn svg_path_data(
-    segments: &[lncert::approx::OffsetSegment],
-    joins: &[(usize, String, u8)],
-) -> Result<String, CliError> {
-    let mut out = String::new();
-    let mut last: Option<(f64, f64)> = None;
-    let arc_to = |out: &mut String, after: usize, to: (f64, f64)| {
-        if let Some((_, r, sweep)) = joins.iter().find(|j| j.0 == after) {
-            *out += &format!(
-                " A {r} {r} 0 0 {sweep} {} {}",
-                exact_decimal(to.0),
-                exact_decimal(to.1)
-            );
-            true
-        } else {
-            false
-        }
-    };
-    for (i, s) in segments.iter().enumerate() {
-        let pts = s.bezier.points();
-        let cmd = match pts.len() {
-            2 => "L",
-            3 => "Q",
-            4 => "C",
-            n => {
-                return Err(bad(
-                    "--path-out",
-                    format!(
-                        "segment {i} has degree {}: SVG path data stores degree ≤ 3 (use --method ln-pair)",
-                        n - 1
-                    ),
-                ))
-            }
-        };
-        let p0 = (pts[0].x, pts[0].y);
-        // a join arc from the previous piece's end to this piece's start
-        let joined = i > 0
-            && segments[i - 1].piece != s.piece
-            && last.is_some()
-            && last != Some(p0)
-            && arc_to(&mut out, segments[i - 1].piece, p0);
-        if joined {
-            last = Some(p0);
-        }
-        if last != Some(p0) {
-            if !out.is_empty() {
-                out.push('\n');
-            }
-            out += &format!("M {} {}", exact_decimal(p0.0), exact_decimal(p0.1));
-        }
-        out += &format!(" {cmd}");
-        for p in &pts[1..] {
-            out += &format!(" {} {}", exact_decimal(p.x), exact_decimal(p.y));
-        }
-        last = pts.last().map(|p| (p.x, p.y));
-    }
-    // the closing corner of a closed curve: back to the first segment's start
-    if let (Some(first), Some(end), Some(l)) = (segments.first(), last, segments.last()) {
-        let p0 = first.bezier.points()[0].clone();
-        if end != (p0.x, p0.y) {
-            arc_to(&mut out, l.piece, (p0.x, p0.y));
-        }
-    }
-    out.push('\n');
-    Ok(out)
-}
-
-/// The exact decimal expansion of a finite float: `m 2^e` with `e < 0` is
-/// `m 5^-e / 10^-e`.
-pub fn exact_decimal(x: f64) -> String {
-    use num_bigint::BigInt;
-    let Some(r) = lncert::scalar::rational_from_f64(x) else {
-        return "NaN".to_string();
-    };
-    let (n, d) = (r.numer().clone(), r.denom().clone());
-    // d = 2^k
-    let k = d.bits() - 1;
-    if k == 0 {
-        return n.to_string();
-    }
-    let digits = (n.magnitude() * num_traits::pow(BigInt::from(5).magnitude().clone(), k as usize))
-        .to_string();
-    let k = k as usize;
-    let (int, frac) = if digits.len() > k {
-        (
-            digits[..digits.len() - k].to_string(),
-            digits[digits.len() - k..].to_string(),
-        )
-    } else {
-        (
-            "0".to_string(),
-            format!("{}{}", "0".repeat(k - digits.len()), digits),
-        )
-    };
-    let frac = frac.trim_end_matches('0');
-    let sign = if x < 0.0 { "-" } else { "" };
-    format!("{sign}{int}.{frac}")
 }

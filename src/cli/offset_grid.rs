@@ -5,9 +5,9 @@
 //! ([`lncert::approx::gridfit::offset_on_grid`]).
 
 use super::args::{bad, q};
-use super::offset::{exact_decimal, offset_err, OffsetArgs};
+use super::offset::{offset_err, OffsetArgs};
 use super::{print_out, CliError};
-use lncert::approx::gridfit::{offset_on_grid, GridOffset, Target};
+use lncert::approx::gridfit::{offset_on_grid, Target};
 use lncert::approx::OffsetOptions;
 use lncert::curve::Bezier;
 use lncert::scalar::Rational;
@@ -23,34 +23,12 @@ fn target_json(t: &Target) -> serde_json::Value {
     }
 }
 
-/// SVG path data of the cubics (`C`) or quadratics (`Q`), one subpath per
-/// contour (`Z` when closed).
-pub fn path_data(r: &GridOffset) -> String {
-    let mut out = String::new();
-    for &(first, n, closed) in &r.contours {
-        for (k, s) in r.segments[first..first + n].iter().enumerate() {
-            let p = s.bezier.points();
-            if k == 0 {
-                out += &format!("M {} {}", exact_decimal(p[0].x), exact_decimal(p[0].y));
-            }
-            out += if p.len() == 3 { " Q" } else { " C" };
-            for c in &p[1..] {
-                out += &format!(" {} {}", exact_decimal(c.x), exact_decimal(c.y));
-            }
-        }
-        if closed {
-            out += " Z";
-        }
-        out.push('\n');
-    }
-    out
-}
-
 /// Runs the grid path of `lncert offset` (called by [`super::offset::run`]).
 pub fn run(
     a: &OffsetArgs,
     curve: &[Bezier<Rational>],
     opts: &OffsetOptions,
+    y_down: bool,
 ) -> Result<i32, CliError> {
     if a.svg.is_some() || a.global_bounds || a.no_certify || a.paper_error {
         return Err(bad(
@@ -84,7 +62,8 @@ pub fn run(
             .map_err(|e| bad("--exact-out", format!("{}: {e}", path.display())))?;
     }
     if let Some(path) = &a.path_out {
-        std::fs::write(path, path_data(&r))
+        let d = lncert::write::grid_path_data(&r).map_err(|e| bad("--path-out", e))? + "\n";
+        std::fs::write(path, d)
             .map_err(|e| bad("--path-out", format!("{}: {e}", path.display())))?;
     }
     let grid = opts.grid.clone().unwrap_or_default();
@@ -97,6 +76,12 @@ pub fn run(
     } else {
         "not reached"
     };
+    if let Some(path) = &a.out {
+        let frame = super::svg_out::frame(&a.curve, a.glyph.is_some(), y_down)?;
+        let shape = lncert::write::SvgShape::grid_offset(&r).map_err(|e| bad("--out", e))?;
+        let shape = super::svg_out::proven(shape, r.reached());
+        super::svg_out::write(path, &[shape], &frame)?;
+    }
     if a.json {
         let doc = json!({
             "method": "grid-fit",

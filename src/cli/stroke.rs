@@ -1,6 +1,6 @@
 //! `lncert stroke CURVE --pen circle:R|ellipse:A,B[,θ] --tol T [--method g2|ln-pair]
 //! [--cap round|butt] [--output native|cubic|quadratic] [--svg OUT]
-//! [--path-out OUT] [--json]`: the proven outline of the region a pen sweeps
+//! [--path-out OUT] [--out FILE.svg] [--json]`: the proven outline of the region a pen sweeps
 //! along the curve ([`lncert::outline::trim::stroke`]): closed contours of
 //! exact Bézier pieces and exact arcs, the crossings where the sides were cut,
 //! and claims (a) output ⊂ TOL-neighbourhood of the exact boundary, (b) exact
@@ -76,9 +76,10 @@ pub struct StrokeArgs {
     #[arg(long, default_value = "round")]
     pub cap: String,
     /// Offset segments: native (degree n + 3), cubic or quadratic (fitted, proven;
-    /// needed for `--path-out` when the native degree is above 3).
-    #[arg(long, default_value = "native")]
-    pub output: String,
+    /// needed for `--path-out` when the native degree is above 3). Default:
+    /// native, or cubic with `--out` (SVG has no command above degree 3).
+    #[arg(long)]
+    pub output: Option<String>,
     /// The sides' construction: `g2` (degree n + 3, seeds 004 / 001) or
     /// `ln-pair` (cubic LN pairs, seed 000).
     #[arg(long, default_value = "g2")]
@@ -86,9 +87,17 @@ pub struct StrokeArgs {
     /// Write a picture: the filled outline over the skeleton.
     #[arg(long)]
     pub svg: Option<PathBuf>,
-    /// Write the outline as SVG path data (arcs as `A` commands with the exact radius).
+    /// Write the outline as SVG path data (`L`/`Q`/`C`, arcs as `A`, `Z` after
+    /// each closed contour; numbers that read back to the same floats).
     #[arg(long)]
     pub path_out: Option<PathBuf>,
+    /// Write the outline as an SVG document (FILE.svg): one filled `<path>`
+    /// (nonzero), marked `data-lncert-proven="true"` or `"false"`, in the
+    /// input's frame: an SVG document's `viewBox` (and size) kept and y down
+    /// as the input; y-up input (JSON curves, glyphs) flipped upright. For an
+    /// SVG document without `--pen`: one `<path>` per stroked element.
+    #[arg(long, value_name = "FILE.svg")]
+    pub out: Option<PathBuf>,
     /// One JSON document on stdout.
     #[arg(long)]
     pub json: bool,
@@ -139,62 +148,10 @@ fn f(r: &Rational) -> f64 {
     r.approx()
 }
 
-/// SVG path data; Béziers above degree 3 have no SVG command and are written
-/// as `C` cubics only when they are cubics: higher degrees are refused.
+/// SVG path data of the outline ([`lncert::write::path_data`]); a piece of
+/// degree above 3 has no SVG command: an error naming `--path-out` and the piece.
 pub fn path_data(s: &Stroke) -> Result<String, CliError> {
-    let mut d = String::new();
-    for c in &s.contours {
-        let p0 = c.pieces[0].start();
-        let _ = write!(d, "M {} {} ", f(&p0.x), f(&p0.y));
-        for p in &c.pieces {
-            match p {
-                Piece::Bezier(b) => {
-                    let pts: Vec<String> = b.points()[1..]
-                        .iter()
-                        .map(|v| format!("{} {}", f(&v.x), f(&v.y)))
-                        .collect();
-                    let cmd = match b.degree() {
-                        1 => "L",
-                        2 => "Q",
-                        3 => "C",
-                        n => {
-                            return Err(bad(
-                                "--path-out",
-                                format!(
-                                "a degree-{n} piece has no SVG path command (use --output cubic)"
-                            ),
-                            ))
-                        }
-                    };
-                    let _ = write!(d, "{cmd} {} ", pts.join(" "));
-                }
-                Piece::Arc(a) => {
-                    let (u, v) = (a.from.sub(&a.center), a.to.sub(&a.center));
-                    let cross = u.cross(&v);
-                    let zero = Rational::from_integer(0.into());
-                    // large-arc: the travelled angle exceeds π
-                    let large = if a.clockwise {
-                        cross > zero
-                    } else {
-                        cross < zero
-                    };
-                    let sweep = if a.clockwise { 0 } else { 1 };
-                    let _ = write!(
-                        d,
-                        "A {} {} 0 {} {} {} {} ",
-                        q(&a.radius),
-                        q(&a.radius),
-                        large as u8,
-                        sweep,
-                        f(&a.to.x),
-                        f(&a.to.y)
-                    );
-                }
-            }
-        }
-        d.push_str("Z ");
-    }
-    Ok(d.trim_end().to_string())
+    lncert::write::path_data(&s.contours).map_err(|e| bad("--path-out", e))
 }
 
 /// The picture: the filled outlines (path data `path`) over the skeleton.
@@ -208,28 +165,12 @@ pub fn svg(
     path: &str,
     y_down: bool,
 ) -> String {
-    let mut lo = (f64::INFINITY, f64::INFINITY);
-    let mut hi = (f64::NEG_INFINITY, f64::NEG_INFINITY);
-    for c in strokes.iter().flat_map(|s| &s.contours) {
-        for p in &c.pieces {
-            for v in [p.start(), p.end()] {
-                lo = (lo.0.min(f(&v.x)), lo.1.min(f(&v.y)));
-                hi = (hi.0.max(f(&v.x)), hi.1.max(f(&v.y)));
-            }
-            // the control polygon holds the curve
-            if let Piece::Bezier(b) = p {
-                for v in b.points() {
-                    lo = (lo.0.min(f(&v.x)), lo.1.min(f(&v.y)));
-                    hi = (hi.0.max(f(&v.x)), hi.1.max(f(&v.y)));
-                }
-            }
-            if let Piece::Arc(a) = p {
-                let r = f(&a.radius);
-                lo = (lo.0.min(f(&a.center.x) - r), lo.1.min(f(&a.center.y) - r));
-                hi = (hi.0.max(f(&a.center.x) + r), hi.1.max(f(&a.center.y) + r));
-            }
-        }
-    }
+    let all: Vec<Contour> = strokes
+        .iter()
+        .flat_map(|s| s.contours.iter().cloned())
+        .collect();
+    let [x0, y0, x1, y1] = lncert::write::contour_bounds(&all).unwrap_or([0.0, 0.0, 1.0, 1.0]);
+    let (lo, hi) = ((x0, y0), (x1, y1));
     let w = (hi.0 - lo.0).max(1e-9);
     let h = (hi.1 - lo.1).max(1e-9);
     let m = 0.05 * w.max(h);
@@ -366,10 +307,17 @@ pub(crate) fn options(a: &StrokeArgs, pen: PenShape) -> Result<StrokeOptions, Cl
             super::args::output_file(flag, p)?;
         }
     }
+    if let Some(p) = &a.out {
+        super::svg_out::check(p)?;
+    }
     let mut opts = StrokeOptions::with_pen(pen, tol);
     opts.cap = cap;
     opts.method = method;
-    opts.output = match a.output.as_str() {
+    let output = a
+        .output
+        .as_deref()
+        .unwrap_or(if a.out.is_some() { "cubic" } else { "native" });
+    opts.output = match output {
         "native" => lncert::approx::Output::Native,
         "cubic" => lncert::approx::Output::Cubic,
         "quadratic" => lncert::approx::Output::Quadratic,
@@ -531,7 +479,7 @@ pub(crate) fn uncertain(s: &Stroke) -> Vec<serde_json::Value> {
     out
 }
 
-/// Prints a stroke (text or JSON) and writes `--svg`, `--path-out`; returns
+/// Prints a stroke (text or JSON) and writes `--svg`, `--path-out`, `--out`; returns
 /// the exit code: 0 only when the outline is decided — every contour closed
 /// and claims (a), (b), (c) proven — and 3 otherwise.
 fn report(
@@ -560,6 +508,11 @@ fn report(
         // the picture draws higher-degree pieces as their control polygons' chords
         let d = path.clone().unwrap_or_else(|_| fallback_path(s));
         std::fs::write(p, svg(&[s], curve, &d, y_down)).map_err(|e| bad("--svg", e))?;
+    }
+    if let Some(p) = &a.out {
+        let frame = super::svg_out::frame(&a.curve, a.glyph.is_some(), y_down)?;
+        let shape = lncert::write::SvgShape::outline(&s.contours).map_err(|e| bad("--out", e))?;
+        super::svg_out::write(p, &[super::svg_out::proven(shape, complete)], &frame)?;
     }
     if a.json {
         let mut doc = stroke_json(s, a.pen.as_deref().unwrap_or_default());

@@ -13,7 +13,12 @@
 //! `lncert stroke`, in parallel); the run is decided (exit 0) when every
 //! element's stroke is. `--svg` draws all outlines (y down, as the input),
 //! `--path-out` writes them one after the other (each element's contours
-//! are oriented; their union is the nonzero fill). JSON: `{"elements":
+//! are oriented; their union is the nonzero fill), `--out FILE.svg` writes
+//! an SVG document with the input's `viewBox`, `width` and `height`, y down
+//! as the input, one filled `<path>` per stroked element, in document order,
+//! with `data-lncert-at` (the element, as in the JSON `at`) and
+//! `data-lncert-proven="true"`/`"false"` (an undecided element is written
+//! and marked, never dropped). JSON: `{"elements":
 //! [{"at", "pen_radius", "stroke_width", "input_approximation", "verdict",
 //! "outline", ...}], "verdict", "seconds", "tol", "input_approximation"}`.
 
@@ -96,6 +101,17 @@ pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
             d.push(path_data(s)?);
         }
         std::fs::write(p, d.join(" ") + "\n").map_err(|e| bad("--path-out", e))?;
+    }
+    if let Some(p) = &a.out {
+        let frame = lncert::write::SvgOptions::from_svg(&text).map_err(|e| bad("CURVE", e))?;
+        let mut shapes = Vec::new();
+        for (((e, _), s), d) in jobs.iter().zip(&refs).zip(&decided) {
+            let shape = lncert::write::SvgShape::outline(&s.contours)
+                .map_err(|err| bad("--out", format!("{}: {err}", e.at)))?
+                .with("data-lncert-at", e.at.clone());
+            shapes.push(super::svg_out::proven(shape, *d));
+        }
+        super::svg_out::write(p, &shapes, &frame)?;
     }
     if let Some(p) = &a.svg {
         let d: Vec<String> = refs
