@@ -26,8 +26,11 @@ fn stroke_cubic(curve: &[Bezier<Rational>], r: &str, tol: f64) -> Stroke {
 /// An independent reader of the path data the writer emits: absolute
 /// commands, each followed by its numbers. Returns per subpath the commands
 /// with their numbers, and whether it ends with `Z`.
-fn read_path(d: &str) -> Vec<(Vec<(char, Vec<f64>)>, bool)> {
-    let mut subpaths: Vec<(Vec<(char, Vec<f64>)>, bool)> = Vec::new();
+/// A subpath read back: its commands with their numbers, and whether it was closed.
+type Subpath = (Vec<(char, Vec<f64>)>, bool);
+
+fn read_path(d: &str) -> Vec<Subpath> {
+    let mut subpaths: Vec<Subpath> = Vec::new();
     for tok in d.split_whitespace() {
         match tok {
             "M" => subpaths.push((vec![('M', vec![])], false)),

@@ -464,9 +464,26 @@ struct Link {
     boxes: std::sync::Arc<Vec<crate::certify::ParamBox>>,
     /// The raw piece runs against the segment's parameter (the `+r` side).
     reversed: bool,
+    /// The segment's certified error when the link was made: `raw.e − seg_e`
+    /// bounds how far the raw piece's points have moved since (end snaps).
+    seg_e: f64,
 }
 
 impl Link {
+    /// The largest certified `|B(t) − A(φ(t))|` over the map's boxes that meet
+    /// the raw parameters `[s0, s1]` (`None` if none does).
+    fn local_bound(&self, s0: f64, s1: f64) -> Option<f64> {
+        let (lo, hi) = if self.reversed {
+            (1.0 - s1, 1.0 - s0)
+        } else {
+            (s0, s1)
+        };
+        self.boxes
+            .iter()
+            .filter(|b| b.t.1 >= lo && b.t.0 <= hi)
+            .map(|b| b.bound)
+            .reduce(f64::max)
+    }
     /// The exact parameters (on the input piece) whose offset points lie
     /// within `e_in` of the raw piece's points over `[s0, s1]`, enclosed.
     fn exact_range(&self, s0: f64, s1: f64) -> Option<(f64, f64)> {
@@ -612,6 +629,7 @@ fn chain_side(
             d: res.distance.clone(),
             boxes: std::sync::Arc::new(map.boxes.clone()),
             reversed: false,
+            seg_e: s.error.1,
         })
     };
     let mut raws: Vec<Raw> = segs
@@ -638,6 +656,7 @@ fn chain_side(
                                 bound: 0.0,
                             }]),
                             reversed: false,
+                            seg_e: 0.0,
                         }),
                     };
                 }
@@ -1591,15 +1610,26 @@ fn prove_removed(
     curve_f: &[Bezier<f64>],
     piece: &Piece,
     e: f64,
+    local: &dyn Fn(f64, f64) -> Option<f64>,
     form: &Form,
     near: &[V2<Rational>],
     lambda: &Rational,
 ) -> Option<bool> {
-    let shrink = <Rational as One>::one() - rational_from_f64(e)? / &form.b_lo;
-    if !shrink.is_positive() {
-        return None;
-    }
-    let re2 = interval_from_rational(&(&form.d * &shrink * &shrink)).inf();
+    // `d (1 − e/b_lo)²` enclosed from below, for the part's error bound
+    let (d_iv, b_lo_iv) = (
+        interval_from_rational(&form.d),
+        interval_from_rational(&form.b_lo),
+    );
+    let one_iv = Interval::try_from((1.0, 1.0)).ok()?;
+    let re2_for = |e: f64| -> Option<f64> {
+        let sh = one_iv - Interval::try_from((e, e)).ok()? / b_lo_iv;
+        if sh.is_empty() || sh.inf() <= 0.0 {
+            return None;
+        }
+        let v = d_iv * sh * sh;
+        (!v.is_empty()).then(|| v.inf())
+    };
+    re2_for(e)?;
     let l2 = interval_from_rational(&(lambda * lambda)).inf();
     let near: Vec<V2<Interval>> = near.iter().map(iv_point).collect();
     let fa = [&form.a, &form.b, &form.c].map(interval_from_rational);
@@ -1612,15 +1642,26 @@ fn prove_removed(
             v.sup()
         }
     };
-    let mut todo: Vec<(Part, u32)> = Part::initial(piece)?.into_iter().map(|p| (p, 0)).collect();
+    // parts with their parameter range on `piece` (Bézier parts; an arc's
+    // parts use the global bound)
+    let mut todo: Vec<(Part, u32, (f64, f64))> = Part::initial(piece)?
+        .into_iter()
+        .map(|p| (p, 0, (0.0, 1.0)))
+        .collect();
     let mut used = false;
     let mut n = 0;
-    while let Some((part, depth)) = todo.pop() {
+    while let Some((part, depth, (t0, t1))) = todo.pop() {
         n += 1;
         if n > 4000 {
             return None;
         }
         let hull = part.hull()?;
+        // the part's own error bound where the offset's map gives one
+        let e_part = match part {
+            Part::Bez(_) => local(t0, t1).map_or(e, |l| l.min(e)),
+            Part::Arc(_) => e,
+        };
+        let re2 = re2_for(e_part).unwrap_or(f64::NEG_INFINITY);
         if near.iter().any(|x| {
             hull.iter().all(|p| {
                 let d = p.sub(x).norm2();
@@ -1640,8 +1681,9 @@ fn prove_removed(
             return None;
         }
         let (l, rr) = part.halves()?;
-        todo.push((rr, depth + 1));
-        todo.push((l, depth + 1));
+        let tm = 0.5 * (t0 + t1);
+        todo.push((rr, depth + 1, (tm, t1)));
+        todo.push((l, depth + 1, (t0, tm)));
     }
     Some(used)
 }
@@ -2147,7 +2189,11 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
             v
         })
         .collect();
-    let lambda = rational_from_f64(tol / 2.0).unwrap_or_else(<Rational as Zero>::zero);
+    // λ of the removal: a removed part within λ of a kept crossing point
+    // costs (b) e + λ, so λ may use what TOL leaves above e (at least TOL/2)
+    let lambda_f = |e: f64| (0.95 * (tol - e)).max(tol / 2.0);
+    let lambda_for =
+        |e: f64| rational_from_f64(lambda_f(e)).unwrap_or_else(<Rational as Zero>::zero);
     let removed: Vec<Option<bool>> = subs
         .par_iter()
         .zip(&kept_bounds)
@@ -2157,7 +2203,18 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
                 return None;
             }
             let tt = std::time::Instant::now();
-            let r = prove_removed(curve, &curve_f, &s.pre, raw.e, form, &near, &lambda);
+            // the error bound of a part of `pre` (parameters `[t0, t1]` on it):
+            // the map's boxes over it plus the raw piece's moves since
+            let local = |t0: f64, t1: f64| -> Option<f64> {
+                let link = raw.link.as_ref()?;
+                let (r0, r1) = (s.range.0.approx(), s.range.1.approx());
+                let pad = 1e-9;
+                let lb = link.local_bound(r0 + t0 * (r1 - r0) - pad, r0 + t1 * (r1 - r0) + pad)?;
+                let moved = (raw.e - link.seg_e).max(0.0);
+                Some((lb + moved) * (1.0 + 1e-12))
+            };
+            let lambda = lambda_for(raw.e);
+            let r = prove_removed(curve, &curve_f, &s.pre, raw.e, &local, form, &near, &lambda);
             if dbg {
                 eprintln!("removed raw {} {:?} {:?}", s.raw, tt.elapsed(), r);
             }
@@ -2185,7 +2242,9 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
             classified.removed += 1;
             b_bound = b_bound.max(raw.e);
             if used {
-                b_bound = b_bound.max(raw.e + tol / 2.0);
+                // the λ the removal test was given (its rational is exactly
+                // this f64), plus a hair for the sum's rounding
+                b_bound = b_bound.max((raw.e + lambda_f(raw.e)) * (1.0 + 1e-12));
             }
         } else {
             classified.undecided += 1;
