@@ -3,7 +3,13 @@
 (ufo2ft, read with ufoLib2) to a TrueType font, and check with fontTools that
 every compiled glyph matches the UFO's outline.
 
-    compile_ufo.py IN.ufo OUT.ttf
+    compile_ufo.py IN.ufo OUT.ttf [LNCERT REPORT.json]
+
+With the lncert binary and the font job's JSON report, every compiled glyph
+is also certified against the exact offset: `lncert hausdorff` certifies
+d_H(compiled glyph, UFO glyph) ≤ h, and the report's proven bound b is
+d_H(UFO glyph, exact offset boundary), so the compiled glyph is within b + h
+of it (triangle inequality); h must not exceed the compiler's tolerance.
 
 The compiler converts the cubics to quadratics (cu2qu, at most
 `MAX_ERR_EM` em) and rounds the points to integers, so points are not compared;
@@ -18,7 +24,11 @@ per glyph, the check is:
 counter-clockwise); ufo2ft reverses them for TrueType, as for any UFO.
 Exit 0 when every glyph matches, 1 otherwise.
 """
+import json
+import os
+import subprocess
 import sys
+import tempfile
 
 import ufoLib2
 import ufo2ft
@@ -37,8 +47,41 @@ def measure(draw, glyphset):
     return a.value, b.bounds, p.value
 
 
+def certify_against_exact(name, ufo_glyph, compiled, glyphset, lncert, bound, tol, tmp):
+    """Certified d_H(compiled, UFO glyph) by `lncert hausdorff`; returns
+    (total bound, problem or None)."""
+    from fontTools.pens.svgPathPen import SVGPathPen
+
+    paths = []
+    for tag, draw, gs in (("c", compiled.draw, glyphset), ("u", ufo_glyph.draw, None)):
+        pen = SVGPathPen(gs)
+        draw(pen)
+        path = os.path.join(tmp, f"{tag}.svg")
+        with open(path, "w") as f:
+            f.write(pen.getCommands())
+        paths.append(path)
+    run = subprocess.run([lncert, "hausdorff", *paths, "--json"], capture_output=True, text=True)
+    if run.returncode not in (0, 3) or not run.stdout:
+        return float("inf"), f"lncert hausdorff failed: {run.stderr.strip()[:200]}"
+    d = json.loads(run.stdout)
+    h = d["hi"]
+    if d.get("incomplete") or h is None or not h <= tol:
+        return float("inf"), f"d_H(compiled, UFO) certified only ≤ {h} (allowed {tol:.2f})"
+    return bound + h, None
+
+
 def main():
     src, dst = sys.argv[1], sys.argv[2]
+    lncert = sys.argv[3] if len(sys.argv) > 3 else None
+    proven = {}
+    if len(sys.argv) > 4:
+        with open(sys.argv[4]) as f:
+            for g in json.load(f)["glyphs"]:
+                if g.get("verdict") == "proven":
+                    proven[g["name"]] = g["bound"]
+    tmp = tempfile.mkdtemp()
+    worst = 0.0
+    certified = 0
     ufo = ufoLib2.Font.open(src)
     upm = ufo.info.unitsPerEm
     tol = MAX_ERR_EM * upm + 1.0
@@ -78,11 +121,27 @@ def main():
                 problems.append(f"U+{cp:04X} maps to {cmap.get(cp)}")
         if hmtx[name][0] != round(g.width):
             problems.append(f"advance {hmtx[name][0]} compiled, {g.width} in the UFO")
+        if lncert and name in proven and not problems:
+            total, problem = certify_against_exact(
+                name, g, gs[name], gs, lncert, proven[name], tol, tmp
+            )
+            if problem:
+                problems.append(problem)
+            else:
+                certified += 1
+                worst = max(worst, total)
         if problems:
             bad += 1
             print(f"{name}: " + "; ".join(problems))
     n = len(ufo)
     print(f"compile_ufo: {n} glyphs compiled to {dst}; {n - bad} match the UFO within {tol:.2f} font units")
+    if lncert:
+        print(
+            f"compile_ufo: {certified} compiled glyphs certified within {worst:.3f} font units of the exact offset "
+            f"(the proven bound plus the certified d_H(compiled, UFO))"
+        )
+        if certified != len(proven):
+            bad += 1
     return 1 if bad else 0
 
 
