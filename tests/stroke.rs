@@ -1089,3 +1089,51 @@ fn near_g1_corners_are_joints_not_crossings() {
         sampled_check(&x, &s, 0.5, 1e-2, 2e-3);
     }
 }
+
+mod common;
+
+/// Glyphs whose strokes needed the decisions of the last round (DejaVu, font
+/// units, r 40, the font job's stroke tolerance at TOL 1 on the integer grid):
+/// `!` leaves a tail past a shallow crossing, inside S by less than its bound
+/// (a spur, dropped by its certified reach); `?` has a tail on a side that
+/// travels with S on its right (the kept witness goes away from the foot);
+/// Serif `a` has a removed branch shallower than the sides' first bound (the
+/// sides are rebuilt at TOL/64). Each is proven, closed and simple, and checked
+/// against the dense-sampled boundary of `x ⊕ disk(r)`.
+#[test]
+fn glyph_strokes_that_need_spurs_witnesses_and_refinement_are_proven() {
+    let Some(sans) = common::dejavu() else { return };
+    let serif = sans.with_file_name("DejaVuSerif.ttf");
+    let tol = 0.31;
+    for (font, ch) in [(&sans, '!'), (&sans, '?'), (&serif, 'a')] {
+        if !font.exists() {
+            assert!(
+                std::env::var("LNCERT_REQUIRE_FONT").is_err(),
+                "{font:?} missing"
+            );
+            continue;
+        }
+        let data = std::fs::read(font).unwrap();
+        let x = lncert::shape::glyph_outline(&data, ch).unwrap();
+        let mut o = StrokeOptions::new(q("40"), tol);
+        o.output = lncert::approx::Output::Cubic;
+        let s = stroke(&x, &o).unwrap();
+        assert!(
+            s.proven(),
+            "{ch}: {:?} {:?} {:?} {:?}",
+            s.a,
+            s.b,
+            s.c,
+            s.notes
+        );
+        check_closed_simple(&s);
+        if ch == 'a' {
+            assert!(
+                s.notes.iter().any(|n| n.contains("rebuilt at TOL/64")),
+                "{:?}",
+                s.notes
+            );
+        }
+        sampled_check_n(&x, &s, 40.0, tol, 0.05, 200);
+    }
+}

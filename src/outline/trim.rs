@@ -1029,9 +1029,10 @@ fn raw_contours(
     opts: &StrokeOptions,
     closed: bool,
     first: usize,
+    raw_div: f64,
 ) -> Result<(Vec<Vec<Raw>>, Vec<String>, Vec<CapReport>), StrokeError> {
     let r = &opts.radius;
-    let tol_off = opts.tol / 8.0;
+    let tol_off = opts.tol / raw_div;
     let run = |d: Rational| {
         let mut o = OffsetOptions::new(d.clone(), tol_off);
         o.output = opts.output;
@@ -1051,7 +1052,7 @@ fn raw_contours(
     for (name, res) in [("-r", &minus), ("+r", &plus)] {
         if !res.reached() || !res.proven {
             notes.push(format!(
-                "the {name} offset did not reach tol/8 (certified {:.3e})",
+                "the {name} offset did not reach tol/{raw_div} (certified {:.3e})",
                 res.certified_hi
             ));
         }
@@ -1852,6 +1853,47 @@ fn mid_rational(lo: f64, hi: f64) -> Option<Rational> {
 /// assert!(s.contours[0].closed);
 /// ```
 pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke, StrokeError> {
+    let first = stroke_at(curve, opts, 8.0)?;
+    if first.classified.undecided == 0 && first.c.proven {
+        return Ok(first);
+    }
+    // refinement on demand: sub-pieces that neither test decides are most
+    // often a raw piece whose error bound `e` is as large as the geometry it
+    // must resolve (a shallow crossing, a tail inside S by less than `e`);
+    // the sides are rebuilt once at TOL/64 and the better outcome is kept
+    let second = stroke_at(curve, opts, 64.0)?;
+    let score = |s: &Stroke| {
+        (
+            [s.a.proven, s.b.proven, s.c.proven]
+                .iter()
+                .filter(|p| **p)
+                .count(),
+            std::cmp::Reverse(s.classified.undecided),
+        )
+    };
+    if score(&second) > score(&first) {
+        let mut second = second;
+        second.notes.push(format!(
+            "the sides were rebuilt at TOL/64 (at TOL/8 {} sub-pieces were undecided{})",
+            first.classified.undecided,
+            if first.c.proven {
+                ""
+            } else {
+                ", claim (c) not proven"
+            }
+        ));
+        Ok(second)
+    } else {
+        Ok(first)
+    }
+}
+
+/// [`stroke`] with the sides built within `TOL / raw_div`.
+fn stroke_at(
+    curve: &[Bezier<Rational>],
+    opts: &StrokeOptions,
+    raw_div: f64,
+) -> Result<Stroke, StrokeError> {
     let comps = check(curve, opts)?;
     let closed = comps.iter().all(|c| c.2);
     let form = opts.form()?;
@@ -1864,7 +1906,7 @@ pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke
     let mut notes = Vec::new();
     let mut caps = Vec::new();
     for &(first, end, c_closed) in &comps {
-        let (rc, n, cp) = raw_contours(&curve[first..end], opts, c_closed, first)?;
+        let (rc, n, cp) = raw_contours(&curve[first..end], opts, c_closed, first, raw_div)?;
         raw_contours_all.extend(rc);
         notes.extend(n);
         caps.extend(cp);
