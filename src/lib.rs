@@ -101,6 +101,8 @@ pub mod reproduce;
 pub mod scalar;
 pub mod shape;
 pub mod tangency;
+#[cfg(test)]
+mod test_rng;
 pub mod write;
 
 pub use approx::{offset, union_certificate, OffsetMethod, OffsetOptions, OffsetResult};

@@ -947,13 +947,8 @@ mod tests {
     /// and the same joints.
     #[test]
     fn segment_path_agrees_with_the_box_search() {
-        let mut seed = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut next = |m: i64| {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed % (2 * m as u64 + 1)) as i64 - m
-        };
+        let mut rng = crate::test_rng::TestRng::new(0x9e37_79b9_7f4a_7c15);
+        let mut next = |m: i64| rng.int(m);
         let sopts = SolveOptions::default();
         let mut compared = 0;
         let mut crossings = 0;
