@@ -32,9 +32,9 @@
 //!
 //! Dependencies point down the table. The engines' internals (search,
 //! parametric proofs, jets, Bernstein hulls, the piece parametrisations) are
-//! private; the modules `json`, `reproduce` and `audit` are hidden from the
-//! documentation: they serve the `lncert` binary and the fuzz targets and are
-//! not part of the API.
+//! private, and so is the bounded JSON reader. The `lncert`
+//! command line, `lncert reproduce` and `lncert audit` live in the crate
+//! `lncert-cli` (directory `cli/` of the repository).
 //!
 //! # Using lncert as a library
 //!
@@ -79,25 +79,17 @@ pub struct ReadmeDoctests;
 #[cfg(doctest)]
 #[doc = include_str!("../docs/library.md")]
 pub struct LibraryDocDoctests;
-// Internal: the self-audit behind `lncert audit` and the fuzz targets.
-#[cfg(feature = "arbitrary")]
-#[doc(hidden)]
-pub mod audit;
 pub mod certify;
 pub mod curve;
 #[cfg(feature = "arbitrary")]
 pub mod gen;
-// Internal: the bounded JSON reader shared by the readers and the binary.
-#[doc(hidden)]
-pub mod json;
+// Internal: the bounded JSON reader of every input.
+mod json;
 #[cfg(feature = "kurbo")]
 pub mod kurbo_bridge;
 pub mod ln;
 pub mod outline;
 pub mod poly;
-// Internal: the claims of `lncert reproduce`.
-#[doc(hidden)]
-pub mod reproduce;
 pub mod scalar;
 pub mod shape;
 pub mod tangency;

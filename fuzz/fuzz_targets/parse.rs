@@ -1,13 +1,13 @@
 #![no_main]
-//! Fuzz target `parse`: raw bytes -> `lncert::audit::fuzz::fuzz_parse`.
+//! Fuzz target `parse`: raw bytes -> `lncert_cli::audit::fuzz::fuzz_parse`.
 //! Inputs the generator or kernel rejects are not kept in the corpus; a
 //! certified-path failure panics with its message (libFuzzer saves the input).
 
 use libfuzzer_sys::{fuzz_target, Corpus};
-use lncert::audit::fuzz::Outcome;
+use lncert_cli::audit::fuzz::Outcome;
 
 fuzz_target!(|data: &[u8]| -> Corpus {
-    match lncert::audit::fuzz::fuzz_parse(data) {
+    match lncert_cli::audit::fuzz::fuzz_parse(data) {
         Ok(Outcome::Rejected) => Corpus::Reject,
         Ok(Outcome::Checked) => Corpus::Keep,
         Err(e) => panic!("{e}"),

@@ -134,7 +134,7 @@ fn same_arc(a: &ArcDesc, b: &ArcDesc) -> Result<(), String> {
     Ok(())
 }
 
-/// Verifies a certificate ([`verify_json`]) and checks that it is about
+/// Verifies a certificate (as [`verify`](super::verify::verify) does) and checks that it is about
 /// exactly the shapes `a` and `b` ([`ShapeDesc::same_as`]): what `lncert
 /// verify CERT --against A B` runs.
 ///

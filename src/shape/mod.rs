@@ -38,6 +38,7 @@
 //!
 //! | limit | value |
 //! |---|---|
+//! | input document (JSON, SVG, certificate) | [`MAX_INPUT_BYTES`] = 128 MiB |
 //! | coordinate magnitude | [`MAX_COORDINATE`] = 10¹⁰⁰ (compared exactly) |
 //! | control points per Bézier piece | [`MAX_CONTROL_POINTS`] = 64 (degree ≤ 63) |
 //! | pieces per curve | [`MAX_SEGMENTS`] = 100 000 |
@@ -85,6 +86,10 @@ pub use svgdoc::{
     MAX_USE_DEPTH, TRANSFORM_TARGET,
 };
 pub use winding::winding_number;
+
+/// The largest input document any reader of lncert accepts (JSON curves,
+/// shapes, certificates, SVG), in bytes: 128 MiB.
+pub const MAX_INPUT_BYTES: usize = crate::json::Limits::DEFAULT.max_bytes;
 
 /// Why a shape could not be built or read: the field and the reason.
 ///

@@ -167,26 +167,6 @@ pub const FIG4: [&str; 10] = [
     "--radius",
 ];
 
-/// Runs the `lncert` binary with `args`.
-pub fn lncert(args: &[&str]) -> std::process::Output {
-    std::process::Command::new(env!("CARGO_BIN_EXE_lncert"))
-        .args(args)
-        .output()
-        .expect("the binary runs")
-}
-
-/// The JSON document a run printed on stdout (panics with stdout and stderr
-/// when it is not JSON).
-pub fn json_of(o: &std::process::Output) -> serde_json::Value {
-    serde_json::from_slice(&o.stdout).unwrap_or_else(|e| {
-        panic!(
-            "not JSON ({e}): {}\nstderr: {}",
-            String::from_utf8_lossy(&o.stdout),
-            String::from_utf8_lossy(&o.stderr)
-        )
-    })
-}
-
 /// Writes `text` to `name` in a temporary directory of this test binary and
 /// process, and returns the path.
 pub fn tmp(name: &str, text: &str) -> std::path::PathBuf {

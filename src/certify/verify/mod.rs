@@ -1,7 +1,7 @@
 //! The independent certificate checker behind `lncert verify`.
 //!
 //! It shares nothing with the search but the scalar layer (inari intervals,
-//! exact rationals) and the bounded JSON reader ([`crate::json`]): its own
+//! exact rationals) and the crate's bounded JSON reader: its own
 //! strict reader of the canonical shapes (`read`), its own de Casteljau
 //! evaluation, arc and offset formulas and its own second-order Taylor
 //! arithmetic (`eval`). It never searches: it walks the boxes of the
@@ -13,7 +13,7 @@
 //! # What is read, and what is refused
 //!
 //! A certificate is read *strictly*: the document is parsed under
-//! [`Limits::DEFAULT`](crate::json::Limits::DEFAULT) (size, depth, values,
+//! the input limits (at most [`MAX_INPUT_BYTES`](crate::shape::MAX_INPUT_BYTES) bytes; depth, values,
 //! number length — checked while parsing), duplicate keys are refused at every
 //! level, every object must have exactly the keys of the format (no key is
 //! ignored, none is informational), every number must be in canonical form
@@ -165,8 +165,8 @@ pub fn verify(text: &str) -> Result<Valid, Invalid> {
     verify_json(&doc)
 }
 
-/// [`verify`] on a document already read by [`crate::json::parse`].
-pub fn verify_json(doc: &Json) -> Result<Valid, Invalid> {
+/// [`verify`] on a document already read by the crate's bounded JSON reader.
+pub(crate) fn verify_json(doc: &Json) -> Result<Valid, Invalid> {
     check_document(doc).map_err(top_level)
 }
 

@@ -1,0 +1,111 @@
+//! Entry points of the fuzz targets (`fuzz/fuzz_targets/*.rs`), kept in the
+//! library so that every crash input committed under `fuzz/regressions/` is
+//! replayed by an ordinary test (`cli/tests/fuzz_regressions.rs`) through the very
+//! same code.
+//!
+//! Each function takes raw fuzzer bytes and returns
+//! * `Ok(Outcome::Rejected)` — the bytes do not make a useful case (the target
+//!   answers `Corpus::Reject`, so libFuzzer does not keep them);
+//! * `Ok(Outcome::Checked)` — the case ran in all arithmetics and the certified
+//!   path held;
+//! * `Err(message)` — a certified-path failure (the target panics with it).
+//!
+//! A panic inside the engine is itself a failure the fuzzer reports.
+
+use super::{
+    check_arc, check_bezier, check_frame, check_hermite, check_pair, check_tau, KernelStats,
+};
+use arbitrary::{Arbitrary, Unstructured};
+
+/// What one fuzz input did.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Outcome {
+    /// Not a useful case (generator or kernel rejected it).
+    Rejected,
+    /// Checked, certified path consistent.
+    Checked,
+}
+
+fn run<T: for<'a> Arbitrary<'a>>(
+    name: &'static str,
+    data: &[u8],
+    check: fn(&T, &mut KernelStats),
+) -> Result<Outcome, String> {
+    let Ok(case) = T::arbitrary(&mut Unstructured::new(data)) else {
+        return Ok(Outcome::Rejected);
+    };
+    let mut st = KernelStats::new(name);
+    check(&case, &mut st);
+    if st.cases == 0 {
+        return Ok(Outcome::Rejected);
+    }
+    if st.certified_ok() {
+        Ok(Outcome::Checked)
+    } else {
+        Err(format!("{name}: {}", st.first_failure.unwrap_or_default()))
+    }
+}
+
+/// Bézier curves of any degree: evaluation, split, hodograph products, regularity.
+pub fn fuzz_bezier(data: &[u8]) -> Result<Outcome, String> {
+    run("bezier", data, check_bezier)
+}
+/// Seed 000 frames: collinearity decision and `λ²`.
+pub fn fuzz_frame(data: &[u8]) -> Result<Outcome, String> {
+    run("frame", data, check_frame)
+}
+/// Seed 000 eq. (1) / Prop 3.1.
+pub fn fuzz_cubic(data: &[u8]) -> Result<Outcome, String> {
+    run("cubic", data, check_tau)
+}
+/// Seed 000 Props 4.2 / 4.4.
+pub fn fuzz_pair(data: &[u8]) -> Result<Outcome, String> {
+    run("pair", data, check_pair)
+}
+/// Seed 003 Props 2.1, 3.1–3.3.
+pub fn fuzz_hermite(data: &[u8]) -> Result<Outcome, String> {
+    run("hermite", data, check_hermite)
+}
+/// Seed 000 Prop 6.1.
+pub fn fuzz_arc(data: &[u8]) -> Result<Outcome, String> {
+    run("arc", data, check_arc)
+}
+
+/// The CLI's input parsers on arbitrary text: number literals, JSON curves and
+/// SVG path data. They must never panic; an accepted number literal must
+/// print back to a string that parses to the same rational, and an accepted
+/// curve must have finite exact coordinates whose f64 enclosures contain them.
+pub fn fuzz_parse(data: &[u8]) -> Result<Outcome, String> {
+    use lncert::scalar::{interval_from_rational, parse_rational, IntervalExt};
+    let Ok(text) = std::str::from_utf8(data) else {
+        return Ok(Outcome::Rejected);
+    };
+    if let Ok(r) = parse_rational(text) {
+        let back = parse_rational(&r.to_string())
+            .map_err(|e| format!("parse: {r} does not re-parse: {e}"))?;
+        if back != r {
+            return Err(format!("parse: {text:?} -> {r} -> {back}"));
+        }
+        if !interval_from_rational(&r).contains_rational(&r) {
+            return Err(format!("parse: enclosure of {r} misses it"));
+        }
+    }
+    for curves in [
+        lncert::shape::parse_json_curve(text),
+        lncert::shape::parse_svg_path(text),
+    ]
+    .into_iter()
+    .flatten()
+    {
+        for c in &curves {
+            for p in c.points() {
+                for v in [&p.x, &p.y] {
+                    if !interval_from_rational(v).contains_rational(v) {
+                        return Err(format!("parse: enclosure of coordinate {v} misses it"));
+                    }
+                }
+            }
+        }
+    }
+    Ok(Outcome::Checked)
+}
