@@ -7,6 +7,9 @@ mod cli;
 use clap::Parser;
 
 fn main() {
-    let args = cli::Cli::parse();
+    let args = match cli::Cli::try_parse() {
+        Ok(args) => args,
+        Err(e) => std::process::exit(cli::usage_error(&e)),
+    };
     std::process::exit(cli::run(args));
 }

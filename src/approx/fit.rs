@@ -44,28 +44,19 @@ pub enum Output {
 }
 
 impl Output {
-    /// The CLI name: `native`, `cubic` or `quadratic`.
+    /// The name in reports: `native`, `cubic` or `quadratic`.
+    ///
+    /// # Examples
+    /// ```
+    /// use lncert::approx::Output;
+    /// assert_eq!(Output::Cubic.name(), "cubic");
+    /// assert_eq!(Output::default().name(), "native");
+    /// ```
     pub fn name(self) -> &'static str {
         match self {
             Output::Native => "native",
             Output::Cubic => "cubic",
             Output::Quadratic => "quadratic",
-        }
-    }
-    /// Parses a CLI name.
-    ///
-    /// # Examples
-    /// ```
-    /// use lncert::approx::Output;
-    /// assert_eq!(Output::parse("cubic"), Some(Output::Cubic));
-    /// assert_eq!(Output::parse("quintic"), None);
-    /// ```
-    pub fn parse(s: &str) -> Option<Self> {
-        match s {
-            "native" => Some(Output::Native),
-            "cubic" => Some(Output::Cubic),
-            "quadratic" | "quad" => Some(Output::Quadratic),
-            _ => None,
         }
     }
 }

@@ -307,21 +307,12 @@ pub enum Subdivision {
 }
 
 impl Subdivision {
-    /// The CLI name: `a`, `b` or `c`.
+    /// The rule's letter in seed 000 §5: `a`, `b` or `c`.
     pub fn name(self) -> &'static str {
         match self {
             Subdivision::MidAngle => "a",
             Subdivision::Chord => "b",
             Subdivision::Weighted => "c",
-        }
-    }
-    /// Parses a CLI name (`a`, `b`, `c`, or `mid-angle`, `chord`, `weighted`).
-    pub fn parse(s: &str) -> Option<Self> {
-        match s {
-            "a" | "mid-angle" => Some(Subdivision::MidAngle),
-            "b" | "chord" => Some(Subdivision::Chord),
-            "c" | "weighted" => Some(Subdivision::Weighted),
-            _ => None,
         }
     }
 }

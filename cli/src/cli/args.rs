@@ -10,6 +10,7 @@
 //! | cusp parameter τ | `-1`, `3/2`, `inf` | [`tau`] |
 
 use super::CliError;
+use lncert::approx::OffsetError;
 use lncert::curve::V2;
 use lncert::ln::cubic::{LnFrame, Tau};
 use lncert::ln::LnError;
@@ -286,25 +287,42 @@ pub fn show_tau(t: &Tau<Rational>) -> String {
     }
 }
 
-/// `--subdivision a|b|c` (seed 000 §5's rules); a rule other than `a` needs
-/// `--method ln-pair`.
-pub fn subdivision(
-    text: &str,
-    method: &str,
-) -> Result<lncert::approx::lnpair::Subdivision, CliError> {
-    let rule = lncert::approx::lnpair::Subdivision::parse(text).ok_or_else(|| {
-        bad(
-            "--subdivision",
-            format!("unknown rule {text:?}; expected a (mid-angle), b (chord) or c (weighted)"),
-        )
-    })?;
-    if rule != lncert::approx::lnpair::Subdivision::MidAngle && method != "ln-pair" {
-        return Err(bad(
-            "--subdivision",
-            "the rules are seed 000 §5's, for LN pairs: use --method ln-pair (G² spans are halved)",
-        ));
+/// An [`OffsetError`] of the engine's offset, convolution or arc reading,
+/// reported against the flag it comes from (`CURVE: …` for a field of the input).
+pub fn offset_err(e: OffsetError) -> CliError {
+    let OffsetError::Input { field, reason } = e;
+    let flag = match field.as_str() {
+        "distance" => "--distance".to_string(),
+        "tol" => "--tol".to_string(),
+        "max_depth" => "--max-depth".to_string(),
+        "max_segments" => "--max-segments".to_string(),
+        "grid" => "--grid".to_string(),
+        f => format!("CURVE: {f}"),
+    };
+    bad(&flag, reason)
+}
+
+/// `--grid G` of `offset` and `convolve`: an exact number `> 0`.
+pub fn grid(text: Option<&str>) -> Result<Option<Rational>, CliError> {
+    let Some(text) = text else {
+        return Ok(None);
+    };
+    let g = number("--grid", text)?;
+    if g <= Rational::from_integer(0.into()) {
+        return Err(bad("--grid", format!("{text} must be > 0")));
     }
-    Ok(rule)
+    Ok(Some(g))
+}
+
+/// The line saying how the tolerance is split between the fit and the rounding.
+pub fn grid_line(grid: &Option<Rational>, tol: f64) -> Option<String> {
+    grid.as_ref().map(|g| {
+        let mv = lncert::approx::fit::rounding_move(g);
+        format!(
+            "grid {g}: control points rounded to multiples of {g}; the tolerance is split as fit ≤ {:.6e} (sampled pre-check) + rounding ≤ {mv:.6e} (grid·√2/2); the rounded curve is what is proven",
+            tol - mv
+        )
+    })
 }
 
 #[cfg(test)]

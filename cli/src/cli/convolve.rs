@@ -21,6 +21,8 @@
 //! within the limits, 2 = bad input.
 
 use super::args::{bad, number, q};
+use super::modes::{Accept, Method, Output, Side, Subdivision};
+use super::pen::ellipse_pen;
 use super::{print_out, CliError};
 use lncert::approx::conv::{Angle, Pen};
 use lncert::approx::{
@@ -51,20 +53,20 @@ pub struct ConvolveArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub tol: String,
     /// Which convolution curve: `plus`, `minus` or `both`.
-    #[arg(long, default_value = "both")]
-    pub side: String,
+    #[arg(long, value_enum, default_value_t = Side::Both)]
+    pub side: Side,
     /// The construction: `g2` (seed 001, degree n + 3) or `ln-pair` (seed 000 §5, cubic).
-    #[arg(long, default_value = "g2")]
-    pub method: String,
+    #[arg(long, value_enum, default_value_t = Method::G2)]
+    pub method: Method,
     /// Where an LN-pair span that missed `T` is split: seed 000 §5's rule
     /// `a` (mid-angle), `b` (the approximant's chord) or `c` (the angles of the
     /// two distances, weighted; the paper's choice for the font 'H').
-    #[arg(long, default_value = "a")]
-    pub subdivision: String,
+    #[arg(long, value_enum, default_value_t = Subdivision::MidAngle)]
+    pub subdivision: Subdivision,
     /// Output curves: native, cubic or quadratic (fitted to the exact
     /// convolution of each span, proven the same way).
-    #[arg(long, default_value = "native")]
-    pub output: String,
+    #[arg(long, value_enum, default_value_t = Output::Native)]
+    pub output: Output,
     /// Round every output control point to a multiple of this exact dyadic
     /// grid (e.g. 1/2048) and prove the rounded curve.
     #[arg(long, allow_hyphen_values = true)]
@@ -76,8 +78,8 @@ pub struct ConvolveArgs {
     /// Acceptance of a segment: `certified` (its certified true error ≤ T) or
     /// `paper` (seed 000 §5's measure ≤ T, as the paper does; the true error is
     /// still certified and reported, and the result is proven only if it is ≤ T).
-    #[arg(long, default_value = "certified")]
-    pub accept: String,
+    #[arg(long, value_enum, default_value_t = Accept::Certified)]
+    pub accept: Accept,
     /// Write the certificate(s) (see the module docs for the names).
     #[arg(long)]
     pub certificate: Option<PathBuf>,
@@ -142,52 +144,6 @@ fn pen_of(a: &ConvolveArgs, tol: f64) -> Result<Pen, CliError> {
     }
 }
 
-/// The pen with semi-axes `A ≥ B > 0` and rotation `angle`, its rotation
-/// represented within `min(1e-6, tol/1000 / (A + A²/B))` radians; errors name
-/// `flag`. Shared by `lncert convolve --ellipse` and `lncert stroke --pen ellipse:`.
-pub fn ellipse_pen(
-    flag: &str,
-    a: &Rational,
-    b: &Rational,
-    angle: &Angle,
-    tol: f64,
-) -> Result<Pen, CliError> {
-    let (af, bf) = (a.approx(), b.approx());
-    let reach = af + af * af / bf;
-    let max_angle = (tol * 1e-3 / reach).clamp(1e-12, 1e-6);
-    let max_angle = if max_angle.is_finite() {
-        max_angle
-    } else {
-        1e-12
-    };
-    Pen::ellipse_within(a, b, angle, max_angle)
-        .map_err(|e| bad(flag, format!("{}: {}", e.field, e.reason)))
-}
-
-/// `A,B` or `A,B,θ` (the angle as `lncert convolve --angle` reads it) for
-/// `lncert stroke --pen ellipse:…`; errors name `flag` and the field.
-pub fn parse_ellipse_spec(flag: &str, spec: &str, tol: f64) -> Result<Pen, CliError> {
-    let parts: Vec<&str> = spec.split(',').map(str::trim).collect();
-    if parts.len() != 2 && parts.len() != 3 {
-        return Err(bad(
-            flag,
-            format!("expected ellipse:A,B or ellipse:A,B,θ (semi-axes A ≥ B > 0), got {spec:?}"),
-        ));
-    }
-    let a = number(&format!("{flag} (semi-axis A)"), parts[0])?;
-    let b = number(&format!("{flag} (semi-axis B)"), parts[1])?;
-    let angle = match parts.get(2) {
-        Some(t) => Angle::parse(t).map_err(|e| {
-            bad(
-                &format!("{flag} (angle θ)"),
-                format!("{}: {}", e.field, e.reason),
-            )
-        })?,
-        None => Angle::Radians(Rational::from_integer(0.into())),
-    };
-    ellipse_pen(flag, &a, &b, &angle, tol)
-}
-
 fn conv_err(e: OffsetError) -> CliError {
     let OffsetError::Input { field, reason } = e;
     let flag = match field.as_str() {
@@ -204,38 +160,20 @@ fn conv_err(e: OffsetError) -> CliError {
 
 /// Runs the command; returns the exit code.
 pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
-    let sides: Vec<(i8, &str)> = match a.side.as_str() {
-        "plus" | "+" => vec![(1, "plus")],
-        "minus" | "-" => vec![(-1, "minus")],
-        "both" => vec![(1, "plus"), (-1, "minus")],
-        s => {
-            return Err(bad(
-                "--side",
-                format!("unknown side {s:?}; expected plus, minus or both"),
-            ))
-        }
-    };
+    let sides = a.side.signs();
     for (flag, path) in [("--certificate", &a.certificate), ("--svg", &a.svg)] {
         if let Some(p) = path {
             super::args::output_file(flag, p)?;
         }
     }
-    if a.method != "g2" && a.method != "ln-pair" {
-        return Err(bad(
-            "--method",
-            format!(
-                "unknown method {:?}; expected g2 (seed 001) or ln-pair (seed 000 §5)",
-                a.method
-            ),
-        ));
-    }
-    let (output, grid) = super::offset::output_and_grid(&a.output, a.grid.as_deref())?;
+    let output = lncert::approx::Output::from(a.output);
+    let grid = super::args::grid(a.grid.as_deref())?;
     let tol_q = number("--tol", &a.tol)?;
     let tol = interval_from_rational(&tol_q).inf();
     let pen = pen_of(a, tol)?;
     let meta = std::fs::metadata(&a.curve)
         .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
-    if meta.len() > super::hausdorff::MAX_FILE_BYTES {
+    if meta.len() > super::curve_input::MAX_FILE_BYTES {
         return Err(bad(
             "CURVE",
             format!("{}: file too large", a.curve.display()),
@@ -251,9 +189,9 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
             em: false,
             pen: Some(String::new()),
             tol: a.tol.clone(),
-            cap: "round".into(),
-            output: Some(a.output.clone()),
-            method: a.method.clone(),
+            cap: super::modes::Cap::Round,
+            output: Some(a.output),
+            method: a.method,
             svg: a.svg.clone(),
             path_out: None,
             out: None,
@@ -265,26 +203,18 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
         return Err(bad("--max-boxes", "out of range (1 to 50000000)"));
     }
     let mut opts = OffsetOptions::new(Rational::from_integer(0.into()), tol);
-    if a.method == "ln-pair" {
-        opts.method = lncert::approx::OffsetMethod::LnPair;
-    }
-    opts.subdivision = super::args::subdivision(&a.subdivision, &a.method)?;
+    opts.method = a.method.into();
+    opts.subdivision = a.subdivision.for_method(a.method)?;
     opts.output = output;
     opts.grid = grid.clone();
     opts.paper_error = a.paper_error;
-    opts.accept_paper = match a.accept.as_str() {
-        "certified" => false,
-        "paper" if a.method == "ln-pair" => true,
-        "paper" => {
+    opts.accept_paper = match (a.accept, a.method) {
+        (Accept::Certified, _) => false,
+        (Accept::Paper, Method::LnPair) => true,
+        (Accept::Paper, Method::G2) => {
             return Err(bad(
                 "--accept",
                 "the paper's measure belongs to seed 000 §5's LN pairs: use --method ln-pair",
-            ))
-        }
-        s => {
-            return Err(bad(
-                "--accept",
-                format!("unknown acceptance {s:?}; expected certified or paper"),
             ))
         }
     };
@@ -377,7 +307,7 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
                 "margin": pen.margin,
             },
             "tol": a.tol,
-            "method": a.method,
+            "method": a.method.name(),
             "output": output.name(),
             "grid": grid.as_ref().map(|g| json!({
                 "grid": q(g),
@@ -399,7 +329,7 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
                     "cusps": c.map(|c| c.cusps.iter().map(|k| json!({
                         "piece": k.piece, "t": [q(&k.t.0), q(&k.t.1)], "point": [k.point.0, k.point.1],
                     })).collect::<Vec<_>>()).unwrap_or_default(),
-                    "accept": a.accept,
+                    "accept": a.accept.name(),
                     "pieces": r.segments.iter().map(|s| json!({
                         "piece": s.piece, "t": [s.t.0, s.t.1], "lo": s.error.0, "hi": s.error.1,
                         "proof": s.proof.as_ref().map(|p| p.path.name()),
@@ -422,15 +352,15 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
         let mut s = format!(
             "convolution with the pen {} ({}, tol {}):\n",
             pen.description,
-            match (output, a.method.as_str()) {
+            match (output, a.method) {
                 (lncert::approx::Output::Cubic, _) => "fitted cubics",
                 (lncert::approx::Output::Quadratic, _) => "fitted quadratics",
-                (_, "g2") => "seed 001 G²",
+                (_, Method::G2) => "seed 001 G²",
                 _ => "seed 000 §5 cubic LN pairs",
             },
             a.tol
         );
-        if let Some(line) = super::offset::grid_line(&grid, tol - pen.margin) {
+        if let Some(line) = super::args::grid_line(&grid, tol - pen.margin) {
             s += &format!("  {line}\n");
         }
         if pen.margin > 0.0 {

@@ -5,12 +5,16 @@
 //! circle (`{"circle": {"center": [x, y], "radius": r}}`), or with `--glyph
 //! CHAR` a TrueType/OpenType font and the glyph's contours (`--em`: in em).
 
-use super::args::bad;
+use super::args::{bad, offset_err};
 use super::CliError;
 use lncert::curve::{Bezier, V2};
 use lncert::scalar::Rational;
 use lncert::shape::{parse_arc_input, parse_curve_reported, InputApprox, TravelledArc};
 use std::path::Path;
+
+/// Largest curve or shape file read (`CURVE`, and the shapes of `hausdorff`
+/// and `verify --against`).
+pub const MAX_FILE_BYTES: u64 = 16 << 20;
 
 /// Largest font file read by `--glyph`.
 pub const MAX_FONT_BYTES: u64 = 64 << 20;
@@ -44,11 +48,11 @@ pub enum CurveInput {
 }
 
 /// Reads `path` as a text file of at most
-/// [`super::hausdorff::MAX_FILE_BYTES`] bytes.
+/// [`MAX_FILE_BYTES`] bytes.
 pub fn read_text(path: &Path) -> Result<String, CliError> {
     let meta =
         std::fs::metadata(path).map_err(|e| bad("CURVE", format!("{}: {e}", path.display())))?;
-    if meta.len() > super::hausdorff::MAX_FILE_BYTES {
+    if meta.len() > MAX_FILE_BYTES {
         return Err(bad("CURVE", format!("{}: file too large", path.display())));
     }
     std::fs::read_to_string(path).map_err(|e| bad("CURVE", format!("{}: {e}", path.display())))
@@ -96,7 +100,7 @@ pub fn read_curve_input(
     }
     let text = read_text(path)?;
     if let Some(arcs) = parse_arc_input(&text) {
-        let mut arcs = arcs.map_err(|e| super::offset::offset_err(e.into()))?;
+        let mut arcs = arcs.map_err(|e| offset_err(e.into()))?;
         // an `{"arc"}` document is one arc, a `{"circle"}` four quarter arcs
         return Ok(if arcs.len() == 1 {
             CurveInput::Arc(Box::new(arcs.remove(0)))
@@ -115,4 +119,12 @@ pub fn read_curve_input(
         approx,
         y_down,
     })
+}
+
+/// `{label}: 3 SVG arc(s) approximated by … ; the results are about the
+/// approximated curve`, or `None` when the curve is exactly the input.
+pub fn input_line(label: &str, approx: &InputApprox) -> Option<String> {
+    approx
+        .summary()
+        .map(|s| format!("{label}: {s}; the results are about the approximated curve\n"))
 }

@@ -54,6 +54,7 @@
 //! refused by the engine (still written, marked), 2 = bad input.
 
 use super::args::{bad, number};
+use super::modes::FontOutput;
 use super::CliError;
 use lncert::curve::{Bezier, V2};
 use lncert::outline::intersect::{intersections, IntersectOptions};
@@ -89,8 +90,8 @@ pub struct FontArgs {
     /// The pieces written: `cubic` (PostScript-style) or `quadratic`
     /// (TrueType-style: the stroke's sides fitted by quadratics, its arcs by
     /// certified quadratics).
-    #[arg(long, default_value = "cubic")]
-    pub output: String,
+    #[arg(long, value_enum, default_value_t = FontOutput::Cubic)]
+    pub output: FontOutput,
     /// The grid control points are rounded to (`1`, `1/2`, ... or `none`).
     #[arg(long, default_value = "1")]
     pub grid: String,
@@ -796,7 +797,7 @@ fn report_json(
         "distance": a.offset.clone().or(a.stroke.clone()),
         "tol": a.tol,
         "grid": a.grid,
-        "output": a.output,
+        "output": a.output.name(),
         "glyphs": results.iter().map(|r| {
             let gi = &info.glyphs[usize::from(r.id)];
             json!({
@@ -937,16 +938,7 @@ pub fn run(a: &FontArgs) -> Result<i32, CliError> {
         return Err(bad("--tol", "must be a positive number"));
     }
     let grid = parse_grid(&a.grid)?;
-    let quadratic = match a.output.as_str() {
-        "cubic" => false,
-        "quadratic" => true,
-        o => {
-            return Err(bad(
-                "--output",
-                format!("expected cubic or quadratic, got {o:?}"),
-            ))
-        }
-    };
+    let quadratic = a.output == FontOutput::Quadratic;
     let jobs = match a.jobs {
         Some(0) => return Err(bad("--jobs", "must be at least 1")),
         Some(n) if n > 1024 => return Err(bad("--jobs", "at most 1024")),

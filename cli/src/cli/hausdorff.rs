@@ -22,15 +22,13 @@
 //! are still sound); 2 = bad input.
 
 use super::args::{bad, number};
+use super::curve_input::MAX_FILE_BYTES;
 use super::{print_out, CliError, EXIT_OK, EXIT_REFUTED, EXIT_UNDECIDED};
 use lncert::certify::{hausdorff, Certificate, Config, OneSided};
 use lncert::scalar::interval_from_rational;
 use lncert::shape::{InputApprox, ShapeDesc};
 use serde_json::json;
 use std::path::PathBuf;
-
-/// Largest shape file read.
-pub const MAX_FILE_BYTES: u64 = 16 << 20;
 
 /// Arguments of `lncert hausdorff`.
 #[derive(clap::Args, Debug)]
@@ -187,7 +185,7 @@ pub fn run(a: &HausdorffArgs) -> Result<i32, CliError> {
         let mut out = String::new();
         out += &format!("A: {}\nB: {}\n", sa.summary(), sb.summary());
         for (name, ap) in [("input A", &approx_a), ("input B", &approx_b)] {
-            if let Some(line) = super::offset::input_line(name, ap) {
+            if let Some(line) = super::curve_input::input_line(name, ap) {
                 out += &line;
             }
         }

@@ -35,6 +35,8 @@
 //! | module | content |
 //! |---|---|
 //! | [`args`] | exact parsing of numbers, points, frames, coefficient lists, τ |
+//! | [`modes`] | the flags with a fixed set of values (`--method`, `--output`, `--side`, …) as value enums |
+//! | [`pen`] | the pens of `stroke --pen` and `convolve --ellipse` |
 //! | [`report`] | one result as text lines or one JSON document, and its exit code |
 //! | [`reproduce`] | `lncert reproduce` |
 //! | [`svg`] | the Fig. 5 pictures of `reproduce --out` |
@@ -53,9 +55,11 @@ pub mod convolve;
 pub mod curve_input;
 pub mod font;
 pub mod hausdorff;
+pub mod modes;
 pub mod offset;
 pub mod offset_grid;
 pub mod offset_svg;
+pub mod pen;
 pub mod progress;
 pub mod prop;
 pub mod report;
@@ -149,6 +153,43 @@ pub fn print_out(text: &str) {
     let _ = out.write_all(text.as_bytes()).and_then(|_| out.flush());
 }
 
+/// A command line that clap rejects (an unknown flag, a value that is not
+/// one of a flag's names, a number out of its type): clap's message on
+/// stderr and exit code [`EXIT_BAD_INPUT`] as for every bad input — with
+/// `--json` also the error document on stdout, its field the flag. `--help`
+/// and `--version` print and exit 0, as clap does.
+pub fn usage_error(e: &clap::Error) -> i32 {
+    use clap::error::{ContextKind, ContextValue};
+    if !e.use_stderr() {
+        e.exit();
+    }
+    let _ = e.print();
+    if std::env::args_os().skip(1).any(|a| a == "--json") {
+        let arg = match e.get(ContextKind::InvalidArg) {
+            Some(ContextValue::String(s)) => Some(s.as_str()),
+            Some(ContextValue::Strings(v)) => v.first().map(String::as_str),
+            _ => None,
+        };
+        // `--method <METHOD>` names the flag `--method`
+        let field = arg
+            .and_then(|s| s.split([' ', '=']).next())
+            .unwrap_or("arguments");
+        let text = e.render().to_string();
+        let reason = text
+            .lines()
+            .map(str::trim)
+            .filter(|l| !l.is_empty() && !l.starts_with("For more information"))
+            .collect::<Vec<_>>()
+            .join(" ");
+        let err = CliError {
+            field: field.to_string(),
+            reason: reason.trim_start_matches("error: ").to_string(),
+        };
+        print_out(&format!("{}\n", err.to_json()));
+    }
+    EXIT_BAD_INPUT
+}
+
 /// Runs a parsed command line and returns the process exit code.
 pub fn run(cli: Cli) -> i32 {
     let json = match &cli.command {
@@ -184,7 +225,11 @@ pub fn run(cli: Cli) -> i32 {
         Command::Hausdorff(a) => hausdorff::run(&a),
         Command::Offset(a) => offset::run(&a),
         Command::Convolve(a) => convolve::run(&a),
-        Command::Stroke(a) => stroke::run(&a),
+        Command::Stroke(a) => match &a.pen {
+            Some(pen) => stroke::run(&a, pen),
+            // an SVG document, each element with its own stroke-width
+            None => stroke_doc::run(&a),
+        },
         Command::Font(a) => font::run(&a),
         Command::Verify(a) => verify::run(&a),
         Command::Tangency(a) => tangency::run(&a),

@@ -20,17 +20,18 @@
 //! reached within the limits (the best segments are still printed, with their
 //! certified bounds), 2 = bad input.
 
-use super::args::{arc_json, bad, number, point_json, q};
-use super::curve_input::CurveInput;
+use super::args::{arc_json, bad, grid, grid_line, number, offset_err, point_json, q};
+use super::curve_input::{input_line, CurveInput};
+use super::modes::{Cap, Method, Subdivision};
 use super::{print_out, CliError};
 use lncert::approx::arc::{offset_arc, ArcOffset};
 use lncert::approx::prep::Junction;
 use lncert::approx::{
-    global_bounds, offset, union_certificate, OffsetError, OffsetMethod, OffsetOptions,
-    OffsetResult, Output, ProofPath,
+    global_bounds, offset, union_certificate, OffsetMethod, OffsetOptions, OffsetResult, Output,
+    ProofPath,
 };
 use lncert::scalar::{interval_from_rational, Rational};
-use lncert::shape::{InputApprox, TravelledArc};
+use lncert::shape::TravelledArc;
 use serde_json::{json, Value};
 use std::path::PathBuf;
 
@@ -60,17 +61,17 @@ pub struct OffsetArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub tol: String,
     /// Construction: g2 (seed 004, degree n+3, G2/C1) or ln-pair (seed 000 §6, cubic, G1).
-    #[arg(long, default_value = "g2")]
-    pub method: String,
+    #[arg(long, value_enum, default_value_t = Method::G2)]
+    pub method: Method,
     /// Where an LN-pair span that missed TOL is split: seed 000 §5's rule `a`
     /// (mid-angle), `b` (the approximant's chord) or `c` (the angles of the two
     /// distances, weighted).
-    #[arg(long, default_value = "a")]
-    pub subdivision: String,
+    #[arg(long, value_enum, default_value_t = Subdivision::MidAngle)]
+    pub subdivision: Subdivision,
     /// Output curves: native (the method's own segments), cubic or quadratic
     /// (Béziers fitted to the exact offset of each span, proven the same way).
-    #[arg(long, default_value = "native")]
-    pub output: String,
+    #[arg(long, value_enum, default_value_t = super::modes::Output::Native)]
+    pub output: super::modes::Output,
     /// Round every output control point to a multiple of this exact dyadic
     /// grid (e.g. 1/2048) and prove the rounded curve.
     #[arg(long, allow_hyphen_values = true)]
@@ -140,54 +141,6 @@ pub struct OffsetArgs {
     pub json: bool,
 }
 
-pub fn offset_err(e: OffsetError) -> CliError {
-    let OffsetError::Input { field, reason } = e;
-    let flag = match field.as_str() {
-        "distance" => "--distance".to_string(),
-        "tol" => "--tol".to_string(),
-        "max_depth" => "--max-depth".to_string(),
-        "max_segments" => "--max-segments".to_string(),
-        "grid" => "--grid".to_string(),
-        f => format!("CURVE: {f}"),
-    };
-    bad(&flag, reason)
-}
-
-/// Parses `--output` and `--grid` (shared with `convolve`).
-pub fn output_and_grid(
-    output: &str,
-    grid: Option<&str>,
-) -> Result<(Output, Option<Rational>), CliError> {
-    let out = Output::parse(output).ok_or_else(|| {
-        bad(
-            "--output",
-            format!("unknown output {output:?}; expected native, cubic or quadratic"),
-        )
-    })?;
-    let grid = match grid {
-        None => None,
-        Some(text) => {
-            let g = number("--grid", text)?;
-            if g <= Rational::from_integer(0.into()) {
-                return Err(bad("--grid", format!("{text} must be > 0")));
-            }
-            Some(g)
-        }
-    };
-    Ok((out, grid))
-}
-
-/// The line saying how the tolerance is split between the fit and the rounding.
-pub fn grid_line(grid: &Option<Rational>, tol: f64) -> Option<String> {
-    grid.as_ref().map(|g| {
-        let mv = lncert::approx::fit::rounding_move(g);
-        format!(
-            "grid {g}: control points rounded to multiples of {g}; the tolerance is split as fit ≤ {:.6e} (sampled pre-check) + rounding ≤ {mv:.6e} (grid·√2/2); the rounded curve is what is proven",
-            tol - mv
-        )
-    })
-}
-
 /// Runs the command; returns the exit code.
 pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     for (flag, path) in [
@@ -207,13 +160,9 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     let distance = number("--distance", &a.distance)?;
     let tol_q = number("--tol", &a.tol)?;
     let tol = interval_from_rational(&tol_q).inf();
-    let method = OffsetMethod::parse(&a.method).ok_or_else(|| {
-        bad(
-            "--method",
-            format!("unknown method {:?}; expected g2 or ln-pair", a.method),
-        )
-    })?;
-    let (output, grid) = output_and_grid(&a.output, a.grid.as_deref())?;
+    let method = OffsetMethod::from(a.method);
+    let output = Output::from(a.output);
+    let grid = grid(a.grid.as_deref())?;
     // path data (also inside --out's document) has no command above degree 3
     let path_flag = [("--path-out", &a.path_out), ("--out", &a.out)]
         .into_iter()
@@ -235,9 +184,9 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             em: a.em,
             pen: Some(format!("circle:{}", num_traits::Signed::abs(&distance))),
             tol: a.tol.clone(),
-            cap: "round".into(),
-            output: Some(a.output.clone()),
-            method: a.method.clone(),
+            cap: Cap::Round,
+            output: Some(a.output),
+            method: a.method,
             svg: a.svg.clone(),
             path_out: a.path_out.clone(),
             out: a.out.clone(),
@@ -260,7 +209,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     };
     let mut opts = OffsetOptions::new(distance, tol);
     opts.method = method;
-    opts.subdivision = super::args::subdivision(&a.subdivision, &a.method)?;
+    opts.subdivision = a.subdivision.for_method(a.method)?;
     opts.output = output;
     opts.grid = grid.clone();
     opts.max_depth = a.max_depth;
@@ -276,7 +225,25 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
         if matches!(output, Output::Cubic | Output::Quadratic)
             && lncert::approx::fit::rounding_move(g) >= tol
         {
-            return super::offset_grid::run(a, &curve, &opts, y_down);
+            if a.svg.is_some() || a.global_bounds || a.no_certify || a.paper_error {
+                return Err(bad(
+                    "--grid",
+                    "with a tolerance below the grid's rounding move, --svg, --global-bounds, \
+                     --no-certify and --paper-error are not available",
+                ));
+            }
+            let flags = super::offset_grid::GridFlags {
+                curve: &a.curve,
+                glyph: a.glyph.is_some(),
+                tol: &a.tol,
+                json: a.json,
+                certificate: a.certificate.as_deref(),
+                curve_out: a.curve_out.as_deref(),
+                exact_out: a.exact_out.as_deref(),
+                path_out: a.path_out.as_deref(),
+                out: a.out.as_deref(),
+            };
+            return super::offset_grid::run(&flags, &curve, &opts, y_down);
         }
     }
     let start = std::time::Instant::now();
@@ -545,14 +512,6 @@ fn text_report(
         s += &format!("  certificate: {n}\n");
     }
     s
-}
-
-/// `{label}: 3 SVG arc(s) approximated by … ; the results are about the
-/// approximated curve`, or `None` when the curve is exactly the input.
-pub fn input_line(label: &str, approx: &InputApprox) -> Option<String> {
-    approx
-        .summary()
-        .map(|s| format!("{label}: {s}; the results are about the approximated curve\n"))
 }
 
 fn abs(r: &Rational) -> Rational {

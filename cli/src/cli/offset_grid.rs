@@ -4,14 +4,15 @@
 //! every cubic is proven against the exact curve between its joints
 //! ([`lncert::approx::gridfit::offset_on_grid`]).
 
+use super::args::offset_err;
 use super::args::{bad, q};
-use super::offset::{offset_err, OffsetArgs};
 use super::{print_out, CliError};
 use lncert::approx::gridfit::{offset_on_grid, Target};
 use lncert::approx::OffsetOptions;
 use lncert::curve::Bezier;
 use lncert::scalar::Rational;
 use serde_json::json;
+use std::path::Path;
 
 fn target_json(t: &Target) -> serde_json::Value {
     match t {
@@ -23,25 +24,41 @@ fn target_json(t: &Target) -> serde_json::Value {
     }
 }
 
+/// The flags of `lncert offset` that the grid path reads (the others are
+/// refused by [`super::offset::run`] before it calls [`run`]).
+pub struct GridFlags<'a> {
+    /// `CURVE`.
+    pub curve: &'a Path,
+    /// `--glyph` was given (the input is y-up font units).
+    pub glyph: bool,
+    /// `--tol` as given.
+    pub tol: &'a str,
+    /// `--json`.
+    pub json: bool,
+    /// `--certificate`.
+    pub certificate: Option<&'a Path>,
+    /// `--curve-out`.
+    pub curve_out: Option<&'a Path>,
+    /// `--exact-out`.
+    pub exact_out: Option<&'a Path>,
+    /// `--path-out`.
+    pub path_out: Option<&'a Path>,
+    /// `--out`.
+    pub out: Option<&'a Path>,
+}
+
 /// Runs the grid path of `lncert offset` (called by [`super::offset::run`]).
 pub fn run(
-    a: &OffsetArgs,
+    a: &GridFlags,
     curve: &[Bezier<Rational>],
     opts: &OffsetOptions,
     y_down: bool,
 ) -> Result<i32, CliError> {
-    if a.svg.is_some() || a.global_bounds || a.no_certify || a.paper_error {
-        return Err(bad(
-            "--grid",
-            "with a tolerance below the grid's rounding move, --svg, --global-bounds, \
-             --no-certify and --paper-error are not available",
-        ));
-    }
     let start = std::time::Instant::now();
     let r = offset_on_grid(curve, opts).map_err(offset_err)?;
     let secs = start.elapsed().as_secs_f64();
     let mut cert_note = None;
-    if let Some(path) = &a.certificate {
+    if let Some(path) = a.certificate {
         cert_note = Some(match &r.certificate {
             Some(c) => {
                 std::fs::write(path, c.to_json_string())
@@ -51,17 +68,17 @@ pub fn run(
             None => "not written: the tolerance is not certified".to_string(),
         });
     }
-    if let Some(path) = &a.curve_out {
+    if let Some(path) = a.curve_out {
         let shape = r.approximant_shape().map_err(offset_err)?;
         std::fs::write(path, format!("{}\n", shape.to_json()))
             .map_err(|e| bad("--curve-out", format!("{}: {e}", path.display())))?;
     }
-    if let Some(path) = &a.exact_out {
+    if let Some(path) = a.exact_out {
         let shape = r.exact_shape(curve, &opts.distance).map_err(offset_err)?;
         std::fs::write(path, format!("{}\n", shape.to_json()))
             .map_err(|e| bad("--exact-out", format!("{}: {e}", path.display())))?;
     }
-    if let Some(path) = &a.path_out {
+    if let Some(path) = a.path_out {
         let d = lncert::write::grid_path_data(&r).map_err(|e| bad("--path-out", e))? + "\n";
         std::fs::write(path, d)
             .map_err(|e| bad("--path-out", format!("{}: {e}", path.display())))?;
@@ -76,8 +93,8 @@ pub fn run(
     } else {
         "not reached"
     };
-    if let Some(path) = &a.out {
-        let frame = super::svg_out::frame(&a.curve, a.glyph.is_some(), y_down)?;
+    if let Some(path) = a.out {
+        let frame = super::svg_out::frame(a.curve, a.glyph, y_down)?;
         let shape = lncert::write::SvgShape::grid_offset(&r).map_err(|e| bad("--out", e))?;
         let shape = super::svg_out::proven(shape, r.reached());
         super::svg_out::write(path, &[shape], &frame)?;

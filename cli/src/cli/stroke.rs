@@ -36,11 +36,12 @@
 
 use super::args::{arc_json, bad, number, point_json, q};
 use super::curve_input::{read_curve_input, CurveInput};
+use super::modes::{Cap, Method, Output};
 use super::{print_out, CliError};
 use lncert::curve::V2;
 use lncert::outline::circle::Arc;
 use lncert::outline::trim::{
-    stroke, Cap, Claim, Contour, Orientation, PenShape, Piece, Stroke, StrokeOptions,
+    stroke, Claim, Contour, Orientation, PenShape, Piece, Stroke, StrokeOptions,
 };
 use lncert::scalar::{interval_from_rational, Rational, Scalar};
 use lncert::shape::InputApprox;
@@ -73,17 +74,17 @@ pub struct StrokeArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub tol: String,
     /// End caps of an open curve: `round` or `butt`.
-    #[arg(long, default_value = "round")]
-    pub cap: String,
+    #[arg(long, value_enum, default_value_t = Cap::Round)]
+    pub cap: Cap,
     /// Offset segments: native (degree n + 3), cubic or quadratic (fitted, proven;
     /// needed for `--path-out` when the native degree is above 3). Default:
     /// native, or cubic with `--out` (SVG has no command above degree 3).
-    #[arg(long)]
-    pub output: Option<String>,
+    #[arg(long, value_enum)]
+    pub output: Option<Output>,
     /// The sides' construction: `g2` (degree n + 3, seeds 004 / 001) or
     /// `ln-pair` (cubic LN pairs, seed 000).
-    #[arg(long, default_value = "g2")]
-    pub method: String,
+    #[arg(long, value_enum, default_value_t = Method::G2)]
+    pub method: Method,
     /// Write a picture: the filled outline over the skeleton.
     #[arg(long)]
     pub svg: Option<PathBuf>,
@@ -101,24 +102,6 @@ pub struct StrokeArgs {
     /// One JSON document on stdout.
     #[arg(long)]
     pub json: bool,
-}
-
-fn pen_shape(text: &str, tol: f64) -> Result<PenShape, CliError> {
-    if let Some(r) = text.strip_prefix("circle:") {
-        let r = number("--pen", r)?;
-        if r <= Rational::from_integer(0.into()) {
-            return Err(bad("--pen", "the radius must be > 0"));
-        }
-        return Ok(PenShape::Circle(r));
-    }
-    if let Some(spec) = text.strip_prefix("ellipse:") {
-        let pen = super::convolve::parse_ellipse_spec("--pen", spec, tol)?;
-        return Ok(PenShape::Ellipse(pen));
-    }
-    Err(bad(
-        "--pen",
-        format!("expected circle:R or ellipse:A,B[,θ], got {text:?}"),
-    ))
 }
 
 fn claim_json(c: &Claim) -> serde_json::Value {
@@ -213,17 +196,21 @@ pub fn svg(
     )
 }
 
-/// Runs `lncert stroke`.
-pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
+/// `--tol`: an exact number `> 0`, rounded down to a float.
+pub(crate) fn tol(a: &StrokeArgs) -> Result<f64, CliError> {
     let tol_q = number("--tol", &a.tol)?;
     let tol = interval_from_rational(&tol_q).inf();
     if !(tol.is_finite() && tol > 0.0) {
         return Err(bad("--tol", "must be a positive number"));
     }
-    let Some(pen) = &a.pen else {
-        return super::stroke_doc::run(a);
-    };
-    let pen = pen_shape(pen, tol)?;
+    Ok(tol)
+}
+
+/// Runs `lncert stroke` with `--pen` (the text `pen`); without it
+/// [`super::run`] runs [`super::stroke_doc::run`].
+pub fn run(a: &StrokeArgs, pen: &str) -> Result<i32, CliError> {
+    let tol = tol(a)?;
+    let pen = super::pen::pen_shape(pen, tol)?;
     let input = read_curve_input(&a.curve, a.glyph, a.em)?;
     run_input(a, &input, pen)
 }
@@ -282,26 +269,7 @@ pub fn run_with(
 
 /// The options of a run, every flag checked before any work.
 pub(crate) fn options(a: &StrokeArgs, pen: PenShape) -> Result<StrokeOptions, CliError> {
-    let tol_q = number("--tol", &a.tol)?;
-    let tol = interval_from_rational(&tol_q).inf();
-    if !(tol.is_finite() && tol > 0.0) {
-        return Err(bad("--tol", "must be a positive number"));
-    }
-    let method = match a.method.as_str() {
-        "g2" => lncert::approx::OffsetMethod::G2,
-        "ln-pair" => lncert::approx::OffsetMethod::LnPair,
-        m => {
-            return Err(bad(
-                "--method",
-                format!("expected g2 or ln-pair, got {m:?}"),
-            ))
-        }
-    };
-    let cap = match a.cap.as_str() {
-        "round" => Cap::Round,
-        "butt" => Cap::Butt,
-        c => return Err(bad("--cap", format!("expected round or butt, got {c:?}"))),
-    };
+    let tol = tol(a)?;
     for (flag, path) in [("--svg", &a.svg), ("--path-out", &a.path_out)] {
         if let Some(p) = path {
             super::args::output_file(flag, p)?;
@@ -311,23 +279,14 @@ pub(crate) fn options(a: &StrokeArgs, pen: PenShape) -> Result<StrokeOptions, Cl
         super::svg_out::check(p)?;
     }
     let mut opts = StrokeOptions::with_pen(pen, tol);
-    opts.cap = cap;
-    opts.method = method;
-    let output = a
-        .output
-        .as_deref()
-        .unwrap_or(if a.out.is_some() { "cubic" } else { "native" });
-    opts.output = match output {
-        "native" => lncert::approx::Output::Native,
-        "cubic" => lncert::approx::Output::Cubic,
-        "quadratic" => lncert::approx::Output::Quadratic,
-        o => {
-            return Err(bad(
-                "--output",
-                format!("expected native, cubic or quadratic, got {o:?}"),
-            ))
-        }
-    };
+    opts.cap = a.cap.into();
+    opts.method = a.method.into();
+    let output = a.output.unwrap_or(if a.out.is_some() {
+        Output::Cubic
+    } else {
+        Output::Native
+    });
+    opts.output = output.into();
     Ok(opts)
 }
 
@@ -522,7 +481,7 @@ fn report(
         doc["input_approximation"] = approx.to_json();
         print_out(&format!("{doc}\n"));
     } else {
-        let mut out = super::offset::input_line("input", approx).unwrap_or_default();
+        let mut out = super::curve_input::input_line("input", approx).unwrap_or_default();
         out += &stroke_text(s, secs);
         let _ = writeln!(out, "verdict: {verdict}");
         print_out(&out);

@@ -57,6 +57,7 @@ fn stroked(elements: &[SvgElement]) -> Result<Vec<(&SvgElement, Rational)>, CliE
 
 /// Runs the per-element stroke of an SVG document.
 pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
+    super::stroke::tol(a)?;
     if a.glyph.is_some() {
         return Err(bad("--pen", "required with --glyph"));
     }
@@ -150,7 +151,7 @@ pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
         });
         print_out(&format!("{doc}\n"));
     } else {
-        let mut out = super::offset::input_line("input", &approx).unwrap_or_default();
+        let mut out = super::curve_input::input_line("input", &approx).unwrap_or_default();
         let _ = writeln!(
             out,
             "{} element(s) stroked with their own stroke-width, {:.2} s",

@@ -15,6 +15,7 @@
 //! remain, 2 for bad input (the message names the flag).
 
 use super::args::{bad, number, point, q, required};
+use super::modes::Backend;
 use super::{print_out, CliError};
 use lncert::scalar::{interval_to_json, Interval, Rational};
 use lncert::tangency::complete::{SolveOptions, UndecidedReason};
@@ -51,8 +52,8 @@ pub struct TangencyArgs {
     #[arg(long, value_name = "R", allow_hyphen_values = true)]
     pub radius: Option<String>,
     /// Solver: complete (interval branch-and-prune), exact (elimination oracle), cpu, gpu (raster).
-    #[arg(long, default_value = "complete")]
-    pub backend: String,
+    #[arg(long, value_enum, ignore_case = true, default_value_t = Backend::Complete)]
+    pub backend: Backend,
     /// Raster resolution N x N for the cpu/gpu backends (2..=16384, default 1024).
     #[arg(long, value_name = "N", allow_hyphen_values = true)]
     pub resolution: Option<String>,
@@ -115,27 +116,20 @@ pub fn run(a: &TangencyArgs) -> Result<i32, CliError> {
     let c = point("--center", required("--center", &a.center, USAGE)?)?;
     let r = number("--radius", required("--radius", &a.radius, USAGE)?)?;
     let window = a.a2_range.as_deref().map(parse_window).transpose()?;
-    let backend = a.backend.trim().to_ascii_lowercase();
-    if !matches!(backend.as_str(), "complete" | "exact" | "cpu" | "gpu") {
-        return Err(bad(
-            "--backend",
-            format!("{:?} is not one of complete, exact, cpu, gpu", a.backend),
-        ));
-    }
     parse_resolution(a.resolution.as_deref())?;
-    if a.resolution.is_some() && !matches!(backend.as_str(), "cpu" | "gpu") {
+    if a.resolution.is_some() && !a.backend.is_raster() {
         return Err(bad("--resolution", "only used by the cpu and gpu backends"));
     }
     let sys =
         TangencySystem::new(x1, y1, u, c.x.clone(), c.y.clone(), r).map_err(tangency_error)?;
     let problem = TangencyProblem::new(sys, window).map_err(tangency_error)?;
     let mut raster_info: Option<Value> = None;
-    let report = match backend.as_str() {
-        "complete" => solve_complete(&problem, &SolveOptions::default()),
-        "exact" => solve_exact(&problem),
-        raster_backend => {
+    let report = match a.backend {
+        Backend::Complete => solve_complete(&problem, &SolveOptions::default()),
+        Backend::Exact => solve_exact(&problem),
+        raster_backend @ (Backend::Cpu | Backend::Gpu) => {
             let n = parse_resolution(a.resolution.as_deref())?;
-            let (rep, info) = raster_solve(&problem, n, raster_backend == "gpu")?;
+            let (rep, info) = raster_solve(&problem, n, raster_backend == Backend::Gpu)?;
             raster_info = Some(info);
             rep
         }
