@@ -113,17 +113,23 @@ fn json_bspline(v: &Value) -> Result<Vec<Bezier<Rational>>, CurveParseError> {
         obj.get(key)
             .ok_or_else(|| field_err(&format!("bspline.{key}"), "missing"))
     };
+    let degree = bspline_degree(get("degree")?)?;
+    let pts = bspline_control_points(get("control_points")?, degree)?;
+    let spline = bspline_knots(get("knots")?, degree, pts)?;
+    Ok(spline.to_beziers())
+}
 
-    // Degree: an exact integer in 1..=63 (checked before any conversion, so
-    // `1e400` or `-3` is an error, not an overflow).
-    let degree_value = json_coordinate(get("degree")?, "bspline.degree")?;
-    let degree = if degree_value.is_integer()
+/// `bspline.degree`: an exact integer in 1..=63 (checked before any
+/// conversion, so `1e400` or `-3` is an error, not an overflow).
+fn bspline_degree(v: &Value) -> Result<usize, CurveParseError> {
+    let degree_value = json_coordinate(v, "bspline.degree")?;
+    if degree_value.is_integer()
         && degree_value >= Rational::from_integer(1.into())
         && degree_value <= Rational::from_integer((MAX_CONTROL_POINTS - 1).into())
     {
-        usize::try_from(degree_value.to_integer()).unwrap_or(usize::MAX)
+        Ok(usize::try_from(degree_value.to_integer()).unwrap_or(usize::MAX))
     } else {
-        return Err(field_err(
+        Err(field_err(
             "bspline.degree",
             format!(
                 "expected an integer from 1 to {}, found {}",
@@ -133,10 +139,16 @@ fn json_bspline(v: &Value) -> Result<Vec<Bezier<Rational>>, CurveParseError> {
                     _ => "a number far out of that range".to_string(),
                 }
             ),
-        ));
-    };
+        ))
+    }
+}
 
-    let cps = get("control_points")?;
+/// `bspline.control_points`, within the limits of their number and of the
+/// exact conversion's work at `degree`.
+fn bspline_control_points(
+    cps: &Value,
+    degree: usize,
+) -> Result<Vec<V2<Rational>>, CurveParseError> {
     let Some(items) = cps.as_array() else {
         return Err(field_err(
             "bspline.control_points",
@@ -167,14 +179,21 @@ fn json_bspline(v: &Value) -> Result<Vec<Bezier<Rational>>, CurveParseError> {
             limit: MAX_BSPLINE_WORK as usize,
         });
     }
-    let pts = items
+    items
         .iter()
         .enumerate()
         .map(|(i, p)| json_point(p, &format!("bspline.control_points[{i}]")))
-        .collect::<Result<Vec<_>, _>>()?;
+        .collect()
+}
 
-    let knots = get("knots")?;
-    let spline = match knots {
+/// The spline of `bspline.knots` (`"clamped"`, `"periodic"` or an explicit
+/// list of `control points + degree + 1` numbers) over `pts`.
+fn bspline_knots(
+    knots: &Value,
+    degree: usize,
+    pts: Vec<V2<Rational>>,
+) -> Result<BSpline, CurveParseError> {
+    Ok(match knots {
         Value::String(s) if s == "clamped" => BSpline::clamped_uniform(degree, pts)?,
         Value::String(s) if s == "periodic" => BSpline::periodic_uniform(degree, pts)?,
         Value::Array(list) => {
@@ -209,8 +228,7 @@ fn json_bspline(v: &Value) -> Result<Vec<Bezier<Rational>>, CurveParseError> {
                 ),
             ))
         }
-    };
-    Ok(spline.to_beziers())
+    })
 }
 
 /// The top-level curve fields of the JSON form; exactly one is given.
@@ -293,36 +311,38 @@ pub fn parse_json_curve(text: &str) -> Result<Vec<Bezier<Rational>>, CurveParseE
         ["bspline"] => json_bspline(&map["bspline"]),
         ["bezier"] => Ok(vec![json_bezier(&map["bezier"], "bezier")?]),
         // The one remaining key, "beziers".
-        [_] => {
-            let list = &map["beziers"];
-            let Some(items) = list.as_array() else {
-                return Err(field_err(
-                    "beziers",
-                    format!(
-                        "expected a list of curves [[[x, y], ...], ...], found {}",
-                        describe(list)
-                    ),
-                ));
-            };
-            if items.is_empty() {
-                return Err(CurveParseError::Empty {
-                    what: "field `beziers`".to_string(),
-                });
-            }
-            if items.len() > MAX_SEGMENTS {
-                return Err(CurveParseError::TooLarge {
-                    what: format!(
-                        "the number of segments ({}) in field `beziers`",
-                        items.len()
-                    ),
-                    limit: MAX_SEGMENTS,
-                });
-            }
-            items
-                .iter()
-                .enumerate()
-                .map(|(i, b)| json_bezier(b, &format!("beziers[{i}]")))
-                .collect()
-        }
+        [_] => json_beziers(&map["beziers"]),
     }
+}
+
+/// Reads the `"beziers"` list of control-point lists (a piecewise curve).
+fn json_beziers(list: &Value) -> Result<Vec<Bezier<Rational>>, CurveParseError> {
+    let Some(items) = list.as_array() else {
+        return Err(field_err(
+            "beziers",
+            format!(
+                "expected a list of curves [[[x, y], ...], ...], found {}",
+                describe(list)
+            ),
+        ));
+    };
+    if items.is_empty() {
+        return Err(CurveParseError::Empty {
+            what: "field `beziers`".to_string(),
+        });
+    }
+    if items.len() > MAX_SEGMENTS {
+        return Err(CurveParseError::TooLarge {
+            what: format!(
+                "the number of segments ({}) in field `beziers`",
+                items.len()
+            ),
+            limit: MAX_SEGMENTS,
+        });
+    }
+    items
+        .iter()
+        .enumerate()
+        .map(|(i, b)| json_bezier(b, &format!("beziers[{i}]")))
+        .collect()
 }

@@ -296,31 +296,45 @@ impl<'a> SvgParser<'a> {
                     !num_traits::Zero::is_zero(arg(3)?),
                     !num_traits::Zero::is_zero(arg(4)?),
                 );
-                let arc = svg_arc(&self.cur, arg(0)?, arg(1)?, arg(2)?, large, sweep, &p)
-                    .map_err(|reason| self.err(at, reason))?;
-                match arc {
-                    SvgArc::Omitted => {}
-                    SvgArc::Line => self.line_to(p.clone(), at)?,
-                    SvgArc::Cubics { pieces, bound } => {
-                        let n = pieces.len();
-                        for b in pieces {
-                            self.push_bezier(b, at)?;
-                        }
-                        self.approx.push(ApproxElement {
-                            kind: ApproxKind::Arc,
-                            at: format!("byte {at}"),
-                            pieces: n,
-                            bound,
-                            detail: String::new(),
-                        });
-                    }
-                }
-                self.cur = p;
+                self.arc_to([arg(0)?, arg(1)?, arg(2)?], (large, sweep), p, at)?;
             }
             _ => return Err(self.err(at, format!("unknown command {:?}", cmd as char))),
         }
         self.last_cubic = cubic;
         self.last_quad = quad;
+        Ok(())
+    }
+
+    /// An elliptical arc (`rx`, `ry`, `x-axis-rotation`; `large-arc-flag`,
+    /// `sweep-flag`) from the current point to `p`: nothing, a line, or cubic
+    /// pieces within a certified bound, reported.
+    fn arc_to(
+        &mut self,
+        [rx, ry, rotation]: [&Rational; 3],
+        (large, sweep): (bool, bool),
+        p: V2<Rational>,
+        at: usize,
+    ) -> Result<(), CurveParseError> {
+        let arc = svg_arc(&self.cur, rx, ry, rotation, large, sweep, &p)
+            .map_err(|reason| self.err(at, reason))?;
+        match arc {
+            SvgArc::Omitted => {}
+            SvgArc::Line => self.line_to(p.clone(), at)?,
+            SvgArc::Cubics { pieces, bound } => {
+                let n = pieces.len();
+                for b in pieces {
+                    self.push_bezier(b, at)?;
+                }
+                self.approx.push(ApproxElement {
+                    kind: ApproxKind::Arc,
+                    at: format!("byte {at}"),
+                    pieces: n,
+                    bound,
+                    detail: String::new(),
+                });
+            }
+        }
+        self.cur = p;
         Ok(())
     }
 
@@ -348,6 +362,36 @@ impl<'a> SvgParser<'a> {
         self.last_cubic = None;
         self.last_quad = None;
         Ok(())
+    }
+
+    /// Reads and applies the parameter sets of the command `c` read at `at`:
+    /// the first, then its implicit repetitions while a number follows.
+    fn segments(&mut self, c: u8, at: usize) -> Result<(), CurveParseError> {
+        let mut repeat = false;
+        loop {
+            let seg_at = self.pos;
+            let vals = self.read_params(c, !repeat)?;
+            self.apply(c, &vals, repeat, if repeat { seg_at } else { at })?;
+            repeat = true;
+            self.skip_wsp();
+            if self.peek() == Some(b',') {
+                let comma = self.pos;
+                self.pos += 1;
+                self.skip_wsp();
+                if !self.peek().is_some_and(is_number_start) {
+                    return Err(self.err(
+                        comma,
+                        format!(
+                            "a comma must be followed by a number, found {}",
+                            self.char_at(self.pos)
+                        ),
+                    ));
+                }
+            }
+            if !self.peek().is_some_and(is_number_start) {
+                return Ok(());
+            }
+        }
     }
 
     fn run(mut self) -> Result<(Vec<Bezier<Rational>>, InputApprox), CurveParseError> {
@@ -400,31 +444,7 @@ impl<'a> SvgParser<'a> {
                 self.skip_wsp();
                 continue;
             }
-            let mut repeat = false;
-            loop {
-                let seg_at = self.pos;
-                let vals = self.read_params(c, !repeat)?;
-                self.apply(c, &vals, repeat, if repeat { seg_at } else { at })?;
-                repeat = true;
-                self.skip_wsp();
-                if self.peek() == Some(b',') {
-                    let comma = self.pos;
-                    self.pos += 1;
-                    self.skip_wsp();
-                    if !self.peek().is_some_and(is_number_start) {
-                        return Err(self.err(
-                            comma,
-                            format!(
-                                "a comma must be followed by a number, found {}",
-                                self.char_at(self.pos)
-                            ),
-                        ));
-                    }
-                }
-                if !self.peek().is_some_and(is_number_start) {
-                    break;
-                }
-            }
+            self.segments(c, at)?;
         }
         if self.out.is_empty() {
             return Err(CurveParseError::Empty {

@@ -16,7 +16,8 @@
 //! from an enclosure of `π`). Skews likewise use a rational `t` with
 //! `|tan θ − t| ≤ 10⁻¹² max(1, |t|)` (90° is refused). The element is then
 //! mapped exactly by that rational matrix, and the report
-//! ([`ApproxKind::Rotation`], [`ApproxKind::Skew`]) says which matrix and the
+//! ([`ApproxKind::Rotation`](super::ApproxKind::Rotation),
+//! [`ApproxKind::Skew`](super::ApproxKind::Skew)) says which matrix and the
 //! certified displacement `sup |M(p) − M′(p)|` over the element (`err · |p −
 //! centre|` summed over the approximated factors, times the Lipschitz bound
 //! of the transforms above them; see [`parse_svg_document_elements`]).

@@ -237,77 +237,34 @@ pub(super) fn parse_transform(text: &str, at: &str) -> Result<Vec<Factor>, Curve
         let name = rest[..open].trim().trim_start_matches(',').trim();
         let args =
             svg_number_list(&rest[open + 1..close]).map_err(|e| err(at, format!("{name}: {e}")))?;
-        let (o, z) = (Rational::one(), Rational::zero());
-        let mut approx = None;
-        let f = match (name, args.as_slice()) {
-            ("matrix", [a, b, c, d, e, f]) => Affine([
-                a.clone(),
-                b.clone(),
-                c.clone(),
-                d.clone(),
-                e.clone(),
-                f.clone(),
-            ]),
-            ("translate", [x]) => translation(x, &z),
-            ("translate", [x, y]) => translation(x, y),
-            ("scale", [s]) => Affine([s.clone(), z.clone(), z.clone(), s.clone(), z.clone(), z]),
-            ("scale", [sx, sy]) => {
-                Affine([sx.clone(), z.clone(), z.clone(), sy.clone(), z.clone(), z])
-            }
+        let z = Rational::zero();
+        let (f, approx) = match (name, args.as_slice()) {
+            ("matrix", [a, b, c, d, e, f]) => (
+                Affine([
+                    a.clone(),
+                    b.clone(),
+                    c.clone(),
+                    d.clone(),
+                    e.clone(),
+                    f.clone(),
+                ]),
+                None,
+            ),
+            ("translate", [x]) => (translation(x, &z), None),
+            ("translate", [x, y]) => (translation(x, y), None),
+            ("scale", [s]) => (
+                Affine([s.clone(), z.clone(), z.clone(), s.clone(), z.clone(), z]),
+                None,
+            ),
+            ("scale", [sx, sy]) => (
+                Affine([sx.clone(), z.clone(), z.clone(), sy.clone(), z.clone(), z]),
+                None,
+            ),
             ("rotate", [a, centre @ ..]) if centre.is_empty() || centre.len() == 2 => {
-                let (c, s) = match quarter_turn(a) {
-                    Some(cs) => cs,
-                    None => {
-                        let (c, s, e) = rational_rotation(a)
-                            .map_err(|reason| err(at, format!("rotate({a}): {reason}")))?;
-                        let centre = match centre {
-                            [cx, cy] => V2::new(cx.clone(), cy.clone()),
-                            _ => V2::new(z.clone(), z.clone()),
-                        };
-                        approx = Some(FactorApprox {
-                            kind: ApproxKind::Rotation,
-                            err: e,
-                            centre,
-                            lip: 1.0,
-                            detail: format!(
-                                "rotate({a}) as cos = {c}, sin = {s}, exactly on the unit circle, ‖R − R′‖ ≤ {}",
-                                format_up(e)
-                            ),
-                        });
-                        (c, s)
-                    }
-                };
-                let r = Affine([c.clone(), s.clone(), -s, c, z.clone(), z.clone()]);
-                match centre {
-                    [cx, cy] => translation(cx, cy)
-                        .then_inner(&r)
-                        .then_inner(&translation(&-cx.clone(), &-cy.clone())),
-                    _ => r,
-                }
+                rotate_factor(a, centre, at)?
             }
-            ("skewX" | "skewY", [a]) if a.is_zero() => Affine::identity(),
-            ("skewX" | "skewY", [a]) => {
-                let (t, e) =
-                    rational_tan(a).map_err(|reason| err(at, format!("{name}({a}): {reason}")))?;
-                let m = if name == "skewX" {
-                    Affine([o.clone(), z.clone(), t.clone(), o, z.clone(), z.clone()])
-                } else {
-                    Affine([o.clone(), t.clone(), z.clone(), o, z.clone(), z.clone()])
-                };
-                if e > 0.0 {
-                    approx = Some(FactorApprox {
-                        kind: ApproxKind::Skew,
-                        err: e,
-                        centre: V2::new(z.clone(), z),
-                        lip: (point(m.norm_sup()) + point(e)).sup(),
-                        detail: format!(
-                            "{name}({a}) with tan = {t}, |tan θ − t| ≤ {}",
-                            format_up(e)
-                        ),
-                    });
-                }
-                m
-            }
+            ("skewX" | "skewY", [a]) if a.is_zero() => (Affine::identity(), None),
+            ("skewX" | "skewY", [a]) => skew_factor(name, a, at)?,
             _ => {
                 return Err(err(
                     at,
@@ -324,6 +281,71 @@ pub(super) fn parse_transform(text: &str, at: &str) -> Result<Vec<Factor>, Curve
         rest = rest[close + 1..].trim_start();
     }
     Ok(factors)
+}
+
+/// `rotate(a)` or `rotate(a cx cy)`: exact for a multiple of 90°, otherwise
+/// the exactly rational rotation, with what it approximated.
+fn rotate_factor(
+    a: &Rational,
+    centre: &[Rational],
+    at: &str,
+) -> Result<(Affine, Option<FactorApprox>), CurveParseError> {
+    let z = Rational::zero();
+    let mut approx = None;
+    let (c, s) = match quarter_turn(a) {
+        Some(cs) => cs,
+        None => {
+            let (c, s, e) =
+                rational_rotation(a).map_err(|reason| err(at, format!("rotate({a}): {reason}")))?;
+            let centre = match centre {
+                [cx, cy] => V2::new(cx.clone(), cy.clone()),
+                _ => V2::new(z.clone(), z.clone()),
+            };
+            approx = Some(FactorApprox {
+                kind: ApproxKind::Rotation,
+                err: e,
+                centre,
+                lip: 1.0,
+                detail: format!(
+                    "rotate({a}) as cos = {c}, sin = {s}, exactly on the unit circle, ‖R − R′‖ ≤ {}",
+                    format_up(e)
+                ),
+            });
+            (c, s)
+        }
+    };
+    let r = Affine([c.clone(), s.clone(), -s, c, z.clone(), z.clone()]);
+    let m = match centre {
+        [cx, cy] => translation(cx, cy)
+            .then_inner(&r)
+            .then_inner(&translation(&-cx.clone(), &-cy.clone())),
+        _ => r,
+    };
+    Ok((m, approx))
+}
+
+/// `skewX(a)` or `skewY(a)` (`name`), `a` not 0: the rational tangent, with
+/// what it approximated (nothing when it is exact).
+fn skew_factor(
+    name: &str,
+    a: &Rational,
+    at: &str,
+) -> Result<(Affine, Option<FactorApprox>), CurveParseError> {
+    let (o, z) = (Rational::one(), Rational::zero());
+    let (t, e) = rational_tan(a).map_err(|reason| err(at, format!("{name}({a}): {reason}")))?;
+    let m = if name == "skewX" {
+        Affine([o.clone(), z.clone(), t.clone(), o, z.clone(), z.clone()])
+    } else {
+        Affine([o.clone(), t.clone(), z.clone(), o, z.clone(), z.clone()])
+    };
+    let approx = (e > 0.0).then(|| FactorApprox {
+        kind: ApproxKind::Skew,
+        err: e,
+        centre: V2::new(z.clone(), z),
+        lip: (point(m.norm_sup()) + point(e)).sup(),
+        detail: format!("{name}({a}) with tan = {t}, |tan θ − t| ≤ {}", format_up(e)),
+    });
+    Ok((m, approx))
 }
 
 /// A certified upper bound of `sup |M(p) − M′(p)|` over the exact element
