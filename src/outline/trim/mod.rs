@@ -52,6 +52,12 @@
 //!    on its Bézier pieces, [`super::circle::bezier_arc`] and
 //!    [`super::circle::arcs_meet`] for the arcs; contours must be closed, with no
 //!    crossing and no contact besides the joints of consecutive pieces.
+//!
+//! # Logging
+//!
+//! The phases and their timings are logged through the `log` crate (`debug`;
+//! each raw piece, sub-piece and failed test at `trace`): set a `log` logger
+//! (e.g. env_logger with RUST_LOG=lncert=debug) to see the phases.
 
 mod chain;
 mod classify;
@@ -69,3 +75,10 @@ pub use types::{
     Cap, CapReport, Claim, Classified, Contour, Orientation, PenShape, Piece, RawCrossing, Stroke,
     StrokeError, StrokeOptions,
 };
+
+/// Adds a note to a stroke's notes: at most 20 of them, no repeats.
+fn add_note(notes: &mut Vec<String>, s: String) {
+    if notes.len() < 20 && !notes.contains(&s) {
+        notes.push(s);
+    }
+}

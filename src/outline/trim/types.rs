@@ -19,7 +19,7 @@ pub enum Cap {
     Butt,
 }
 
-/// Settings of [`stroke`].
+/// Settings of [`stroke`](super::stroke).
 #[derive(Clone, Debug)]
 pub struct StrokeOptions {
     /// Pen radius `r > 0`, exact.
@@ -311,7 +311,7 @@ pub struct Classified {
     pub undecided: usize,
 }
 
-/// The result of [`stroke`].
+/// The result of [`stroke`](super::stroke).
 #[derive(Clone, Debug)]
 pub struct Stroke {
     /// The outline.
