@@ -42,8 +42,11 @@
 //! reached (reported, never guessed). Convolutions are not supported on such
 //! grids yet (their corners need elliptic arcs).
 
+use super::driver::Kernel;
 use super::fit::{self, dv, FitEnds, Reach};
-use super::{bad, exact_bezier, prep, sub_exact, Kernel, OffsetError, OffsetOptions, Output};
+use super::options::{bad, check_options};
+use super::results::sub_exact;
+use super::{exact_bezier, prep, OffsetError, OffsetOptions, Output};
 use crate::certify::piece::Piece as CPiece;
 use crate::certify::{Certificate, Config, CoverBox, HausdorffBounds, MapCover};
 use crate::curve::{Bezier, V2};
@@ -1139,7 +1142,7 @@ pub fn offset_on_grid(
             "a tolerance below the grid's rounding move is supported for cubic and quadratic output only",
         ));
     }
-    let shape = super::check_options(curve, &{
+    let shape = check_options(curve, &{
         let mut o = opts.clone();
         o.grid = None;
         o
