@@ -4,7 +4,7 @@
 use super::driver::Kernel;
 use super::options::OffsetOptions;
 use super::prep::{self, Junction};
-use super::results::{join_arc_of, Corner, OffsetResult, OffsetSegment, ProofPath, SegmentProof};
+use super::results::{join_arc_of, Corner, OffsetResult, OffsetSegment, SegmentProof};
 use crate::certify::{Config, CoverBox};
 use crate::curve::{Bezier, V2};
 use crate::scalar::Rational;
@@ -67,16 +67,7 @@ fn prove_given(
         bezier: bez,
         error: (r.lo, r.hi),
         paper_error: None,
-        proof: Some(SegmentProof {
-            path: if r.parametric.is_some() {
-                ProofPath::Parametric
-            } else {
-                ProofPath::Search
-            },
-            map: r.parametric.clone(),
-            exact_to_segment: r.a_to_b.boxes.clone(),
-            segment_to_exact: r.b_to_a.boxes.clone(),
-        }),
+        proof: Some(SegmentProof::of(&r)),
         estimate: None,
     })
 }

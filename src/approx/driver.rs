@@ -6,11 +6,10 @@ use super::corners::{absorb_kinks, corners};
 use super::fit::{self, Output};
 use super::options::{check_options, OffsetError, OffsetMethod, OffsetOptions};
 use super::prep::{self, OffsetCusp};
-use super::results::{
-    exact_bezier, sub_exact, OffsetResult, OffsetSegment, ProofPath, SegmentProof,
-};
+use super::results::{exact_bezier, sub_exact, OffsetResult, OffsetSegment, SegmentProof};
 use super::{conv, convolve::conv_paper_error, g2, lnpair};
-use crate::certify::{hausdorff, Config};
+use crate::certify::piece::Piece;
+use crate::certify::{hausdorff, Config, HausdorffBounds};
 use crate::curve::{Bezier, V2};
 use crate::scalar::{interval_from_rational, rational_from_f64, Interval, Rational, Scalar};
 use crate::shape::ShapeDesc;
@@ -207,24 +206,15 @@ fn certify_segment(
     searches: &std::sync::atomic::AtomicUsize,
 ) -> (Option<OffsetSegment>, f64, bool) {
     let split = 0.5;
-    let d = kernel.reach();
     let Some((built, pair)) = construct(opts.method, opts.output, x, task.t, kernel) else {
         return (None, split_point(opts, x, task.t, kernel, None), false);
     };
-    // with a grid: the written (rounded) numbers are proven; the construction
-    // is pre-checked within `tol − rounding move`
-    let (bez, unrounded, fit_tol) = match &opts.grid {
-        None => (built, None, opts.tol),
-        Some(g) => match fit::round_to_grid(&built, g) {
-            Some(r) => (r, Some(built), opts.tol - fit::rounding_move(g)),
-            None => {
-                return (
-                    None,
-                    split_point(opts, x, task.t, kernel, pair.as_ref()),
-                    false,
-                )
-            }
-        },
+    let Some((bez, unrounded, fit_tol)) = on_grid(built, opts) else {
+        return (
+            None,
+            split_point(opts, x, task.t, kernel, pair.as_ref()),
+            false,
+        );
     };
     // The pieces of the span's exact offset (`ShapeDesc::Offset` of the exact
     // restriction of `x`) and of the segment, enclosed without rationals.
@@ -259,13 +249,9 @@ fn certify_segment(
     // split without a proof: only acceptance needs one, and refuting the span
     // with a certified lower bound costs more than the rest of its search. At
     // the depth limit the span is bounded anyway, to report it.
-    let pre = |pb: &[crate::certify::piece::Piece]| crate::certify::sampled_pieces(&pa, pb, 8);
     if !opts.accept_paper
         && task.depth < opts.max_depth
-        && match &unrounded {
-            None => pre(&pb) > fit_tol,
-            Some(u) => crate::certify::piece::bezier_f64(u).is_none_or(|p| pre(&[p]) > fit_tol),
-        }
+        && sampled_above(&pa, &pb, unrounded.as_ref(), fit_tol)
     {
         return (
             Some(unproven(None)),
@@ -273,45 +259,10 @@ fn certify_segment(
             false,
         );
     }
-    let cfg = Config {
-        tol: Some(opts.tol),
-        max_boxes: opts.max_boxes,
-        // a refuted span is split: its other direction is not needed — unless it
-        // cannot be split any more and its bounds are reported
-        verdict_only: task.depth < opts.max_depth && !opts.accept_paper,
-        parametric: !opts.search_only,
-        ..Config::default()
-    };
     searches.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-    // the absolute gap of `hausdorff` for these shapes, from the float data
-    let abs_of = || {
-        let scale = bez
-            .points()
-            .iter()
-            .map(|p| p.x.abs().max(p.y.abs()))
-            .fold(0.0, f64::max);
-        1e-10 * (1.0 + scale + d)
-    };
-    let r = crate::certify::hausdorff_pieces(&pa, &pb, &cfg, &abs_of);
-    let paper_error = match (&pair, opts.paper_error || opts.accept_paper, kernel) {
-        (Some(p), true, Kernel::Offset { df, .. }) => {
-            sub_exact(x, task.t).and_then(|e| paper_error_of(x, task.t, &e, p, *df))
-        }
-        (Some(p), true, Kernel::Conv { pen, sigma, .. }) => {
-            sub_exact(x, task.t).and_then(|e| conv_paper_error(&e, p, pen, *sigma))
-        }
-        _ => None,
-    };
-    let proof = (r.hi <= opts.tol).then(|| SegmentProof {
-        path: if r.parametric.is_some() {
-            ProofPath::Parametric
-        } else {
-            ProofPath::Search
-        },
-        map: r.parametric.clone(),
-        exact_to_segment: r.a_to_b.boxes.clone(),
-        segment_to_exact: r.b_to_a.boxes.clone(),
-    });
+    let r = prove_span(&pa, &pb, &bez, task, opts, kernel.reach());
+    let paper_error = paper_error(x, task.t, pair.as_ref(), opts, kernel);
+    let proof = (r.hi <= opts.tol).then(|| SegmentProof::of(&r));
     let seg = OffsetSegment {
         piece: task.piece,
         t: task.t,
@@ -327,6 +278,89 @@ fn certify_segment(
         split_point(opts, x, task.t, kernel, pair.as_ref()),
         stuck,
     )
+}
+
+/// The segment to prove: without a grid the construction itself; with a grid
+/// the written (rounded) numbers, the construction kept to be pre-checked
+/// within `tol − rounding move` (the third value: the pre-check's tolerance).
+/// `None` when the construction cannot be rounded.
+fn on_grid(
+    built: Bezier<f64>,
+    opts: &OffsetOptions,
+) -> Option<(Bezier<f64>, Option<Bezier<f64>>, f64)> {
+    match &opts.grid {
+        None => Some((built, None, opts.tol)),
+        Some(g) => {
+            let r = fit::round_to_grid(&built, g)?;
+            Some((r, Some(built), opts.tol - fit::rounding_move(g)))
+        }
+    }
+}
+
+/// The sampled (unproven) error of the segment `pb` — of the construction
+/// before rounding when there is one — is above `fit_tol`.
+fn sampled_above(
+    pa: &[Piece],
+    pb: &[Piece],
+    unrounded: Option<&Bezier<f64>>,
+    fit_tol: f64,
+) -> bool {
+    let pre = |pb: &[Piece]| crate::certify::sampled_pieces(pa, pb, 8);
+    match unrounded {
+        None => pre(pb) > fit_tol,
+        Some(u) => crate::certify::piece::bezier_f64(u).is_none_or(|p| pre(&[p]) > fit_tol),
+    }
+}
+
+/// The certified bounds of one span's segment `bez` (enclosed as `pb`)
+/// against the span's exact offset `pa`; `d` the size of the offset vector.
+fn prove_span(
+    pa: &[Piece],
+    pb: &[Piece],
+    bez: &Bezier<f64>,
+    task: &Task,
+    opts: &OffsetOptions,
+    d: f64,
+) -> HausdorffBounds {
+    let cfg = Config {
+        tol: Some(opts.tol),
+        max_boxes: opts.max_boxes,
+        // a refuted span is split: its other direction is not needed — unless it
+        // cannot be split any more and its bounds are reported
+        verdict_only: task.depth < opts.max_depth && !opts.accept_paper,
+        parametric: !opts.search_only,
+        ..Config::default()
+    };
+    // the absolute gap of `hausdorff` for these shapes, from the float data
+    let abs_of = || {
+        let scale = bez
+            .points()
+            .iter()
+            .map(|p| p.x.abs().max(p.y.abs()))
+            .fold(0.0, f64::max);
+        1e-10 * (1.0 + scale + d)
+    };
+    crate::certify::hausdorff_pieces(pa, pb, &cfg, &abs_of)
+}
+
+/// Seed 000's error measure of an LN-pair segment over the span `t`, when
+/// asked for ([`OffsetOptions::paper_error`], [`OffsetOptions::accept_paper`]).
+fn paper_error(
+    x: &Bezier<Rational>,
+    t: (f64, f64),
+    pair: Option<&lnpair::LnPairPiece>,
+    opts: &OffsetOptions,
+    kernel: &Kernel,
+) -> Option<f64> {
+    match (pair, opts.paper_error || opts.accept_paper, kernel) {
+        (Some(p), true, Kernel::Offset { df, .. }) => {
+            sub_exact(x, t).and_then(|e| paper_error_of(x, t, &e, p, *df))
+        }
+        (Some(p), true, Kernel::Conv { pen, sigma, .. }) => {
+            sub_exact(x, t).and_then(|e| conv_paper_error(&e, p, pen, *sigma))
+        }
+        _ => None,
+    }
 }
 
 /// Where to split a span that missed the tolerance, as a fraction of it: the
@@ -468,6 +502,39 @@ pub(super) fn offset_segments(
     cuts: &[Vec<f64>],
 ) -> (Vec<OffsetSegment>, Vec<usize>, f64, usize, usize) {
     let mut spans = 0usize;
+    let mut tasks = initial_tasks(curve, opts, cuts);
+    let mut done: Vec<OffsetSegment> = Vec::new();
+    let mut unreached_segs: Vec<OffsetSegment> = Vec::new();
+    let searches = std::sync::atomic::AtomicUsize::new(0);
+    while !tasks.is_empty() {
+        spans += tasks.len();
+        let outcomes: Vec<Outcome> = tasks
+            .par_iter()
+            .map(|task| {
+                let (segment, s, stuck) =
+                    certify_segment(&curve[task.piece], task, opts, kernel, &searches);
+                Outcome {
+                    task: task.clone(),
+                    segment,
+                    split: s,
+                    stuck,
+                }
+            })
+            .collect();
+        tasks = next_round(curve, opts, outcomes, &mut done, &mut unreached_segs);
+    }
+    let (segments, unreached, certified_hi) = in_order(done, unreached_segs);
+    (
+        segments,
+        unreached,
+        certified_hi,
+        searches.into_inner(),
+        spans,
+    )
+}
+
+/// The first round's tasks: the initial spans of every piece.
+fn initial_tasks(curve: &[Bezier<Rational>], opts: &OffsetOptions, cuts: &[Vec<f64>]) -> Vec<Task> {
     let mut tasks: Vec<Task> = Vec::new();
     for (i, x) in curve.iter().enumerate() {
         // a fitted cubic may have an inflection: the native constructions (and
@@ -487,81 +554,87 @@ pub(super) fn offset_segments(
             });
         }
     }
-    let mut done: Vec<OffsetSegment> = Vec::new();
-    let mut unreached_segs: Vec<OffsetSegment> = Vec::new();
-    let searches = std::sync::atomic::AtomicUsize::new(0);
-    while !tasks.is_empty() {
-        spans += tasks.len();
-        let outcomes: Vec<Outcome> = tasks
-            .par_iter()
-            .map(|task| {
-                let (segment, s, stuck) =
-                    certify_segment(&curve[task.piece], task, opts, kernel, &searches);
-                Outcome {
-                    task: task.clone(),
-                    segment,
-                    split: s,
-                    stuck,
-                }
-            })
-            .collect();
-        let mut next = Vec::new();
-        let mut pending = outcomes.len();
-        for o in outcomes {
-            pending -= 1;
-            // proven within tol, or (certify: false) estimated within it
-            // with the paper's acceptance a segment with a measure is accepted
-            // by the measure alone, as the paper does (a segment whose measure
-            // is above tol is split even when its true error is below it)
-            let accepted = o.segment.as_ref().is_some_and(|s| match s.paper_error {
-                Some(e) if opts.accept_paper => e <= opts.tol,
-                _ => s.error.1 <= opts.tol || s.estimate.is_some_and(|e| e <= opts.tol),
-            });
-            if accepted {
-                done.extend(o.segment);
-                continue;
-            }
-            let (a, b) = o.task.t;
-            let m = a + (b - a) * o.split;
-            // every outcome still to be looked at ends as at least one segment
-            let room =
-                done.len() + unreached_segs.len() + next.len() + pending + 2 <= opts.max_segments;
-            let give_up = o.stuck && o.task.stuck_before;
-            if !give_up && o.task.depth < opts.max_depth && m > a && m < b && room {
-                next.push(Task {
-                    piece: o.task.piece,
-                    t: (a, m),
-                    depth: o.task.depth + 1,
-                    stuck_before: o.stuck,
-                });
-                next.push(Task {
-                    piece: o.task.piece,
-                    t: (m, b),
-                    depth: o.task.depth + 1,
-                    stuck_before: o.stuck,
-                });
-            } else if let Some(s) = o.segment {
-                unreached_segs.push(s);
-            } else {
-                // no construction at all: keep the exact span's chord offset? No —
-                // report an unreached segment with an infinite bound.
-                let x = &curve[o.task.piece];
-                if let Some(sub) = span_f64(x, o.task.t) {
-                    let p = sub.points();
-                    unreached_segs.push(OffsetSegment {
-                        piece: o.task.piece,
-                        t: o.task.t,
-                        bezier: Bezier::new(vec![p[0].clone(), p[p.len() - 1].clone()]),
-                        error: (0.0, f64::INFINITY),
-                        paper_error: None,
-                        proof: None,
-                        estimate: None,
-                    });
-                }
-            }
+    tasks
+}
+
+/// Sorts the outcomes of one round: accepted segments into `done`, spans that
+/// may still be split into the next round's tasks (returned), the others into
+/// `unreached_segs`.
+fn next_round(
+    curve: &[Bezier<Rational>],
+    opts: &OffsetOptions,
+    outcomes: Vec<Outcome>,
+    done: &mut Vec<OffsetSegment>,
+    unreached_segs: &mut Vec<OffsetSegment>,
+) -> Vec<Task> {
+    let mut next = Vec::new();
+    let mut pending = outcomes.len();
+    for o in outcomes {
+        pending -= 1;
+        if accepted(&o, opts) {
+            done.extend(o.segment);
+            continue;
         }
-        tasks = next;
+        let (a, b) = o.task.t;
+        let m = a + (b - a) * o.split;
+        // every outcome still to be looked at ends as at least one segment
+        let room =
+            done.len() + unreached_segs.len() + next.len() + pending + 2 <= opts.max_segments;
+        let give_up = o.stuck && o.task.stuck_before;
+        if !give_up && o.task.depth < opts.max_depth && m > a && m < b && room {
+            for t in [(a, m), (m, b)] {
+                next.push(Task {
+                    piece: o.task.piece,
+                    t,
+                    depth: o.task.depth + 1,
+                    stuck_before: o.stuck,
+                });
+            }
+        } else if let Some(s) = o.segment {
+            unreached_segs.push(s);
+        } else {
+            // no construction at all: keep the exact span's chord offset? No —
+            // report an unreached segment with an infinite bound.
+            unreached_segs.extend(chord_segment(&curve[o.task.piece], &o.task));
+        }
     }
+    next
+}
+
+/// Proven within tol, or (certify: false) estimated within it.
+///
+/// With the paper's acceptance a segment with a measure is accepted by the
+/// measure alone, as the paper does (a segment whose measure is above tol is
+/// split even when its true error is below it).
+fn accepted(o: &Outcome, opts: &OffsetOptions) -> bool {
+    o.segment.as_ref().is_some_and(|s| match s.paper_error {
+        Some(e) if opts.accept_paper => e <= opts.tol,
+        _ => s.error.1 <= opts.tol || s.estimate.is_some_and(|e| e <= opts.tol),
+    })
+}
+
+/// The unreached placeholder of a span without any construction: the chord
+/// of the span of `x`, with an infinite bound.
+fn chord_segment(x: &Bezier<Rational>, task: &Task) -> Option<OffsetSegment> {
+    let sub = span_f64(x, task.t)?;
+    let p = sub.points();
+    Some(OffsetSegment {
+        piece: task.piece,
+        t: task.t,
+        bezier: Bezier::new(vec![p[0].clone(), p[p.len() - 1].clone()]),
+        error: (0.0, f64::INFINITY),
+        paper_error: None,
+        proof: None,
+        estimate: None,
+    })
+}
+
+/// The accepted and unreached segments in input order, the indices of the
+/// unreached ones, and the largest certified bound.
+fn in_order(
+    done: Vec<OffsetSegment>,
+    unreached_segs: Vec<OffsetSegment>,
+) -> (Vec<OffsetSegment>, Vec<usize>, f64) {
     let mut segments: Vec<(OffsetSegment, bool)> = done
         .into_iter()
         .map(|s| (s, false))
@@ -580,13 +653,7 @@ pub(super) fn offset_segments(
         .collect();
     let segments: Vec<OffsetSegment> = segments.into_iter().map(|s| s.0).collect();
     let certified_hi = segments.iter().map(|s| s.error.1).fold(0.0, f64::max);
-    (
-        segments,
-        unreached,
-        certified_hi,
-        searches.into_inner(),
-        spans,
-    )
+    (segments, unreached, certified_hi)
 }
 
 /// Per piece, the parameters `(piece, t)` to cut the initial spans at.

@@ -4,7 +4,7 @@
 use super::conv;
 use super::options::{bad, OffsetError, OffsetMethod};
 use super::prep::{Junction, OffsetCusp};
-use crate::certify::CoverBox;
+use crate::certify::{CoverBox, HausdorffBounds};
 use crate::curve::{Bezier, V2};
 use crate::scalar::{rational_from_f64, Rational};
 use crate::shape::ShapeDesc;
@@ -50,11 +50,19 @@ impl ProofPath {
             ProofPath::Search => "search",
         }
     }
+    /// The path that proved the bounds `r`: parametric when they carry a map.
+    pub(super) fn of(r: &HausdorffBounds) -> Self {
+        if r.parametric.is_some() {
+            ProofPath::Parametric
+        } else {
+            ProofPath::Search
+        }
+    }
 }
 
-/// The proof of one accepted segment, which [`union_certificate`](super::union_certificate)
-/// assembles
-/// into a certificate of the whole result: for the parametric path its map
+/// The proof of one accepted segment, which
+/// [`union_certificate`](super::union_certificate) assembles into a
+/// certificate of the whole result: for the parametric path its map
 /// (from the segment's parameter onto the span's exact offset), for the search
 /// its final covers, both directions (piece and target 0: the exact offset of
 /// the span, the segment); the other path's fields are empty.
@@ -68,6 +76,19 @@ pub struct SegmentProof {
     pub exact_to_segment: Vec<CoverBox>,
     /// Cover of the segment, foot maps into the span's exact offset.
     pub segment_to_exact: Vec<CoverBox>,
+}
+
+impl SegmentProof {
+    /// The proof kept from the bounds `r` of an accepted segment: its map, or
+    /// its two search covers.
+    pub(super) fn of(r: &HausdorffBounds) -> Self {
+        SegmentProof {
+            path: ProofPath::of(r),
+            map: r.parametric.clone(),
+            exact_to_segment: r.a_to_b.boxes.clone(),
+            segment_to_exact: r.b_to_a.boxes.clone(),
+        }
+    }
 }
 
 /// A junction of two input pieces that needs attention.

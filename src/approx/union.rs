@@ -75,32 +75,85 @@ fn assemble(
     {
         return Ok(None);
     }
-    let mut a_members = Vec::new();
-    let mut b_members = Vec::new();
-    let mut maps = Vec::new();
-    let (mut ab, mut ba) = (Vec::new(), Vec::new());
-    let renumber = |i: usize, bs: &[CoverBox]| {
-        bs.iter()
-            .map(|bx| CoverBox {
-                piece: i,
-                target: i,
-                ..bx.clone()
-            })
-            .collect::<Vec<_>>()
-    };
-    let mut base = 0usize;
+    let mut parts = Parts::default();
     for res in results {
-        a_members.push(exact_offset_shape(curve, res)?);
-        b_members.push(res.approximant_shape()?);
+        parts.add_segments(curve, res)?;
+    }
+    // the join arcs: the same exact arc on both sides, covered by a search
+    let tol_f = interval_from_rational(tol).inf();
+    for res in results {
+        if !parts.add_join_arcs(res, tol_f)? {
+            return Ok(None);
+        }
+    }
+    // absorbed corners: the exact arc (in `a` only) covered by the two
+    // segments that meet there
+    let mut seg_base = 0usize;
+    for res in results {
+        if !parts.add_absorbed_arcs(res, seg_base, tol_f)? {
+            return Ok(None);
+        }
+        seg_base += res.segments.len();
+    }
+    let Parts {
+        mut a_members,
+        mut b_members,
+        maps,
+        ab,
+        ba,
+        ..
+    } = parts;
+    let (a, b) = if a_members.len() == 1 && !always_union {
+        (a_members.remove(0), b_members.remove(0))
+    } else {
+        (ShapeDesc::union(a_members)?, ShapeDesc::union(b_members)?)
+    };
+    Ok(Certificate::assemble(&a, &b, tol, &maps, &ab, &ba))
+}
+
+/// A certificate under assembly: the members of both shapes, and the proofs
+/// numbered by the global piece they cover.
+#[derive(Default)]
+struct Parts {
+    a_members: Vec<ShapeDesc>,
+    b_members: Vec<ShapeDesc>,
+    maps: Vec<MapCover>,
+    ab: Vec<CoverBox>,
+    ba: Vec<CoverBox>,
+    /// The global index of the next piece of `a`.
+    base: usize,
+}
+
+/// The boxes `bs` of a proof of piece `i` against piece `i`.
+fn renumber(i: usize, bs: &[CoverBox]) -> Vec<CoverBox> {
+    bs.iter()
+        .map(|bx| CoverBox {
+            piece: i,
+            target: i,
+            ..bx.clone()
+        })
+        .collect::<Vec<_>>()
+}
+
+impl Parts {
+    /// The exact curve and approximant of `res`, and its segments' proofs
+    /// (piece and target `i`: segment `i`).
+    fn add_segments(
+        &mut self,
+        curve: &[Bezier<Rational>],
+        res: &OffsetResult,
+    ) -> Result<(), OffsetError> {
+        self.a_members.push(exact_offset_shape(curve, res)?);
+        self.b_members.push(res.approximant_shape()?);
         for (k, p) in res
             .segments
             .iter()
             .filter_map(|s| s.proof.as_ref())
             .enumerate()
         {
-            let i = base + k;
+            let i = self.base + k;
             match &p.map {
-                Some(m) => maps.push(MapCover {
+                Some(m) => self.maps.push(MapCover {
                     from_a: m.source_a,
                     piece: i,
                     target: i,
@@ -108,16 +161,18 @@ fn assemble(
                     hi: m.hi,
                 }),
                 None => {
-                    ab.extend(renumber(i, &p.exact_to_segment));
-                    ba.extend(renumber(i, &p.segment_to_exact));
+                    self.ab.extend(renumber(i, &p.exact_to_segment));
+                    self.ba.extend(renumber(i, &p.segment_to_exact));
                 }
             }
         }
-        base += res.segments.len();
+        self.base += res.segments.len();
+        Ok(())
     }
-    // the join arcs: the same exact arc on both sides, covered by a search
-    let tol_f = interval_from_rational(tol).inf();
-    for res in results {
+
+    /// The join arcs of `res` in both shapes, each covered by a search of
+    /// the arc against itself; false when one is not proven within `tol_f`.
+    fn add_join_arcs(&mut self, res: &OffsetResult, tol_f: f64) -> Result<bool, OffsetError> {
         for arc in join_arcs(res) {
             let shape = ShapeDesc::arc(arc)?;
             let cfg = Config {
@@ -125,23 +180,29 @@ fn assemble(
                 ..Config::default()
             };
             let Ok(h) = hausdorff(&shape, &shape, &cfg) else {
-                return Ok(None);
+                return Ok(false);
             };
             if h.hi > tol_f || h.a_to_b.boxes.is_empty() || h.b_to_a.boxes.is_empty() {
-                return Ok(None);
+                return Ok(false);
             }
-            ab.extend(renumber(base, &h.a_to_b.boxes));
-            ba.extend(renumber(base, &h.b_to_a.boxes));
-            a_members.push(shape.clone());
-            b_members.push(shape);
-            base += 1;
+            self.ab.extend(renumber(self.base, &h.a_to_b.boxes));
+            self.ba.extend(renumber(self.base, &h.b_to_a.boxes));
+            self.a_members.push(shape.clone());
+            self.b_members.push(shape);
+            self.base += 1;
         }
+        Ok(true)
     }
-    // absorbed corners: the exact arc (in `a` only) covered by the two
-    // segments that meet there
-    let mut seg_base = 0usize;
-    for res in results {
-        let n = res.segments.len();
+
+    /// The arcs of the absorbed corners of `res` (in `a` only), each covered
+    /// by the two segments that meet there (`seg_base`: the global index of
+    /// the first segment of `res`); false when a cover is not proven.
+    fn add_absorbed_arcs(
+        &mut self,
+        res: &OffsetResult,
+        seg_base: usize,
+        tol_f: f64,
+    ) -> Result<bool, OffsetError> {
         let pieces = res
             .segments
             .iter()
@@ -154,7 +215,7 @@ fn assemble(
             };
             let after = (c.after + 1) % pieces.max(1);
             let Some((ia, ib)) = corner_segments(res, c.after, after) else {
-                return Ok(None);
+                return Ok(false);
             };
             let Some(boxes) = arc_cover(
                 &arc,
@@ -163,25 +224,19 @@ fn assemble(
                 tol_f,
                 200_000,
             ) else {
-                return Ok(None);
+                return Ok(false);
             };
-            let a_index = base;
-            ab.extend(boxes.into_iter().map(|bx| CoverBox {
+            let a_index = self.base;
+            self.ab.extend(boxes.into_iter().map(|bx| CoverBox {
                 piece: a_index,
                 target: seg_base + if bx.target == 0 { ia } else { ib },
                 ..bx
             }));
-            a_members.push(ShapeDesc::arc(arc)?);
-            base += 1;
+            self.a_members.push(ShapeDesc::arc(arc)?);
+            self.base += 1;
         }
-        seg_base += n;
+        Ok(true)
     }
-    let (a, b) = if a_members.len() == 1 && !always_union {
-        (a_members.remove(0), b_members.remove(0))
-    } else {
-        (ShapeDesc::union(a_members)?, ShapeDesc::union(b_members)?)
-    };
-    Ok(Certificate::assemble(&a, &b, tol, &maps, &ab, &ba))
 }
 
 /// One certificate for several results of the same curve (the two sides of
