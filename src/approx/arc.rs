@@ -8,7 +8,8 @@
 //! `proofs/004-circular-precision.md`). So the offset of an arc is returned as
 //! the exact concentric arc, with error `0`.
 
-use super::{bad, OffsetError};
+use super::options::bad;
+use super::OffsetError;
 use crate::curve::V2;
 use crate::scalar::Rational;
 pub use crate::shape::TravelledArc;

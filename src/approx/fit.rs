@@ -23,7 +23,8 @@
 //! [`round_to_grid`] rounds control points to multiples of a dyadic grid
 //! ([`check_grid`]); the driver proves the rounded segment.
 
-use super::{conv, prep, Kernel, OffsetError};
+use super::driver::Kernel;
+use super::{conv, prep, OffsetError};
 use crate::curve::{Bezier, V2};
 use crate::scalar::{interval_from_rational, rational_from_f64, Rational, Scalar};
 use glam::DVec2;
@@ -651,7 +652,7 @@ pub fn check_grid(grid: &Rational, tol: f64, scale: f64) -> Result<f64, OffsetEr
     check_grid_storage(grid, scale)?;
     let mv = rounding_move(grid);
     if mv.is_nan() || tol.is_nan() || mv >= tol {
-        return Err(super::bad(
+        return Err(super::options::bad(
             "grid",
             format!(
                 "rounding to {grid} moves the curve by up to {mv:e} (grid·√2/2) ≥ the tolerance {tol:e}: \
@@ -667,7 +668,7 @@ pub fn check_grid(grid: &Rational, tol: f64, scale: f64) -> Result<f64, OffsetEr
 /// multiples over coordinates up to `8 (1 + scale)` are exact `f64` numbers
 /// (no condition on the tolerance).
 pub fn check_grid_storage(grid: &Rational, scale: f64) -> Result<(), OffsetError> {
-    let bad = |reason: String| super::bad("grid", reason);
+    let bad = |reason: String| super::options::bad("grid", reason);
     if !grid.is_positive() {
         return Err(bad(format!("{grid} must be > 0")));
     }
