@@ -42,14 +42,6 @@ impl Error {
     }
 }
 
-impl From<crate::approx::OffsetError> for Error {
-    fn from(e: crate::approx::OffsetError) -> Self {
-        match e {
-            crate::approx::OffsetError::Input { field, reason } => Error::new(field, reason),
-        }
-    }
-}
-
 impl From<ln::LnError> for Error {
     fn from(e: ln::LnError) -> Self {
         let field = match &e {

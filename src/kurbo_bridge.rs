@@ -197,7 +197,7 @@ pub fn path_from_beziers(pieces: &[Bezier<Rational>]) -> Result<BezPath, Error> 
     Ok(path)
 }
 
-/// Outline contours (such as a stroke's, [`crate::outline::trim::stroke`]) as
+/// Outline contours (such as a stroke's, [`crate::stroke::trim::stroke`]) as
 /// a kurbo path: per contour a `MoveTo`, one element per Bézier piece (as in
 /// [`path_from_beziers`]), each exact arc as kurbo's cubic approximation of
 /// the circular arc within `arc_tolerance` (`kurbo::Arc::append_iter`), its
@@ -212,8 +212,8 @@ pub fn path_from_beziers(pieces: &[Bezier<Rational>]) -> Result<BezPath, Error> 
 /// ```
 /// use kurbo::Shape;
 /// use lncert::kurbo_bridge::path_from_contours;
-/// use lncert::outline::trim::{Contour, Orientation, Piece};
-/// use lncert::outline::circle::Arc;
+/// use lncert::stroke::{Contour, Orientation, Piece};
+/// use lncert::stroke::Arc;
 /// use lncert::V2;
 /// let q = |x: i64| lncert::Rational::from_integer(x.into());
 /// // a unit circle as two exact half arcs, counter-clockwise
@@ -228,10 +228,10 @@ pub fn path_from_beziers(pieces: &[Bezier<Rational>]) -> Result<BezPath, Error> 
 /// assert!((path.area() - std::f64::consts::PI).abs() < 1e-5);
 /// ```
 pub fn path_from_contours(
-    contours: &[crate::outline::trim::Contour],
+    contours: &[crate::stroke::trim::Contour],
     arc_tolerance: f64,
 ) -> Result<BezPath, Error> {
-    use crate::outline::trim::Piece;
+    use crate::stroke::trim::Piece;
     if !(arc_tolerance.is_finite() && arc_tolerance > 0.0) {
         return Err(Error {
             field: "arc_tolerance".to_string(),
@@ -264,7 +264,7 @@ pub fn path_from_contours(
 /// the end points are equal): the side is decided exactly, also for tiny arcs.
 fn push_arc(
     path: &mut BezPath,
-    a: &crate::outline::circle::Arc,
+    a: &crate::stroke::circle::Arc,
     tol: f64,
     field: &str,
 ) -> Result<(), Error> {

@@ -8,14 +8,16 @@
 //! # The root API
 //!
 //! The entry points a downstream crate needs are re-exported here, with one
-//! error type, [`Error`] (the field and the reason):
+//! error type, [`Error`] (the field and the reason), into which every error of
+//! every engine converts:
 //!
 //! | task | entry points |
 //! |---|---|
 //! | read curves and shapes | [`parse_curve`], [`ShapeDesc::parse`], [`parse_rational`] |
 //! | certify a Hausdorff distance or a tolerance | [`hausdorff`], [`HausdorffConfig`], [`HausdorffBounds`], [`Certificate`] |
 //! | re-check a certificate | [`verify`] |
-//! | a proven offset | [`offset`], [`OffsetOptions`], [`OffsetResult`], [`union_certificate`] |
+//! | a proven offset | [`offset()`], [`OffsetOptions`], [`OffsetResult`], [`union_certificate`] |
+//! | a proven stroke outline | [`stroke()`], [`StrokeOptions`], [`Stroke`] |
 //! | results out: SVG path data, SVG documents (kurbo `BezPath`: `kurbo_bridge`) | [`write::path_data`], [`write::offset_path_data`], [`svg_document`], [`SvgShape`], [`SvgOptions`] |
 //! | circle tangency (seed 003 §4) | [`TangencySystem`], [`TangencyProblem`], [`solve_complete`] |
 //! | property tests of your own geometry code | `lncert::gen` (feature `proptest`: strategies; `arbitrary`: fuzz inputs) |
@@ -27,7 +29,7 @@
 //! | arithmetic | [`scalar`] (exact rationals, certified intervals, `f64`, filters) , [`poly`] (exact root isolation) |
 //! | curves and propositions | [`curve`] (Bézier, B-spline), [`ln`] (the seeds' propositions) |
 //! | the geometry model | [`shape`] (exact shapes, readers, limits) |
-//! | engines | [`certify`] (Hausdorff bounds, certificates, [`verify`]), [`approx`] (proven offsets), [`tangency`] (seed 003's circle tangency) |
+//! | engines | [`certify`] (Hausdorff bounds, certificates, [`verify`]), [`offset`](mod@offset) (proven offsets and convolutions), [`stroke`](mod@stroke) (proven stroke outlines), [`tangency`] (seed 003's circle tangency) |
 //! | writers and bridges | [`write`](mod@write) (path data, SVG documents), `kurbo_bridge` (feature `kurbo`: both ways), `gen` (features `proptest` / `arbitrary`) |
 //!
 //! Dependencies point down the table. The engines' internals (search,
@@ -69,7 +71,7 @@
 //! # }
 //! ```
 
-pub mod approx;
+pub mod offset;
 
 // The Rust examples of the README and of docs/library.md, compiled and run as
 // doctests by `cargo test` (never part of the built library).
@@ -88,10 +90,10 @@ mod json;
 #[cfg(feature = "kurbo")]
 pub mod kurbo_bridge;
 pub mod ln;
-pub mod outline;
 pub mod poly;
 pub mod scalar;
 pub mod shape;
+pub mod stroke;
 pub mod tangency;
 #[cfg(test)]
 mod test_rng;
@@ -100,13 +102,14 @@ pub mod write;
 mod error;
 pub use error::Error;
 
-pub use approx::{offset, union_certificate, OffsetMethod, OffsetOptions, OffsetResult};
 pub use certify::verify::{verify, Valid};
 pub use certify::{
     hausdorff, sampled_estimate, Certificate, Config as HausdorffConfig, HausdorffBounds,
 };
 pub use curve::{Bezier, V2};
+pub use offset::{offset, union_certificate, OffsetMethod, OffsetOptions, OffsetResult};
 pub use scalar::{parse_rational, Interval, Rational};
 pub use shape::{parse_curve, ArcDesc, ShapeDesc, ShapeError, TravelledArc};
+pub use stroke::{stroke, Stroke, StrokeOptions};
 pub use tangency::{solve_complete, SolveOptions, TangencyProblem, TangencyReport, TangencySystem};
 pub use write::{svg_document, SvgOptions, SvgShape};

@@ -18,13 +18,13 @@
 #![allow(missing_docs)]
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use lncert::approx::Output;
 use lncert::curve::Bezier;
 use lncert::kurbo_bridge::shape_from_path;
-use lncert::outline::intersect::{intersections, IntersectOptions};
-use lncert::outline::trim::{stroke, StrokeOptions};
+use lncert::offset::Output;
 use lncert::scalar::{parse_rational, Rational, Scalar};
 use lncert::shape::{parse_curve, ShapeDesc};
+use lncert::stroke::{intersections, IntersectOptions};
+use lncert::stroke::{stroke, StrokeOptions};
 use lncert_cli::reproduce::strokes::{lens, lens_radius};
 use std::hint::black_box;
 use std::time::Instant;

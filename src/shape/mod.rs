@@ -2,7 +2,7 @@
 //!
 //! This layer sits between the mathematics of [`crate::curve`] (Bézier and
 //! B-spline curves, generic over the scalar) and the engines that use shapes
-//! ([`crate::certify`], [`crate::approx`]); every dependency points down:
+//! ([`crate::certify`], [`crate::offset`](mod@crate::offset)); every dependency points down:
 //!
 //! ```text
 //!   cli, reproduce

@@ -291,14 +291,14 @@ pub fn show_tau(t: &Tau<Rational>) -> String {
 pub fn subdivision(
     text: &str,
     method: &str,
-) -> Result<lncert::approx::lnpair::Subdivision, CliError> {
-    let rule = lncert::approx::lnpair::Subdivision::parse(text).ok_or_else(|| {
+) -> Result<lncert::offset::kernels::Subdivision, CliError> {
+    let rule = lncert::offset::kernels::Subdivision::parse(text).ok_or_else(|| {
         bad(
             "--subdivision",
             format!("unknown rule {text:?}; expected a (mid-angle), b (chord) or c (weighted)"),
         )
     })?;
-    if rule != lncert::approx::lnpair::Subdivision::MidAngle && method != "ln-pair" {
+    if rule != lncert::offset::kernels::Subdivision::MidAngle && method != "ln-pair" {
         return Err(bad(
             "--subdivision",
             "the rules are seed 000 §5's, for LN pairs: use --method ln-pair (G² spans are halved)",

@@ -1,6 +1,6 @@
 //! `lncert offset CURVE --distance R --tol T [--method g2|ln-pair] [--certificate OUT]
 //! [--svg OUT] [--global-bounds] [--no-certify] [--json]`: an offset approximant proven
-//! within `T` of the exact offset (see [`lncert::approx`]). The certified error is the
+//! within `T` of the exact offset (see [`lncert::offset`]). The certified error is the
 //! union bound of the per-segment proofs (each the parametric proof or the
 //! two-directional search, said per piece), and the certificate is assembled from them;
 //! `--global-bounds` adds a two-sided search over the whole offset; `--no-certify`
@@ -23,12 +23,12 @@
 use super::args::{arc_json, bad, number, point_json, q};
 use super::curve_input::CurveInput;
 use super::{print_out, CliError};
-use lncert::approx::arc::{offset_arc, ArcOffset};
-use lncert::approx::prep::Junction;
-use lncert::approx::{
+use lncert::offset::kernels::Junction;
+use lncert::offset::{
     global_bounds, offset, union_certificate, OffsetError, OffsetMethod, OffsetOptions,
     OffsetResult, Output, ProofPath,
 };
+use lncert::offset::{offset_arc, ArcOffset};
 use lncert::scalar::{interval_from_rational, Rational};
 use lncert::shape::{InputApprox, TravelledArc};
 use serde_json::{json, Value};
@@ -141,7 +141,7 @@ pub struct OffsetArgs {
 }
 
 pub fn offset_err(e: OffsetError) -> CliError {
-    let OffsetError::Input { field, reason } = e;
+    let OffsetError { field, reason } = e;
     let flag = match field.as_str() {
         "distance" => "--distance".to_string(),
         "tol" => "--tol".to_string(),
@@ -180,7 +180,7 @@ pub fn output_and_grid(
 /// The line saying how the tolerance is split between the fit and the rounding.
 pub fn grid_line(grid: &Option<Rational>, tol: f64) -> Option<String> {
     grid.as_ref().map(|g| {
-        let mv = lncert::approx::fit::rounding_move(g);
+        let mv = lncert::offset::kernels::rounding_move(g);
         format!(
             "grid {g}: control points rounded to multiples of {g}; the tolerance is split as fit ≤ {:.6e} (sampled pre-check) + rounding ≤ {mv:.6e} (grid·√2/2); the rounded curve is what is proven",
             tol - mv
@@ -247,7 +247,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
         if r == Rational::from_integer(0.into()) {
             return Err(bad("--distance", "must be nonzero"));
         }
-        return super::stroke::run_input(&sa, &input, lncert::outline::trim::PenShape::Circle(r));
+        return super::stroke::run_input(&sa, &input, lncert::stroke::PenShape::Circle(r));
     }
     let (curve, approx, y_down) = match input {
         CurveInput::Curve {
@@ -274,7 +274,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     opts.smooth_kinks = output != Output::Native && !a.keep_kinks;
     if let Some(g) = &grid {
         if matches!(output, Output::Cubic | Output::Quadratic)
-            && lncert::approx::fit::rounding_move(g) >= tol
+            && lncert::offset::kernels::rounding_move(g) >= tol
         {
             return super::offset_grid::run(a, &curve, &opts, y_down);
         }
@@ -351,8 +351,8 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             "output": output.name(),
             "grid": grid.as_ref().map(|g| json!({
                 "grid": q(g),
-                "rounding_move": lncert::approx::fit::rounding_move(g),
-                "fit_tol": tol - lncert::approx::fit::rounding_move(g),
+                "rounding_move": lncert::offset::kernels::rounding_move(g),
+                "fit_tol": tol - lncert::offset::kernels::rounding_move(g),
             })),
             "distance": q(&res.distance),
             "tol": a.tol,

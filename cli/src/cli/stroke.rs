@@ -1,7 +1,7 @@
 //! `lncert stroke CURVE --pen circle:R|ellipse:A,B[,θ] --tol T [--method g2|ln-pair]
 //! [--cap round|butt] [--output native|cubic|quadratic] [--svg OUT]
 //! [--path-out OUT] [--out FILE.svg] [--json]`: the proven outline of the region a pen sweeps
-//! along the curve ([`lncert::outline::trim::stroke`]): closed contours of
+//! along the curve ([`lncert::stroke::stroke`]): closed contours of
 //! exact Bézier pieces and exact arcs, the crossings where the sides were cut,
 //! and claims (a) output ⊂ TOL-neighbourhood of the exact boundary, (b) exact
 //! boundary ⊂ TOL-neighbourhood of the output, (c) closed, simple, oriented
@@ -15,7 +15,7 @@
 //!   exactly rational one within a proven angle (printed as the pen's margin):
 //!   the outline and its claims are those of **that exact pen** (its matrix is
 //!   in the JSON). The sides are the convolution curves `x ∗ e_∓`
-//!   ([`lncert::approx::convolve`], each certified within TOL/8), the round
+//!   ([`lncert::offset::convolve`], each certified within TOL/8), the round
 //!   caps half ellipses made of proven cubics (error ≤ TOL/8, printed).
 //!   The curve must be G¹ (no join pieces for elliptical pens yet).
 //!
@@ -38,12 +38,12 @@ use super::args::{arc_json, bad, number, point_json, q};
 use super::curve_input::{read_curve_input, CurveInput};
 use super::{print_out, CliError};
 use lncert::curve::V2;
-use lncert::outline::circle::Arc;
-use lncert::outline::trim::{
-    stroke, Cap, Claim, Contour, Orientation, PenShape, Piece, Stroke, StrokeOptions,
-};
 use lncert::scalar::{interval_from_rational, Rational, Scalar};
 use lncert::shape::InputApprox;
+use lncert::stroke::Arc;
+use lncert::stroke::{
+    stroke, Cap, Claim, Contour, Orientation, PenShape, Piece, Stroke, StrokeOptions,
+};
 use serde_json::json;
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -288,8 +288,8 @@ pub(crate) fn options(a: &StrokeArgs, pen: PenShape) -> Result<StrokeOptions, Cl
         return Err(bad("--tol", "must be a positive number"));
     }
     let method = match a.method.as_str() {
-        "g2" => lncert::approx::OffsetMethod::G2,
-        "ln-pair" => lncert::approx::OffsetMethod::LnPair,
+        "g2" => lncert::offset::OffsetMethod::G2,
+        "ln-pair" => lncert::offset::OffsetMethod::LnPair,
         m => {
             return Err(bad(
                 "--method",
@@ -318,9 +318,9 @@ pub(crate) fn options(a: &StrokeArgs, pen: PenShape) -> Result<StrokeOptions, Cl
         .as_deref()
         .unwrap_or(if a.out.is_some() { "cubic" } else { "native" });
     opts.output = match output {
-        "native" => lncert::approx::Output::Native,
-        "cubic" => lncert::approx::Output::Cubic,
-        "quadratic" => lncert::approx::Output::Quadratic,
+        "native" => lncert::offset::Output::Native,
+        "cubic" => lncert::offset::Output::Cubic,
+        "quadratic" => lncert::offset::Output::Quadratic,
         o => {
             return Err(bad(
                 "--output",
@@ -345,7 +345,7 @@ fn run_curve(
 }
 
 /// A stroke engine error, naming the flag.
-pub(crate) fn stroke_err(e: lncert::outline::trim::StrokeError) -> CliError {
+pub(crate) fn stroke_err(e: lncert::stroke::StrokeError) -> CliError {
     bad(
         match e.field.as_str() {
             "radius" | "pen" => "--pen",

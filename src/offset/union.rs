@@ -249,7 +249,7 @@ impl Parts {
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::{convolve, union_certificate_all, conv::Pen, OffsetOptions};
+/// use lncert::offset::{convolve, union_certificate_all, OffsetOptions, Pen};
 /// use lncert::shape::parse_curve;
 /// let q = |s: &str| lncert::parse_rational(s).unwrap();
 /// let x = parse_curve("M 0 0 C 1 0.2 2 1 2.4 2.5").unwrap();

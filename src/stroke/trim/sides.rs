@@ -3,13 +3,13 @@
 //! input checks (steps 1 and 2 of the module docs).
 
 use super::types::{bad, Cap, CapReport, Piece, StrokeError, StrokeOptions};
-use crate::approx::conv::Pen;
-use crate::approx::prep::Junction;
-use crate::approx::{convolve, exact_bezier, offset, OffsetOptions, OffsetResult};
 use crate::curve::{Bezier, V2};
-use crate::outline::circle::{snap, Arc};
-use crate::outline::ellipse::{half_ellipse_cap, pen_point_enclosure};
+use crate::offset::conv::Pen;
+use crate::offset::prep::Junction;
+use crate::offset::{convolve, exact_bezier, offset, OffsetOptions, OffsetResult};
 use crate::scalar::{interval_from_rational, rational_from_f64, Interval, Rational, Scalar};
+use crate::stroke::circle::{snap, Arc};
+use crate::stroke::ellipse::{half_ellipse_cap, pen_point_enclosure};
 use num_traits::{Signed, Zero};
 
 /// What a raw piece is.
@@ -207,7 +207,7 @@ fn chain_side(
     if segs.is_empty() {
         return Err(bad("curve", "no offset segments"));
     }
-    let link = |s: &crate::approx::OffsetSegment| -> Option<Link> {
+    let link = |s: &crate::offset::OffsetSegment| -> Option<Link> {
         let proof = s.proof.as_ref()?;
         let map = proof.map.as_ref()?;
         if map.source_a || map.boxes.is_empty() || s.error.1.is_nan() || s.error.1 > res.tol {
@@ -454,7 +454,7 @@ fn on_or_snap(
     p: &V2<Rational>,
     dir: &V2<Rational>,
 ) -> Option<V2<Rational>> {
-    if crate::outline::circle::on_circle(c, r, p) && !p.sub(c).dot(dir).is_negative() {
+    if crate::stroke::circle::on_circle(c, r, p) && !p.sub(c).dot(dir).is_negative() {
         return Some(p.clone());
     }
     snap(c, r, approx_dir(dir))

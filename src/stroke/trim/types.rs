@@ -1,12 +1,12 @@
 //! The public options and results of a stroke ([`super::StrokeOptions`],
 //! [`super::Stroke`], its claims and contours) and the output [`super::Piece`].
 
-use crate::approx::conv::Pen;
-use crate::approx::OffsetMethod;
 use crate::curve::{Bezier, V2};
-use crate::outline::circle::Arc;
-use crate::outline::ellipse::Form;
+use crate::offset::conv::Pen;
+use crate::offset::OffsetMethod;
 use crate::scalar::{interval_from_rational, Interval, Rational, Scalar};
+use crate::stroke::circle::Arc;
+use crate::stroke::ellipse::Form;
 use num_traits::One;
 
 /// How an open curve's ends are closed.
@@ -31,8 +31,8 @@ pub struct StrokeOptions {
     /// Solver boxes per pair for the intersection searches (default 20 000).
     pub max_boxes_per_pair: usize,
     /// The offset segments' form (default native: degree `n + 3`; `Cubic` /
-    /// `Quadratic` for SVG-expressible output, see [`crate::approx::fit`]).
-    pub output: crate::approx::Output,
+    /// `Quadratic` for SVG-expressible output, see [`crate::offset::Output`]).
+    pub output: crate::offset::Output,
     /// The construction of the sides (default G², seeds 004 / 001; `LnPair`:
     /// seed 000's cubic LN pairs).
     pub method: OffsetMethod,
@@ -61,7 +61,7 @@ impl StrokeOptions {
             tol,
             cap: Cap::Round,
             max_boxes_per_pair: 20_000,
-            output: crate::approx::Output::Native,
+            output: crate::offset::Output::Native,
             method: OffsetMethod::G2,
             ellipse: None,
         }
@@ -71,8 +71,8 @@ impl StrokeOptions {
     ///
     /// # Examples
     /// ```
-    /// use lncert::approx::conv::{Angle, Pen};
-    /// use lncert::outline::trim::{PenShape, StrokeOptions};
+    /// use lncert::offset::{Angle, Pen};
+    /// use lncert::stroke::{PenShape, StrokeOptions};
     /// let q = |s: &str| lncert::parse_rational(s).unwrap();
     /// let pen = Pen::ellipse(&q("0.7"), &q("0.3"), &Angle::parse("pi/6").unwrap()).unwrap();
     /// let o = StrokeOptions::with_pen(PenShape::Ellipse(pen), 0.1);
@@ -120,15 +120,9 @@ pub struct CapReport {
     pub circle_error: f64,
 }
 
-/// Why a stroke could not be computed; names the field.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error("invalid `{field}`: {reason}")]
-pub struct StrokeError {
-    /// The offending input (`radius`, `tol`, `curve`, …).
-    pub field: String,
-    /// Why.
-    pub reason: String,
-}
+/// Why a stroke could not be computed: the offending input (`radius`, `tol`,
+/// `curve`, …) and why — lncert's one input error, [`crate::Error`].
+pub type StrokeError = crate::Error;
 
 pub(super) fn bad(field: &str, reason: impl Into<String>) -> StrokeError {
     StrokeError {
@@ -229,8 +223,8 @@ pub(super) fn bezier_area_iv(b: &Bezier<Rational>) -> Option<Interval> {
     let h = x.hodograph();
     let (xs, ys): (Vec<Interval>, Vec<Interval>) = x.points().iter().map(|p| (p.x, p.y)).unzip();
     let (hx, hy): (Vec<Interval>, Vec<Interval>) = h.points().iter().map(|p| (p.x, p.y)).unzip();
-    let a = crate::outline::onside::bprod(&xs, &hy);
-    let c = crate::outline::onside::bprod(&ys, &hx);
+    let a = crate::stroke::onside::bprod(&xs, &hy);
+    let c = crate::stroke::onside::bprod(&ys, &hx);
     let mut s = Interval::try_from((0.0, 0.0)).ok()?;
     for (u, v) in a.iter().zip(&c) {
         s += *u - *v;

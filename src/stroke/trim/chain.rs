@@ -3,9 +3,9 @@
 
 use super::types::{Contour, Orientation, Piece};
 use crate::curve::Bezier;
-use crate::outline::circle::{arcs_meet, bezier_arc};
-use crate::outline::intersect::{intersections, IntersectOptions};
 use crate::scalar::{Interval, Rational};
+use crate::stroke::circle::{arcs_meet, bezier_arc};
+use crate::stroke::intersect::{intersections, IntersectOptions};
 use num_traits::{One, Zero};
 
 /// Chains pieces into contours by exact shared end points.

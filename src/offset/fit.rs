@@ -57,7 +57,7 @@ impl Output {
     ///
     /// # Examples
     /// ```
-    /// use lncert::approx::Output;
+    /// use lncert::offset::Output;
     /// assert_eq!(Output::parse("cubic"), Some(Output::Cubic));
     /// assert_eq!(Output::parse("quintic"), None);
     /// ```
@@ -123,7 +123,7 @@ pub(super) fn hermite(e: &FitEnds, a: f64, b: f64) -> Bezier<f64> {
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::fit::{g2_hermite_cubics, FitEnds};
+/// use lncert::offset::kernels::{g2_hermite_cubics, FitEnds};
 /// use lncert::curve::V2;
 /// // a quarter of the unit circle: a = b = (√7 − 1)/3 ≈ 0.5486 (3a²/2 + a − 1 = 0)
 /// let e = FitEnds {
@@ -199,7 +199,7 @@ pub fn g2_hermite_cubics(e: &FitEnds) -> Vec<Bezier<f64>> {
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::fit::{least_squares_cubic, FitEnds};
+/// use lncert::offset::kernels::{least_squares_cubic, FitEnds};
 /// use lncert::curve::V2;
 /// let s: Vec<V2<f64>> = (1..16)
 ///     .map(|j| { let u = std::f64::consts::FRAC_PI_2 * j as f64 / 16.0; V2::new(u.cos(), u.sin()) })
@@ -302,7 +302,7 @@ pub(super) fn project(c: &Bezier<f64>, p: DVec2, mut u: f64) -> f64 {
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::fit::{tangent_quadratic, FitEnds};
+/// use lncert::offset::kernels::{tangent_quadratic, FitEnds};
 /// use lncert::curve::V2;
 /// let e = FitEnds {
 ///     p0: V2::new(1.0, 0.0), p1: V2::new(0.0, 1.0),
@@ -614,7 +614,7 @@ pub(super) fn cusps_to_cut(cusps: &[prep::OffsetCusp], tol: f64) -> Vec<(usize, 
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::fit::rounding_move;
+/// use lncert::offset::kernels::rounding_move;
 /// let m = rounding_move(&lncert::parse_rational("1/2048").unwrap());
 /// assert!(m >= 2f64.sqrt() / 4096.0 && m < 3.46e-4);
 /// ```
@@ -641,7 +641,7 @@ pub fn rounding_move(grid: &Rational) -> f64 {
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::fit::check_grid;
+/// use lncert::offset::kernels::check_grid;
 /// let q = |s: &str| lncert::parse_rational(s).unwrap();
 /// assert!(check_grid(&q("1/2048"), 1e-3, 10.0).is_ok());
 /// assert!(check_grid(&q("1/1000"), 1e-3, 10.0).is_err());
@@ -700,7 +700,7 @@ pub fn check_grid_storage(grid: &Rational, scale: f64) -> Result<(), OffsetError
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::fit::round_to_grid;
+/// use lncert::offset::kernels::round_to_grid;
 /// use lncert::curve::{Bezier, V2};
 /// let b = Bezier::new(vec![V2::new(0.3, -0.26), V2::new(1.0, 0.5)]);
 /// let r = round_to_grid(&b, &lncert::parse_rational("1/4").unwrap()).unwrap();

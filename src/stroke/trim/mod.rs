@@ -2,14 +2,14 @@
 //! `S = x ⊕ disk(r)` as closed contours of exact Bézier pieces and exact arcs —
 //! and for an elliptical pen `E` ([`StrokeOptions::with_pen`],
 //! [`PenShape::Ellipse`]): `S = x ⊕ E`, the sides the convolution curves
-//! `x ∗ e_∓` ([`crate::approx::convolve`], certified within `tol/8`), round caps
+//! `x ∗ e_∓` ([`crate::offset::convolve`], certified within `tol/8`), round caps
 //! half ellipses of proven cubics ([`super::ellipse::half_ellipse_cap`]), and
 //! the kept/removed tests below with the pen's exact quadratic form
 //! ([`super::ellipse::Form`]; see `proofs/trimming.md`, "Elliptical pens").
 //!
 //! # Construction
 //!
-//! 1. The offsets at `−r` and `+r` ([`crate::approx::offset`], each segment
+//! 1. The offsets at `−r` and `+r` ([`crate::offset::offset`], each segment
 //!    certified within `tol/8` of the exact offset of its span) are chained
 //!    into raw contours: the `−r` side forward, the `+r` side reversed, joined by
 //!    round caps (exact arcs of radius `r` about the end points) for an open

@@ -8,10 +8,10 @@ use super::sides::{check, raw_contours, Kind, Raw};
 use super::split::{find_crossings, split_piece, Sub};
 use super::types::{Cap, CapReport, Claim, Classified, Piece, Stroke, StrokeError, StrokeOptions};
 use crate::curve::{Bezier, V2};
-use crate::outline::ellipse::Form;
-use crate::outline::intersect::IntersectOptions;
-use crate::outline::onside::Input;
 use crate::scalar::{rational_from_f64, Rational, Scalar};
+use crate::stroke::ellipse::Form;
+use crate::stroke::intersect::IntersectOptions;
+use crate::stroke::onside::Input;
 use num_traits::Zero;
 use rayon::prelude::*;
 use std::time::Instant;
@@ -26,7 +26,7 @@ use std::time::Instant;
 ///
 /// # Examples
 /// ```
-/// use lncert::outline::trim::{stroke, StrokeOptions, Orientation};
+/// use lncert::stroke::{stroke, StrokeOptions, Orientation};
 /// use lncert::shape::parse_curve;
 /// use lncert::parse_rational;
 /// // a straight segment: the stadium, two segments and two half circles

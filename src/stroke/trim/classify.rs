@@ -4,9 +4,9 @@
 use super::sides::approx_dir;
 use super::types::Piece;
 use crate::curve::{bernstein_product, Bezier, V2};
-use crate::outline::circle::Arc;
-use crate::outline::ellipse::Form;
 use crate::scalar::{interval_from_rational, rational_from_f64, Interval, Rational, Scalar};
+use crate::stroke::circle::Arc;
+use crate::stroke::ellipse::Form;
 use num_traits::{Signed, Zero};
 
 // ---------------------------------------------------------------------------

@@ -4,9 +4,9 @@ use super::add_note;
 use super::sides::{approx_dir, dist_hi, set_end, Raw};
 use super::types::{Piece, RawCrossing};
 use crate::curve::{Bezier, V2};
-use crate::outline::circle::{arcs_meet, bezier_arc, snap, Arc};
-use crate::outline::intersect::{intersections, Crossing, IntersectOptions};
 use crate::scalar::{rational_from_f64, Rational, Scalar};
+use crate::stroke::circle::{arcs_meet, bezier_arc, snap, Arc};
+use crate::stroke::intersect::{intersections, Crossing, IntersectOptions};
 use num_traits::{One, Signed, Zero};
 use std::time::Instant;
 

@@ -228,7 +228,7 @@ fn exact_shape_of(
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::{gridfit::offset_on_grid, OffsetOptions, Output};
+/// use lncert::offset::{offset_on_grid, OffsetOptions, Output};
 /// use lncert::shape::parse_curve;
 /// let q = |s: &str| lncert::parse_rational(s).unwrap();
 /// // a closed curve in "font units"; a grid of 1 and a tolerance of 0.2 units

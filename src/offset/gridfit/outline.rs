@@ -1,10 +1,10 @@
 //! The exact outline of a contour as parts (offset spans and corner arcs),
 //! positions on it, and its float evaluation.
 
-use crate::approx::driver::Kernel;
-use crate::approx::fit::{self, dv, Reach};
-use crate::approx::{prep, OffsetResult};
 use crate::curve::{Bezier, V2};
+use crate::offset::driver::Kernel;
+use crate::offset::fit::{self, dv, Reach};
+use crate::offset::{prep, OffsetResult};
 use crate::scalar::{rational_from_f64, Rational, Scalar};
 use glam::DVec2;
 use num_traits::Signed;

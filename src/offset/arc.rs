@@ -35,7 +35,7 @@ pub enum ArcOffset {
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::arc::{offset_arc, ArcOffset, TravelledArc};
+/// use lncert::offset::{offset_arc, ArcOffset, TravelledArc};
 /// use lncert::shape::ArcDesc;
 /// use lncert::curve::V2;
 /// use lncert::scalar::{frac, Rational};

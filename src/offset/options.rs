@@ -87,7 +87,7 @@ pub struct OffsetOptions {
     pub subdivision: lnpair::Subdivision,
     /// What the segments are (default [`Output::Native`]: the construction's
     /// own). `Cubic` / `Quadratic` fit cubics / quadratics to the exact curve
-    /// of each span ([`fit`]) instead of running the construction of `method`;
+    /// of each span ([`super::kernels::least_squares_cubic`], [`super::kernels::tangent_quadratic`]) instead of running the construction of `method`;
     /// `method` still chooses the split rule (G2: halves, LN pair: the
     /// mid-angle) and, for convolutions, whether the sides are cut at their
     /// cusps first (G2). The paper's error measure belongs to native LN pairs
@@ -132,33 +132,13 @@ impl OffsetOptions {
     }
 }
 
-/// Why an offset could not be computed; names the field.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum OffsetError {
-    /// An input or setting is invalid.
-    #[error("invalid `{field}`: {reason}")]
-    Input {
-        /// Name of the offending input or setting (e.g. `tol`, `curve`).
-        field: String,
-        /// Why it was rejected.
-        reason: String,
-    },
-}
-
-impl From<crate::shape::ShapeError> for OffsetError {
-    fn from(e: crate::shape::ShapeError) -> Self {
-        OffsetError::Input {
-            field: e.field,
-            reason: e.reason,
-        }
-    }
-}
+/// Why an offset or a convolution was refused: the field (`distance`, `tol`,
+/// `curve[2]`, `pen.matrix`, …) and the reason — lncert's one input error,
+/// [`crate::Error`].
+pub type OffsetError = crate::Error;
 
 pub(super) fn bad(field: impl Into<String>, reason: impl Into<String>) -> OffsetError {
-    OffsetError::Input {
-        field: field.into(),
-        reason: reason.into(),
-    }
+    OffsetError::new(field, reason)
 }
 
 /// Smallest tolerance accepted, relative to `1 + coordinate scale`: below it

@@ -19,7 +19,7 @@ use rayon::prelude::*;
 /// degree `n + 3`) or seed 000 §5's cubic LN pairs ([`OffsetMethod::LnPair`]:
 /// [`lnpair::ln_pair_pen`], split at the mid-angle, rule (a); `opts.distance`
 /// is not used, and the paper's error measure is not evaluated), proving every segment
-/// against the exact convolution (see [`conv`]). The trajectory is split first
+/// against the exact convolution (see [`Pen`](super::Pen) and [`super::kernels::convolution_approximant_f64`]). The trajectory is split first
 /// at the side's own cusps (exact), then at inflections and turns.
 ///
 /// When the pen's rotation was represented approximately, the segments are
@@ -28,7 +28,7 @@ use rayon::prelude::*;
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::{convolve, conv::{Angle, Pen}, OffsetOptions};
+/// use lncert::offset::{convolve, Angle, OffsetOptions, Pen};
 /// use lncert::shape::parse_curve;
 /// let q = |s: &str| lncert::parse_rational(s).unwrap();
 /// let x = parse_curve("M 0 0 C 1 0.2 2 1 2.4 2.5").unwrap();
