@@ -252,7 +252,7 @@ fn with_arcs(shape: ShapeDesc, arcs: Vec<crate::shape::ArcDesc>) -> Result<Shape
     for a in arcs {
         members.push(ShapeDesc::arc(a)?);
     }
-    Ok(ShapeDesc::union(members)?)
+    ShapeDesc::union(members)
 }
 
 /// The exact rational curve of float control points.

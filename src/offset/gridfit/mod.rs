@@ -216,7 +216,7 @@ fn exact_shape_of(
     for a in arcs {
         members.push(ShapeDesc::arc(a.clone())?);
     }
-    Ok(ShapeDesc::union(members)?)
+    ShapeDesc::union(members)
 }
 
 /// The offset at `opts.distance` as cubics on `opts.grid`, proven within
