@@ -1,11 +1,11 @@
 //! Time per trimmed outline and per intersection (issue 13, closed outlines).
 //!
-//! * `stroke/…`: the whole proven stroke (`outline::trim::stroke`: offsets,
+//! * `stroke/…`: the whole proven stroke (`lncert::stroke::stroke`: offsets,
 //!   crossings, classification, claims (a)–(c)) of the closed lens of `lncert
 //!   reproduce` (r = 1/4, TOL 1e-2, cubic output) and of the test cubic
 //!   (r = 0.4, TOL 1e-3, cubic output);
 //! * `intersections/…`: the certified crossing search
-//!   (`outline::intersect::intersections`) on two cubics that cross three
+//!   (`lncert::stroke::intersections`) on two cubics that cross three
 //!   times, on a cubic with a loop (one self-crossing), and on kurbo's stroke
 //!   of the test cubic (r = 0.4, TOL 1e-2; its segments read exactly).
 //!
