@@ -56,8 +56,9 @@
 //! # Logging
 //!
 //! The phases and their timings are logged through the `log` crate (`debug`;
-//! each raw piece, sub-piece and failed test at `trace`): set a `log` logger
-//! (e.g. env_logger with RUST_LOG=lncert=debug) to see the phases.
+//! each raw piece, sub-piece and failed test at `trace`): install any `log`
+//! logger to see them; the `lncert` binary prints them to stderr with
+//! `RUST_LOG=debug` (or `trace`).
 
 mod chain;
 mod classify;
