@@ -11,8 +11,9 @@
 #![allow(missing_docs)]
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use lncert::approx::{g2, lnpair, offset, OffsetMethod, OffsetOptions};
 use lncert::curve::{Bezier, V2};
+use lncert::offset::kernels::{ln_pair, offset_approximant_f64};
+use lncert::offset::{offset, OffsetMethod, OffsetOptions};
 use lncert::scalar::{parse_rational, Scalar};
 use lncert::shape::parse_curve;
 use std::hint::black_box;
@@ -60,10 +61,10 @@ fn bench(c: &mut Criterion) {
     };
     let (n0, n1) = (n(0.0), n(1.0));
     g.bench_function("construct_g2_segment", |b| {
-        b.iter(|| g2::offset_approximant_f64(black_box(&x), 0.5))
+        b.iter(|| offset_approximant_f64(black_box(&x), 0.5))
     });
     g.bench_function("construct_ln_pair_segment", |b| {
-        b.iter(|| lnpair::ln_pair(black_box(&x), &n0, &n1, 0.5))
+        b.iter(|| ln_pair(black_box(&x), &n0, &n1, 0.5))
     });
     g.finish();
 }

@@ -10,11 +10,11 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use lncert::scalar::{frac, Rational};
-use lncert::tangency::complete::SolveOptions;
-use lncert::tangency::krawczyk::EnclosureForm;
-use lncert::tangency::radii::valid_radii;
-use lncert::tangency::solve::{solve_complete, solve_exact, TangencyProblem};
-use lncert::tangency::system::TangencySystem;
+use lncert::tangency::valid_radii;
+use lncert::tangency::EnclosureForm;
+use lncert::tangency::SolveOptions;
+use lncert::tangency::TangencySystem;
+use lncert::tangency::{solve_complete, solve_exact, TangencyProblem};
 use std::hint::black_box;
 
 fn q(p: i64, d: i64) -> Rational {

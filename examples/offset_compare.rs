@@ -14,7 +14,7 @@
 //! into their Bézier pieces), every listed offset distance `d` and every
 //! tolerance `TOL` in {1e-1, …, 1e-5}:
 //!
-//! * **lncert G2 / LN-pair** (`lncert::approx::offset`): control points (`degree ·
+//! * **lncert G2 / LN-pair** (`lncert::offset::offset`): control points (`degree ·
 //!   segments + 1` per connected run), segments, wall time of `offset()` (rayon,
 //!   2 cores on the reference machine), the proven per-segment bound
 //!   `certified_hi` (`seg-hi`), and one global certified Hausdorff search of the
@@ -62,9 +62,9 @@
 //! not a certified figure).
 
 use kurbo::{BezPath, CubicBez, ParamCurve, ParamCurveDeriv, PathSeg, Point};
-use lncert::approx::{exact_bezier, offset, OffsetMethod, OffsetOptions, OffsetResult};
 use lncert::certify::{hausdorff, Config, HausdorffBounds};
 use lncert::curve::{Bezier, V2};
+use lncert::offset::{exact_bezier, offset, OffsetMethod, OffsetOptions, OffsetResult};
 use lncert::scalar::{parse_rational, rational_from_f64, Rational, Scalar};
 use lncert::shape::ShapeDesc;
 use serde_json::Value;
@@ -692,7 +692,7 @@ fn main() {
                         tc.pieces
                             .iter()
                             .enumerate()
-                            .map(|(i, x)| lncert::approx::prep::offset_cusps(i, x, d).len())
+                            .map(|(i, x)| lncert::offset::kernels::offset_cusps(i, x, d).len())
                             .sum(),
                     );
                 }

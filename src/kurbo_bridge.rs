@@ -126,7 +126,7 @@ pub fn shape_from_path(path: &BezPath) -> Result<ShapeDesc, Error> {
             }
         }
     }
-    Ok(ShapeDesc::curve(pieces)?)
+    ShapeDesc::curve(pieces)
 }
 
 /// A point of lncert's as kurbo's: each coordinate the nearest `f64`.
@@ -197,7 +197,7 @@ pub fn path_from_beziers(pieces: &[Bezier<Rational>]) -> Result<BezPath, Error> 
     Ok(path)
 }
 
-/// Outline contours (such as a stroke's, [`crate::outline::trim::stroke`]) as
+/// Outline contours (such as a stroke's, [`crate::stroke::trim::stroke`]) as
 /// a kurbo path: per contour a `MoveTo`, one element per Bézier piece (as in
 /// [`path_from_beziers`]), each exact arc as kurbo's cubic approximation of
 /// the circular arc within `arc_tolerance` (`kurbo::Arc::append_iter`), its
@@ -212,8 +212,8 @@ pub fn path_from_beziers(pieces: &[Bezier<Rational>]) -> Result<BezPath, Error> 
 /// ```
 /// use kurbo::Shape;
 /// use lncert::kurbo_bridge::path_from_contours;
-/// use lncert::outline::trim::{Contour, Orientation, Piece};
-/// use lncert::outline::circle::Arc;
+/// use lncert::stroke::{Contour, Orientation, Piece};
+/// use lncert::stroke::Arc;
 /// use lncert::V2;
 /// let q = |x: i64| lncert::Rational::from_integer(x.into());
 /// // a unit circle as two exact half arcs, counter-clockwise
@@ -228,10 +228,10 @@ pub fn path_from_beziers(pieces: &[Bezier<Rational>]) -> Result<BezPath, Error> 
 /// assert!((path.area() - std::f64::consts::PI).abs() < 1e-5);
 /// ```
 pub fn path_from_contours(
-    contours: &[crate::outline::trim::Contour],
+    contours: &[crate::stroke::trim::Contour],
     arc_tolerance: f64,
 ) -> Result<BezPath, Error> {
-    use crate::outline::trim::Piece;
+    use crate::stroke::trim::Piece;
     if !(arc_tolerance.is_finite() && arc_tolerance > 0.0) {
         return Err(Error {
             field: "arc_tolerance".to_string(),
@@ -264,7 +264,7 @@ pub fn path_from_contours(
 /// the end points are equal): the side is decided exactly, also for tiny arcs.
 fn push_arc(
     path: &mut BezPath,
-    a: &crate::outline::circle::Arc,
+    a: &crate::stroke::circle::Arc,
     tol: f64,
     field: &str,
 ) -> Result<(), Error> {
@@ -303,33 +303,27 @@ fn push_arc(
 
 /// A cubic, exactly.
 pub fn shape_from_cubic(c: CubicBez) -> Result<ShapeDesc, Error> {
-    Ok(ShapeDesc::curve(vec![bezier(
-        &[c.p0, c.p1, c.p2, c.p3],
-        "cubic",
-    )?])?)
+    ShapeDesc::curve(vec![bezier(&[c.p0, c.p1, c.p2, c.p3], "cubic")?])
 }
 
 /// A quadratic, exactly.
 pub fn shape_from_quad(q: QuadBez) -> Result<ShapeDesc, Error> {
-    Ok(ShapeDesc::curve(vec![bezier(
-        &[q.p0, q.p1, q.p2],
-        "quad",
-    )?])?)
+    ShapeDesc::curve(vec![bezier(&[q.p0, q.p1, q.p2], "quad")?])
 }
 
 /// A line segment, exactly.
 pub fn shape_from_line(l: Line) -> Result<ShapeDesc, Error> {
-    Ok(ShapeDesc::curve(vec![bezier(&[l.p0, l.p1], "line")?])?)
+    ShapeDesc::curve(vec![bezier(&[l.p0, l.p1], "line")?])
 }
 
 /// The exact offset `c + d N` of a cubic (`N` the unit normal to the left of
 /// the direction of travel in a y-up frame — the side of kurbo's
 /// `offset_cubic` for `d > 0`). The cubic must be regular (`c′ ≠ 0`).
 pub fn exact_offset(c: CubicBez, d: f64) -> Result<ShapeDesc, Error> {
-    Ok(ShapeDesc::offset(
+    ShapeDesc::offset(
         vec![bezier(&[c.p0, c.p1, c.p2, c.p3], "cubic")?],
         exact(d, "distance")?,
-    )?)
+    )
 }
 
 /// Decides `d_H(a, b) ≤ tol` with certified bounds (the default budget).
@@ -427,12 +421,12 @@ pub fn shapes_from_circle(c: Circle) -> Result<Vec<ShapeDesc>, Error> {
     (0..4)
         .map(|i| {
             let (f, t) = (dirs[i], dirs[(i + 1) % 4]);
-            Ok(ShapeDesc::arc(ArcDesc {
+            ShapeDesc::arc(ArcDesc {
                 center: center.clone(),
                 radius: radius.clone(),
                 from: V2::new(int(f.0), int(f.1)),
                 to: V2::new(int(t.0), int(t.1)),
-            })?)
+            })
         })
         .collect()
 }

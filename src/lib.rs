@@ -8,14 +8,16 @@
 //! # The root API
 //!
 //! The entry points a downstream crate needs are re-exported here, with one
-//! error type, [`Error`] (the field and the reason):
+//! error type, [`Error`] (the field and the reason), into which every error of
+//! every engine converts:
 //!
 //! | task | entry points |
 //! |---|---|
 //! | read curves and shapes | [`parse_curve`], [`ShapeDesc::parse`], [`parse_rational`] |
 //! | certify a Hausdorff distance or a tolerance | [`hausdorff`], [`HausdorffConfig`], [`HausdorffBounds`], [`Certificate`] |
 //! | re-check a certificate | [`verify`] |
-//! | a proven offset | [`offset`], [`OffsetOptions`], [`OffsetResult`], [`union_certificate`] |
+//! | a proven offset | [`offset()`], [`OffsetOptions`], [`OffsetResult`], [`union_certificate`] |
+//! | a proven stroke outline | [`stroke()`], [`StrokeOptions`], [`Stroke`] |
 //! | results out: SVG path data, SVG documents (kurbo `BezPath`: `kurbo_bridge`) | [`write::path_data`], [`write::offset_path_data`], [`svg_document`], [`SvgShape`], [`SvgOptions`] |
 //! | circle tangency (seed 003 §4) | [`TangencySystem`], [`TangencyProblem`], [`solve_complete`] |
 //! | property tests of your own geometry code | `lncert::gen` (feature `proptest`: strategies; `arbitrary`: fuzz inputs) |
@@ -27,7 +29,7 @@
 //! | arithmetic | [`scalar`] (exact rationals, certified intervals, `f64`, filters) , [`poly`] (exact root isolation) |
 //! | curves and propositions | [`curve`] (Bézier, B-spline), [`ln`] (the seeds' propositions) |
 //! | the geometry model | [`shape`] (exact shapes, readers, limits) |
-//! | engines | [`certify`] (Hausdorff bounds, certificates, [`verify`]), [`approx`] (proven offsets), [`tangency`] (seed 003's circle tangency) |
+//! | engines | [`certify`] (Hausdorff bounds, certificates, [`verify`]), [`offset`](mod@offset) (proven offsets and convolutions), [`stroke`](mod@stroke) (proven stroke outlines), [`tangency`] (seed 003's circle tangency) |
 //! | writers and bridges | [`write`](mod@write) (path data, SVG documents), `kurbo_bridge` (feature `kurbo`: both ways), `gen` (features `proptest` / `arbitrary`) |
 //!
 //! Dependencies point down the table. The engines' internals (search,
@@ -69,7 +71,7 @@
 //! # }
 //! ```
 
-pub mod approx;
+pub mod offset;
 
 // The Rust examples of the README and of docs/library.md, compiled and run as
 // doctests by `cargo test` (never part of the built library).
@@ -88,134 +90,26 @@ mod json;
 #[cfg(feature = "kurbo")]
 pub mod kurbo_bridge;
 pub mod ln;
-pub mod outline;
 pub mod poly;
 pub mod scalar;
 pub mod shape;
+pub mod stroke;
 pub mod tangency;
 #[cfg(test)]
 mod test_rng;
 pub mod write;
 
-pub use approx::{offset, union_certificate, OffsetMethod, OffsetOptions, OffsetResult};
+mod error;
+pub use error::Error;
+
 pub use certify::verify::{verify, Valid};
 pub use certify::{
     hausdorff, sampled_estimate, Certificate, Config as HausdorffConfig, HausdorffBounds,
 };
 pub use curve::{Bezier, V2};
+pub use offset::{offset, union_certificate, OffsetMethod, OffsetOptions, OffsetResult};
 pub use scalar::{parse_rational, Interval, Rational};
 pub use shape::{parse_curve, ArcDesc, ShapeDesc, ShapeError, TravelledArc};
-pub use tangency::complete::SolveOptions;
-pub use tangency::solve::{solve_complete, TangencyProblem, TangencyReport};
-pub use tangency::system::TangencySystem;
+pub use stroke::{stroke, Stroke, StrokeOptions};
+pub use tangency::{solve_complete, SolveOptions, TangencyProblem, TangencyReport, TangencySystem};
 pub use write::{svg_document, SvgOptions, SvgShape};
-
-/// The one error of the root API: which field of the input, and why.
-///
-/// Every error of the engine converts into it (`?` works across the root API);
-/// the module-level error types keep their variants for callers who match on
-/// them.
-#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-#[error("invalid `{field}`: {reason}")]
-pub struct Error {
-    /// The field, e.g. `arc.radius`, `bezier[2][1]`, `tol`, `directions[0].boxes[3]`.
-    pub field: String,
-    /// What is wrong with it.
-    pub reason: String,
-}
-
-impl Error {
-    fn new(field: impl Into<String>, reason: impl Into<String>) -> Self {
-        Error {
-            field: field.into(),
-            reason: reason.into(),
-        }
-    }
-}
-
-impl From<shape::ShapeError> for Error {
-    fn from(e: shape::ShapeError) -> Self {
-        Error::new(e.field, e.reason)
-    }
-}
-
-impl From<certify::CertifyError> for Error {
-    fn from(e: certify::CertifyError) -> Self {
-        match e {
-            certify::CertifyError::Input { field, reason } => Error::new(field, reason),
-        }
-    }
-}
-
-impl From<approx::OffsetError> for Error {
-    fn from(e: approx::OffsetError) -> Self {
-        match e {
-            approx::OffsetError::Input { field, reason } => Error::new(field, reason),
-        }
-    }
-}
-
-impl From<ln::LnError> for Error {
-    fn from(e: ln::LnError) -> Self {
-        let field = match &e {
-            ln::LnError::Collinear { field }
-            | ln::LnError::InvalidParameter { field, .. }
-            | ln::LnError::NotCompatible { field, .. }
-            | ln::LnError::Undecided { field } => *field,
-        };
-        let text = e.to_string();
-        let reason = text
-            .strip_prefix(&format!("{field}: "))
-            .unwrap_or(&text)
-            .to_string();
-        Error::new(field, reason)
-    }
-}
-
-impl From<tangency::system::TangencyError> for Error {
-    fn from(e: tangency::system::TangencyError) -> Self {
-        match e {
-            tangency::system::TangencyError::InvalidParameter { field, reason } => {
-                Error::new(field, reason)
-            }
-        }
-    }
-}
-
-impl From<shape::io::CurveParseError> for Error {
-    fn from(e: shape::io::CurveParseError) -> Self {
-        use shape::io::CurveParseError as C;
-        match e {
-            C::Json { message } => Error::new("(document)", format!("malformed JSON: {message}")),
-            C::Field { field, reason } => Error::new(field, reason),
-            C::Svg { position, reason } => {
-                Error::new(format!("SVG path data, byte {position}"), reason)
-            }
-            C::Empty { what } => Error::new(what, "no curve segments"),
-            C::TooLarge { what, limit } => {
-                Error::new(what, format!("too large: exceeds the limit of {limit}"))
-            }
-        }
-    }
-}
-
-impl From<scalar::ParseNumberError> for Error {
-    fn from(e: scalar::ParseNumberError) -> Self {
-        Error::new(format!("{:?}", e.input), e.reason)
-    }
-}
-
-impl From<certify::verify::Invalid> for Error {
-    fn from(e: certify::verify::Invalid) -> Self {
-        Error::new(e.at, e.reason)
-    }
-}
-
-impl From<json::JsonError> for Error {
-    fn from(e: json::JsonError) -> Self {
-        Error::new(
-            e.path,
-            format!("{} (line {}, column {})", e.reason, e.line, e.column),
-        )
-    }
-}

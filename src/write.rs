@@ -35,13 +35,13 @@
 //! assert!(doc.starts_with("<svg"));
 //! ```
 
-use crate::approx::gridfit::GridOffset;
-use crate::approx::prep::Junction;
-use crate::approx::OffsetResult;
 use crate::curve::{Bezier, V2};
-use crate::outline::circle::Arc;
-use crate::outline::trim::{Contour, Piece};
+use crate::offset::gridfit::GridOffset;
+use crate::offset::prep::Junction;
+use crate::offset::OffsetResult;
 use crate::scalar::{rational_from_f64, Rational, Scalar};
+use crate::stroke::circle::Arc;
+use crate::stroke::trim::{Contour, Piece};
 use crate::Error;
 use num_traits::Signed;
 
@@ -204,7 +204,7 @@ fn arc_commands(a: &Arc) -> Vec<(bool, bool, V2<Rational>)> {
     vec![(large, !a.clockwise, a.to.clone())]
 }
 
-/// SVG path data of outline contours (such as [`crate::outline::trim::Stroke`]'s
+/// SVG path data of outline contours (such as [`crate::stroke::trim::Stroke`]'s
 /// `contours`): one subpath per contour, one line each, `M` at the first
 /// piece's start, `L`/`Q`/`C` for Béziers of degree 1 to 3, `A` for arcs, and
 /// `Z` after a closed contour. Numbers: [`Numbers::Shortest`] of the nearest
@@ -213,7 +213,7 @@ fn arc_commands(a: &Arc) -> Vec<(bool, bool, V2<Rational>)> {
 ///
 /// # Examples
 /// ```
-/// use lncert::outline::trim::{Contour, Orientation, Piece};
+/// use lncert::stroke::{Contour, Orientation, Piece};
 /// use lncert::write::path_data;
 /// use lncert::{Bezier, V2};
 /// let q = |x: i64| lncert::Rational::from_integer(x.into());
@@ -286,7 +286,7 @@ pub fn beziers_path_data(pieces: &[Bezier<Rational>]) -> Result<String, Error> {
     Ok(w.d)
 }
 
-/// SVG path data of an offset approximant ([`crate::offset`]'s segments):
+/// SVG path data of an offset approximant ([`crate::offset::offset`]'s segments):
 /// `M` at the start of each run of segments that meet exactly, then
 /// `L`/`Q`/`C` by degree, and each join arc of a G⁰ corner (not absorbed) as
 /// an `A` command from the end of the piece before the corner to the start of
@@ -365,14 +365,14 @@ pub fn offset_path_data(res: &OffsetResult) -> Result<String, Error> {
     Ok(w.d)
 }
 
-/// SVG path data of a grid-rounded offset ([`crate::approx::gridfit`]): one
+/// SVG path data of a grid-rounded offset ([`crate::offset::offset_on_grid`]): one
 /// subpath per contour (`Z` when closed), the cubics (`C`) or quadratics
 /// (`Q`) with [`Numbers::Exact`] (the control points are on the grid, and
 /// read back exactly).
 ///
 /// # Examples
 /// ```no_run
-/// # fn show(r: &lncert::approx::gridfit::GridOffset) {
+/// # fn show(r: &lncert::offset::GridOffset) {
 /// println!("{}", lncert::write::grid_path_data(r).unwrap());
 /// # }
 /// ```
@@ -401,7 +401,7 @@ pub fn grid_path_data(r: &GridOffset) -> Result<String, Error> {
 ///
 /// # Examples
 /// ```
-/// # use lncert::outline::trim::{Contour, Orientation, Piece};
+/// # use lncert::stroke::{Contour, Orientation, Piece};
 /// # use lncert::{Bezier, V2};
 /// let q = |x: i64| lncert::Rational::from_integer(x.into());
 /// let c = Contour {
@@ -515,7 +515,7 @@ impl SvgShape {
     ///
     /// # Examples
     /// ```no_run
-    /// # fn show(r: &lncert::approx::gridfit::GridOffset) {
+    /// # fn show(r: &lncert::offset::GridOffset) {
     /// let doc = lncert::svg_document(
     ///     &[lncert::SvgShape::grid_offset(r).unwrap()],
     ///     &lncert::SvgOptions { y_up: true, ..Default::default() },

@@ -5,8 +5,8 @@
 //! example whose data are rational, against the direct curvature formula of
 //! the ellipse and the paper's (2.1) — and the erratum in (3.5).
 
-use lncert::approx::g2::{elevate_by, moments, normal_approximant, solve_alpha, G2Ends};
 use lncert::curve::{Bezier, V2};
+use lncert::offset::kernels::{elevate_by, moments, normal_approximant, solve_alpha, G2Ends};
 use lncert::poly::MPoly;
 use lncert::scalar::{frac, Rational};
 
@@ -162,9 +162,9 @@ fn props_3_1_and_3_2_hold_exactly() {
 /// against yet, so (4.1) stays undecided there.
 #[test]
 fn equation_4_1_agrees_on_the_test_cubic_segments() {
-    use lncert::approx::conv::Pen;
-    use lncert::approx::{convolve, exact_bezier, OffsetOptions};
     use lncert::certify::{hausdorff, Config};
+    use lncert::offset::Pen;
+    use lncert::offset::{convolve, exact_bezier, OffsetOptions};
     use lncert::scalar::rational_from_f64;
     use lncert::shape::{ArcDesc, ShapeDesc};
     let x = lncert::shape::parse_curve(
@@ -237,9 +237,9 @@ fn equation_4_1_agrees_on_the_test_cubic_segments() {
 /// on some segment the two enclosures are disjoint (a proven counterexample).
 #[test]
 fn equation_4_1_fails_with_an_ellipse() {
-    use lncert::approx::conv::{Angle, Pen};
-    use lncert::approx::{convolve, exact_bezier, OffsetOptions};
     use lncert::certify::{hausdorff, hausdorff_ellipse_arc, Config, EllipseArc};
+    use lncert::offset::{convolve, exact_bezier, OffsetOptions};
+    use lncert::offset::{Angle, Pen};
     use lncert::scalar::rational_from_f64;
     use lncert::shape::ShapeDesc;
     let x = lncert::shape::parse_curve(

@@ -1,4 +1,4 @@
-//! Certified intersections of Bézier pieces (`lncert::outline::intersect`)
+//! Certified intersections of Bézier pieces (`lncert::stroke::intersect`)
 //! against an independent oracle: the crossings of dense polylines of the
 //! pieces. When the result is complete, every polyline crossing must lie next
 //! to a listed crossing or a shared end point (nothing missed), and every
@@ -8,8 +8,8 @@
 mod common;
 
 use lncert::curve::{Bezier, V2};
-use lncert::outline::intersect::{intersections, IntersectOptions, Intersections};
 use lncert::scalar::{interval_from_rational, Rational, Scalar};
+use lncert::stroke::{intersections, IntersectOptions, Intersections};
 use proptest::prelude::*;
 
 const N: usize = 2048;

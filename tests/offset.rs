@@ -1,4 +1,4 @@
-//! Offsets with a proven tolerance (`lncert::approx`): the constructions' own
+//! Offsets with a proven tolerance (`lncert::offset`): the constructions' own
 //! properties (seed 004 Prop 3.3: C¹ and G² at the joints; seed 000 Prop 4.2:
 //! parallel hodographs), soundness of the certified error against exact
 //! distances computed independently, exact cusps, corners and arcs, and bad input.
@@ -6,10 +6,11 @@
 mod common;
 
 use common::{exact_dist2, q};
-use lncert::approx::arc::{offset_arc, ArcOffset, TravelledArc};
-use lncert::approx::prep::Junction;
-use lncert::approx::{corners, lnpair, offset, OffsetMethod, OffsetOptions, OffsetResult};
 use lncert::curve::{Bezier, V2};
+use lncert::offset::kernels::ln_pair;
+use lncert::offset::kernels::Junction;
+use lncert::offset::{corners, offset, OffsetMethod, OffsetOptions, OffsetResult};
+use lncert::offset::{offset_arc, ArcOffset, TravelledArc};
 use lncert::scalar::{interval_from_rational, parse_rational, Interval, Rational, Scalar};
 use lncert::shape::parse_curve;
 use lncert::shape::ArcDesc;
@@ -131,7 +132,7 @@ fn ln_pair_hodographs_are_parallel() {
             let l = v.norm2().sqrt();
             V2::new(-v.y / l, v.x / l)
         };
-        let p = lnpair::ln_pair(&sub, &n(0.0), &n(1.0), 0.4).unwrap();
+        let p = ln_pair(&sub, &n(0.0), &n(1.0), 0.4).unwrap();
         for k in 0..=8 {
             let t = k as f64 / 8.0;
             let (u, v) = (p.pa.hodograph().eval(&t), p.ca.hodograph().eval(&t));
@@ -194,7 +195,7 @@ fn offset_point(x: &Bezier<Rational>, d: &Rational, t: &Rational) -> (V2<Rationa
 fn exact_segments(r: &OffsetResult) -> Vec<Bezier<Rational>> {
     r.segments
         .iter()
-        .map(|s| lncert::approx::exact_bezier(&s.bezier).unwrap())
+        .map(|s| lncert::offset::exact_bezier(&s.bezier).unwrap())
         .collect()
 }
 
@@ -356,7 +357,7 @@ fn corners_get_a_join_arc_or_an_overlap() {
     let r = offset(&square, &OffsetOptions::new(q(-1, 4), 1e-6)).unwrap();
     assert!(r.reached() && r.corners.len() == 4);
     assert_eq!(
-        lncert::approx::join_arcs(&r).len(),
+        lncert::offset::join_arcs(&r).len(),
         4,
         "outside of a ccw square: all joins"
     );
@@ -430,7 +431,7 @@ fn budget_exhausted_on_an_exact_segment_stops_splitting() {
     let fast = offset(&c, &o).unwrap();
     assert!(fast.reached() && fast.segments.len() == 1);
     let path = fast.segments[0].proof.as_ref().map(|p| p.path);
-    assert_eq!(path, Some(lncert::approx::ProofPath::Parametric));
+    assert_eq!(path, Some(lncert::offset::ProofPath::Parametric));
     // the search alone runs out of its 16 boxes
     o.search_only = true;
     let r = offset(&c, &o).unwrap();
@@ -446,7 +447,7 @@ fn bad_input_is_a_typed_error_naming_the_field() {
         curve,
         &OffsetOptions::new(d, tol),
     ) {
-        Err(lncert::approx::OffsetError::Input { field, reason }) => {
+        Err(lncert::offset::OffsetError { field, reason }) => {
             assert!(!reason.is_empty());
             field
         }
@@ -478,8 +479,8 @@ fn bad_input_is_a_typed_error_naming_the_field() {
 /// that span at a TOL between the two. lncert accepts on the certified offset error.
 #[test]
 fn ln_pair_paper_error_does_not_bound_the_offset_error() {
-    use lncert::approx::prep::unit_left_normal;
     use lncert::certify::{hausdorff, Config};
+    use lncert::offset::kernels::unit_left_normal;
     use lncert::shape::ShapeDesc;
     let c = parse_curve(TEST_CUBIC).unwrap();
     let d = parse_rational("0.5").unwrap();
@@ -500,12 +501,12 @@ fn ln_pair_paper_error_does_not_bound_the_offset_error() {
             lncert::scalar::rational_from_f64(s.t.1).unwrap(),
         );
         let exact = c[0].restrict(&t0, &t1);
-        let sub = lncert::approx::span_f64(&c[0], s.t).unwrap();
+        let sub = lncert::offset::span_f64(&c[0], s.t).unwrap();
         let (n0, n1) = (
             unit_left_normal(&c[0], s.t.0).unwrap(),
             unit_left_normal(&c[0], s.t.1).unwrap(),
         );
-        let pair = lnpair::ln_pair(&sub, &n0, &n1, 0.5).unwrap();
+        let pair = ln_pair(&sub, &n0, &n1, 0.5).unwrap();
         assert_eq!(
             pair.offset, s.bezier,
             "the same construction as the driver's"
@@ -526,8 +527,8 @@ fn ln_pair_paper_error_does_not_bound_the_offset_error() {
             to,
         })
         .unwrap();
-        let ca = ShapeDesc::curve(vec![lncert::approx::exact_bezier(&pair.ca).unwrap()]).unwrap();
-        let pa = ShapeDesc::curve(vec![lncert::approx::exact_bezier(&pair.pa).unwrap()]).unwrap();
+        let ca = ShapeDesc::curve(vec![lncert::offset::exact_bezier(&pair.ca).unwrap()]).unwrap();
+        let pa = ShapeDesc::curve(vec![lncert::offset::exact_bezier(&pair.pa).unwrap()]).unwrap();
         let dp = hausdorff(&ShapeDesc::curve(vec![exact]).unwrap(), &pa, &cfg).unwrap();
         let dc = hausdorff(&arc, &ca, &cfg).unwrap();
         let eq8_hi = (Interval::try_from((dp.hi, dp.hi)).unwrap()
@@ -538,7 +539,7 @@ fn ln_pair_paper_error_does_not_bound_the_offset_error() {
         if eq8_hi < s.error.1 {
             let off = ShapeDesc::offset(vec![c[0].restrict(&t0, &t1)], d.clone()).unwrap();
             let seg =
-                ShapeDesc::curve(vec![lncert::approx::exact_bezier(&s.bezier).unwrap()]).unwrap();
+                ShapeDesc::curve(vec![lncert::offset::exact_bezier(&s.bezier).unwrap()]).unwrap();
             let lo = hausdorff(&off, &seg, &cfg).unwrap().lo;
             if eq8_hi < lo {
                 counterexamples += 1;

@@ -1,6 +1,6 @@
 //! Seed 004 §3.1 — circular precision of the G²/C¹ offset approximant, machine-checked.
 //!
-//! The engine's kernel (`lncert::approx::g2::{system, solve_alpha}`, eq. (3.2)–(3.4)) runs
+//! The engine's kernel (`lncert::offset::kernels::{system, solve_alpha}`, eq. (3.2)–(3.4)) runs
 //! on the *symbolic* moments `mᵢ = ∫₀¹ x′ B³ᵢ` of a circular arc, computed here
 //! independently of the engine, and the result is compared with `α ≡ 1/γ` as identities of
 //! rational functions over Q (see `proofs/004-circular-precision.md`).
@@ -18,8 +18,8 @@
 
 mod common;
 use common::symbolic::{assert_id, div, k, v};
-use lncert::approx::g2::{rot_cw, solve_alpha, system, G2Ends};
 use lncert::curve::V2;
+use lncert::offset::kernels::{rot_cw, solve_alpha, system, G2Ends};
 use lncert::poly::{identity_holds, RatFunc};
 use lncert::scalar::{frac, rational_from_f64, Rational, Scalar, Sign};
 

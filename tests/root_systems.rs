@@ -6,9 +6,9 @@
 //! nothing spurious, no undecided box.
 
 use lncert::scalar::{parse_rational, Interval, IntervalExt, Rational};
-use lncert::tangency::complete::{solve, RationalBox, Solution, SolveOptions};
-use lncert::tangency::krawczyk::System2;
-use lncert::tangency::poly2::parse_poly2;
+use lncert::tangency::parse_poly2;
+use lncert::tangency::System2;
+use lncert::tangency::{solve, RationalBox, Solution, SolveOptions};
 use serde_json::Value;
 
 fn data() -> Value {
@@ -187,7 +187,7 @@ fn tiny_budget_is_reported_not_looped() {
     assert!(sol
         .undecided
         .iter()
-        .any(|u| u.reason == lncert::tangency::complete::UndecidedReason::Budget));
+        .any(|u| u.reason == lncert::tangency::UndecidedReason::Budget));
 }
 
 /// A tangential (double) zero cannot be proven by Krawczyk (singular
@@ -213,7 +213,7 @@ fn tangential_double_root_is_flagged_not_certified() {
         assert!(
             matches!(
                 u.reason,
-                lncert::tangency::complete::UndecidedReason::MinWidth {
+                lncert::tangency::UndecidedReason::MinWidth {
                     near_double_root: true
                 }
             ),

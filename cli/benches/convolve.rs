@@ -12,9 +12,9 @@
 #![allow(missing_docs)]
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use lncert::approx::conv::conv_cusps;
-use lncert::approx::lnpair::Subdivision;
-use lncert::approx::{convolve, OffsetMethod, OffsetOptions};
+use lncert::offset::kernels::conv_cusps;
+use lncert::offset::kernels::Subdivision;
+use lncert::offset::{convolve, OffsetMethod, OffsetOptions};
 use lncert::scalar::Rational;
 use lncert_cli::reproduce::seed001::{nonic, pen};
 use std::hint::black_box;

@@ -1,11 +1,11 @@
 //! Time per trimmed outline and per intersection (issue 13, closed outlines).
 //!
-//! * `stroke/…`: the whole proven stroke (`outline::trim::stroke`: offsets,
+//! * `stroke/…`: the whole proven stroke (`lncert::stroke::stroke`: offsets,
 //!   crossings, classification, claims (a)–(c)) of the closed lens of `lncert
 //!   reproduce` (r = 1/4, TOL 1e-2, cubic output) and of the test cubic
 //!   (r = 0.4, TOL 1e-3, cubic output);
 //! * `intersections/…`: the certified crossing search
-//!   (`outline::intersect::intersections`) on two cubics that cross three
+//!   (`lncert::stroke::intersections`) on two cubics that cross three
 //!   times, on a cubic with a loop (one self-crossing), and on kurbo's stroke
 //!   of the test cubic (r = 0.4, TOL 1e-2; its segments read exactly).
 //!
@@ -18,13 +18,13 @@
 #![allow(missing_docs)]
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use lncert::approx::Output;
 use lncert::curve::Bezier;
 use lncert::kurbo_bridge::shape_from_path;
-use lncert::outline::intersect::{intersections, IntersectOptions};
-use lncert::outline::trim::{stroke, StrokeOptions};
+use lncert::offset::Output;
 use lncert::scalar::{parse_rational, Rational, Scalar};
 use lncert::shape::{parse_curve, ShapeDesc};
+use lncert::stroke::{intersections, IntersectOptions};
+use lncert::stroke::{stroke, StrokeOptions};
 use lncert_cli::reproduce::strokes::{lens, lens_radius};
 use std::hint::black_box;
 use std::time::Instant;

@@ -39,10 +39,10 @@
 //!   available" is printed and the columns are left out.
 
 use kurbo::{BezPath, Cap, Join, PathEl, Point};
-use lncert::approx::Output;
 use lncert::curve::Bezier;
-use lncert::outline::trim::{stroke, Stroke, StrokeOptions};
+use lncert::offset::Output;
 use lncert::scalar::{Rational, Scalar};
+use lncert::stroke::{stroke, Stroke, StrokeOptions};
 use serde_json::{json, Value};
 use std::io::Write;
 use std::process::{Command, Stdio};

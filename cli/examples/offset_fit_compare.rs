@@ -32,10 +32,10 @@
 //!   (`lo > TOL`), `?` undecided.
 
 use kurbo::{BezPath, CubicBez, ParamCurve, PathSeg, Point};
-use lncert::approx::{offset, OffsetOptions, Output};
 use lncert::certify::{hausdorff, Config};
 use lncert::curve::Bezier;
 use lncert::kurbo_bridge::shape_from_path;
+use lncert::offset::{offset, OffsetOptions, Output};
 use lncert::scalar::{Rational, Scalar};
 use lncert::shape::ShapeDesc;
 use rayon::prelude::*;

@@ -28,7 +28,7 @@
 //!   control points (1 per line, 2 per quad, 3 per cubic, 1 per subpath), its
 //!   time (µs).
 //! * **kurbo loops**: the certified self-crossings of kurbo's output
-//!   (`lncert::outline::intersect::intersections` on its segments read exactly,
+//!   (`lncert::stroke::intersections` on its segments read exactly,
 //!   all pairs and self-intersections, zero-length segments dropped): proven
 //!   crossings `+` segment pairs with an undecided part, with the solver's
 //!   reasons (`joint`: consecutive segments leaving a shared point in one
@@ -50,14 +50,14 @@
 //!   ∂S → kurbo (kurbo covers the boundary within its tolerance).
 
 use kurbo::{BezPath, PathEl, Point};
-use lncert::approx::Output;
 use lncert::certify::{hausdorff, Config};
 use lncert::curve::Bezier;
 use lncert::kurbo_bridge::shape_from_path;
-use lncert::outline::intersect::{intersections, IntersectOptions};
-use lncert::outline::trim::{stroke, Stroke, StrokeOptions};
+use lncert::offset::Output;
 use lncert::scalar::{Rational, Scalar};
 use lncert::shape::ShapeDesc;
+use lncert::stroke::{intersections, IntersectOptions};
+use lncert::stroke::{stroke, Stroke, StrokeOptions};
 use lncert_cli::reproduce::strokes::{
     control_points, lens, lens_radius, outline_shape, test_cases,
 };

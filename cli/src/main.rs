@@ -3,10 +3,12 @@
 //! (0 = certified/OK, 1 = refuted/erratum/undecided, 2 = bad input).
 
 mod cli;
+mod logger;
 
 use clap::Parser;
 
 fn main() {
+    logger::init();
     let args = match cli::Cli::try_parse() {
         Ok(args) => args,
         Err(e) => std::process::exit(cli::usage_error(&e)),

@@ -6,9 +6,12 @@
 mod common;
 use common::{lncert, tmp};
 
-use lncert::approx::conv::{conv_cusps, pen_point, Angle, Pen};
-use lncert::approx::{convolve, offset, OffsetOptions, OffsetResult};
 use lncert::curve::{Bezier, V2};
+use lncert::offset::{convolve, offset, OffsetOptions, OffsetResult};
+use lncert::offset::{
+    kernels::{conv_cusps, pen_point},
+    Angle, Pen,
+};
 use lncert::scalar::{parse_rational, Rational, Scalar};
 use proptest::prelude::*;
 use serde_json::Value;
@@ -58,8 +61,8 @@ fn circle_pen_is_the_offset() {
         let conv = convolve(&x, &pen, side, &opts).unwrap();
         assert!(off.reached() && conv.reached());
         for s in &conv.segments {
-            let sub = lncert::approx::span_f64(&x[s.piece], s.t).unwrap();
-            let (o, _) = lncert::approx::g2::offset_approximant_f64(&sub, d.approx()).unwrap();
+            let sub = lncert::offset::span_f64(&x[s.piece], s.t).unwrap();
+            let (o, _) = lncert::offset::kernels::offset_approximant_f64(&sub, d.approx()).unwrap();
             assert_eq!(o.degree(), s.bezier.degree());
             for (p, r) in o.points().iter().zip(s.bezier.points()) {
                 assert!(
@@ -156,7 +159,7 @@ proptest! {
         let mut opts = OffsetOptions::new(q("0"), 1e-3);
         opts.max_segments = 400;
         if ln_pair {
-            opts.method = lncert::approx::OffsetMethod::LnPair;
+            opts.method = lncert::offset::OffsetMethod::LnPair;
         }
         match convolve(&x, &pen, side, &opts) {
             // a singular cubic has no normal: a typed error, not a result
@@ -291,8 +294,8 @@ fn cli_both_sides_with_certificates_that_verify() {
 /// from 8 192 samples.
 #[test]
 fn subdivision_rules_and_the_k_piece_split() {
-    use lncert::approx::lnpair::{k_piece_split, Subdivision};
-    use lncert::approx::OffsetMethod;
+    use lncert::offset::kernels::{k_piece_split, Subdivision};
+    use lncert::offset::OffsetMethod;
     let x = nonic();
     let pen = Pen::ellipse(&q("0.7"), &q("0.3"), &Angle::Degrees(q("30"))).unwrap();
     let mut counts = Vec::new();
@@ -320,7 +323,7 @@ fn subdivision_rules_and_the_k_piece_split() {
     );
     // the k-piece split of the span after the inflection
     let xf = x[0].map(|v| v.approx());
-    let infl = lncert::approx::prep::inflections(&x[0]);
+    let infl = lncert::offset::kernels::inflections(&x[0]);
     assert_eq!(infl.len(), 1);
     let (a, b) = (infl[0], 1.0);
     let sub = xf.restrict(&a, &b);
@@ -444,7 +447,7 @@ fn paper_measure_does_not_bound_the_convolution_error() {
     let pen =
         Pen::ellipse_within(&q("0.7"), &q("0.3"), &Angle::parse("pi/6").unwrap(), 1e-6).unwrap();
     let mut opts = OffsetOptions::new(q("0"), 0.1);
-    opts.method = lncert::approx::OffsetMethod::LnPair;
+    opts.method = lncert::offset::OffsetMethod::LnPair;
     opts.accept_paper = true;
     let r = convolve(&x, &pen, 1, &opts).unwrap();
     let c = r.convolution.as_ref().unwrap();
@@ -561,7 +564,7 @@ fn ellipse_arc_distances_are_sound() {
 /// pieces (two on side −, four on side +).
 #[test]
 fn font_h_approximant_cusps_turn_back() {
-    use lncert::approx::OffsetMethod;
+    use lncert::offset::OffsetMethod;
     use lncert_cli::reproduce::seed001::{both_sides_with, ln_pair_cusps};
     let (m, p) = both_sides_with(0.1, OffsetMethod::LnPair, true).unwrap();
     let (cm, cp) = (ln_pair_cusps(&m, -1), ln_pair_cusps(&p, 1));
@@ -585,8 +588,8 @@ fn paper_acceptance_splits_by_the_measure_alone() {
     let pen =
         Pen::ellipse_within(&q("0.7"), &q("0.3"), &Angle::parse("pi/6").unwrap(), 1e-6).unwrap();
     let mut opts = OffsetOptions::new(q("0"), 1.0);
-    opts.method = lncert::approx::OffsetMethod::LnPair;
-    opts.subdivision = lncert::approx::lnpair::Subdivision::Weighted;
+    opts.method = lncert::offset::OffsetMethod::LnPair;
+    opts.subdivision = lncert::offset::kernels::Subdivision::Weighted;
     opts.accept_paper = true;
     let r = convolve(&x, &pen, -1, &opts).unwrap();
     assert!(r.reached());

@@ -7,12 +7,12 @@
 mod common;
 use common::{lncert, max_spacing, sampled_one_sided, tmp};
 
-use lncert::approx::conv::{pen_point, Angle, Pen};
-use lncert::approx::{
-    convolve, offset, union_certificate, OffsetError, OffsetOptions, OffsetResult, Output,
-};
 use lncert::certify::verify::verify;
 use lncert::curve::{Bezier, V2};
+use lncert::offset::{
+    convolve, offset, union_certificate, OffsetError, OffsetOptions, OffsetResult, Output,
+};
+use lncert::offset::{kernels::pen_point, Angle, Pen};
 use lncert::scalar::{parse_rational, rational_from_f64, Rational, Scalar};
 use lncert_cli::reproduce::offsets::test_curves;
 
@@ -219,7 +219,7 @@ fn grid_errors_name_the_field() {
         let mut o = OffsetOptions::new(ds[0].clone(), tol);
         o.grid = Some(q(g));
         match offset(&x, &o) {
-            Err(OffsetError::Input { field, .. }) => field,
+            Err(OffsetError { field, .. }) => field,
             Ok(_) => "ok".to_string(),
         }
     };
@@ -364,7 +364,7 @@ fn near_smooth_corners_are_absorbed_and_proven() {
         assert!(r.reached() && r.certified_hi <= 1e-3);
         assert_eq!(r.corners.len(), 1);
         assert!(r.corners[0].absorbed, "d = {d}");
-        assert!(lncert::approx::join_arcs(&r).is_empty());
+        assert!(lncert::offset::join_arcs(&r).is_empty());
         // the segments on both sides of the corner meet exactly
         let ia = r.segments.iter().rposition(|s| s.piece == 0).unwrap();
         let ib = r.segments.iter().position(|s| s.piece == 1).unwrap();
@@ -376,7 +376,7 @@ fn near_smooth_corners_are_absorbed_and_proven() {
         certificate_verifies(&x, &r, &q("1/1000"));
         // the exact join arc (d < 0: the convex side) near the output
         if d == "-1/2" {
-            let arcs = lncert::approx::absorbed_arcs(&r);
+            let arcs = lncert::offset::absorbed_arcs(&r);
             assert_eq!(arcs.len(), 1);
             let out: Vec<V2<f64>> = r
                 .segments

@@ -1,5 +1,5 @@
 //! Offsets as cubics (and quadratics) on a grid finer than rounding allows
-//! (`lncert::approx::gridfit`, `offset --output cubic|quadratic --grid G --tol T` with
+//! (`lncert::offset::gridfit`, `offset --output cubic|quadratic --grid G --tol T` with
 //! `T ≤ G·√2/2`): every control point is a grid multiple, contours close
 //! exactly, the certificate verifies, dense samples of the exact offset
 //! (computed directly) agree with the bound, and an offset whose end no grid
@@ -8,9 +8,9 @@
 mod common;
 use common::{dejavu, lncert, max_spacing, sampled_one_sided, tmp};
 
-use lncert::approx::gridfit::{offset_on_grid, GridOffset};
-use lncert::approx::{OffsetOptions, Output};
 use lncert::curve::{Bezier, V2};
+use lncert::offset::{offset_on_grid, GridOffset};
+use lncert::offset::{OffsetOptions, Output};
 use lncert::scalar::{parse_rational, Rational, Scalar};
 use lncert::shape::parse_curve;
 

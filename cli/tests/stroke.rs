@@ -2,10 +2,10 @@
 //! orientation, and an independent dense-sampling check of claims (a), (b).
 
 use lncert::curve::Bezier;
-use lncert::outline::trim::{stroke, Cap, Orientation, Piece, Stroke, StrokeOptions};
 use lncert::parse_rational;
 use lncert::scalar::{Rational, Scalar};
 use lncert::shape::parse_curve;
+use lncert::stroke::{stroke, Cap, Orientation, Piece, Stroke, StrokeOptions};
 
 fn q(s: &str) -> Rational {
     parse_rational(s).unwrap()
@@ -378,9 +378,9 @@ fn cli_stroke_json_path_and_exit_codes() {
 // ---------------------------------------------------------------------------
 // elliptical pens
 
-use lncert::approx::conv::{Angle, Pen};
-use lncert::outline::ellipse::{half_ellipse_cap, Form};
-use lncert::outline::trim::PenShape;
+use lncert::offset::{Angle, Pen};
+use lncert::stroke::PenShape;
+use lncert::stroke::{half_ellipse_cap, Form};
 
 /// `Q⁻¹` of the pen, floats (for the independent checks).
 fn pen_inverse(pen: &Pen) -> [f64; 3] {
@@ -555,7 +555,7 @@ fn ellipse_outside_test_agrees_with_sampling() {
                 lncert::scalar::rational_from_f64(p.1).unwrap(),
             );
             let g = gauge_to_curve(&cf, qi, p);
-            let out = lncert::outline::ellipse::outside_of(&x, &w, &form);
+            let out = lncert::stroke::outside_of(&x, &w, &form);
             if out {
                 proven += 1;
                 assert!(g > 1.0 - 1e-9, "{p:?} proven outside, gauge {g}");
@@ -659,7 +659,7 @@ fn ellipse_pen_font_h_at_tol_0_1() {
     let pen = lncert_cli::reproduce::seed001::pen(1e-6).unwrap();
     let tol = 0.1;
     let mut o = StrokeOptions::with_pen(PenShape::Ellipse(pen.clone()), tol);
-    o.method = lncert::approx::OffsetMethod::LnPair;
+    o.method = lncert::offset::OffsetMethod::LnPair;
     let t0 = std::time::Instant::now();
     let s = stroke(&x, &o).unwrap();
     eprintln!(
@@ -764,7 +764,7 @@ fn ellipse_pen_font_h_at_tol_0_01() {
     let pen = lncert_cli::reproduce::seed001::pen(1e-6).unwrap();
     let tol = 0.01;
     let mut o = StrokeOptions::with_pen(PenShape::Ellipse(pen.clone()), tol);
-    o.method = lncert::approx::OffsetMethod::LnPair;
+    o.method = lncert::offset::OffsetMethod::LnPair;
     let s = stroke(&x, &o).unwrap();
     eprintln!(
         "font H at 0.01: {} raw, {} crossings, {} pieces, {} contours; {:?}",
@@ -982,7 +982,7 @@ const ICONS: [(&str, &str); 6] = [
 fn icon_stroke(name: &str, svg: &str, tol: f64) -> (Vec<Bezier<Rational>>, Stroke) {
     let x = lncert::shape::parse_svg_document(svg).unwrap_or_else(|e| panic!("{name}: {e}"));
     let mut o = StrokeOptions::new(q("1"), tol);
-    o.output = lncert::approx::Output::Cubic;
+    o.output = lncert::offset::Output::Cubic;
     let s = stroke(&x, &o).unwrap_or_else(|e| panic!("{name}: {e:?}"));
     (x, s)
 }
@@ -1074,7 +1074,7 @@ fn near_g1_corners_are_joints_not_crossings() {
     ] {
         let x = parse_curve(d).unwrap();
         let mut o = StrokeOptions::new(q("1/2"), 1e-2);
-        o.output = lncert::approx::Output::Cubic;
+        o.output = lncert::offset::Output::Cubic;
         let s = stroke(&x, &o).unwrap();
         assert!(
             s.proven(),
@@ -1116,7 +1116,7 @@ fn glyph_strokes_that_need_spurs_witnesses_and_refinement_are_proven() {
         let data = std::fs::read(font).unwrap();
         let x = lncert::shape::glyph_outline(&data, ch).unwrap();
         let mut o = StrokeOptions::new(q("40"), tol);
-        o.output = lncert::approx::Output::Cubic;
+        o.output = lncert::offset::Output::Cubic;
         let s = stroke(&x, &o).unwrap();
         assert!(
             s.proven(),

@@ -7,8 +7,8 @@
 //! dense polyline of the curve.
 
 use lncert::curve::Bezier;
-use lncert::outline::trim::{stroke, Orientation, StrokeOptions};
 use lncert::scalar::{Rational, Scalar};
+use lncert::stroke::{stroke, Orientation, StrokeOptions};
 use lncert_cli::reproduce::strokes::{lens, lens_radius};
 
 type P = (f64, f64);
@@ -100,7 +100,7 @@ fn closed_lens_inner_offset_loops_are_cut() {
 
     let t0 = std::time::Instant::now();
     let mut opts = StrokeOptions::new(r.clone(), tol);
-    opts.output = lncert::approx::Output::Cubic;
+    opts.output = lncert::offset::Output::Cubic;
     let s = stroke(&x, &opts).unwrap();
     eprintln!(
         "lens: {} raw pieces, {} crossings, {} output pieces, {:?}, {:?}",

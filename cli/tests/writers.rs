@@ -5,9 +5,9 @@ mod common;
 
 use common::{lncert, tmp};
 use lncert::curve::{Bezier, V2};
-use lncert::outline::trim::{stroke, Piece, Stroke, StrokeOptions};
 use lncert::scalar::{parse_rational, rational_from_f64, Rational, Scalar};
 use lncert::shape::{parse_curve, parse_svg_document, parse_svg_document_elements};
+use lncert::stroke::{stroke, Piece, Stroke, StrokeOptions};
 use lncert::write::{offset_path_data, path_data, svg_document, SvgOptions, SvgShape};
 
 fn q(s: &str) -> Rational {
@@ -17,7 +17,7 @@ fn q(s: &str) -> Rational {
 /// A stroke with cubic sides (no piece above degree 3).
 fn stroke_cubic(curve: &[Bezier<Rational>], r: &str, tol: f64) -> Stroke {
     let mut o = StrokeOptions::new(q(r), tol);
-    o.output = lncert::approx::Output::Cubic;
+    o.output = lncert::offset::Output::Cubic;
     let s = stroke(curve, &o).unwrap();
     assert!(s.proven(), "{:?} {:?} {:?}", s.a, s.b, s.c);
     s

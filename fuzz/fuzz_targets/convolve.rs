@@ -1,6 +1,6 @@
 #![no_main]
 //! Fuzz target `convolve`: a small curve, an elliptical pen, a side, a
-//! tolerance and budgets built from the input -> `lncert::approx::convolve`
+//! tolerance and budgets built from the input -> `lncert::offset::convolve`
 //! (seed 001's G²/C¹ convolution approximant), and the result's contract. The
 //! structure follows `offset.rs` (same curves, tolerances and budgets, so an
 //! input costs a few ms to a few tens of ms).
@@ -71,9 +71,9 @@
 
 use libfuzzer_sys::arbitrary::{Result, Unstructured};
 use libfuzzer_sys::{fuzz_target, Corpus};
-use lncert::approx::lnpair::Subdivision;
-use lncert::approx::conv::{Angle, Pen};
-use lncert::approx::{
+use lncert::offset::kernels::Subdivision;
+use lncert::offset::{Angle, Pen};
+use lncert::offset::{
     convolve, OffsetError, OffsetMethod, OffsetOptions, OffsetResult, OffsetSegment,
 };
 use lncert::curve::{Bezier, V2};

@@ -1,6 +1,6 @@
 #![no_main]
 //! Fuzz target `offset`: a small curve, distance, tolerance and budget built
-//! from the input -> `lncert::approx::offset`, and the result's contract.
+//! from the input -> `lncert::offset::offset`, and the result's contract.
 //!
 //! Input: 1-2 Bézier pieces of degree 1-4 (coordinates `k/16`, `k` an `i8`);
 //! the second piece is free, starts at the first's end point (a junction:
@@ -49,17 +49,17 @@
 //!   |d|)` (B in the hull of its control points, the offset within `|d|` of the
 //!   hull of the piece's control points `X_i`), so `lo` is at most that;
 //! * `corners` are at junctions where the pieces meet (`after` in range,
-//!   centre = the shared point) and equal `lncert::approx::corners`;
+//!   centre = the shared point) and equal `lncert::offset::corners`;
 //!   `join_arcs` has one arc of radius `|d|` per `Join` corner; cusps lie on
 //!   existing pieces with `lo <= hi` in `[0, 1]`;
 //! * with one more input byte: the grid path (`check_grid`).
 
 use libfuzzer_sys::arbitrary::{Result, Unstructured};
 use libfuzzer_sys::{fuzz_target, Corpus};
-use lncert::approx::gridfit::offset_on_grid;
-use lncert::approx::lnpair::Subdivision;
-use lncert::approx::prep::Junction;
-use lncert::approx::{
+use lncert::offset::offset_on_grid;
+use lncert::offset::kernels::Subdivision;
+use lncert::offset::kernels::Junction;
+use lncert::offset::{
     corners, join_arcs, offset, OffsetError, OffsetMethod, OffsetOptions, OffsetResult,
     OffsetSegment,
 };
@@ -521,7 +521,7 @@ fn check_ok(inp: &Input, r: &OffsetResult) {
 /// verifies.
 fn check_grid(inp: &Input) {
     let mut o = inp.opts.clone();
-    o.output = lncert::approx::Output::Cubic;
+    o.output = lncert::offset::Output::Cubic;
     o.grid = Some(q(1, 16));
     let r = match offset_on_grid(&inp.curve, &o) {
         Err(e) => {

@@ -2,7 +2,7 @@
 //! Fuzz target `tangency`: seed 003 §4 tangency systems and the `Poly2` parser.
 //!
 //! * The raw bytes, as (lossy UTF-8) text, go to
-//!   `lncert::tangency::poly2::parse_poly2`: must never panic.
+//!   `lncert::tangency::parse_poly2`: must never panic.
 //! * The first 12 bytes give six small rationals `x1, y1, u, ox, oy, r`
 //!   (per value: numerator an `i8`, denominator `1 + byte % 16`; missing
 //!   bytes read as 0) -> `TangencySystem::new` -> `TangencyProblem::new`
@@ -15,10 +15,10 @@
 
 use libfuzzer_sys::{fuzz_target, Corpus};
 use lncert::scalar::{frac, interval_from_rational, Rational};
-use lncert::tangency::complete::SolveOptions;
-use lncert::tangency::poly2::parse_poly2;
-use lncert::tangency::solve::{solve_complete, TangencyProblem};
-use lncert::tangency::system::TangencySystem;
+use lncert::tangency::SolveOptions;
+use lncert::tangency::parse_poly2;
+use lncert::tangency::{solve_complete, TangencyProblem};
+use lncert::tangency::TangencySystem;
 
 fn small(data: &[u8], i: usize) -> Rational {
     let num = data.get(2 * i).copied().unwrap_or(0) as i8;

@@ -49,27 +49,9 @@ pub use same::verify_against;
 
 pub use search::{Config, CoverBox, OneSided};
 
-/// Errors of the certification layer; every one names the offending field.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum CertifyError {
-    /// Bad input data.
-    #[error("invalid `{field}`: {reason}")]
-    Input {
-        /// The field, e.g. `arc.radius` or `offset.curve[0]`.
-        field: String,
-        /// What is wrong with it.
-        reason: String,
-    },
-}
-
-impl From<crate::shape::ShapeError> for CertifyError {
-    fn from(e: crate::shape::ShapeError) -> Self {
-        CertifyError::Input {
-            field: e.field,
-            reason: e.reason,
-        }
-    }
-}
+/// Errors of the certification layer: the offending field and the reason —
+/// lncert's one input error, [`crate::Error`].
+pub type CertifyError = crate::Error;
 
 /// Certified bounds on the Hausdorff distance and on both one-sided distances.
 #[derive(Clone, Debug, PartialEq)]
@@ -96,7 +78,7 @@ impl HausdorffBounds {
 
 fn check_config(cfg: &Config) -> Result<(), CertifyError> {
     let bad = |field: &str, reason: &str| {
-        Err(CertifyError::Input {
+        Err(CertifyError {
             field: field.to_string(),
             reason: reason.to_string(),
         })
@@ -213,7 +195,7 @@ pub fn hausdorff_ellipse_arc(
     check_config(cfg)?;
     let m = &arc.m;
     if (&m[0][0] * &m[1][1] - &m[0][1] * &m[1][0]).is_zero() {
-        return Err(CertifyError::Input {
+        return Err(CertifyError {
             field: "arc.m".into(),
             reason: "the matrix is singular".into(),
         });
@@ -221,7 +203,7 @@ pub fn hausdorff_ellipse_arc(
     let shape = ShapeDesc::curve(curve.to_vec())?;
     for v in [&arc.from, &arc.to] {
         if v.x.is_zero() && v.y.is_zero() {
-            return Err(CertifyError::Input {
+            return Err(CertifyError {
                 field: "arc.from".into(),
                 reason: "a direction is zero".into(),
             });

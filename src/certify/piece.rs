@@ -508,7 +508,7 @@ impl Pieces for ShapeDesc {
 }
 
 fn err(field: impl Into<String>, reason: impl Into<String>) -> CertifyError {
-    CertifyError::Input {
+    CertifyError {
         field: field.into(),
         reason: reason.into(),
     }

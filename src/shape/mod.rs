@@ -2,7 +2,7 @@
 //!
 //! This layer sits between the mathematics of [`crate::curve`] (Bézier and
 //! B-spline curves, generic over the scalar) and the engines that use shapes
-//! ([`crate::certify`], [`crate::approx`]); every dependency points down:
+//! ([`crate::certify`], [`crate::offset`](mod@crate::offset)); every dependency points down:
 //!
 //! ```text
 //!   cli, reproduce
@@ -91,20 +91,7 @@ pub use winding::winding_number;
 /// shapes, certificates, SVG), in bytes: 128 MiB.
 pub const MAX_INPUT_BYTES: usize = crate::json::Limits::DEFAULT.max_bytes;
 
-/// Why a shape could not be built or read: the field and the reason.
-///
-/// # Examples
-/// ```
-/// use lncert::shape::ShapeDesc;
-/// let e = ShapeDesc::parse(r#"{"arc": {"center": [0, 0], "radius": 0, "from": [1, 0], "to": [0, 1]}}"#)
-///     .unwrap_err();
-/// assert_eq!((e.field.as_str(), e.reason.as_str()), ("arc.radius", "must be > 0"));
-/// ```
-#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-#[error("invalid `{field}`: {reason}")]
-pub struct ShapeError {
-    /// The field, e.g. `arc.radius`, `offset.curve[0]`, `convolution.side`.
-    pub field: String,
-    /// What is wrong with it.
-    pub reason: String,
-}
+/// Why a shape could not be built or read: the field (e.g. `arc.radius`,
+/// `offset.curve[0]`, `convolution.side`) and the reason — lncert's one input
+/// error, [`crate::Error`].
+pub type ShapeError = crate::Error;

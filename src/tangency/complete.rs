@@ -203,9 +203,9 @@ fn bisect(b: &IBox, dom: &IBox) -> (IBox, IBox) {
 ///
 /// # Examples
 /// ```
-/// use lncert::tangency::complete::{solve, RationalBox, SolveOptions};
-/// use lncert::tangency::krawczyk::System2;
-/// use lncert::tangency::poly2::parse_poly2;
+/// use lncert::tangency::{solve, RationalBox, SolveOptions};
+/// use lncert::tangency::System2;
+/// use lncert::tangency::parse_poly2;
 /// use lncert::scalar::frac;
 /// let s = System2::new(&parse_poly2("x^2 + y^2 - 1").unwrap(), &parse_poly2("y - x").unwrap());
 /// let d = RationalBox { x: (frac(-2, 1), frac(2, 1)), y: (frac(-2, 1), frac(2, 1)) };
@@ -414,9 +414,9 @@ pub struct CandidateResult {
 ///
 /// # Examples
 /// ```
-/// use lncert::tangency::complete::certify_candidates;
-/// use lncert::tangency::krawczyk::System2;
-/// use lncert::tangency::poly2::parse_poly2;
+/// use lncert::tangency::certify_candidates;
+/// use lncert::tangency::System2;
+/// use lncert::tangency::parse_poly2;
 /// let s = System2::new(&parse_poly2("x^2 + y^2 - 1").unwrap(), &parse_poly2("y - x").unwrap());
 /// let h = 0.5f64.sqrt();
 /// let cells = [[(h - 0.01, h), (h, h + 0.01)], [(h - 0.01, h), (h - 0.01, h)], [(0.0, 0.1), (0.0, 0.1)]];

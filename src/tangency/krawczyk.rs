@@ -195,8 +195,8 @@ pub enum KOutcome {
 ///
 /// # Examples
 /// ```
-/// use lncert::tangency::krawczyk::{ibox, KOutcome, System2};
-/// use lncert::tangency::poly2::parse_poly2;
+/// use lncert::tangency::{ibox, KOutcome, System2};
+/// use lncert::tangency::parse_poly2;
 /// let s = System2::new(&parse_poly2("x^2 - 2").unwrap(), &parse_poly2("y - x").unwrap());
 /// let (out, _iters) = s.krawczyk(&ibox(&[(1.0, 2.0), (1.0, 2.0)]), 20);
 /// match out {

@@ -16,7 +16,7 @@ pub const MAX_DEGREE: usize = 32;
 ///
 /// # Examples
 /// ```
-/// use lncert::tangency::poly2::Poly2;
+/// use lncert::tangency::Poly2;
 /// let p = Poly2::<f64>::x().mul(&Poly2::y()).add(&Poly2::constant(1.0)); // xy + 1
 /// assert_eq!(p.eval(&2.0, &3.0), 7.0);
 /// assert_eq!(p.dx().eval(&2.0, &3.0), 3.0);
@@ -220,7 +220,7 @@ impl<S: Scalar> Poly2<S> {
     ///
     /// # Examples
     /// ```
-    /// use lncert::tangency::poly2::parse_poly2;
+    /// use lncert::tangency::parse_poly2;
     /// let p = parse_poly2("x^2*y + 1/10").unwrap();
     /// assert_eq!(p.coeffs_f64(), (2, 1, vec![0.1, 0.0, 0.0, 0.0, 0.0, 1.0]));
     /// ```
@@ -332,7 +332,7 @@ pub const MAX_NESTING: usize = 64;
 ///
 /// # Examples
 /// ```
-/// use lncert::tangency::poly2::parse_poly2;
+/// use lncert::tangency::parse_poly2;
 /// use lncert::scalar::{frac, Rational};
 /// let p = parse_poly2("y*(x - 1.995)*(y - x^2)*(y - x + 1)").unwrap();
 /// assert_eq!(p.eval(&frac(1995, 1000), &frac(7, 3)), frac::<Rational>(0, 1));

@@ -196,7 +196,7 @@ fn bisect_root(
 ///
 /// # Examples
 /// ```
-/// use lncert::tangency::radii::valid_radii;
+/// use lncert::tangency::valid_radii;
 /// use lncert::ln::hermite::HermiteData;
 /// use lncert::scalar::frac;
 /// let h = HermiteData::new(frac(3, 1), frac(-1, 1), frac(1, 1)).unwrap();

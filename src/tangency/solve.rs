@@ -57,13 +57,13 @@ pub struct TangencyProblem {
 /// Checks an `a2` window: `lo < hi`, both within the f64 range (field `a2_range`).
 pub fn check_a2_window(lo: &Rational, hi: &Rational) -> Result<(), TangencyError> {
     if lo > hi {
-        return Err(TangencyError::invalid(
+        return Err(TangencyError::new(
             "a2_range",
             "inverted (lo > hi); give LO,HI with LO < HI",
         ));
     }
     if lo == hi {
-        return Err(TangencyError::invalid(
+        return Err(TangencyError::new(
             "a2_range",
             "empty (lo = hi); give LO,HI with LO < HI",
         ));
@@ -73,7 +73,7 @@ pub fn check_a2_window(lo: &Rational, hi: &Rational) -> Result<(), TangencyError
         i.inf().is_finite() && i.sup().is_finite()
     };
     if !(finite(lo) && finite(hi)) {
-        return Err(TangencyError::invalid(
+        return Err(TangencyError::new(
             "a2_range",
             "not finite in f64 (|value| beyond 1.8e308)",
         ));
@@ -289,7 +289,7 @@ pub fn root_report(sys: &TangencySystem, m: Interval, a2: Interval, certified: b
 /// # Examples
 /// ```
 /// use lncert::tangency::{solve::{solve_complete, TangencyProblem}, system::TangencySystem};
-/// use lncert::tangency::complete::SolveOptions;
+/// use lncert::tangency::SolveOptions;
 /// use lncert::scalar::frac;
 /// let s = TangencySystem::new(frac(3, 1), frac(-1, 1), frac(1, 1), frac(1, 1), frac(1, 1), frac(1, 2)).unwrap();
 /// let rep = solve_complete(&TangencyProblem::new(s, None).unwrap(), &SolveOptions::default());

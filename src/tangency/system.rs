@@ -19,51 +19,14 @@
 
 use super::poly2::Poly2;
 use crate::ln::hermite::HermiteData;
-use crate::ln::LnError;
 use crate::poly::Poly;
 use crate::scalar::{Rational, Scalar};
 use num_traits::Zero;
 
-/// Why a tangency problem was rejected or could not be solved. Every variant
-/// names the field.
-#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-pub enum TangencyError {
-    /// A parameter is outside the domain of the problem.
-    #[error("{field}: {reason}")]
-    InvalidParameter {
-        /// The parameter that is out of the domain.
-        field: &'static str,
-        /// Why it is out of the domain.
-        reason: String,
-    },
-}
-
-impl TangencyError {
-    /// An `InvalidParameter` error.
-    pub fn invalid(field: &'static str, reason: impl Into<String>) -> Self {
-        TangencyError::InvalidParameter {
-            field,
-            reason: reason.into(),
-        }
-    }
-    /// The field the error names.
-    pub fn field(&self) -> &'static str {
-        match self {
-            TangencyError::InvalidParameter { field, .. } => field,
-        }
-    }
-}
-
-impl From<LnError> for TangencyError {
-    fn from(e: LnError) -> Self {
-        match e {
-            LnError::InvalidParameter { field, reason } => Self::invalid(field, reason),
-            LnError::Collinear { field }
-            | LnError::NotCompatible { field, .. }
-            | LnError::Undecided { field } => Self::invalid(field, e.to_string()),
-        }
-    }
-}
+/// Why a tangency problem was rejected: the parameter out of the domain
+/// (`r`, `u`, `x1`, `y1`, `a2_range`, …) and why — lncert's one input error,
+/// [`crate::Error`].
+pub type TangencyError = crate::Error;
 
 /// A line of solutions `m = m0`, every `a2` (the circle touches the end point
 /// `K(0)` or `K(u)`, shared by every quartic of the family).
@@ -77,7 +40,7 @@ pub struct SolutionLine {
 ///
 /// # Examples
 /// ```
-/// use lncert::tangency::system::TangencySystem;
+/// use lncert::tangency::TangencySystem;
 /// use lncert::scalar::frac;
 /// let s = TangencySystem::new(frac(3, 1), frac(-1, 1), frac(1, 1), frac(1, 1), frac(1, 1), frac(1, 2)).unwrap();
 /// assert_eq!(s.eq6.total_degree(), Some(10));
@@ -118,7 +81,7 @@ impl TangencySystem {
     ) -> Result<Self, TangencyError> {
         let hermite = HermiteData::new(x1, y1, u)?;
         if r.is_zero() {
-            return Err(TangencyError::invalid(
+            return Err(TangencyError::new(
                 "r",
                 "radius 0: a point, not a circle (the sign of r selects the side)",
             ));

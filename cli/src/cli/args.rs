@@ -10,10 +10,10 @@
 //! | cusp parameter τ | `-1`, `3/2`, `inf` | [`tau`] |
 
 use super::CliError;
-use lncert::approx::OffsetError;
 use lncert::curve::V2;
 use lncert::ln::cubic::{LnFrame, Tau};
 use lncert::ln::LnError;
+use lncert::offset::OffsetError;
 use lncert::poly::Poly;
 use lncert::scalar::{parse_rational, Rational};
 
@@ -290,7 +290,7 @@ pub fn show_tau(t: &Tau<Rational>) -> String {
 /// An [`OffsetError`] of the engine's offset, convolution or arc reading,
 /// reported against the flag it comes from (`CURVE: …` for a field of the input).
 pub fn offset_err(e: OffsetError) -> CliError {
-    let OffsetError::Input { field, reason } = e;
+    let OffsetError { field, reason } = e;
     let flag = match field.as_str() {
         "distance" => "--distance".to_string(),
         "tol" => "--tol".to_string(),
@@ -317,7 +317,7 @@ pub fn grid(text: Option<&str>) -> Result<Option<Rational>, CliError> {
 /// The line saying how the tolerance is split between the fit and the rounding.
 pub fn grid_line(grid: &Option<Rational>, tol: f64) -> Option<String> {
     grid.as_ref().map(|g| {
-        let mv = lncert::approx::fit::rounding_move(g);
+        let mv = lncert::offset::kernels::rounding_move(g);
         format!(
             "grid {g}: control points rounded to multiples of {g}; the tolerance is split as fit ≤ {:.6e} (sampled pre-check) + rounding ≤ {mv:.6e} (grid·√2/2); the rounded curve is what is proven",
             tol - mv

@@ -2,7 +2,7 @@
 //! --tol T [--side plus|minus|both] [--method g2] [--certificate OUT] [--svg OUT]
 //! [--json]`: the convolution of a curve with an elliptical pen (the boundary of
 //! the region an elliptical nib sweeps), approximated by seed 001's G²/C¹ method
-//! and proven within `T` on each side (see [`lncert::approx::conv`]).
+//! and proven within `T` on each side (see [`lncert::offset::conv`]).
 //!
 //! `A ≥ B > 0` are the **semi**-axes; `θ` is `pi/6`, `30deg` or radians (exact:
 //! a rotation that is not a quarter turn is represented by an exactly rational
@@ -24,11 +24,11 @@ use super::args::{bad, number, q};
 use super::modes::{Accept, Method, Output, Side, Subdivision};
 use super::pen::ellipse_pen;
 use super::{print_out, CliError};
-use lncert::approx::conv::{Angle, Pen};
-use lncert::approx::{
+use lncert::curve::{Bezier, V2};
+use lncert::offset::{
     convolve, union_certificate, union_certificate_all, OffsetError, OffsetOptions, OffsetResult,
 };
-use lncert::curve::{Bezier, V2};
+use lncert::offset::{Angle, Pen};
 use lncert::scalar::{interval_from_rational, rational_from_f64, Rational, Scalar};
 use lncert::shape::parse_curve;
 use serde_json::json;
@@ -145,7 +145,7 @@ fn pen_of(a: &ConvolveArgs, tol: f64) -> Result<Pen, CliError> {
 }
 
 fn conv_err(e: OffsetError) -> CliError {
-    let OffsetError::Input { field, reason } = e;
+    let OffsetError { field, reason } = e;
     let flag = match field.as_str() {
         "tol" => "--tol".to_string(),
         "side" => "--side".to_string(),
@@ -166,7 +166,7 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
             super::args::output_file(flag, p)?;
         }
     }
-    let output = lncert::approx::Output::from(a.output);
+    let output = lncert::offset::Output::from(a.output);
     let grid = super::args::grid(a.grid.as_deref())?;
     let tol_q = number("--tol", &a.tol)?;
     let tol = interval_from_rational(&tol_q).inf();
@@ -197,7 +197,7 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
             out: None,
             json: a.json,
         };
-        return super::stroke::run_with(&sa, &curve, lncert::outline::trim::PenShape::Ellipse(pen));
+        return super::stroke::run_with(&sa, &curve, lncert::stroke::PenShape::Ellipse(pen));
     }
     if a.max_boxes == 0 || a.max_boxes > 50_000_000 {
         return Err(bad("--max-boxes", "out of range (1 to 50000000)"));
@@ -311,8 +311,8 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
             "output": output.name(),
             "grid": grid.as_ref().map(|g| json!({
                 "grid": q(g),
-                "rounding_move": lncert::approx::fit::rounding_move(g),
-                "fit_tol": tol - pen.margin - lncert::approx::fit::rounding_move(g),
+                "rounding_move": lncert::offset::kernels::rounding_move(g),
+                "fit_tol": tol - pen.margin - lncert::offset::kernels::rounding_move(g),
             })),
             "verdict": overall,
             "sides": results.iter().map(|(name, r, secs)| {
@@ -353,8 +353,8 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
             "convolution with the pen {} ({}, tol {}):\n",
             pen.description,
             match (output, a.method) {
-                (lncert::approx::Output::Cubic, _) => "fitted cubics",
-                (lncert::approx::Output::Quadratic, _) => "fitted quadratics",
+                (lncert::offset::Output::Cubic, _) => "fitted cubics",
+                (lncert::offset::Output::Quadratic, _) => "fitted quadratics",
                 (_, Method::G2) => "seed 001 G²",
                 _ => "seed 000 §5 cubic LN pairs",
             },
@@ -438,7 +438,7 @@ pub(crate) fn render(
                 .filter_map(|i| {
                     let t = i as f64 / 256.0;
                     let d = b.hodograph().eval(&t);
-                    lncert::approx::conv::pen_point(&V2::new(-d.y, d.x), qf, sigma)
+                    lncert::offset::kernels::pen_point(&V2::new(-d.y, d.x), qf, sigma)
                         .map(|e| b.eval(&t).add(&e))
                 })
                 .collect();

@@ -100,7 +100,7 @@ pub fn read_curve_input(
     }
     let text = read_text(path)?;
     if let Some(arcs) = parse_arc_input(&text) {
-        let mut arcs = arcs.map_err(|e| offset_err(e.into()))?;
+        let mut arcs = arcs.map_err(offset_err)?;
         // an `{"arc"}` document is one arc, a `{"circle"}` four quarter arcs
         return Ok(if arcs.len() == 1 {
             CurveInput::Arc(Box::new(arcs.remove(0)))

@@ -5,7 +5,7 @@
 //! its own, written as a UFO (norad) with a report (`proofs/font.md`).
 //!
 //! * `--stroke R`: the outline of the region a disk of radius `R > 0` sweeps
-//!   along the glyph's contours ([`lncert::outline::trim::stroke`]).
+//!   along the glyph's contours ([`lncert::stroke::stroke`]).
 //! * `--offset D`: the boundary of the glyph's filled region (nonzero rule)
 //!   grown by `D > 0` or shrunk by `D < 0`: the stroke of radius `|D|`, of
 //!   which the contours outside the fill (`D > 0`) or inside it (`D < 0`) are
@@ -57,10 +57,10 @@ use super::args::{bad, number};
 use super::modes::FontOutput;
 use super::CliError;
 use lncert::curve::{Bezier, V2};
-use lncert::outline::intersect::{intersections, IntersectOptions};
-use lncert::outline::trim::{stroke, Piece, StrokeOptions};
 use lncert::scalar::{interval_from_rational, rational_from_f64, Rational, Scalar};
 use lncert::shape::{font_info, glyph_outline_by_id, winding_number, FontInfo};
+use lncert::stroke::{intersections, IntersectOptions};
+use lncert::stroke::{stroke, Piece, StrokeOptions};
 use num_traits::{One, Signed, Zero};
 use rayon::prelude::*;
 use serde_json::json;
@@ -458,7 +458,7 @@ fn prove(src: &Source, job: &Job, g: &mut GlyphResult) {
     let delta_grid = job
         .grid
         .as_ref()
-        .map(lncert::approx::fit::rounding_move)
+        .map(lncert::offset::kernels::rounding_move)
         .unwrap_or(0.0);
     let mut reasons: Vec<String> = Vec::new();
     let stroke_tol = if job.grid.is_some() {
@@ -476,9 +476,9 @@ fn prove(src: &Source, job: &Job, g: &mut GlyphResult) {
     };
     let mut opts = StrokeOptions::new(r.clone(), stroke_tol);
     opts.output = if job.quadratic {
-        lncert::approx::Output::Quadratic
+        lncert::offset::Output::Quadratic
     } else {
-        lncert::approx::Output::Cubic
+        lncert::offset::Output::Cubic
     };
     // what is left of TOL for the arcs' quadratics (cubic arcs take ~1e-7 r)
     let arc_target = 0.05 * (job.tol - delta_grid).max(job.tol / 2.0);

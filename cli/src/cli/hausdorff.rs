@@ -135,8 +135,9 @@ pub fn run(a: &HausdorffArgs) -> Result<i32, CliError> {
         ..Config::default()
     };
     let start = std::time::Instant::now();
-    let r = hausdorff(&sa, &sb, &cfg).map_err(|e| match e {
-        lncert::certify::CertifyError::Input { field, reason } => CliError { field, reason },
+    let r = hausdorff(&sa, &sb, &cfg).map_err(|e| CliError {
+        field: e.field,
+        reason: e.reason,
     })?;
     let elapsed = start.elapsed();
     let verdict = tol_f.map(|t| {

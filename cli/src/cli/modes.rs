@@ -17,7 +17,7 @@
 use super::args::bad;
 use super::CliError;
 use clap::ValueEnum;
-use lncert::approx::lnpair;
+use lncert::offset::kernels as lnpair;
 
 /// `--method`: the construction of the offset (or convolution) segments.
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
@@ -29,11 +29,11 @@ pub enum Method {
     LnPair,
 }
 
-impl From<Method> for lncert::approx::OffsetMethod {
+impl From<Method> for lncert::offset::OffsetMethod {
     fn from(m: Method) -> Self {
         match m {
-            Method::G2 => lncert::approx::OffsetMethod::G2,
-            Method::LnPair => lncert::approx::OffsetMethod::LnPair,
+            Method::G2 => lncert::offset::OffsetMethod::G2,
+            Method::LnPair => lncert::offset::OffsetMethod::LnPair,
         }
     }
 }
@@ -41,7 +41,7 @@ impl From<Method> for lncert::approx::OffsetMethod {
 impl Method {
     /// The name on the command line (and in the JSON output).
     pub fn name(self) -> &'static str {
-        lncert::approx::OffsetMethod::from(self).name()
+        lncert::offset::OffsetMethod::from(self).name()
     }
 }
 
@@ -96,12 +96,12 @@ pub enum Output {
     Quadratic,
 }
 
-impl From<Output> for lncert::approx::Output {
+impl From<Output> for lncert::offset::Output {
     fn from(o: Output) -> Self {
         match o {
-            Output::Native => lncert::approx::Output::Native,
-            Output::Cubic => lncert::approx::Output::Cubic,
-            Output::Quadratic => lncert::approx::Output::Quadratic,
+            Output::Native => lncert::offset::Output::Native,
+            Output::Cubic => lncert::offset::Output::Cubic,
+            Output::Quadratic => lncert::offset::Output::Quadratic,
         }
     }
 }
@@ -178,11 +178,11 @@ pub enum Cap {
     Butt,
 }
 
-impl From<Cap> for lncert::outline::trim::Cap {
+impl From<Cap> for lncert::stroke::Cap {
     fn from(c: Cap) -> Self {
         match c {
-            Cap::Round => lncert::outline::trim::Cap::Round,
-            Cap::Butt => lncert::outline::trim::Cap::Butt,
+            Cap::Round => lncert::stroke::Cap::Round,
+            Cap::Butt => lncert::stroke::Cap::Butt,
         }
     }
 }

@@ -1,6 +1,6 @@
 //! `lncert offset CURVE --distance R --tol T [--method g2|ln-pair] [--certificate OUT]
 //! [--svg OUT] [--global-bounds] [--no-certify] [--json]`: an offset approximant proven
-//! within `T` of the exact offset (see [`lncert::approx`]). The certified error is the
+//! within `T` of the exact offset (see [`lncert::offset`]). The certified error is the
 //! union bound of the per-segment proofs (each the parametric proof or the
 //! two-directional search, said per piece), and the certificate is assembled from them;
 //! `--global-bounds` adds a two-sided search over the whole offset; `--no-certify`
@@ -24,12 +24,12 @@ use super::args::{arc_json, bad, grid, grid_line, number, offset_err, point_json
 use super::curve_input::{input_line, CurveInput};
 use super::modes::{Cap, Method, Subdivision};
 use super::{print_out, CliError};
-use lncert::approx::arc::{offset_arc, ArcOffset};
-use lncert::approx::prep::Junction;
-use lncert::approx::{
+use lncert::offset::kernels::Junction;
+use lncert::offset::{
     global_bounds, offset, union_certificate, OffsetMethod, OffsetOptions, OffsetResult, Output,
     ProofPath,
 };
+use lncert::offset::{offset_arc, ArcOffset};
 use lncert::scalar::{interval_from_rational, Rational};
 use lncert::shape::TravelledArc;
 use serde_json::{json, Value};
@@ -196,7 +196,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
         if r == Rational::from_integer(0.into()) {
             return Err(bad("--distance", "must be nonzero"));
         }
-        return super::stroke::run_input(&sa, &input, lncert::outline::trim::PenShape::Circle(r));
+        return super::stroke::run_input(&sa, &input, lncert::stroke::PenShape::Circle(r));
     }
     let (curve, approx, y_down) = match input {
         CurveInput::Curve {
@@ -223,7 +223,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     opts.smooth_kinks = output != Output::Native && !a.keep_kinks;
     if let Some(g) = &grid {
         if matches!(output, Output::Cubic | Output::Quadratic)
-            && lncert::approx::fit::rounding_move(g) >= tol
+            && lncert::offset::kernels::rounding_move(g) >= tol
         {
             if a.svg.is_some() || a.global_bounds || a.no_certify || a.paper_error {
                 return Err(bad(
@@ -318,8 +318,8 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             "output": output.name(),
             "grid": grid.as_ref().map(|g| json!({
                 "grid": q(g),
-                "rounding_move": lncert::approx::fit::rounding_move(g),
-                "fit_tol": tol - lncert::approx::fit::rounding_move(g),
+                "rounding_move": lncert::offset::kernels::rounding_move(g),
+                "fit_tol": tol - lncert::offset::kernels::rounding_move(g),
             })),
             "distance": q(&res.distance),
             "tol": a.tol,

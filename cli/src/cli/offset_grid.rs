@@ -2,14 +2,14 @@
 //! tolerance is below what rounding a fitted spline to the grid can keep, so
 //! the joints are placed where the exact offset passes near a grid point and
 //! every cubic is proven against the exact curve between its joints
-//! ([`lncert::approx::gridfit::offset_on_grid`]).
+//! ([`lncert::offset::offset_on_grid`]).
 
 use super::args::offset_err;
 use super::args::{bad, q};
 use super::{print_out, CliError};
-use lncert::approx::gridfit::{offset_on_grid, Target};
-use lncert::approx::OffsetOptions;
 use lncert::curve::Bezier;
+use lncert::offset::OffsetOptions;
+use lncert::offset::{offset_on_grid, Target};
 use lncert::scalar::Rational;
 use serde_json::json;
 use std::path::Path;
@@ -103,8 +103,8 @@ pub fn run(
         let doc = json!({
             "method": "grid-fit",
             "output": opts.output.name(),
-            "degree": if opts.output == lncert::approx::Output::Quadratic { 2 } else { 3 },
-            "grid": {"grid": q(&grid), "rounding_move": lncert::approx::fit::rounding_move(&grid), "how": how},
+            "degree": if opts.output == lncert::offset::Output::Quadratic { 2 } else { 3 },
+            "grid": {"grid": q(&grid), "rounding_move": lncert::offset::kernels::rounding_move(&grid), "how": how},
             "distance": q(&opts.distance),
             "tol": a.tol,
             "segments": r.segments.len(),
@@ -147,7 +147,7 @@ pub fn run(
         s += &format!(
             "  tolerance {} below the rounding move {:.3e} (grid·√2/2)\n",
             a.tol,
-            lncert::approx::fit::rounding_move(&grid)
+            lncert::offset::kernels::rounding_move(&grid)
         );
         s += &format!(
             "  {} segment(s) of the grid-free fit at tol/2, {} corner arc(s), {} re-fit(s) after a failed proof, {} certified search(es), largest joint offset {:.3e}\n",

@@ -6,8 +6,8 @@
 //! A picture is an illustration drawn in `f64` from samples; the proof is the
 //! certified bound printed by the command, not this drawing.
 
-use lncert::approx::OffsetResult;
 use lncert::curve::{Bezier, V2};
+use lncert::offset::OffsetResult;
 use lncert::scalar::{Rational, Scalar};
 use std::fmt::Write as _;
 

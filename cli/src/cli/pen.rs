@@ -4,9 +4,9 @@
 
 use super::args::{bad, number};
 use super::CliError;
-use lncert::approx::conv::{Angle, Pen};
-use lncert::outline::trim::PenShape;
+use lncert::offset::{Angle, Pen};
 use lncert::scalar::{Rational, Scalar};
+use lncert::stroke::PenShape;
 
 /// `stroke --pen`: `circle:R` or `ellipse:A,B[,θ]`.
 pub fn pen_shape(text: &str, tol: f64) -> Result<PenShape, CliError> {

@@ -130,7 +130,7 @@ fn write_seed001_fig2a(dir: &std::path::Path) -> Result<PathBuf, CliError> {
 /// Seed 000 Fig. 7(a): the font 'H' by cubic LN pairs at TOL 0.1 (the paper's
 /// acceptance), both sides, with the exact convolution (sampled).
 fn write_seed000_fig7a(dir: &std::path::Path) -> Result<PathBuf, CliError> {
-    use lncert::approx::OffsetMethod;
+    use lncert::offset::OffsetMethod;
     use lncert_cli::reproduce::seed001;
     let fail = |e: String| super::args::bad("--out", format!("seed 000 Fig. 7(a): {e}"));
     let (minus, plus) = seed001::both_sides_with(0.1, OffsetMethod::LnPair, true).map_err(fail)?;

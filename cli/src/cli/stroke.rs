@@ -1,7 +1,7 @@
 //! `lncert stroke CURVE --pen circle:R|ellipse:A,B[,θ] --tol T [--method g2|ln-pair]
 //! [--cap round|butt] [--output native|cubic|quadratic] [--svg OUT]
 //! [--path-out OUT] [--out FILE.svg] [--json]`: the proven outline of the region a pen sweeps
-//! along the curve ([`lncert::outline::trim::stroke`]): closed contours of
+//! along the curve ([`lncert::stroke::stroke`]): closed contours of
 //! exact Bézier pieces and exact arcs, the crossings where the sides were cut,
 //! and claims (a) output ⊂ TOL-neighbourhood of the exact boundary, (b) exact
 //! boundary ⊂ TOL-neighbourhood of the output, (c) closed, simple, oriented
@@ -15,7 +15,7 @@
 //!   exactly rational one within a proven angle (printed as the pen's margin):
 //!   the outline and its claims are those of **that exact pen** (its matrix is
 //!   in the JSON). The sides are the convolution curves `x ∗ e_∓`
-//!   ([`lncert::approx::convolve`], each certified within TOL/8), the round
+//!   ([`lncert::offset::convolve`], each certified within TOL/8), the round
 //!   caps half ellipses made of proven cubics (error ≤ TOL/8, printed).
 //!   The curve must be G¹ (no join pieces for elliptical pens yet).
 //!
@@ -39,12 +39,10 @@ use super::curve_input::{read_curve_input, CurveInput};
 use super::modes::{Cap, Method, Output};
 use super::{print_out, CliError};
 use lncert::curve::V2;
-use lncert::outline::circle::Arc;
-use lncert::outline::trim::{
-    stroke, Claim, Contour, Orientation, PenShape, Piece, Stroke, StrokeOptions,
-};
 use lncert::scalar::{interval_from_rational, Rational, Scalar};
 use lncert::shape::InputApprox;
+use lncert::stroke::Arc;
+use lncert::stroke::{stroke, Claim, Contour, Orientation, PenShape, Piece, Stroke, StrokeOptions};
 use serde_json::json;
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -304,7 +302,7 @@ fn run_curve(
 }
 
 /// A stroke engine error, naming the flag.
-pub(crate) fn stroke_err(e: lncert::outline::trim::StrokeError) -> CliError {
+pub(crate) fn stroke_err(e: lncert::stroke::StrokeError) -> CliError {
     bad(
         match e.field.as_str() {
             "radius" | "pen" => "--pen",

@@ -25,9 +25,9 @@
 use super::args::{bad, q};
 use super::stroke::{options, path_data, stroke_err, stroke_json, stroke_text, StrokeArgs};
 use super::{print_out, CliError};
-use lncert::outline::trim::{stroke, PenShape, Stroke};
 use lncert::scalar::Rational;
 use lncert::shape::{parse_svg_document_elements, InputApprox, SvgElement};
+use lncert::stroke::{stroke, PenShape, Stroke};
 use num_traits::Zero;
 use rayon::prelude::*;
 use serde_json::json;

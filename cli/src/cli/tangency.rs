@@ -3,8 +3,8 @@
 //! [--radii] [--json]`: quartic LN curves (seed 003 §4) tangent to a circle.
 //!
 //! Backends: `complete` (default) — the complete interval solver of
-//! [`lncert::tangency::complete`]; `exact` — the exact elimination oracle of
-//! [`lncert::tangency::eliminate`]; `cpu` / `gpu` — raster candidates certified
+//! [`lncert::tangency::solve`]; `exact` — the exact elimination oracle of
+//! [`lncert::tangency::exact_solutions`]; `cpu` / `gpu` — raster candidates certified
 //! by Krawczyk, then compared with the complete solver (the JSON `raster`
 //! object says how many proven roots the raster missed). Without a GPU
 //! adapter, `gpu` says so on stderr and uses the CPU backend.
@@ -18,12 +18,12 @@ use super::args::{bad, number, point, q, required};
 use super::modes::Backend;
 use super::{print_out, CliError};
 use lncert::scalar::{interval_to_json, Interval, Rational};
-use lncert::tangency::complete::{SolveOptions, UndecidedReason};
-use lncert::tangency::radii::{valid_radii, RadiiSet};
-use lncert::tangency::solve::{
+use lncert::tangency::{
     solve_complete, solve_exact, A2WindowSource, TangencyProblem, TangencyReport,
 };
-use lncert::tangency::system::{TangencyError, TangencySystem};
+use lncert::tangency::{valid_radii, RadiiSet};
+use lncert::tangency::{SolveOptions, UndecidedReason};
+use lncert::tangency::{TangencyError, TangencySystem};
 use serde_json::{json, Value};
 use std::fmt::Write as _;
 
@@ -69,7 +69,7 @@ pub struct TangencyArgs {
 }
 
 fn tangency_error(e: TangencyError) -> CliError {
-    let flag = match e.field() {
+    let flag = match e.field.as_str() {
         "x1" => "--x1",
         "y1" => "--y1",
         "u" => "--u",
@@ -77,8 +77,7 @@ fn tangency_error(e: TangencyError) -> CliError {
         "a2_range" => "--a2-range",
         other => other,
     };
-    let TangencyError::InvalidParameter { reason, .. } = e;
-    bad(flag, reason)
+    bad(flag, e.reason)
 }
 
 fn parse_resolution(text: Option<&str>) -> Result<u32, CliError> {
@@ -338,8 +337,8 @@ fn raster_solve(
     use lncert::tangency::raster::{
         raster_cpu, raster_gpu, BackendUsed, DensePoly2, Grid, Precision, RasterError,
     };
-    use lncert::tangency::solve::solve_candidates;
-    let dense = |p: &lncert::tangency::poly2::Poly2<Rational>, field: &str| {
+    use lncert::tangency::solve_candidates;
+    let dense = |p: &lncert::tangency::Poly2<Rational>, field: &str| {
         let (dx, dy, c) = p.coeffs_f64();
         DensePoly2::new(dx, dy, c).map_err(|e| bad("--backend", format!("{field}: {e}")))
     };

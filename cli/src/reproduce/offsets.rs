@@ -7,7 +7,7 @@
 //! the same curve with certainty). The unit circle checks circular precision:
 //! the offset of an arc is the exact concentric arc.
 //!
-//! With `Output::Cubic` ([`lncert::approx::fit`]) the same offsets are proven
+//! With `Output::Cubic` ([`lncert::offset::kernels::least_squares_cubic`]) the same offsets are proven
 //! for cubics fitted to the exact offset (claims `offset-…-cubic-…`, the
 //! native G2 count beside).
 //!
@@ -17,9 +17,9 @@
 //! certified error in `cargo run --release --example offset_fit_compare`.
 
 use super::{json_rational, Claim, Verdict};
-use lncert::approx::arc::{offset_arc, ArcOffset, TravelledArc};
-use lncert::approx::{offset, OffsetMethod, OffsetOptions, Output};
 use lncert::curve::{BSpline, Bezier, V2};
+use lncert::offset::{offset, OffsetMethod, OffsetOptions, Output};
+use lncert::offset::{offset_arc, ArcOffset, TravelledArc};
 use lncert::scalar::Rational;
 use lncert::shape::ArcDesc;
 use serde_json::Value;

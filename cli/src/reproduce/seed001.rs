@@ -6,10 +6,10 @@
 //! \[12\] (LN-pair) column. Also the cusp counts of §4, decided exactly.
 
 use super::{json_rational, Claim, Verdict};
-use lncert::approx::conv::{conv_cusps, Angle, Pen};
-use lncert::approx::lnpair::Subdivision;
-use lncert::approx::{convolve, OffsetMethod, OffsetOptions, OffsetResult};
 use lncert::curve::{Bezier, V2};
+use lncert::offset::kernels::Subdivision;
+use lncert::offset::{convolve, OffsetMethod, OffsetOptions, OffsetResult};
+use lncert::offset::{kernels::conv_cusps, Angle, Pen};
 use lncert::scalar::Rational;
 
 /// The built-in copy of `../shared/data/seed000_nonic_ellipse.json`.
@@ -111,20 +111,20 @@ pub fn ln_pair_cusps(r: &OffsetResult, side: i8) -> Vec<(usize, f64)> {
     for (i, g) in r.segments.iter().enumerate() {
         let Some(xp) = x.get(g.piece) else { continue };
         let pair = (|| {
-            let sub = lncert::approx::span_f64(xp, g.t)?;
-            let n0 = lncert::approx::prep::unit_left_normal(xp, g.t.0)?;
-            let n1 = lncert::approx::prep::unit_left_normal(xp, g.t.1)?;
-            let e0 = lncert::approx::conv::pen_point_at(xp, g.t.0, qf, side)?;
-            let e1 = lncert::approx::conv::pen_point_at(xp, g.t.1, qf, side)?;
-            lncert::approx::lnpair::ln_pair_pen(&sub, &n0, &n1, &e0, &e1).ok()
+            let sub = lncert::offset::span_f64(xp, g.t)?;
+            let n0 = lncert::offset::kernels::unit_left_normal(xp, g.t.0)?;
+            let n1 = lncert::offset::kernels::unit_left_normal(xp, g.t.1)?;
+            let e0 = lncert::offset::kernels::pen_point_at(xp, g.t.0, qf, side)?;
+            let e1 = lncert::offset::kernels::pen_point_at(xp, g.t.1, qf, side)?;
+            lncert::offset::kernels::ln_pair_pen(&sub, &n0, &n1, &e0, &e1).ok()
         })();
-        let (Some(pair), Some(cb)) = (pair, lncert::approx::exact_bezier(&g.bezier)) else {
+        let (Some(pair), Some(cb)) = (pair, lncert::offset::exact_bezier(&g.bezier)) else {
             continue;
         };
         if pair.offset != g.bezier {
             continue; // not this segment's pair
         }
-        let Some(pa) = lncert::approx::exact_bezier(&pair.pa) else {
+        let Some(pa) = lncert::offset::exact_bezier(&pair.pa) else {
             continue;
         };
         let (cx, cy) = cb.hodograph().power_coords();
@@ -163,7 +163,7 @@ pub(crate) fn claims(out: &mut Vec<Claim>) {
         (Ok(x), Ok(p)) => {
             let minus = conv_cusps(0, &x[0], &p, -1);
             let plus = conv_cusps(0, &x[0], &p, 1);
-            let ts = |c: &[lncert::approx::conv::ConvCusp]| {
+            let ts = |c: &[lncert::offset::ConvCusp]| {
                 c.iter()
                     .map(|k| format!("{:.6}", k.t_approx))
                     .collect::<Vec<_>>()
@@ -221,21 +221,22 @@ pub(crate) fn claims(out: &mut Vec<Claim>) {
     // seed 000 §5: the inflection and the k-piece Gauss-map split of the nonic
     match nonic() {
         Ok(x) => {
-            let infl = lncert::approx::prep::inflections(&x[0]);
+            let infl = lncert::offset::kernels::inflections(&x[0]);
             let mut ends = vec![0.0];
             ends.extend(infl.iter().copied());
             ends.push(1.0);
             let mut parts = Vec::new();
             let mut splits = Vec::new();
             for w in ends.windows(2) {
-                let Some(sub) = lncert::approx::span_f64(&x[0], (w[0], w[1])) else {
+                let Some(sub) = lncert::offset::span_f64(&x[0], (w[0], w[1])) else {
                     continue;
                 };
-                let turn = lncert::approx::lnpair::total_turn(&sub).unwrap_or(f64::NAN);
-                let k: Vec<f64> = lncert::approx::lnpair::k_piece_split(&sub, std::f64::consts::PI)
-                    .iter()
-                    .map(|u| w[0] + (w[1] - w[0]) * u)
-                    .collect();
+                let turn = lncert::offset::kernels::total_turn(&sub).unwrap_or(f64::NAN);
+                let k: Vec<f64> =
+                    lncert::offset::kernels::k_piece_split(&sub, std::f64::consts::PI)
+                        .iter()
+                        .map(|u| w[0] + (w[1] - w[0]) * u)
+                        .collect();
                 parts.push(format!(
                     "[{:.4}, {:.4}] turns by {:.1}° → k = {}{}",
                     w[0],
@@ -397,8 +398,8 @@ pub(crate) fn claims(out: &mut Vec<Claim>) {
 /// ⊕ the pen ([`pen`] with its rotation within 1e-6 rad, as `lncert stroke`
 /// represents it at TOL 0.1) at TOL 0.1, sides by cubic LN pairs
 /// (seed 000 §5), round caps of proven cubics. Returns the stroke and seconds.
-pub fn font_h_stroke() -> Result<(lncert::outline::trim::Stroke, f64), String> {
-    use lncert::outline::trim::{stroke, PenShape, StrokeOptions};
+pub fn font_h_stroke() -> Result<(lncert::stroke::Stroke, f64), String> {
+    use lncert::stroke::{stroke, PenShape, StrokeOptions};
     let x = nonic()?;
     let pen = pen(1e-6)?;
     let mut o = StrokeOptions::with_pen(PenShape::Ellipse(pen), 0.1);
@@ -409,7 +410,7 @@ pub fn font_h_stroke() -> Result<(lncert::outline::trim::Stroke, f64), String> {
 }
 
 fn font_h_claim(out: &mut Vec<Claim>) {
-    use lncert::outline::trim::Piece;
+    use lncert::stroke::Piece;
     let id = "000-fig7c-font-H";
     let statement = "the font 'H' (Fig. 7(c)): the nonic ⊕ the ellipse, trimmed, closed by two half ellipses approximated by cubics (printed errors 8.81e-3 and 1.03e-2), within TOL = 0.1";
     match font_h_stroke() {
@@ -422,7 +423,7 @@ fn font_h_claim(out: &mut Vec<Claim>) {
             let holes = s
                 .contours
                 .iter()
-                .filter(|c| c.orientation == lncert::outline::trim::Orientation::Clockwise)
+                .filter(|c| c.orientation == lncert::stroke::Orientation::Clockwise)
                 .count();
             let caps = s
                 .caps

@@ -1,5 +1,5 @@
 //! Proven stroke outlines (issue 13, closed outlines): the circle-pen stroke
-//! ([`lncert::outline::trim::stroke`]) of every test curve of
+//! ([`lncert::stroke::stroke`]) of every test curve of
 //! `data/offset_test_curves.json` at each listed distance (as pen radius), and
 //! the inner offset of a closed B-spline whose loops must go.
 //!
@@ -12,11 +12,11 @@
 //! the exact boundary) is `cargo run --release --example stroke_compare`.
 
 use super::{Claim, Verdict};
-use lncert::approx::Output;
 use lncert::curve::{BSpline, Bezier, V2};
-use lncert::outline::trim::{stroke, Orientation, Piece, Stroke, StrokeOptions};
+use lncert::offset::Output;
 use lncert::scalar::{Rational, Scalar};
 use lncert::shape::{ArcDesc, ShapeDesc, ShapeError};
+use lncert::stroke::{stroke, Orientation, Piece, Stroke, StrokeOptions};
 use rayon::prelude::*;
 use std::time::Instant;
 
@@ -222,7 +222,7 @@ fn describe(s: &Stroke, secs: f64) -> String {
             )
         })
         .collect();
-    let claim = |c: &lncert::outline::trim::Claim| {
+    let claim = |c: &lncert::stroke::Claim| {
         if c.proven {
             format!("proven ({:.1e})", c.bound)
         } else {

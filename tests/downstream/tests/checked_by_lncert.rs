@@ -64,3 +64,67 @@ proptest! {
         }
     }
 }
+
+/// Every engine's error converts into `lncert::Error` with `?`, naming the
+/// field: shapes and curves, Hausdorff bounds, offsets, strokes, the seeds'
+/// kernels, the tangency solver and its raster and expression parser, the
+/// certificate verifier, and exact numbers.
+#[test]
+fn question_mark_works_across_every_engine() {
+    use lncert::scalar::Rational;
+    let q = |s: &str| parse_rational(s).unwrap();
+    let zero = || -> Rational { q("0") };
+    type R = Result<(), lncert::Error>;
+    let curve = || lncert::parse_curve("M 0 0 C 1 1 2 1 3 0").unwrap();
+    let cases: Vec<(&str, &str, Box<dyn Fn() -> R>)> = vec![
+        ("parse_curve", "SVG path data, byte 9", Box::new(|| lncert::parse_curve("M 0 0 Q 1").map(drop).map_err(Into::into))),
+        ("shape", "arc.radius", Box::new(|| {
+            ShapeDesc::parse(r#"{"arc": {"center": [0, 0], "radius": 0, "from": [1, 0], "to": [0, 1]}}"#)?;
+            Ok(())
+        })),
+        ("number", "\"one half\"", Box::new(|| {
+            parse_rational("one half")?;
+            Ok(())
+        })),
+        ("hausdorff", "rel", Box::new(|| {
+            let a = ShapeDesc::parse("M 0 0 L 1 0")?;
+            hausdorff(&a, &a, &HausdorffConfig { rel: 2.0, ..Default::default() })?;
+            Ok(())
+        })),
+        ("offset", "tol", Box::new(move || {
+            lncert::offset(&curve(), &lncert::OffsetOptions::new(q("1/4"), -1.0))?;
+            Ok(())
+        })),
+        ("stroke", "radius", Box::new(move || {
+            lncert::stroke(&curve(), &lncert::StrokeOptions::new(zero(), 1e-2))?;
+            Ok(())
+        })),
+        ("ln kernel", "b0,bm,b3", Box::new(move || {
+            let p = |x: &str| lncert::V2::new(q(x), q("0"));
+            lncert::ln::cubic::LnFrame::new(p("0"), p("1"), p("2"))?;
+            Ok(())
+        })),
+        ("tangency", "r", Box::new(move || {
+            lncert::TangencySystem::new(q("1"), q("0"), q("1"), zero(), zero(), zero())?;
+            Ok(())
+        })),
+        ("expression", "expression", Box::new(|| {
+            lncert::tangency::parse_poly2("x^^2")?;
+            Ok(())
+        })),
+        ("raster", "deg_x", Box::new(|| {
+            lncert::tangency::raster::DensePoly2::new(99, 0, vec![0.0; 100])?;
+            Ok(())
+        })),
+        ("verify", "format", Box::new(|| {
+            verify("{}")?;
+            Ok(())
+        })),
+    ];
+    for (engine, field, run) in cases {
+        let e = run().expect_err(engine);
+        assert_eq!(e.field, field, "{engine}: {e}");
+        assert!(!e.reason.is_empty(), "{engine}: {e:?}");
+        assert_eq!(e.to_string(), format!("invalid `{}`: {}", e.field, e.reason));
+    }
+}

@@ -64,39 +64,6 @@ pub fn on_circle(c: &V2<Rational>, r: &Rational, p: &V2<Rational>) -> bool {
     p.sub(c).norm2() == r * r
 }
 
-/// Whether the direction `v` (from the centre) lies in the closed angle range
-/// swept counter-clockwise from `a` to `b` (`a`, `b` nonzero); `None` when the
-/// signs cannot be decided (interval input).
-pub fn in_ccw_range<S: Scalar>(a: &V2<S>, b: &V2<S>, v: &V2<S>) -> Option<bool> {
-    use crate::scalar::Sign;
-    let nonneg = |s: Sign| match s {
-        Sign::Positive | Sign::Zero => Some(true),
-        Sign::Negative => Some(false),
-        Sign::Unknown => None,
-    };
-    let ab = a.cross(b).sign();
-    let dab = a.dot(b).sign();
-    let av = nonneg(a.cross(v).sign());
-    let vb = nonneg(v.cross(b).sign());
-    match (ab, dab) {
-        (Sign::Positive, _) => Some(av? && vb?),
-        (Sign::Zero, Sign::Positive) => {
-            // a zero arc: only the direction of a
-            Some(v.cross(a).sign() == Sign::Zero && v.dot(a).sign() == Sign::Positive)
-        }
-        (Sign::Unknown, _) | (Sign::Zero, Sign::Unknown) => None,
-        _ => {
-            // the arc is π or more: v is in it unless strictly inside the
-            // complementary (< π) range from b to a
-            match (av, vb) {
-                (Some(true), _) | (_, Some(true)) => Some(true),
-                (Some(false), Some(false)) => Some(false),
-                _ => None,
-            }
-        }
-    }
-}
-
 /// The range test from the signs of `a × v` and `v × b`, for a range below
 /// π (`minor`) or of π or more.
 fn in_ccw_range_signs(

@@ -27,8 +27,8 @@
 //! ellipse (`δ` the distance of the rational end on the unit circle to the
 //! exact one).
 
-use crate::approx::conv::Pen;
 use crate::curve::{bernstein_halves, bernstein_product, Bezier, V2};
+use crate::offset::conv::Pen;
 use crate::scalar::{interval_from_rational, rational_from_f64, Interval, Rational, Scalar};
 use num_traits::{One, Signed, Zero};
 
@@ -60,7 +60,7 @@ impl Form {
     ///
     /// # Examples
     /// ```
-    /// use lncert::outline::ellipse::Form;
+    /// use lncert::stroke::Form;
     /// use lncert::curve::V2;
     /// let q = |s: &str| lncert::parse_rational(s).unwrap();
     /// let f = Form::circle(&q("2"));
@@ -89,8 +89,8 @@ impl Form {
     ///
     /// # Examples
     /// ```
-    /// use lncert::approx::conv::{Angle, Pen};
-    /// use lncert::outline::ellipse::Form;
+    /// use lncert::offset::{Angle, Pen};
+    /// use lncert::stroke::Form;
     /// use lncert::curve::V2;
     /// let q = |s: &str| lncert::parse_rational(s).unwrap();
     /// let pen = Pen::ellipse(&q("2"), &q("1"), &Angle::parse("0").unwrap()).unwrap();
@@ -267,8 +267,8 @@ pub fn circle_deviation(b: &Bezier<Rational>, s: i8) -> Option<f64> {
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::conv::{Angle, Pen};
-/// use lncert::outline::ellipse::half_ellipse_cap;
+/// use lncert::offset::{Angle, Pen};
+/// use lncert::stroke::half_ellipse_cap;
 /// use lncert::curve::V2;
 /// let q = |s: &str| lncert::parse_rational(s).unwrap();
 /// let pen = Pen::ellipse(&q("0.7"), &q("0.3"), &Angle::parse("pi/6").unwrap()).unwrap();
@@ -407,8 +407,8 @@ pub fn pen_point_enclosure(c: &V2<Rational>, pen: &Pen, u: &V2<Rational>) -> V2<
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::conv::{Angle, Pen};
-/// use lncert::outline::ellipse::{outside_of, Form};
+/// use lncert::offset::{Angle, Pen};
+/// use lncert::stroke::{outside_of, Form};
 /// use lncert::curve::V2;
 /// use lncert::shape::parse_curve;
 /// let q = |s: &str| lncert::parse_rational(s).unwrap();

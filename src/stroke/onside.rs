@@ -979,8 +979,8 @@ mod tests {
             prop_assume!(h.length() > 1e-6);
             let c = curve[n - 1].points()[3].clone();
             let nl = (-h.y, h.x);
-            let from = crate::outline::circle::snap(&c, &r, nl);
-            let to = crate::outline::circle::snap(&c, &r, (-nl.0, -nl.1));
+            let from = crate::stroke::circle::snap(&c, &r, nl);
+            let to = crate::stroke::circle::snap(&c, &r, (-nl.0, -nl.1));
             let (Some(from), Some(to)) = (from, to) else { return Ok(()); };
             let arc = Arc { center: c.clone(), radius: r.clone(), from, to, clockwise };
             let inp = Input::new(&curve, &[(0, n, false)], &r);

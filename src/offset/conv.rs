@@ -83,7 +83,7 @@ impl Angle {
     ///
     /// # Examples
     /// ```
-    /// use lncert::approx::conv::Angle;
+    /// use lncert::offset::Angle;
     /// assert_eq!(Angle::parse("pi/6").unwrap(), Angle::PiTimes(lncert::parse_rational("1/6").unwrap()));
     /// assert_eq!(Angle::parse("30deg").unwrap(), Angle::Degrees(lncert::parse_rational("30").unwrap()));
     /// assert!(Angle::parse("pi/0").is_err());
@@ -191,7 +191,7 @@ impl Pen {
     ///
     /// # Examples
     /// ```
-    /// use lncert::approx::conv::Pen;
+    /// use lncert::offset::Pen;
     /// let q = |s: &str| lncert::parse_rational(s).unwrap();
     /// let p = Pen::from_matrix([[q("2"), q("0")], [q("0"), q("1")]]).unwrap();
     /// assert_eq!(p.q, [q("4"), q("0"), q("1")]);
@@ -228,7 +228,7 @@ impl Pen {
     ///
     /// # Examples
     /// ```
-    /// use lncert::approx::conv::{Angle, Pen};
+    /// use lncert::offset::{Angle, Pen};
     /// let q = |s: &str| lncert::parse_rational(s).unwrap();
     /// let p = Pen::ellipse(&q("0.7"), &q("0.3"), &Angle::parse("pi/6").unwrap()).unwrap();
     /// assert!(p.rotation_error > 0.0 && p.rotation_error <= 1e-12);
@@ -454,7 +454,7 @@ fn lambda_at_end(x: &Bezier<f64>, end: bool, q: [f64; 3], sigma: i8) -> Option<f
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::conv::convolution_approximant_f64;
+/// use lncert::offset::kernels::convolution_approximant_f64;
 /// use lncert::curve::{Bezier, V2};
 /// // a circle pen of radius 1/2 on the left: the offset at distance 1/2
 /// let x = Bezier::new(vec![V2::new(0.0, 0.0), V2::new(1.0, 0.0), V2::new(1.0, 1.0)]);
@@ -622,7 +622,7 @@ fn conv_cusp_polynomial<S: Scalar>(x: &Bezier<S>, q: &[S; 3]) -> (Poly<S>, Poly<
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::conv::{conv_cusps, Pen};
+/// use lncert::offset::{kernels::conv_cusps, Pen};
 /// use lncert::curve::{Bezier, V2};
 /// let q = |s: &str| lncert::parse_rational(s).unwrap();
 /// // a circle pen of radius 1 and a parabola of curvature 2 at its vertex:

@@ -23,7 +23,8 @@
 //! [`round_to_grid`] rounds control points to multiples of a dyadic grid
 //! ([`check_grid`]); the driver proves the rounded segment.
 
-use super::{conv, prep, Kernel, OffsetError};
+use super::driver::Kernel;
+use super::{conv, prep, OffsetError};
 use crate::curve::{Bezier, V2};
 use crate::scalar::{interval_from_rational, rational_from_f64, Rational, Scalar};
 use glam::DVec2;
@@ -48,7 +49,7 @@ impl Output {
     ///
     /// # Examples
     /// ```
-    /// use lncert::approx::Output;
+    /// use lncert::offset::Output;
     /// assert_eq!(Output::Cubic.name(), "cubic");
     /// assert_eq!(Output::default().name(), "native");
     /// ```
@@ -113,7 +114,7 @@ pub(super) fn hermite(e: &FitEnds, a: f64, b: f64) -> Bezier<f64> {
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::fit::{g2_hermite_cubics, FitEnds};
+/// use lncert::offset::kernels::{g2_hermite_cubics, FitEnds};
 /// use lncert::curve::V2;
 /// // a quarter of the unit circle: a = b = (√7 − 1)/3 ≈ 0.5486 (3a²/2 + a − 1 = 0)
 /// let e = FitEnds {
@@ -189,7 +190,7 @@ pub fn g2_hermite_cubics(e: &FitEnds) -> Vec<Bezier<f64>> {
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::fit::{least_squares_cubic, FitEnds};
+/// use lncert::offset::kernels::{least_squares_cubic, FitEnds};
 /// use lncert::curve::V2;
 /// let s: Vec<V2<f64>> = (1..16)
 ///     .map(|j| { let u = std::f64::consts::FRAC_PI_2 * j as f64 / 16.0; V2::new(u.cos(), u.sin()) })
@@ -292,7 +293,7 @@ pub(super) fn project(c: &Bezier<f64>, p: DVec2, mut u: f64) -> f64 {
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::fit::{tangent_quadratic, FitEnds};
+/// use lncert::offset::kernels::{tangent_quadratic, FitEnds};
 /// use lncert::curve::V2;
 /// let e = FitEnds {
 ///     p0: V2::new(1.0, 0.0), p1: V2::new(0.0, 1.0),
@@ -604,7 +605,7 @@ pub(super) fn cusps_to_cut(cusps: &[prep::OffsetCusp], tol: f64) -> Vec<(usize, 
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::fit::rounding_move;
+/// use lncert::offset::kernels::rounding_move;
 /// let m = rounding_move(&lncert::parse_rational("1/2048").unwrap());
 /// assert!(m >= 2f64.sqrt() / 4096.0 && m < 3.46e-4);
 /// ```
@@ -631,7 +632,7 @@ pub fn rounding_move(grid: &Rational) -> f64 {
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::fit::check_grid;
+/// use lncert::offset::kernels::check_grid;
 /// let q = |s: &str| lncert::parse_rational(s).unwrap();
 /// assert!(check_grid(&q("1/2048"), 1e-3, 10.0).is_ok());
 /// assert!(check_grid(&q("1/1000"), 1e-3, 10.0).is_err());
@@ -642,7 +643,7 @@ pub fn check_grid(grid: &Rational, tol: f64, scale: f64) -> Result<f64, OffsetEr
     check_grid_storage(grid, scale)?;
     let mv = rounding_move(grid);
     if mv.is_nan() || tol.is_nan() || mv >= tol {
-        return Err(super::bad(
+        return Err(super::options::bad(
             "grid",
             format!(
                 "rounding to {grid} moves the curve by up to {mv:e} (grid·√2/2) ≥ the tolerance {tol:e}: \
@@ -658,7 +659,7 @@ pub fn check_grid(grid: &Rational, tol: f64, scale: f64) -> Result<f64, OffsetEr
 /// multiples over coordinates up to `8 (1 + scale)` are exact `f64` numbers
 /// (no condition on the tolerance).
 pub fn check_grid_storage(grid: &Rational, scale: f64) -> Result<(), OffsetError> {
-    let bad = |reason: String| super::bad("grid", reason);
+    let bad = |reason: String| super::options::bad("grid", reason);
     if !grid.is_positive() {
         return Err(bad(format!("{grid} must be > 0")));
     }
@@ -690,7 +691,7 @@ pub fn check_grid_storage(grid: &Rational, scale: f64) -> Result<(), OffsetError
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::fit::round_to_grid;
+/// use lncert::offset::kernels::round_to_grid;
 /// use lncert::curve::{Bezier, V2};
 /// let b = Bezier::new(vec![V2::new(0.3, -0.26), V2::new(1.0, 0.5)]);
 /// let r = round_to_grid(&b, &lncert::parse_rational("1/4").unwrap()).unwrap();

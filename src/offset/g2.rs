@@ -56,7 +56,7 @@ pub fn rot_cw<S: Scalar>(v: &V2<S>) -> V2<S> {
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::g2::moments;
+/// use lncert::offset::kernels::moments;
 /// use lncert::curve::{Bezier, V2};
 /// // The moments sum to ∫ x′ = x(1) − x(0).
 /// let x = Bezier::new(vec![V2::new(0.0, 0.0), V2::new(1.0, 2.0), V2::new(3.0, 1.0)]);
@@ -88,7 +88,7 @@ pub fn moments<S: Scalar>(x: &Bezier<S>) -> [V2<S>; 4] {
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::g2::ends;
+/// use lncert::offset::kernels::ends;
 /// use lncert::curve::{Bezier, V2};
 /// // A quadratic turning left: positive curvature, N = R T points right.
 /// let x = Bezier::new(vec![V2::new(0.0, 0.0), V2::new(1.0, 0.0), V2::new(1.0, 1.0)]);
@@ -147,7 +147,7 @@ pub fn system<S: Scalar>(e: &G2Ends<S>, m: &[V2<S>; 4]) -> (V2<S>, V2<S>, V2<S>)
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::g2::{ends, moments, solve_alpha};
+/// use lncert::offset::kernels::{ends, moments, solve_alpha};
 /// use lncert::curve::{Bezier, V2};
 /// let x = Bezier::new(vec![V2::new(0.0, 0.0), V2::new(1.0, 0.0), V2::new(1.0, 1.0)]);
 /// let a = solve_alpha(&ends(&x).unwrap(), &moments(&x)).unwrap();
@@ -175,7 +175,7 @@ pub fn solve_alpha<S: Scalar>(e: &G2Ends<S>, m: &[V2<S>; 4]) -> Option<[S; 4]> {
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::g2::normal_approximant;
+/// use lncert::offset::kernels::normal_approximant;
 /// use lncert::curve::{Bezier, V2};
 /// // α ≡ 0: the normal field stays at n0.
 /// let x = Bezier::new(vec![V2::new(0.0, 0.0), V2::new(1.0, 0.0)]);
@@ -211,7 +211,7 @@ pub fn elevate_by<S: Scalar>(x: &Bezier<S>, k: usize) -> Bezier<S> {
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::g2::offset_approximant;
+/// use lncert::offset::kernels::offset_approximant;
 /// use lncert::curve::{Bezier, V2};
 /// // A quarter-circle-like cubic offset by 1/10 to the left: degree 3 + 3, and the
 /// // ends interpolate x + d N exactly in exact arithmetic (here to float rounding).
@@ -256,7 +256,7 @@ pub const SINGULAR_SYSTEM_REL: f64 = 1e-9;
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::g2::offset_approximant_f64;
+/// use lncert::offset::kernels::offset_approximant_f64;
 /// use lncert::curve::{Bezier, V2};
 /// let x = Bezier::new(vec![V2::new(0.0, 0.0), V2::new(2.0, 0.0)]);
 /// let (o, alpha) = offset_approximant_f64(&x, 0.5).unwrap();

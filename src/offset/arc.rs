@@ -8,7 +8,8 @@
 //! `proofs/004-circular-precision.md`). So the offset of an arc is returned as
 //! the exact concentric arc, with error `0`.
 
-use super::{bad, OffsetError};
+use super::options::bad;
+use super::OffsetError;
 use crate::curve::V2;
 use crate::scalar::Rational;
 pub use crate::shape::TravelledArc;
@@ -34,7 +35,7 @@ pub enum ArcOffset {
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::arc::{offset_arc, ArcOffset, TravelledArc};
+/// use lncert::offset::{offset_arc, ArcOffset, TravelledArc};
 /// use lncert::shape::ArcDesc;
 /// use lncert::curve::V2;
 /// use lncert::scalar::{frac, Rational};

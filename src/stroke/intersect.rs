@@ -460,7 +460,7 @@ fn minus_corners(corners: &[((u8, u8), Rational)]) -> Vec<RationalBox> {
 ///
 /// # Examples
 /// ```
-/// use lncert::outline::intersect::{intersections, IntersectOptions};
+/// use lncert::stroke::{intersections, IntersectOptions};
 /// use lncert::shape::parse_curve;
 /// // a cubic with a loop, and a line across it
 /// let loopy = parse_curve("M 0 0 C 3 2 -1 2 2 0").unwrap();

@@ -13,7 +13,7 @@
 //! The paper measures the error by eq. (8), `d_H(p, pa) + |r| d_H(c, ca)`, with
 //! `d_H(c, ca)` from the closed form of Prop 6.1 ([`paper_error`]); lncert also
 //! certifies the Hausdorff distance of the final offset itself (the driver in
-//! [`crate::approx`]).
+//! [`crate::offset`]).
 
 use crate::curve::{Bezier, V2};
 use crate::ln::circle::ArcApprox;
@@ -61,7 +61,7 @@ fn frame_cubic(b0: &V2<f64>, bm: &V2<f64>, b3: &V2<f64>, d0: f64, d1: f64) -> Be
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::lnpair::ln_pair;
+/// use lncert::offset::kernels::ln_pair;
 /// use lncert::curve::{Bezier, V2};
 /// // A quarter of the unit circle, roughly, offset by 1/2 outwards (to the right).
 /// let k = 0.5523;
@@ -148,7 +148,7 @@ pub fn ln_pair(x: &Bezier<f64>, n0: &V2<f64>, n1: &V2<f64>, d: f64) -> Result<Ln
 ///
 /// # Examples
 /// ```
-/// use lncert::approx::lnpair::{ln_pair, ln_pair_pen};
+/// use lncert::offset::kernels::{ln_pair, ln_pair_pen};
 /// use lncert::curve::{Bezier, V2};
 /// let k = 0.5523;
 /// let x = Bezier::new(vec![V2::new(1.0, 0.0), V2::new(1.0, k), V2::new(k, 1.0), V2::new(0.0, 1.0)]);

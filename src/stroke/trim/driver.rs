@@ -1,0 +1,490 @@
+//! The driver: [`stroke`] and its phases.
+
+use super::add_note;
+use super::chain::{chain, check_simple};
+use super::classify::{foot, prove_kept, prove_removed, Part};
+use super::pinch::pinched_loops;
+use super::sides::{check, raw_contours, Kind, Raw};
+use super::split::{find_crossings, split_piece, Sub};
+use super::types::{Cap, CapReport, Claim, Classified, Piece, Stroke, StrokeError, StrokeOptions};
+use crate::curve::{Bezier, V2};
+use crate::scalar::{rational_from_f64, Rational, Scalar};
+use crate::stroke::ellipse::Form;
+use crate::stroke::intersect::IntersectOptions;
+use crate::stroke::onside::Input;
+use num_traits::Zero;
+use rayon::prelude::*;
+use std::time::Instant;
+
+/// Builds the proven stroke outline of `curve` with a circular pen of radius
+/// `opts.radius` (see the module docs and `proofs/trimming.md`).
+///
+/// Errors name the field: an empty or disconnected curve, a point piece, a
+/// radius that is not positive, a tolerance that is not a positive number, or
+/// an offset error (a singular input piece). Claims that cannot be decided are
+/// not errors: they come back unproven with a note.
+///
+/// # Examples
+/// ```
+/// use lncert::stroke::{stroke, StrokeOptions, Orientation};
+/// use lncert::shape::parse_curve;
+/// use lncert::parse_rational;
+/// // a straight segment: the stadium, two segments and two half circles
+/// let x = parse_curve("M 0 0 L 2 0").unwrap();
+/// let s = stroke(&x, &StrokeOptions::new(parse_rational("1/2").unwrap(), 1e-3)).unwrap();
+/// assert!(s.proven(), "{:?} {:?} {:?}", s.a, s.b, s.c);
+/// assert_eq!(s.contours.len(), 1);
+/// assert_eq!(s.contours[0].orientation, Orientation::CounterClockwise);
+/// assert!(s.contours[0].closed);
+/// ```
+pub fn stroke(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<Stroke, StrokeError> {
+    let first = stroke_at(curve, opts, 8.0)?;
+    if first.classified.undecided == 0 && first.c.proven {
+        return Ok(first);
+    }
+    // refinement on demand: sub-pieces that neither test decides are most
+    // often a raw piece whose error bound `e` is as large as the geometry it
+    // must resolve (a shallow crossing, a tail inside S by less than `e`);
+    // the sides are rebuilt once at TOL/64 and the better outcome is kept
+    let second = stroke_at(curve, opts, 64.0)?;
+    let score = |s: &Stroke| {
+        (
+            [s.a.proven, s.b.proven, s.c.proven]
+                .iter()
+                .filter(|p| **p)
+                .count(),
+            std::cmp::Reverse(s.classified.undecided),
+        )
+    };
+    if score(&second) > score(&first) {
+        let mut second = second;
+        second.notes.push(format!(
+            "the sides were rebuilt at TOL/64 (at TOL/8 {} sub-pieces were undecided{})",
+            first.classified.undecided,
+            if first.c.proven {
+                ""
+            } else {
+                ", claim (c) not proven"
+            }
+        ));
+        Ok(second)
+    } else {
+        Ok(first)
+    }
+}
+
+/// [`stroke`] with the sides built within `TOL / raw_div`.
+fn stroke_at(
+    curve: &[Bezier<Rational>],
+    opts: &StrokeOptions,
+    raw_div: f64,
+) -> Result<Stroke, StrokeError> {
+    let comps = check(curve, opts)?;
+    let closed = comps.iter().all(|c| c.2);
+    let form = opts.form()?;
+    let t0 = Instant::now();
+    let (raws, mut notes, caps) = build_raw(curve, opts, &comps, raw_div)?;
+    log::debug!("offsets: {:?}", t0.elapsed());
+
+    // --- crossings of the raw arrangement, and the split
+    let iopts = IntersectOptions {
+        max_boxes_per_pair: opts.max_boxes_per_pair,
+        self_intersections: true,
+    };
+    let mut found = find_crossings(&raws, &iopts, &mut notes, t0);
+    let mut subs: Vec<Sub> = Vec::new();
+    for (i, raw) in raws.iter().enumerate() {
+        subs.extend(split_piece(i, &raw.piece, &mut found.splits[i]));
+    }
+
+    // --- classify, then drop pinched loops and spurs
+    let run = Run {
+        curve,
+        curve_f: curve.iter().map(|b| b.map(Scalar::approx)).collect(),
+        comps: &comps,
+        opts,
+        form: &form,
+        raws: &raws,
+        tol: opts.tol,
+        t0,
+    };
+    let classes = classify(&run, &subs);
+    let mut tally = tally(&run, &subs, &classes, &mut notes);
+    log::debug!("classified: {:?}", t0.elapsed());
+    drop_pinched(&run, &subs, &mut tally, &mut notes);
+
+    // --- chain, and claim (c)
+    let out_pieces: Vec<Piece> = subs
+        .iter()
+        .zip(&tally.keep)
+        .filter(|(_, k)| **k)
+        .map(|(s, _)| s.post.clone())
+        .collect();
+    let contours = chain(out_pieces);
+    let (c_ok, c_complete, c_note) = check_simple(&contours, &iopts);
+    log::debug!("checked: {:?}", t0.elapsed());
+    if log::log_enabled!(log::Level::Trace) {
+        for (k, s) in subs.iter().enumerate() {
+            log::trace!(
+                "sub {k}: raw {} [{:.6}, {:.6}] keep {} kept {:?} removed {:?} est {:.6} delta {:.2e}",
+                s.raw, s.range.0.approx(), s.range.1.approx(), tally.keep[k], classes.kept[k], classes.removed[k], classes.estimates[k], s.delta
+            );
+        }
+    }
+
+    let butt = !closed && opts.cap == Cap::Butt;
+    let (a, b) = claims_ab(&tally, &notes, opts.tol, butt);
+    let c = Claim {
+        proven: c_ok,
+        bound: 0.0,
+        note: c_note,
+    };
+    Ok(Stroke {
+        contours,
+        crossings: found.crossings,
+        raw_pieces: raws.len(),
+        raw_complete: found.complete,
+        complete: c_complete,
+        a,
+        b,
+        c,
+        classified: tally.classified,
+        tol: opts.tol,
+        closed_curve: closed,
+        notes,
+        pen: opts.ellipse.clone(),
+        caps,
+    })
+}
+
+/// Step 1: every component's sides and caps as raw pieces, with the notes of
+/// their construction and the elliptical pen's cap reports. The trimming is
+/// over all of them (the region is the union of the components' regions).
+#[allow(clippy::type_complexity)]
+fn build_raw(
+    curve: &[Bezier<Rational>],
+    opts: &StrokeOptions,
+    comps: &[(usize, usize, bool)],
+    raw_div: f64,
+) -> Result<(Vec<Raw>, Vec<String>, Vec<CapReport>), StrokeError> {
+    let mut raw_contours_all = Vec::new();
+    let mut notes = Vec::new();
+    let mut caps = Vec::new();
+    for &(first, end, c_closed) in comps {
+        let (rc, n, cp) = raw_contours(&curve[first..end], opts, c_closed, first, raw_div)?;
+        raw_contours_all.extend(rc);
+        notes.extend(n);
+        caps.extend(cp);
+    }
+    let raws: Vec<Raw> = raw_contours_all.into_iter().flatten().collect();
+    Ok((raws, notes, caps))
+}
+
+/// What the classification phases share: the input, the pen and the raw
+/// pieces the sub-pieces come from.
+struct Run<'a> {
+    curve: &'a [Bezier<Rational>],
+    /// The input in floats (for estimates and feet only).
+    curve_f: Vec<Bezier<f64>>,
+    comps: &'a [(usize, usize, bool)],
+    opts: &'a StrokeOptions,
+    form: &'a Form,
+    raws: &'a [Raw],
+    tol: f64,
+    /// The start of the run (for the phase timings in the log).
+    t0: Instant,
+}
+
+/// The per-sub-piece outcome of the tests.
+struct Classes {
+    /// Float estimate of the pen distance of the sub-piece's midpoint (pushed
+    /// out along its right normal) to the input.
+    estimates: Vec<f64>,
+    /// Proven kept, with the bound of claim (a).
+    kept: Vec<Option<f64>>,
+    /// Proven removed, and whether the near-crossing relaxation was used.
+    removed: Vec<Option<bool>>,
+}
+
+/// λ of the removal: a removed part within λ of a kept crossing point costs
+/// (b) `e + λ`, so λ may use what TOL leaves above `e` (at least TOL/2).
+fn lambda_f(tol: f64, e: f64) -> f64 {
+    (0.95 * (tol - e)).max(tol / 2.0)
+}
+
+/// Step 4: kept first (the near-crossing relaxation of removal needs them),
+/// then removal of the rest.
+fn classify(run: &Run, subs: &[Sub]) -> Classes {
+    let estimates: Vec<f64> = subs
+        .par_iter()
+        .map(|s| {
+            let (m, _) = Part::initial(&s.pre)
+                .and_then(|p| p.into_iter().next())
+                .map(|p| p.mid_right_normal())
+                .unwrap_or(((0.0, 0.0), (0.0, 0.0)));
+            foot(&run.curve_f, run.form, m).0
+        })
+        .collect();
+    log::debug!("estimates: {:?}", run.t0.elapsed());
+    let onside_input = run
+        .form
+        .circle
+        .then(|| Input::new(run.curve, run.comps, &run.opts.radius));
+    let kept: Vec<Option<f64>> = subs
+        .par_iter()
+        .zip(&estimates)
+        .map(|(s, est)| {
+            let tt = Instant::now();
+            let r = kept_bound(run, onside_input.as_ref(), s, *est);
+            log::trace!("kept raw {} {:?} {:?}", s.raw, tt.elapsed(), r);
+            r
+        })
+        .collect();
+    log::debug!("kept: {:?}", run.t0.elapsed());
+    let near: Vec<V2<Rational>> = subs
+        .iter()
+        .zip(&kept)
+        .filter(|(_, k)| k.is_some())
+        .flat_map(|(s, _)| {
+            let mut v = Vec::new();
+            if s.end_splits[0] {
+                v.push(s.post.start().clone());
+            }
+            if s.end_splits[1] {
+                v.push(s.post.end().clone());
+            }
+            v
+        })
+        .collect();
+    let removed: Vec<Option<bool>> = subs
+        .par_iter()
+        .zip(&kept)
+        .map(|(s, k)| removal(run, s, *k, &near))
+        .collect();
+    Classes {
+        estimates,
+        kept,
+        removed,
+    }
+}
+
+/// The kept test of one sub-piece: its bound for claim (a) when proven.
+fn kept_bound(run: &Run, onside_input: Option<&Input>, s: &Sub, est: f64) -> Option<f64> {
+    let tol = run.tol;
+    let raw = &run.raws[s.raw];
+    let e_in = raw.e_in + s.delta;
+    if raw.kind == Kind::Butt {
+        return Some(e_in);
+    }
+    if est < run.form.reach - 4.0 * e_in.max(tol / 8.0) {
+        return None;
+    }
+    // one decision for the whole sub-piece where the exact offset
+    // points it stands for are proven on ∂S (module `onside`); an
+    // exact cap or join arc is its own exact counterpart
+    if let (Piece::Arc(arc), Some(input)) = (&s.pre, onside_input) {
+        let budget = tol - e_in;
+        if budget > 0.0 {
+            if let Some(l) = input.prove_arc(arc, budget, 2048) {
+                return Some(e_in + l);
+            }
+        }
+        log::trace!("onside failed: raw {} (arc)", s.raw);
+    }
+    if let (Some(link), Some(input)) = (&raw.link, onside_input) {
+        let budget = tol - e_in;
+        let range = (s.range.0.approx(), s.range.1.approx());
+        let pad = 1e-12;
+        if budget > 0.0 {
+            if let Some((t0, t1)) = link.exact_range(range.0 - pad, range.1 + pad) {
+                if let Some(l) = input.prove_interval(link.piece, &link.d, t0, t1, budget, 2048) {
+                    return Some(e_in + l);
+                }
+                log::trace!(
+                    "onside failed: raw {} piece {} t [{t0}, {t1}]",
+                    s.raw,
+                    link.piece
+                );
+            } else {
+                log::trace!("onside: no exact range for raw {}", s.raw);
+            }
+        }
+    }
+    prove_kept(run.curve, &run.curve_f, &s.post, e_in, run.form, tol)
+}
+
+/// The removal test of one sub-piece that is not kept (only boundary pieces
+/// are tested): `Some(used)` when proven, `used` whether a kept crossing point
+/// of `near` was needed.
+fn removal(run: &Run, s: &Sub, kept: Option<f64>, near: &[V2<Rational>]) -> Option<bool> {
+    let raw = &run.raws[s.raw];
+    if kept.is_some() || raw.kind != Kind::Boundary {
+        return None;
+    }
+    let tt = Instant::now();
+    // the error bound of a part of `pre` (parameters `[t0, t1]` on it):
+    // the map's boxes over it plus the raw piece's moves since
+    let local = |t0: f64, t1: f64| -> Option<f64> {
+        let link = raw.link.as_ref()?;
+        let (r0, r1) = (s.range.0.approx(), s.range.1.approx());
+        let pad = 1e-9;
+        let lb = link.local_bound(r0 + t0 * (r1 - r0) - pad, r0 + t1 * (r1 - r0) + pad)?;
+        // `raw.e − seg_e` is a float difference: a few ulps of
+        // `raw.e` cover its rounding (and that of raw.e's sums)
+        let moved = (raw.e - link.seg_e).max(0.0) + 8.0 * f64::EPSILON * raw.e;
+        Some((lb + moved) * (1.0 + 1e-12))
+    };
+    let lambda =
+        rational_from_f64(lambda_f(run.tol, raw.e)).unwrap_or_else(<Rational as Zero>::zero);
+    let r = prove_removed(
+        run.curve,
+        &run.curve_f,
+        &s.pre,
+        raw.e,
+        &local,
+        run.form,
+        near,
+        &lambda,
+    );
+    log::trace!("removed raw {} {:?} {:?}", s.raw, tt.elapsed(), r);
+    r
+}
+
+/// The classification's counts, the bounds of claims (a) and (b), and which
+/// sub-pieces go to the output.
+struct Tally {
+    classified: Classified,
+    a_bound: f64,
+    b_bound: f64,
+    a_ok: bool,
+    b_ok: bool,
+    keep: Vec<bool>,
+}
+
+/// Counts the classes, raises the claims' bounds, and picks the output: kept
+/// pieces, and for undecided ones (shown, not proven) what looks like boundary.
+fn tally(run: &Run, subs: &[Sub], classes: &Classes, notes: &mut Vec<String>) -> Tally {
+    let mut t = Tally {
+        classified: Classified::default(),
+        a_bound: 0.0,
+        b_bound: 0.0,
+        a_ok: true,
+        b_ok: true,
+        keep: vec![false; subs.len()],
+    };
+    for (k, s) in subs.iter().enumerate() {
+        let raw = &run.raws[s.raw];
+        if let Some(bd) = classes.kept[k] {
+            t.classified.kept += 1;
+            t.keep[k] = true;
+            t.a_bound = t.a_bound.max(bd);
+            if raw.kind == Kind::Boundary {
+                t.b_bound = t.b_bound.max(raw.e + s.delta);
+            }
+        } else if raw.kind == Kind::Connector {
+            t.classified.dropped_connectors += 1;
+        } else if let Some(used) = classes.removed[k] {
+            t.classified.removed += 1;
+            t.b_bound = t.b_bound.max(raw.e);
+            if used {
+                // the λ the removal test was given (its rational is exactly
+                // this f64), plus a hair for the sum's rounding
+                t.b_bound = t
+                    .b_bound
+                    .max((raw.e + lambda_f(run.tol, raw.e)) * (1.0 + 1e-12));
+            }
+        } else {
+            t.classified.undecided += 1;
+            t.a_ok = false;
+            t.b_ok = false;
+            // shown, not proven: keep what looks like boundary
+            t.keep[k] = classes.estimates[k] >= run.form.reach - 2.0 * (raw.e_in + s.delta);
+            add_note(
+                notes,
+                format!(
+                    "sub-piece of raw piece {} undecided (distance estimate {:.6})",
+                    s.raw, classes.estimates[k]
+                ),
+            );
+        }
+    }
+    for raw in run.raws {
+        if raw.kind == Kind::Boundary && !raw.e.is_finite() {
+            t.b_ok = false;
+        }
+    }
+    t
+}
+
+/// Pinched loops and spurs: kept pieces that close a loop at an exact point X
+/// of the output, or dangle from one, each within a certified reach of the
+/// pieces that stay at X, are dropped (a boundary point near them is within
+/// `e + δ + reach` of the output).
+fn drop_pinched(run: &Run, subs: &[Sub], tally: &mut Tally, notes: &mut Vec<String>) {
+    let kept_idx: Vec<usize> = (0..subs.len()).filter(|&k| tally.keep[k]).collect();
+    // a spur may reach as far from the live pieces as keeps (b) within tol
+    let spur_caps: Vec<f64> = kept_idx
+        .iter()
+        .map(|&k| {
+            let raw = &run.raws[subs[k].raw];
+            if raw.kind == Kind::Boundary {
+                run.tol - raw.e - subs[k].delta
+            } else {
+                // a connector or butt chord stands for no point of ∂S
+                run.tol
+            }
+        })
+        .collect();
+    let dropped = pinched_loops(
+        &kept_idx.iter().map(|&k| &subs[k].post).collect::<Vec<_>>(),
+        &spur_caps,
+    );
+    if !dropped.is_empty() {
+        for &(d, reach) in &dropped {
+            let k = kept_idx[d];
+            tally.keep[k] = false;
+            let raw = &run.raws[subs[k].raw];
+            if raw.kind == Kind::Boundary {
+                tally.b_bound = tally.b_bound.max(raw.e + subs[k].delta + reach);
+            }
+        }
+        add_note(
+            notes,
+            format!(
+                "{} kept pieces forming pinched loops or spurs dropped (each within a certified reach of the pieces that stay at its point, added to (b))",
+                dropped.len()
+            ),
+        );
+    }
+}
+
+/// Claims (a) and (b) from the tally (not claimed for butt caps; not proven
+/// when an offset did not reach its tolerance).
+fn claims_ab(tally: &Tally, notes: &[String], tol: f64, butt: bool) -> (Claim, Claim) {
+    let offsets_ok = notes.iter().all(|n| !n.contains("did not reach"));
+    let claim = |ok: bool, bound: f64, shown: String| Claim {
+        proven: ok && offsets_ok && bound <= tol && !butt,
+        bound: if ok { bound } else { f64::INFINITY },
+        note: if butt {
+            "not claimed for butt caps (the region is not x ⊕ pen)".into()
+        } else if ok {
+            shown
+        } else {
+            "some sub-pieces could not be classified".into()
+        },
+    };
+    let (a_bound, b_bound) = (tally.a_bound, tally.b_bound);
+    let a = claim(
+        tally.a_ok,
+        a_bound,
+        format!("every kept sub-piece is within {a_bound:.3e} of exact offset points proven on ∂S, or of a point proven outside S and a point of S"),
+    );
+    let b = claim(
+        tally.b_ok,
+        b_bound,
+        format!(
+            "every sub-piece of the raw pieces is kept or proven interior; bound {b_bound:.3e}"
+        ),
+    );
+    (a, b)
+}

@@ -1,0 +1,269 @@
+//! Pinched loops and spurs among the kept pieces, dropped with a certified
+//! reach ([`pinched_loops`], [`reach_hi`]).
+
+use super::classify::{box_dist_hi, iv_point, Part};
+use super::sides::approx_dir;
+use super::types::Piece;
+use crate::curve::V2;
+use crate::scalar::{interval_from_rational, rational_from_f64, Interval, Rational, Scalar};
+
+/// Pieces to drop from the output, each with its certified *reach*: an upper
+/// bound of the distance from any of its points to the pieces that stay.
+///
+/// - *Pinched loops*: a chain of pieces `p_i, …, p_j` (following exact
+///   end = start) that starts and ends at one exact point `X` where another
+///   live piece starts, every piece within its cap of `X` or of the live
+///   pieces at `X` outside the chain ([`reach_hi`]).
+/// - *Spurs*: a piece with a dangling end (no live piece continues it), within
+///   its cap of its other end `Y` or of the live pieces at `Y`.
+///
+/// `caps[k]` is how far piece `k` may be from the output for claim (b) to
+/// stay within tol. Every dropped group is re-checked against the final live
+/// pieces (a piece it was measured against may have been dropped after it)
+/// and restored if the check fails; restoring only adds pieces, so this
+/// repeats until nothing changes. Finally every dropped group's point must
+/// still end a live piece.
+pub(super) fn pinched_loops(pieces: &[&Piece], caps: &[f64]) -> Vec<(usize, f64)> {
+    let n = pieces.len();
+    let mut dropped = vec![false; n];
+    // the live pieces at `x` outside `chain`
+    let live_at = |x: &V2<Rational>, chain: &[usize], dropped: &[bool]| -> Vec<&Piece> {
+        (0..n)
+            .filter(|&j| {
+                !chain.contains(&j)
+                    && !dropped[j]
+                    && (pieces[j].start() == x || pieces[j].end() == x)
+            })
+            .map(|j| pieces[j])
+            .collect()
+    };
+    let mut groups: Vec<(V2<Rational>, Vec<usize>)> = Vec::new();
+    for s in 0..n {
+        if dropped[s] {
+            continue;
+        }
+        let x = pieces[s].start().clone();
+        // X must be a pinch: at least two live pieces start there
+        let starts = (0..n)
+            .filter(|&k| !dropped[k] && pieces[k].start() == &x)
+            .count();
+        if starts < 2 {
+            continue;
+        }
+        // follow the chain from s while it stays near X and the pieces there
+        let mut chain = vec![s];
+        let mut cur = s;
+        let closed = loop {
+            let refs = live_at(&x, &chain, &dropped);
+            if reach_hi(pieces[cur], &refs, &x, caps[cur]).is_none() {
+                break false;
+            }
+            let end = pieces[cur].end();
+            if end == &x {
+                break true;
+            }
+            let next =
+                (0..n).find(|&k| !dropped[k] && !chain.contains(&k) && pieces[k].start() == end);
+            match next {
+                Some(k) if chain.len() < 64 => {
+                    chain.push(k);
+                    cur = k;
+                }
+                _ => break false,
+            }
+        };
+        if closed {
+            for &k in &chain {
+                dropped[k] = true;
+            }
+            groups.push((x, chain));
+        }
+    }
+    // spurs
+    loop {
+        let mut changed = false;
+        for k in 0..n {
+            if dropped[k] {
+                continue;
+            }
+            let (a, b) = (pieces[k].start(), pieces[k].end());
+            let live_end = |x: &V2<Rational>, starts: bool| {
+                (0..n).any(|j| {
+                    j != k
+                        && !dropped[j]
+                        && if starts {
+                            pieces[j].start() == x
+                        } else {
+                            pieces[j].end() == x
+                        }
+                })
+            };
+            let touches = |x: &V2<Rational>| {
+                (0..n).any(|j| {
+                    j != k && !dropped[j] && (pieces[j].start() == x || pieces[j].end() == x)
+                })
+            };
+            let y = if !live_end(b, true) && touches(a) {
+                a.clone()
+            } else if !live_end(a, false) && touches(b) {
+                b.clone()
+            } else {
+                continue;
+            };
+            if reach_hi(pieces[k], &live_at(&y, &[k], &dropped), &y, caps[k]).is_some() {
+                dropped[k] = true;
+                groups.push((y, vec![k]));
+                changed = true;
+            }
+        }
+        if !changed {
+            break;
+        }
+    }
+    // re-check against the final live pieces; a group's point must still end
+    // a live piece (the argument of (b) needs X in the output)
+    let mut reach = vec![None; n];
+    loop {
+        let mut changed = false;
+        for (x, chain) in &groups {
+            if chain.iter().all(|&k| !dropped[k]) {
+                continue;
+            }
+            let refs = live_at(x, chain, &dropped);
+            let reaches: Option<Vec<f64>> = if refs.is_empty() {
+                None
+            } else {
+                chain
+                    .iter()
+                    .map(|&k| reach_hi(pieces[k], &refs, x, caps[k]))
+                    .collect()
+            };
+            match reaches {
+                Some(r) => {
+                    for (&k, r) in chain.iter().zip(r) {
+                        reach[k] = Some(r);
+                    }
+                }
+                None => {
+                    for &k in chain {
+                        dropped[k] = false;
+                        reach[k] = None;
+                    }
+                    changed = true;
+                }
+            }
+        }
+        if !changed {
+            break;
+        }
+    }
+    (0..n)
+        .filter(|&k| dropped[k])
+        .filter_map(|k| reach[k].map(|r| (k, r)))
+        .collect()
+}
+
+/// A certified upper bound of `sup_{p ∈ piece} dist(p, refs ∪ {y})` if it is
+/// at most `cap`: the piece is halved (interval Bézier halves, exact arc
+/// midpoints) until each part's hull lies within `cap` of one point proven on
+/// a reference piece (a point of the exact piece enclosed in intervals, the
+/// float nearest point only choosing where) or of `y`.
+pub(super) fn reach_hi(piece: &Piece, refs: &[&Piece], y: &V2<Rational>, cap: f64) -> Option<f64> {
+    if cap.is_nan() || cap <= 0.0 {
+        return None;
+    }
+    let yi = iv_point(y);
+    let mut todo: Vec<(Part, u32)> = Part::initial(piece)?.into_iter().map(|p| (p, 0)).collect();
+    let mut worst: f64 = 0.0;
+    let mut budget = 256usize;
+    while let Some((part, depth)) = todo.pop() {
+        let h = part.hull()?;
+        let far = |q: &V2<Interval>| h.iter().map(|p| box_dist_hi(p, q)).fold(0.0, f64::max);
+        let c = {
+            let k = h.len() as f64;
+            let (sx, sy) = h
+                .iter()
+                .fold((0.0, 0.0), |(x, y), p| (x + p.x.mid(), y + p.y.mid()));
+            (sx / k, sy / k)
+        };
+        let mut best = far(&yi);
+        for r in refs {
+            if let Some(q) = nearest_on(r, c) {
+                best = best.min(far(&q));
+            }
+        }
+        if best <= cap {
+            worst = worst.max(best);
+            continue;
+        }
+        if depth >= 14 || budget == 0 {
+            return None;
+        }
+        budget -= 1;
+        let (l, r) = part.halves()?;
+        todo.push((l, depth + 1));
+        todo.push((r, depth + 1));
+    }
+    Some(worst)
+}
+
+/// A point of the exact piece (enclosed in intervals) near the float point
+/// `c`: the float nearest point chooses a dyadic parameter (Bézier) or one of
+/// the exact points of the arc's halvings.
+fn nearest_on(piece: &Piece, c: (f64, f64)) -> Option<V2<Interval>> {
+    let d2 = |x: f64, y: f64| (x - c.0) * (x - c.0) + (y - c.1) * (y - c.1);
+    match piece {
+        Piece::Bezier(b) => {
+            let bf = b.map(|x| x.approx());
+            let f = |t: f64| {
+                let v = bf.eval_fast(t);
+                d2(v.x, v.y)
+            };
+            let n = 64;
+            let (mut bt, mut bd) = (0.0, f64::INFINITY);
+            for k in 0..=n {
+                let t = k as f64 / n as f64;
+                let d = f(t);
+                if d < bd {
+                    (bt, bd) = (t, d);
+                }
+            }
+            let (mut lo, mut hi) = (
+                (bt - 1.0 / n as f64).max(0.0),
+                (bt + 1.0 / n as f64).min(1.0),
+            );
+            for _ in 0..60 {
+                let (m1, m2) = (lo + (hi - lo) * 0.382, lo + (hi - lo) * 0.618);
+                if f(m1) < f(m2) {
+                    hi = m2;
+                } else {
+                    lo = m1;
+                }
+            }
+            let t = rational_from_f64(0.5 * (lo + hi))?;
+            let ti = interval_from_rational(&t);
+            let p = b.map(interval_from_rational).eval(&ti);
+            (!p.x.is_empty() && !p.y.is_empty()).then_some(p)
+        }
+        Piece::Arc(a) => {
+            let mut pts = vec![a.from.clone(), a.to.clone()];
+            let mut todo = vec![(a.clone(), 0)];
+            while let Some((arc, depth)) = todo.pop() {
+                if depth >= 4 {
+                    continue;
+                }
+                let Some(m) = arc.midpoint() else { continue };
+                let (l, r) = arc.split_at(&m);
+                pts.push(m);
+                todo.push((l, depth + 1));
+                todo.push((r, depth + 1));
+            }
+            pts.iter()
+                .min_by(|p, q| {
+                    let (pf, qf) = (approx_dir(p), approx_dir(q));
+                    d2(pf.0, pf.1).total_cmp(&d2(qf.0, qf.1))
+                })
+                .map(iv_point)
+        }
+    }
+}

@@ -1,0 +1,423 @@
+//! Splitting the raw pieces at their certified crossings (step 3).
+
+use super::add_note;
+use super::sides::{approx_dir, dist_hi, set_end, Raw};
+use super::types::{Piece, RawCrossing};
+use crate::curve::{Bezier, V2};
+use crate::scalar::{rational_from_f64, Rational, Scalar};
+use crate::stroke::circle::{arcs_meet, bezier_arc, snap, Arc};
+use crate::stroke::intersect::{intersections, Crossing, IntersectOptions};
+use num_traits::{One, Signed, Zero};
+use std::time::Instant;
+
+// ---------------------------------------------------------------------------
+// splitting
+
+#[derive(Clone, Debug)]
+pub(super) struct Split {
+    /// Bézier: the parameter; arc: unused.
+    pub(super) param: Rational,
+    /// The exact crossing point shared by both pieces.
+    pub(super) point: V2<Rational>,
+}
+
+#[derive(Clone, Debug)]
+pub(super) struct Sub {
+    pub(super) raw: usize,
+    /// The exact sub-piece of the raw piece (its union over the raw piece is
+    /// the raw piece).
+    pub(super) pre: Piece,
+    /// With the crossing points as end points (what is output).
+    pub(super) post: Piece,
+    /// Largest end move.
+    pub(super) delta: f64,
+    /// The sub-piece's ends are crossing points (not raw piece ends).
+    pub(super) end_splits: [bool; 2],
+    /// Bézier: its parameter range on the raw piece (`pre` is the exact
+    /// restriction to it).
+    pub(super) range: (Rational, Rational),
+}
+
+pub(super) fn split_piece(raw: usize, p: &Piece, splits: &mut [Split]) -> Vec<Sub> {
+    match p {
+        Piece::Bezier(b) => {
+            splits.sort_by(|a, b| a.param.cmp(&b.param));
+            let zero = <Rational as Zero>::zero();
+            let one = <Rational as One>::one();
+            let mut out = Vec::new();
+            let mut prev: Option<&Split> = None;
+            for k in 0..=splits.len() {
+                let next = splits.get(k);
+                let a = prev.map(|s| s.param.clone()).unwrap_or(zero.clone());
+                let bb = next.map(|s| s.param.clone()).unwrap_or(one.clone());
+                let pre = b.restrict(&a, &bb);
+                let post = set_end(&pre, prev.map(|s| &s.point), next.map(|s| &s.point));
+                let mut delta: f64 = 0.0;
+                if let Some(s) = prev {
+                    delta = delta.max(dist_hi(&pre.points()[0], &s.point));
+                }
+                if let Some(s) = next {
+                    delta = delta.max(dist_hi(pre.points().last().expect("nonempty"), &s.point));
+                }
+                out.push(Sub {
+                    raw,
+                    pre: Piece::Bezier(pre),
+                    post: Piece::Bezier(post),
+                    delta,
+                    end_splits: [prev.is_some(), next.is_some()],
+                    range: (a, bb),
+                });
+                prev = next;
+            }
+            out
+        }
+        Piece::Arc(a) => {
+            // order along the travel direction by the angle from the start
+            let ang = |pt: &V2<Rational>| {
+                let u = approx_dir(&a.from.sub(&a.center));
+                let v = approx_dir(&pt.sub(&a.center));
+                let mut d = v.1.atan2(v.0) - u.1.atan2(u.0);
+                if a.clockwise {
+                    d = -d;
+                }
+                d.rem_euclid(2.0 * std::f64::consts::PI)
+            };
+            splits.sort_by(|x, y| ang(&x.point).total_cmp(&ang(&y.point)));
+            let mut out = Vec::new();
+            let mut cur = a.clone();
+            let mut first = true;
+            for s in splits.iter() {
+                let (l, r) = cur.split_at(&s.point);
+                out.push(Sub {
+                    raw,
+                    pre: Piece::Arc(l.clone()),
+                    post: Piece::Arc(l),
+                    delta: 0.0,
+                    end_splits: [!first, true],
+                    range: (<Rational as Zero>::zero(), <Rational as One>::one()),
+                });
+                first = false;
+                cur = r;
+            }
+            out.push(Sub {
+                raw,
+                pre: Piece::Arc(cur.clone()),
+                post: Piece::Arc(cur),
+                delta: 0.0,
+                end_splits: [!first, false],
+                range: (<Rational as Zero>::zero(), <Rational as One>::one()),
+            });
+            out
+        }
+    }
+}
+
+/// The crossing of two degree-1 pieces with non-parallel directions, exact:
+/// the point and both parameters (inside `[0, 1]`), `None` otherwise.
+fn segment_crossing(
+    a: &Bezier<Rational>,
+    b: &Bezier<Rational>,
+) -> Option<(V2<Rational>, Rational, Rational)> {
+    if a.degree() != 1 || b.degree() != 1 {
+        return None;
+    }
+    let (p, q) = (&a.points()[0], &a.points()[1]);
+    let (u, v) = (&b.points()[0], &b.points()[1]);
+    let (d1, d2) = (q.sub(p), v.sub(u));
+    let den = d1.cross(&d2);
+    if den.is_zero() {
+        return None;
+    }
+    let w = u.sub(p);
+    let s = w.cross(&d2) / &den;
+    let t = w.cross(&d1) / &den;
+    let unit = |x: &Rational| !x.is_negative() && *x <= <Rational as One>::one();
+    (unit(&s) && unit(&t)).then(|| (p.add(&d1.scale(&s)), s, t))
+}
+
+/// The exact projection of `x` onto a degree-1 piece and its parameter,
+/// when that parameter is strictly inside `(0, 1)`.
+fn project_on_segment(a: &Bezier<Rational>, x: &V2<Rational>) -> Option<(V2<Rational>, Rational)> {
+    let (p, q) = (&a.points()[0], &a.points()[1]);
+    let d = q.sub(p);
+    let n2 = d.norm2();
+    if n2.is_zero() {
+        return None;
+    }
+    let u = x.sub(p).dot(&d) / n2;
+    (u.is_positive() && u < <Rational as One>::one()).then(|| (p.add(&d.scale(&u)), u))
+}
+
+fn mid_rational(lo: f64, hi: f64) -> Option<Rational> {
+    rational_from_f64(0.5 * lo + 0.5 * hi)
+}
+
+// ---------------------------------------------------------------------------
+// the crossings of the raw arrangement
+
+/// What the crossing search found: the split points of every raw piece, the
+/// crossings where pieces were split, and whether the search was complete.
+pub(super) struct Crossings {
+    /// `splits[i]`: the split points of raw piece `i`.
+    pub(super) splits: Vec<Vec<Split>>,
+    /// The crossings where two raw pieces were split.
+    pub(super) crossings: Vec<RawCrossing>,
+    /// Nothing of the raw arrangement was left undecided.
+    pub(super) complete: bool,
+}
+
+/// The certified crossings of the raw pieces and the split points they give
+/// (see the split convention in the module docs): Bézier pairs, then Bézier–arc
+/// pairs; arc–arc pairs that may meet are only noted (not split).
+pub(super) fn find_crossings(
+    raws: &[Raw],
+    iopts: &IntersectOptions,
+    notes: &mut Vec<String>,
+    t0: Instant,
+) -> Crossings {
+    let bez_idx: Vec<usize> = (0..raws.len())
+        .filter(|&i| matches!(raws[i].piece, Piece::Bezier(_)))
+        .collect();
+    let arc_idx: Vec<usize> = (0..raws.len())
+        .filter(|&i| matches!(raws[i].piece, Piece::Arc(_)))
+        .collect();
+    let mut found = Crossings {
+        splits: vec![Vec::new(); raws.len()],
+        crossings: Vec::new(),
+        complete: true,
+    };
+    bezier_crossings(raws, &bez_idx, iopts, notes, &mut found, t0);
+    for &ai in &arc_idx {
+        let Piece::Arc(arc) = &raws[ai].piece else {
+            continue;
+        };
+        for &bi in &bez_idx {
+            let Piece::Bezier(b) = &raws[bi].piece else {
+                continue;
+            };
+            bezier_arc_crossings((bi, b), (ai, arc), notes, &mut found);
+        }
+    }
+    arc_arc_meetings(raws, &arc_idx, notes, &mut found);
+    log::debug!("arcs: {:?}", t0.elapsed());
+    found
+}
+
+/// The crossings of the raw Bézier pieces (`bez_idx`), split at the exact
+/// points of [`bezier_split`].
+fn bezier_crossings(
+    raws: &[Raw],
+    bez_idx: &[usize],
+    iopts: &IntersectOptions,
+    notes: &mut Vec<String>,
+    found: &mut Crossings,
+    t0: Instant,
+) {
+    let bez: Vec<Bezier<Rational>> = bez_idx
+        .iter()
+        .map(|&i| match &raws[i].piece {
+            Piece::Bezier(b) => b.clone(),
+            Piece::Arc(_) => unreachable!(),
+        })
+        .collect();
+    let inter = intersections(&bez, iopts);
+    log::debug!(
+        "raw intersections: {:?} {} boxes",
+        t0.elapsed(),
+        inter.boxes
+    );
+    if log::log_enabled!(log::Level::Trace) {
+        for (k, r) in raws.iter().enumerate() {
+            log::trace!(
+                "raw {k}: {:?} e={:.3e} {:?}",
+                r.kind,
+                r.e,
+                match &r.piece {
+                    Piece::Bezier(b) => format!(
+                        "bez deg {} {:?}",
+                        b.degree(),
+                        b.map(Scalar::approx).points()
+                    ),
+                    Piece::Arc(a) => format!("arc {:?}", a.desc()),
+                }
+            );
+        }
+        for u in &inter.undecided {
+            log::trace!("undecided {:?}", u);
+        }
+    }
+    found.complete = inter.complete;
+    for u in &inter.undecided {
+        add_note(
+            notes,
+            format!(
+                "raw pieces {} and {}: {} region undecided",
+                bez_idx[u.pieces.0], bez_idx[u.pieces.1], u.reason
+            ),
+        );
+    }
+    for c in &inter.crossings {
+        let (i, j) = (bez_idx[c.pieces.0], bez_idx[c.pieces.1]);
+        if let Some((point, s, t)) = bezier_split(&raws[i].piece, &raws[j].piece, c) {
+            found.splits[i].push(Split {
+                param: s,
+                point: point.clone(),
+            });
+            found.splits[j].push(Split { param: t, point });
+            found.crossings.push(RawCrossing {
+                pieces: (i, j),
+                s: c.s,
+                t: c.t,
+            });
+        }
+    }
+}
+
+/// The exact split point of a Bézier–Bézier crossing and its parameters on
+/// both pieces: the dyadic midpoints of the enclosures, made exact on a
+/// straight piece (`None` when a midpoint is not a finite rational).
+fn bezier_split(a: &Piece, b: &Piece, c: &Crossing) -> Option<(V2<Rational>, Rational, Rational)> {
+    let (px, py) = (
+        mid_rational(c.point.0 .0, c.point.0 .1),
+        mid_rational(c.point.1 .0, c.point.1 .1),
+    );
+    let (s, t) = (mid_rational(c.s.0, c.s.1), mid_rational(c.t.0, c.t.1));
+    // two straight segments: their crossing is rational, split exactly
+    // there (no end moves; an exact point keeps later joints exact)
+    let exact = match (a, b) {
+        (Piece::Bezier(a), Piece::Bezier(b)) => segment_crossing(a, b),
+        _ => None,
+    };
+    let (px, py, s, t) = match exact {
+        Some((p, s, t)) => (Some(p.x), Some(p.y), Some(s), Some(t)),
+        None => match (a, b, &px, &py) {
+            // one straight segment: the crossing point projected onto
+            // it exactly, so its halves stay on its line (a half tilted
+            // by an ulp would meet the next join arc almost tangentially)
+            (Piece::Bezier(a), _, Some(x), Some(y)) if a.degree() == 1 => {
+                match project_on_segment(a, &V2::new(x.clone(), y.clone())) {
+                    Some((q, u)) => (Some(q.x), Some(q.y), Some(u), t),
+                    None => (px, py, s, t),
+                }
+            }
+            (_, Piece::Bezier(b), Some(x), Some(y)) if b.degree() == 1 => {
+                match project_on_segment(b, &V2::new(x.clone(), y.clone())) {
+                    Some((q, u)) => (Some(q.x), Some(q.y), s, Some(u)),
+                    None => (px, py, s, t),
+                }
+            }
+            _ => (px, py, s, t),
+        },
+    };
+    match (px, py, s, t) {
+        (Some(xx), Some(xy), Some(s), Some(t)) => Some((V2::new(xx, xy), s, t)),
+        _ => None,
+    }
+}
+
+/// The crossings of raw Bézier piece `bi` and raw arc `ai`, split at a
+/// rational point exactly on the circle; joints (a shared end point) are
+/// skipped, tangential contacts and crossings at an arc end are noted.
+fn bezier_arc_crossings(
+    (bi, b): (usize, &Bezier<Rational>),
+    (ai, arc): (usize, &Arc),
+    notes: &mut Vec<String>,
+    found: &mut Crossings,
+) {
+    let m = bezier_arc(b, arc);
+    if !m.hits.is_empty() || !m.undecided.is_empty() {
+        log::trace!("bez {bi} arc {ai}: {:?}", m);
+    }
+    if !m.undecided.is_empty() {
+        found.complete = false;
+        add_note(
+            notes,
+            format!("raw pieces {bi} and {ai}: arc range undecided"),
+        );
+    }
+    for h in m.hits {
+        // the joint: the Bézier's end point is the arc's end point
+        if h.t.0 == h.t.1 {
+            let zero = <Rational as Zero>::zero();
+            let one = <Rational as One>::one();
+            let pt = if h.t.0 == zero {
+                Some(b.points()[0].clone())
+            } else if h.t.0 == one {
+                b.points().last().cloned()
+            } else {
+                None
+            };
+            if let Some(pt) = pt {
+                if pt == arc.from || pt == arc.to {
+                    continue;
+                }
+            }
+        }
+        if h.multiple {
+            found.complete = false;
+            add_note(
+                notes,
+                format!("raw pieces {bi} and {ai}: tangential contact"),
+            );
+            continue;
+        }
+        let s = (&h.t.0 + &h.t.1) / Rational::from_integer(2.into());
+        let p = b.eval(&s);
+        let x = snap(&arc.center, &arc.radius, approx_dir(&p.sub(&arc.center)));
+        match x {
+            Some(x)
+                if arc.contains_dir(&x.sub(&arc.center)) == Some(true)
+                    && x != arc.from
+                    && x != arc.to =>
+            {
+                found.splits[bi].push(Split {
+                    param: s,
+                    point: x.clone(),
+                });
+                found.splits[ai].push(Split {
+                    param: <Rational as Zero>::zero(),
+                    point: x,
+                });
+                found.crossings.push(RawCrossing {
+                    pieces: (bi.min(ai), bi.max(ai)),
+                    s: (h.t.0.approx(), h.t.1.approx()),
+                    t: (0.0, 0.0),
+                });
+            }
+            _ => {
+                found.complete = false;
+                add_note(
+                    notes,
+                    format!("raw pieces {bi} and {ai}: crossing at an arc end"),
+                );
+            }
+        }
+    }
+}
+
+/// Arc–arc: a crossing cannot be split exactly, so any pair of raw arcs that
+/// may meet (besides a shared end point) leaves the search incomplete.
+fn arc_arc_meetings(
+    raws: &[Raw],
+    arc_idx: &[usize],
+    notes: &mut Vec<String>,
+    found: &mut Crossings,
+) {
+    for (k, &ai) in arc_idx.iter().enumerate() {
+        for &aj in &arc_idx[k + 1..] {
+            let (Piece::Arc(a), Piece::Arc(b)) = (&raws[ai].piece, &raws[aj].piece) else {
+                continue;
+            };
+            let shared = [&a.from, &a.to]
+                .into_iter()
+                .find(|p| **p == b.from || **p == b.to);
+            if arcs_meet(a, b, shared) != Some(false) {
+                found.complete = false;
+                add_note(
+                    notes,
+                    format!("raw arcs {ai} and {aj} may meet (arc–arc crossings are not split)"),
+                );
+            }
+        }
+    }
+}
