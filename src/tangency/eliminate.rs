@@ -161,7 +161,7 @@ fn enclose_root(
 ///
 /// # Examples
 /// ```
-/// use lncert::tangency::{eliminate::exact_solutions, system::TangencySystem};
+/// use lncert::tangency::{exact_solutions, TangencySystem};
 /// use lncert::scalar::frac;
 /// let s = TangencySystem::new(frac(3, 1), frac(-1, 1), frac(1, 1), frac(1, 1), frac(1, 1), frac(1, 2)).unwrap();
 /// let sol = exact_solutions(&s, &(frac(-100, 1), frac(100, 1)));

@@ -288,7 +288,7 @@ pub fn root_report(sys: &TangencySystem, m: Interval, a2: Interval, certified: b
 ///
 /// # Examples
 /// ```
-/// use lncert::tangency::{solve::{solve_complete, TangencyProblem}, system::TangencySystem};
+/// use lncert::tangency::{solve_complete, TangencyProblem, TangencySystem};
 /// use lncert::tangency::SolveOptions;
 /// use lncert::scalar::frac;
 /// let s = TangencySystem::new(frac(3, 1), frac(-1, 1), frac(1, 1), frac(1, 1), frac(1, 1), frac(1, 2)).unwrap();
@@ -357,7 +357,7 @@ pub fn solve_exact(p: &TangencyProblem) -> TangencyReport {
 ///
 /// # Examples
 /// ```
-/// use lncert::tangency::{solve::{solve_candidates, TangencyProblem}, system::TangencySystem};
+/// use lncert::tangency::{solve_candidates, TangencyProblem, TangencySystem};
 /// use lncert::scalar::frac;
 /// let s = TangencySystem::new(frac(3, 1), frac(-1, 1), frac(1, 1), frac(15, 16), frac(-319, 128), frac(-5, 2)).unwrap();
 /// let p = TangencyProblem::new(s, None).unwrap();
