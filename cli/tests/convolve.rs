@@ -4,6 +4,7 @@
 //! cusp counts, the CLI contract and certificates that `verify` re-checks.
 
 mod common;
+use common::qs as q;
 use common::{lncert, tmp};
 
 use lncert::curve::{Bezier, V2};
@@ -15,10 +16,6 @@ use lncert::offset::{
 use lncert::scalar::{parse_rational, Rational, Scalar};
 use proptest::prelude::*;
 use serde_json::Value;
-
-fn q(s: &str) -> Rational {
-    parse_rational(s).unwrap()
-}
 
 fn nonic() -> Vec<Bezier<Rational>> {
     let text = std::fs::read_to_string(

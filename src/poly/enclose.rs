@@ -418,15 +418,10 @@ pub fn certify_no_root(p: &Poly<Interval>, lo: f64, hi: f64) -> Option<bool> {
 mod tests {
     use super::*;
     use crate::poly::{count_distinct_roots, isolate_roots, RootCount, Span};
-    use crate::scalar::{parse_rational, rational_from_f64, IntervalExt};
+    use crate::scalar::{rational_from_f64, IntervalExt};
+    use crate::test_util::{q, qi};
     use proptest::prelude::*;
 
-    fn q(s: &str) -> Rational {
-        parse_rational(s).unwrap()
-    }
-    fn qi(n: i64, d: i64) -> Rational {
-        Rational::new(n.into(), d.into())
-    }
     fn lin(r: &Rational) -> Poly<Rational> {
         Poly::new(vec![-r.clone(), Rational::from_integer(1.into())])
     }

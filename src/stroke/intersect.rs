@@ -947,7 +947,7 @@ mod tests {
     /// and the same joints.
     #[test]
     fn segment_path_agrees_with_the_box_search() {
-        let mut rng = crate::test_rng::TestRng::new(0x9e37_79b9_7f4a_7c15);
+        let mut rng = crate::test_util::TestRng::new(0x9e37_79b9_7f4a_7c15);
         let mut next = |m: i64| rng.int(m);
         let sopts = SolveOptions::default();
         let mut compared = 0;
