@@ -96,7 +96,7 @@ pub mod shape;
 pub mod stroke;
 pub mod tangency;
 #[cfg(test)]
-mod test_rng;
+mod test_util;
 pub mod write;
 
 mod error;

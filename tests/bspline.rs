@@ -8,9 +8,8 @@ use lncert::shape::{parse_json_curve, CurveParseError, MAX_SEGMENTS};
 use proptest::prelude::*;
 use serde_json::Value;
 
-fn q(s: &str) -> Rational {
-    parse_rational(s).unwrap()
-}
+mod common;
+use common::qs as q;
 
 fn int(n: i64) -> Rational {
     Rational::from_integer(n.into())

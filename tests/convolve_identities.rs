@@ -51,9 +51,8 @@ fn curvature_of_a_scaled_derivative() {
     assert!(lhs.sub(&rhs).is_zero());
 }
 
-fn q(p: i64, d: i64) -> Rational {
-    frac(p, d)
-}
+mod common;
+use common::q;
 
 fn cross(a: &V2<Rational>, b: &V2<Rational>) -> Rational {
     &a.x * &b.y - &a.y * &b.x

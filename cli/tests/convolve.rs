@@ -4,7 +4,8 @@
 //! cusp counts, the CLI contract and certificates that `verify` re-checks.
 
 mod common;
-use common::{lncert, tmp};
+use common::qs as q;
+use common::{lncert, max_spacing, sampled_one_sided, tmp};
 
 use lncert::curve::{Bezier, V2};
 use lncert::offset::{convolve, offset, OffsetOptions, OffsetResult};
@@ -15,10 +16,6 @@ use lncert::offset::{
 use lncert::scalar::{parse_rational, Rational, Scalar};
 use proptest::prelude::*;
 use serde_json::Value;
-
-fn q(s: &str) -> Rational {
-    parse_rational(s).unwrap()
-}
 
 fn nonic() -> Vec<Bezier<Rational>> {
     let text = std::fs::read_to_string(
@@ -100,22 +97,9 @@ fn check_against_samples(x: &[Bezier<Rational>], pen: &Pen, sigma: i8, r: &Offse
         let approx: Vec<V2<f64>> = (0..=N)
             .map(|i| s.bezier.eval(&(i as f64 / N as f64)))
             .collect();
-        let spacing = |v: &[V2<f64>]| {
-            v.windows(2)
-                .map(|w| w[1].sub(&w[0]).norm2().sqrt())
-                .fold(0.0, f64::max)
-        };
         // min over samples of the other curve ≥ the true distance, and exceeds it
         // by at most half the largest sample spacing
-        let one_sided = |from: &[V2<f64>], to: &[V2<f64>]| {
-            from.iter()
-                .map(|p| {
-                    to.iter()
-                        .map(|q| p.sub(q).norm2().sqrt())
-                        .fold(f64::INFINITY, f64::min)
-                })
-                .fold(0.0, f64::max)
-        };
+        let (spacing, one_sided) = (max_spacing, sampled_one_sided);
         let slack_a = spacing(&approx) / 2.0 + 1e-9;
         let slack_e = spacing(&exact) / 2.0 + 1e-9;
         let h1 = one_sided(&exact, &approx);

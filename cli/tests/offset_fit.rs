@@ -5,6 +5,7 @@
 //! results consist of exact grid multiples; bad `--output`/`--grid` exit 2.
 
 mod common;
+use common::qs as q;
 use common::{lncert, max_spacing, sampled_one_sided, tmp};
 
 use lncert::certify::verify::verify;
@@ -13,12 +14,8 @@ use lncert::offset::{
     convolve, offset, union_certificate, OffsetError, OffsetOptions, OffsetResult, Output,
 };
 use lncert::offset::{kernels::pen_point, Angle, Pen};
-use lncert::scalar::{parse_rational, rational_from_f64, Rational, Scalar};
+use lncert::scalar::{rational_from_f64, Rational, Scalar};
 use lncert_cli::reproduce::offsets::test_curves;
-
-fn q(s: &str) -> Rational {
-    parse_rational(s).unwrap()
-}
 
 fn curve(name: &str) -> (Vec<Bezier<Rational>>, Vec<Rational>) {
     let (_, pieces, ds) = test_curves()

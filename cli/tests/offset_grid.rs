@@ -6,17 +6,14 @@
 //! point can reach is reported not reached.
 
 mod common;
+use common::qs as q;
 use common::{dejavu, lncert, max_spacing, sampled_one_sided, tmp};
 
 use lncert::curve::{Bezier, V2};
 use lncert::offset::{offset_on_grid, GridOffset};
 use lncert::offset::{OffsetOptions, Output};
-use lncert::scalar::{parse_rational, Rational, Scalar};
+use lncert::scalar::{Rational, Scalar};
 use lncert::shape::parse_curve;
-
-fn q(s: &str) -> Rational {
-    parse_rational(s).unwrap()
-}
 
 fn opts(d: &str, tol: f64, grid: &str) -> OffsetOptions {
     let mut o = OffsetOptions::new(q(d), tol);

@@ -2,14 +2,11 @@
 //! orientation, and an independent dense-sampling check of claims (a), (b).
 
 use lncert::curve::Bezier;
-use lncert::parse_rational;
 use lncert::scalar::{Rational, Scalar};
 use lncert::shape::parse_curve;
 use lncert::stroke::{stroke, Cap, Orientation, Piece, Stroke, StrokeOptions};
 
-fn q(s: &str) -> Rational {
-    parse_rational(s).unwrap()
-}
+use common::qs as q;
 
 fn test_cubic() -> Vec<Bezier<Rational>> {
     parse_curve(r#"{"bezier": [[-0.95, 0.7], [-0.3, 0.5], [0.3, -2.5], [0.9, -0.2]]}"#).unwrap()

@@ -3,16 +3,13 @@
 
 mod common;
 
+use common::qs as q;
 use common::{lncert, tmp};
 use lncert::curve::{Bezier, V2};
-use lncert::scalar::{parse_rational, rational_from_f64, Rational, Scalar};
+use lncert::scalar::{rational_from_f64, Rational, Scalar};
 use lncert::shape::{parse_curve, parse_svg_document, parse_svg_document_elements};
 use lncert::stroke::{stroke, Piece, Stroke, StrokeOptions};
 use lncert::write::{offset_path_data, path_data, svg_document, SvgOptions, SvgShape};
-
-fn q(s: &str) -> Rational {
-    parse_rational(s).unwrap()
-}
 
 /// A stroke with cubic sides (no piece above degree 3).
 fn stroke_cubic(curve: &[Bezier<Rational>], r: &str, tol: f64) -> Stroke {

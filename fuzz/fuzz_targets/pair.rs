@@ -4,12 +4,10 @@
 //! certified-path failure panics with its message (libFuzzer saves the input).
 
 use libfuzzer_sys::{fuzz_target, Corpus};
-use lncert_cli::audit::fuzz::Outcome;
+
+#[path = "common/audit_target.rs"]
+mod audit_target;
 
 fuzz_target!(|data: &[u8]| -> Corpus {
-    match lncert_cli::audit::fuzz::fuzz_pair(data) {
-        Ok(Outcome::Rejected) => Corpus::Reject,
-        Ok(Outcome::Checked) => Corpus::Keep,
-        Err(e) => panic!("{e}"),
-    }
+    audit_target::corpus(lncert_cli::audit::fuzz::fuzz_pair(data))
 });

@@ -203,16 +203,8 @@ impl Certificate {
         };
         let mut out = String::from("{\n");
         let mut first = true;
-        let order = [
-            "format",
-            "version",
-            "claim",
-            "tol",
-            "a",
-            "b",
-            "maps",
-            "directions",
-        ];
+        // the keys of the format in its order (the verifier's list), then any others
+        let order = super::verify::KEYS;
         let ordered = order
             .iter()
             .filter_map(|k| m.get_key_value(*k))

@@ -287,11 +287,8 @@ pub fn bernstein_halves<S: Scalar>(g: &[S]) -> (Vec<S>, Vec<S>) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scalar::parse_rational;
+    use crate::test_util::q;
 
-    fn q(s: &str) -> Rational {
-        parse_rational(s).unwrap()
-    }
     fn pt(x: &str, y: &str) -> V2<Rational> {
         V2::new(q(x), q(y))
     }

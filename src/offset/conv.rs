@@ -684,10 +684,7 @@ pub fn conv_cusps(piece: usize, x: &Bezier<Rational>, pen: &Pen, sigma: i8) -> V
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn q(s: &str) -> Rational {
-        parse_rational(s).unwrap()
-    }
+    use crate::test_util::q;
 
     /// `λ` against a central difference of the exact pen point: `e′ = λ x′`.
     #[test]

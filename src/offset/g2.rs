@@ -297,11 +297,8 @@ pub fn solve_alpha_f64(e: &G2Ends<f64>, m: &[V2<f64>; 4]) -> Option<[f64; 4]> {
 mod tests {
     use super::*;
     use crate::poly::Poly;
-    use crate::scalar::{frac, Rational};
-
-    fn q(p: i64, r: i64) -> Rational {
-        frac(p, r)
-    }
+    use crate::scalar::Rational;
+    use crate::test_util::qi as q;
 
     /// Moments against an independent computation: power-basis integration.
     #[test]

@@ -17,6 +17,7 @@
 
 use crate::curve::{Bezier, V2};
 use crate::ln::circle::ArcApprox;
+use crate::ln::cubic::LnFrame;
 use crate::scalar::{Interval, ScalarSqrt};
 
 /// One LN-pair approximation of an offset segment (floats; checked afterwards).
@@ -45,32 +46,40 @@ pub enum NoPair {
     NotFinite,
 }
 
-fn frame_cubic(b0: &V2<f64>, bm: &V2<f64>, b3: &V2<f64>, d0: f64, d1: f64) -> Bezier<f64> {
-    Bezier::new(vec![
-        b0.clone(),
-        b0.lerp(bm, &d0),
-        b3.lerp(bm, &d1),
-        b3.clone(),
-    ])
+/// The cubic of an LN pair member ([`LnFrame::cubic`]): the frame `b0`, `bm`,
+/// `b3` of ratio `λ` with the pair's common `κ` (eq. (5)),
+/// `δ0 = 2/3 (2 − λ/κ)`, `δ1 = 2/3 (2 − κ/λ)`.
+fn ln_cubic(b0: &V2<f64>, bm: &V2<f64>, b3: &V2<f64>, lambda: f64, kappa: f64) -> Bezier<f64> {
+    LnFrame::new_unchecked(b0.clone(), bm.clone(), b3.clone()).cubic(
+        &(2.0 / 3.0 * (2.0 - lambda / kappa)),
+        &(2.0 / 3.0 * (2.0 - kappa / lambda)),
+    )
 }
 
-/// The LN pair of a segment `x` for the signed distance `d` (`d > 0` to the
-/// left). `n0`, `n1` are the unit **left** normals at the ends (passed in, so
-/// that neighbouring segments share them bit for bit and the spline is exactly
-/// connected).
-///
-/// # Examples
-/// ```
-/// use lncert::offset::kernels::ln_pair;
-/// use lncert::curve::{Bezier, V2};
-/// // A quarter of the unit circle, roughly, offset by 1/2 outwards (to the right).
-/// let k = 0.5523;
-/// let x = Bezier::new(vec![V2::new(1.0, 0.0), V2::new(1.0, k), V2::new(k, 1.0), V2::new(0.0, 1.0)]);
-/// let p = ln_pair(&x, &V2::new(-1.0, 0.0), &V2::new(0.0, -1.0), -0.5).unwrap();
-/// assert!((p.lambda - 1.0).abs() < 1e-12 && (p.kappa - 1.0).abs() < 1e-12);
-/// assert_eq!(p.offset.points()[0], V2::new(1.5, 0.0));
-/// ```
-pub fn ln_pair(x: &Bezier<f64>, n0: &V2<f64>, n1: &V2<f64>, d: f64) -> Result<LnPairPiece, NoPair> {
+/// A straight member: the segment from `a` to `b` as the cubic of the frame
+/// through its midpoint with `δ0 = δ1 = 2/3` (one point when `a = b`).
+fn straight_cubic(a: &V2<f64>, b: &V2<f64>) -> Bezier<f64> {
+    let third = 1.0 / 3.0;
+    LnFrame::new_unchecked(a.clone(), a.lerp(b, &0.5), b.clone())
+        .cubic(&(2.0 * third), &(2.0 * third))
+}
+
+/// The curve segment's half of an LN pair: its end points, its unit tangents
+/// at the ends and their cross product, and unless it is straight its frame's
+/// middle point `bm` and ratio `λ_p`.
+struct Segment {
+    b0: V2<f64>,
+    b3: V2<f64>,
+    t0: V2<f64>,
+    t1: V2<f64>,
+    den: f64,
+    /// `(bm, λ_p)`; `None` for a straight segment.
+    frame: Option<(V2<f64>, f64)>,
+}
+
+/// The [`Segment`] of `x` with the unit left normals `n0`, `n1` at its ends;
+/// `TangentsDoNotMeet` when the end tangents do not meet ahead of both ends.
+fn segment(x: &Bezier<f64>, n0: &V2<f64>, n1: &V2<f64>) -> Result<Segment, NoPair> {
     let pts = x.points();
     let (b0, b3) = (pts[0].clone(), pts[pts.len() - 1].clone());
     // unit tangents from the left normals: T = −rot90(N_L) = (N.y, −N.x)
@@ -78,15 +87,9 @@ pub fn ln_pair(x: &Bezier<f64>, n0: &V2<f64>, n1: &V2<f64>, d: f64) -> Result<Ln
     let t1 = V2::new(n1.y, -n1.x);
     let c = b3.sub(&b0);
     let den = t0.cross(&t1);
-    let c0 = n0.scale(&d);
-    let c3 = n1.scale(&d);
     let scale = c.norm2().sqrt();
-    let piece = if den.abs() <= 1e-12 && t0.dot(&t1) > 0.0 && c.cross(&t0).abs() <= 1e-12 * scale {
-        // straight: the segment and a constant normal
-        let third = 1.0 / 3.0;
-        let pa = frame_cubic(&b0, &b0.lerp(&b3, &0.5), &b3, 2.0 * third, 2.0 * third);
-        let ca = frame_cubic(&c0, &c0.lerp(&c3, &0.5), &c3, 2.0 * third, 2.0 * third);
-        (pa, ca, 1.0, 1.0)
+    let frame = if den.abs() <= 1e-12 && t0.dot(&t1) > 0.0 && c.cross(&t0).abs() <= 1e-12 * scale {
+        None
     } else {
         if den == 0.0 {
             return Err(NoPair::TangentsDoNotMeet);
@@ -96,23 +99,26 @@ pub fn ln_pair(x: &Bezier<f64>, n0: &V2<f64>, n1: &V2<f64>, d: f64) -> Result<Ln
         if !(s > 0.0 && u > 0.0) || t0.dot(&t1) <= -1.0 + 1e-12 {
             return Err(NoPair::TangentsDoNotMeet);
         }
-        let bm = b0.add(&t0.scale(&s));
-        let lambda = u / s;
-        if !(0.25..=4.0).contains(&lambda) {
-            return Err(NoPair::LambdaOutOfRange);
-        }
-        let kappa = lambda.sqrt();
-        let (pd0, pd1) = (
-            2.0 / 3.0 * (2.0 - lambda / kappa),
-            2.0 / 3.0 * (2.0 - kappa / lambda),
-        );
-        let pa = frame_cubic(&b0, &bm, &b3, pd0, pd1);
-        let cm = n0.add(n1).scale(&(d / (1.0 + n0.dot(n1))));
-        let (cd0, cd1) = (2.0 / 3.0 * (2.0 - 1.0 / kappa), 2.0 / 3.0 * (2.0 - kappa));
-        let ca = frame_cubic(&c0, &cm, &c3, cd0, cd1);
-        (pa, ca, lambda, kappa)
+        Some((b0.add(&t0.scale(&s)), u / s))
     };
-    let (pa, ca, lambda, kappa) = piece;
+    Ok(Segment {
+        b0,
+        b3,
+        t0,
+        t1,
+        den,
+        frame,
+    })
+}
+
+/// The pair `pa`, `ca` with its `λ_p`, `κ` and the approximant `pa + ca`;
+/// `NotFinite` when a control point of the sum is not finite.
+fn pair_piece(
+    pa: Bezier<f64>,
+    ca: Bezier<f64>,
+    lambda: f64,
+    kappa: f64,
+) -> Result<LnPairPiece, NoPair> {
     let offset = Bezier::new(
         pa.points()
             .iter()
@@ -134,6 +140,43 @@ pub fn ln_pair(x: &Bezier<f64>, n0: &V2<f64>, n1: &V2<f64>, d: f64) -> Result<Ln
         lambda,
         kappa,
     })
+}
+
+/// The LN pair of a segment `x` for the signed distance `d` (`d > 0` to the
+/// left). `n0`, `n1` are the unit **left** normals at the ends (passed in, so
+/// that neighbouring segments share them bit for bit and the spline is exactly
+/// connected).
+///
+/// # Examples
+/// ```
+/// use lncert::offset::kernels::ln_pair;
+/// use lncert::curve::{Bezier, V2};
+/// // A quarter of the unit circle, roughly, offset by 1/2 outwards (to the right).
+/// let k = 0.5523;
+/// let x = Bezier::new(vec![V2::new(1.0, 0.0), V2::new(1.0, k), V2::new(k, 1.0), V2::new(0.0, 1.0)]);
+/// let p = ln_pair(&x, &V2::new(-1.0, 0.0), &V2::new(0.0, -1.0), -0.5).unwrap();
+/// assert!((p.lambda - 1.0).abs() < 1e-12 && (p.kappa - 1.0).abs() < 1e-12);
+/// assert_eq!(p.offset.points()[0], V2::new(1.5, 0.0));
+/// ```
+pub fn ln_pair(x: &Bezier<f64>, n0: &V2<f64>, n1: &V2<f64>, d: f64) -> Result<LnPairPiece, NoPair> {
+    let seg = segment(x, n0, n1)?;
+    let c0 = n0.scale(&d);
+    let c3 = n1.scale(&d);
+    let Some((bm, lambda)) = seg.frame else {
+        // straight: the segment and a constant normal
+        let pa = straight_cubic(&seg.b0, &seg.b3);
+        let ca = straight_cubic(&c0, &c3);
+        return pair_piece(pa, ca, 1.0, 1.0);
+    };
+    if !(0.25..=4.0).contains(&lambda) {
+        return Err(NoPair::LambdaOutOfRange);
+    }
+    let kappa = lambda.sqrt();
+    let pa = ln_cubic(&seg.b0, &bm, &seg.b3, lambda, kappa);
+    // the arc's frame has λ_c = 1
+    let cm = n0.add(n1).scale(&(d / (1.0 + n0.dot(n1))));
+    let ca = ln_cubic(&c0, &cm, &c3, 1.0, kappa);
+    pair_piece(pa, ca, lambda, kappa)
 }
 
 /// Seed 000 §5: the LN pair of a trajectory segment `x` and its compatible
@@ -166,86 +209,35 @@ pub fn ln_pair_pen(
     e0: &V2<f64>,
     e1: &V2<f64>,
 ) -> Result<LnPairPiece, NoPair> {
-    let pts = x.points();
-    let (b0, b3) = (pts[0].clone(), pts[pts.len() - 1].clone());
-    let t0 = V2::new(n0.y, -n0.x);
-    let t1 = V2::new(n1.y, -n1.x);
-    let c = b3.sub(&b0);
-    let den = t0.cross(&t1);
-    let scale = c.norm2().sqrt();
-    let third = 1.0 / 3.0;
-    let piece = if den.abs() <= 1e-12 && t0.dot(&t1) > 0.0 && c.cross(&t0).abs() <= 1e-12 * scale {
+    let seg = segment(x, n0, n1)?;
+    let Some((bm, lambda_p)) = seg.frame else {
         // straight: the segment, and the pen segment (one point when e0 = e1)
-        let pa = frame_cubic(&b0, &b0.lerp(&b3, &0.5), &b3, 2.0 * third, 2.0 * third);
-        let qa = frame_cubic(e0, &e0.lerp(e1, &0.5), e1, 2.0 * third, 2.0 * third);
-        (pa, qa, 1.0, 1.0)
-    } else {
-        if den == 0.0 {
-            return Err(NoPair::TangentsDoNotMeet);
-        }
-        let s = c.cross(&t1) / den;
-        let u = t0.cross(&c) / den;
-        if !(s > 0.0 && u > 0.0) || t0.dot(&t1) <= -1.0 + 1e-12 {
-            return Err(NoPair::TangentsDoNotMeet);
-        }
-        let bm = b0.add(&t0.scale(&s));
-        let lambda_p = u / s;
-        // the pen segment's frame: e0 + sq t0 = e1 − uq t1 (signed)
-        let cq = e1.sub(e0);
-        let (sq, uq) = (cq.cross(&t1) / den, t0.cross(&cq) / den);
-        let (em, lambda_q) = if sq == 0.0 && uq == 0.0 {
-            // a pen corner (e0 = e1): the pen segment is one point
-            (e0.clone(), 1.0)
-        } else {
-            let cross = sq * uq;
-            if cross.is_nan() || cross <= 0.0 {
-                return Err(NoPair::TangentsDoNotMeet);
-            }
-            (e0.add(&t0.scale(&sq)), uq / sq)
-        };
-        let ratio = lambda_p / lambda_q;
-        if !(0.25..=4.0).contains(&ratio) {
-            return Err(NoPair::LambdaOutOfRange);
-        }
-        let kappa = (lambda_p * lambda_q).sqrt();
-        let pa = frame_cubic(
-            &b0,
-            &bm,
-            &b3,
-            2.0 / 3.0 * (2.0 - lambda_p / kappa),
-            2.0 / 3.0 * (2.0 - kappa / lambda_p),
-        );
-        let qa = frame_cubic(
-            e0,
-            &em,
-            e1,
-            2.0 / 3.0 * (2.0 - lambda_q / kappa),
-            2.0 / 3.0 * (2.0 - kappa / lambda_q),
-        );
-        (pa, qa, lambda_p, kappa)
+        let pa = straight_cubic(&seg.b0, &seg.b3);
+        let qa = straight_cubic(e0, e1);
+        return pair_piece(pa, qa, 1.0, 1.0);
     };
-    let (pa, ca, lambda, kappa) = piece;
-    let offset = Bezier::new(
-        pa.points()
-            .iter()
-            .zip(ca.points())
-            .map(|(p, q)| p.add(q))
-            .collect(),
-    );
-    if !offset
-        .points()
-        .iter()
-        .all(|p| p.x.is_finite() && p.y.is_finite())
-    {
-        return Err(NoPair::NotFinite);
+    let (t0, t1, den) = (&seg.t0, &seg.t1, seg.den);
+    // the pen segment's frame: e0 + sq t0 = e1 − uq t1 (signed)
+    let cq = e1.sub(e0);
+    let (sq, uq) = (cq.cross(t1) / den, t0.cross(&cq) / den);
+    let (em, lambda_q) = if sq == 0.0 && uq == 0.0 {
+        // a pen corner (e0 = e1): the pen segment is one point
+        (e0.clone(), 1.0)
+    } else {
+        let cross = sq * uq;
+        if cross.is_nan() || cross <= 0.0 {
+            return Err(NoPair::TangentsDoNotMeet);
+        }
+        (e0.add(&t0.scale(&sq)), uq / sq)
+    };
+    let ratio = lambda_p / lambda_q;
+    if !(0.25..=4.0).contains(&ratio) {
+        return Err(NoPair::LambdaOutOfRange);
     }
-    Ok(LnPairPiece {
-        pa,
-        ca,
-        offset,
-        lambda,
-        kappa,
-    })
+    let kappa = (lambda_p * lambda_q).sqrt();
+    let pa = ln_cubic(&seg.b0, &bm, &seg.b3, lambda_p, kappa);
+    let qa = ln_cubic(e0, &em, e1, lambda_q, kappa);
+    pair_piece(pa, qa, lambda_p, kappa)
 }
 
 /// `r · d_H(c, ca)` of eq. (8) by Prop 6.1, in interval arithmetic: the unit
@@ -329,11 +321,16 @@ fn unit(v: &V2<f64>) -> V2<f64> {
 pub fn angle_param(x: &Bezier<f64>, dir: &V2<f64>) -> Option<f64> {
     let h = x.hodograph();
     let f = |t: f64| h.eval(&t).cross(dir);
-    let (mut a, mut b) = (0.0, 1.0);
-    let (fa, fb) = (f(a), f(b));
+    let (fa, fb) = (f(0.0), f(1.0));
     if !(fa.is_finite() && fb.is_finite()) || fa * fb >= 0.0 {
         return None;
     }
+    Some(round_split(bisect(f, 0.0, 1.0, fa)))
+}
+
+/// 60 bisection steps on `[a, b]` towards a sign change of `f` (`fa = f(a)`):
+/// the midpoint of the last interval.
+fn bisect(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64, fa: f64) -> f64 {
     for _ in 0..60 {
         let m = 0.5 * (a + b);
         if f(m) * fa > 0.0 {
@@ -342,7 +339,13 @@ pub fn angle_param(x: &Bezier<f64>, dir: &V2<f64>) -> Option<f64> {
             b = m;
         }
     }
-    Some(round_split(0.5 * (a + b)))
+    0.5 * (a + b)
+}
+
+/// `v` turned by the angle `a`.
+fn rotate(v: &V2<f64>, a: f64) -> V2<f64> {
+    let (cos, sin) = (a.cos(), a.sin());
+    V2::new(v.x * cos - v.y * sin, v.x * sin + v.y * cos)
 }
 
 fn round_split(t: f64) -> f64 {
@@ -430,10 +433,7 @@ pub fn weighted_param(
         h0.cross(&v).atan2(h0.dot(&v))
     };
     let target = (dp * theta(ts[ip]) + dq * theta(ts[iq])) / w;
-    let dir = V2::new(
-        h0.x * target.cos() - h0.y * target.sin(),
-        h0.x * target.sin() + h0.y * target.cos(),
-    );
+    let dir = rotate(&h0, target);
     angle_param(x, &dir).unwrap_or_else(|| mid_angle_param(x))
 }
 
@@ -491,24 +491,16 @@ pub fn k_piece_split(x: &Bezier<f64>, max_turn: f64) -> Vec<f64> {
         };
         // inside the cell the turn is below π: bisect on the angle from vs[j]
         let rest = target - cum[j];
-        let dir = V2::new(
-            vs[j].x * rest.cos() - vs[j].y * rest.sin(),
-            vs[j].x * rest.sin() + vs[j].y * rest.cos(),
-        );
+        let dir = rotate(&vs[j], rest);
         let f = |t: f64| h.eval(&t).cross(&dir);
-        let (mut a, mut b) = (j as f64 / N as f64, (j + 1) as f64 / N as f64);
+        let (a, b) = (j as f64 / N as f64, (j + 1) as f64 / N as f64);
         let fa = f(a);
-        if fa * f(b) < 0.0 {
-            for _ in 0..60 {
-                let m = 0.5 * (a + b);
-                if f(m) * fa > 0.0 {
-                    a = m;
-                } else {
-                    b = m;
-                }
-            }
-        }
-        let t = ((0.5 * (a + b)) * 1048576.0).round() / 1048576.0;
+        let mid = if fa * f(b) < 0.0 {
+            bisect(f, a, b, fa)
+        } else {
+            0.5 * (a + b)
+        };
+        let t = (mid * 1048576.0).round() / 1048576.0;
         if t > 0.0 && t < 1.0 && out.last().is_none_or(|l| t > *l) {
             out.push(t);
         }

@@ -233,14 +233,20 @@ impl OffsetResult {
     /// The approximant as an exact shape (every float control point is an exact
     /// dyadic rational).
     pub fn approximant_shape(&self) -> Result<ShapeDesc, OffsetError> {
-        let pieces = self
-            .segments
-            .iter()
-            .map(|s| exact_bezier(&s.bezier))
-            .collect::<Option<Vec<_>>>()
-            .ok_or_else(|| bad("approximant", "a control point is not finite"))?;
-        ShapeDesc::curve(pieces).map_err(|e| bad("approximant", e.to_string()))
+        approximant_of(self.segments.iter().map(|s| &s.bezier))
     }
+}
+
+/// Float Bézier pieces as one exact curve shape (every float control point
+/// is an exact dyadic rational); an error names `approximant`.
+pub(super) fn approximant_of<'a>(
+    pieces: impl Iterator<Item = &'a Bezier<f64>>,
+) -> Result<ShapeDesc, OffsetError> {
+    let pieces = pieces
+        .map(exact_bezier)
+        .collect::<Option<Vec<_>>>()
+        .ok_or_else(|| bad("approximant", "a control point is not finite"))?;
+    ShapeDesc::curve(pieces).map_err(|e| bad("approximant", e.to_string()))
 }
 
 /// `shape`, or with arcs the union of it and the arcs.

@@ -172,26 +172,51 @@ pub fn isolate_simple_roots(
     if !(lo.is_finite() && hi.is_finite() && lo < hi) {
         return None;
     }
+    isolate_pieces(
+        (lo, hi, ()),
+        max_pieces,
+        |a, b, _| {
+            let q = p.compose_affine(&point(a), &(point(b) - point(a)));
+            strict_variations(&bernstein_enclosure(&q))
+        },
+        |_, _, _, _| ((), ()),
+    )
+}
+
+/// The sign variations of `c` when every coefficient has a strict sign;
+/// `None` when a sign is undecided (an enclosure holds 0).
+fn strict_variations(c: &[Interval]) -> Option<usize> {
+    let signs: Option<Vec<Sign>> = c
+        .iter()
+        .map(|x| match Scalar::sign(x) {
+            s @ (Sign::Positive | Sign::Negative) => Some(s),
+            _ => None,
+        })
+        .collect();
+    signs.map(|s| s.windows(2).filter(|w| w[0] != w[1]).count())
+}
+
+/// The subdivision of the root isolators: pieces `(a, b, data)` depth-first
+/// from `start`, left piece first (the output comes out sorted). A piece with
+/// `variations(a, b, &data)` = 0 holds no root, with 1 exactly one (it is
+/// returned); any other piece is halved at its midpoint `m`, `split(data, a,
+/// m, b)` giving the halves' data. `None` after `max_pieces` pieces or when a
+/// midpoint is not strictly inside its piece.
+fn isolate_pieces<T>(
+    start: (f64, f64, T),
+    max_pieces: usize,
+    variations: impl Fn(f64, f64, &T) -> Option<usize>,
+    split: impl Fn(T, f64, f64, f64) -> (T, T),
+) -> Option<Vec<(f64, f64)>> {
     let mut out = Vec::new();
-    // depth-first, left piece first: the output comes out sorted
-    let mut stack = vec![(lo, hi)];
+    let mut stack = vec![start];
     let mut examined = 0usize;
-    while let Some((a, b)) = stack.pop() {
+    while let Some((a, b, data)) = stack.pop() {
         examined += 1;
         if examined > max_pieces {
             return None;
         }
-        let q = p.compose_affine(&point(a), &(point(b) - point(a)));
-        let bern = bernstein_enclosure(&q);
-        let signs: Option<Vec<Sign>> = bern
-            .iter()
-            .map(|c| match Scalar::sign(c) {
-                s @ (Sign::Positive | Sign::Negative) => Some(s),
-                _ => None,
-            })
-            .collect();
-        let variations = signs.map(|s| s.windows(2).filter(|w| w[0] != w[1]).count());
-        match variations {
+        match variations(a, b, &data) {
             Some(0) => {}
             Some(1) => out.push((a, b)),
             _ => {
@@ -199,8 +224,9 @@ pub fn isolate_simple_roots(
                 if !(a < m && m < b) {
                     return None;
                 }
-                stack.push((m, b));
-                stack.push((a, m));
+                let (left, right) = split(data, a, m, b);
+                stack.push((m, b, right));
+                stack.push((a, m, left));
             }
         }
     }
@@ -236,48 +262,27 @@ pub fn isolate_simple_roots_bernstein(
         return None;
     }
     let half = point(0.5);
-    let mut out = Vec::new();
-    let mut stack = vec![(0.0f64, 1.0f64, bern.to_vec())];
-    let mut examined = 0usize;
-    while let Some((a, b, c)) = stack.pop() {
-        examined += 1;
-        if examined > max_pieces {
-            return None;
-        }
-        let signs: Option<Vec<Sign>> = c
-            .iter()
-            .map(|x| match Scalar::sign(x) {
-                s @ (Sign::Positive | Sign::Negative) => Some(s),
-                _ => None,
-            })
-            .collect();
-        match signs.map(|s| s.windows(2).filter(|w| w[0] != w[1]).count()) {
-            Some(0) => {}
-            Some(1) => out.push((a, b)),
-            _ => {
-                let m = 0.5 * a + 0.5 * b;
-                if !(a < m && m < b) {
-                    return None;
+    isolate_pieces(
+        (0.0f64, 1.0f64, bern.to_vec()),
+        max_pieces,
+        |_, _, c| strict_variations(c),
+        |c, _, _, _| {
+            // de Casteljau at 1/2: the left and right coefficient lists
+            let n = c.len();
+            let mut work = c;
+            let mut left = Vec::with_capacity(n);
+            let mut right = Vec::with_capacity(n);
+            for level in 0..n {
+                left.push(work[0]);
+                right.push(work[n - 1 - level]);
+                for i in 0..n - 1 - level {
+                    work[i] = (work[i] + work[i + 1]) * half;
                 }
-                // de Casteljau at 1/2: the left and right coefficient lists
-                let n = c.len();
-                let mut work = c.clone();
-                let mut left = Vec::with_capacity(n);
-                let mut right = Vec::with_capacity(n);
-                for level in 0..n {
-                    left.push(work[0]);
-                    right.push(work[n - 1 - level]);
-                    for i in 0..n - 1 - level {
-                        work[i] = (work[i] + work[i + 1]) * half;
-                    }
-                }
-                right.reverse();
-                stack.push((m, b, right));
-                stack.push((a, m, left));
             }
-        }
-    }
-    Some(out)
+            right.reverse();
+            (left, right)
+        },
+    )
 }
 
 /// Encloses the real roots of an interval polynomial in `[lo, hi]` by
@@ -418,15 +423,10 @@ pub fn certify_no_root(p: &Poly<Interval>, lo: f64, hi: f64) -> Option<bool> {
 mod tests {
     use super::*;
     use crate::poly::{count_distinct_roots, isolate_roots, RootCount, Span};
-    use crate::scalar::{parse_rational, rational_from_f64, IntervalExt};
+    use crate::scalar::{rational_from_f64, IntervalExt};
+    use crate::test_util::{q, qi};
     use proptest::prelude::*;
 
-    fn q(s: &str) -> Rational {
-        parse_rational(s).unwrap()
-    }
-    fn qi(n: i64, d: i64) -> Rational {
-        Rational::new(n.into(), d.into())
-    }
     fn lin(r: &Rational) -> Poly<Rational> {
         Poly::new(vec![-r.clone(), Rational::from_integer(1.into())])
     }

@@ -697,15 +697,9 @@ pub fn isolate_roots_all(p: &Poly<Rational>) -> Vec<RealRoot> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scalar::parse_rational;
+    use crate::test_util::{q, qi};
     use proptest::prelude::*;
 
-    fn q(s: &str) -> Rational {
-        parse_rational(s).unwrap()
-    }
-    fn qi(n: i64, d: i64) -> Rational {
-        Rational::new(n.into(), d.into())
-    }
     /// `t - r`.
     fn lin(r: &Rational) -> Poly<Rational> {
         Poly::new(vec![-r.clone(), <Rational as One>::one()])

@@ -268,11 +268,7 @@ impl Poly<crate::scalar::Rational> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scalar::parse_rational;
-
-    fn q(s: &str) -> Rational {
-        parse_rational(s).unwrap()
-    }
+    use crate::test_util::q;
 
     #[test]
     fn bernstein_round_trip_exact() {

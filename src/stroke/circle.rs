@@ -623,10 +623,7 @@ pub fn arcs_meet(a: &Arc, b: &Arc, shared: Option<&V2<Rational>>) -> Option<bool
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn q(n: i64, d: i64) -> Rational {
-        Rational::new(n.into(), d.into())
-    }
+    use crate::test_util::qi as q;
 
     #[test]
     fn snapped_points_are_on_the_circle() {

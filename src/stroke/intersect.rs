@@ -505,7 +505,11 @@ pub fn intersections(pieces: &[Bezier<Rational>], opts: &IntersectOptions) -> In
     use rayon::prelude::*;
     let results: Vec<Intersections> = pairs
         .par_iter()
-        .map(|&(i, j)| pair(pieces, &powers, i, j, &sopts))
+        .map(|&(i, j)| {
+            // two different pieces; a straight one: one exact univariate
+            // equation instead of the box search
+            segment_pair(pieces, i, j).unwrap_or_else(|| pair_boxes(pieces, &powers, i, j, &sopts))
+        })
         .chain(
             order
                 .par_iter()
@@ -537,21 +541,6 @@ fn crossing_of(pieces: &[Bezier<Rational>], i: usize, j: usize, e: &IBox) -> Cro
         t: range(e[1]),
         point: (range(p.x), range(p.y)),
     }
-}
-
-/// Two different pieces.
-fn pair(
-    pieces: &[Bezier<Rational>],
-    powers: &[(Vec<Rational>, Vec<Rational>)],
-    i: usize,
-    j: usize,
-    sopts: &SolveOptions,
-) -> Intersections {
-    // a straight piece: one exact univariate equation instead of the box search
-    if let Some(r) = segment_pair(pieces, i, j) {
-        return r;
-    }
-    pair_boxes(pieces, powers, i, j, sopts)
 }
 
 /// Two different pieces, by the box search.
@@ -947,7 +936,7 @@ mod tests {
     /// and the same joints.
     #[test]
     fn segment_path_agrees_with_the_box_search() {
-        let mut rng = crate::test_rng::TestRng::new(0x9e37_79b9_7f4a_7c15);
+        let mut rng = crate::test_util::TestRng::new(0x9e37_79b9_7f4a_7c15);
         let mut next = |m: i64| rng.int(m);
         let sopts = SolveOptions::default();
         let mut compared = 0;

@@ -762,13 +762,9 @@ impl Input {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scalar::parse_rational;
     use crate::shape::parse_curve;
+    use crate::test_util::q;
     use proptest::prelude::*;
-
-    fn q(s: &str) -> Rational {
-        parse_rational(s).unwrap()
-    }
 
     #[test]
     fn a_segment_s_offsets_are_boundary_and_a_cusp_region_is_not() {

@@ -251,11 +251,7 @@ pub fn exact_solutions(sys: &TangencySystem, a2_window: &(Rational, Rational)) -
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scalar::frac;
-
-    fn q(p: i64, d: i64) -> Rational {
-        frac(p, d)
-    }
+    use crate::test_util::qi as q;
 
     #[test]
     fn a_has_roots_at_both_ends_and_one_inside() {

@@ -393,7 +393,34 @@ impl System2 {
     /// Iterated Krawczyk on `x` (at most `max_iter` steps), then contraction
     /// of a proven root box. Returns the outcome and the number of steps.
     pub fn krawczyk(&self, x: &IBox, max_iter: usize) -> (KOutcome, usize) {
-        let mut cur = *x;
+        self.iterate(
+            *x,
+            max_iter,
+            |k| self.contract(k, max_iter),
+            |cur, _, c| {
+                // Continue only while the box shrinks substantially.
+                let shrink = |a: Interval, b: Interval| a.wid() <= 0.9 * b.wid();
+                if !(shrink(c[0], cur[0]) || shrink(c[1], cur[1])) {
+                    return Err(c);
+                }
+                Ok(c)
+            },
+        )
+    }
+    /// The loop of [`Self::krawczyk`] and [`Self::inflate_and_prove`]: at
+    /// most `max_iter` Krawczyk steps from `start`. A step that excludes a
+    /// zero ends with `NoRoot`; one that proves a unique zero in the current
+    /// box ends with it and `tighten` of `K(X)` (plus its steps); after a
+    /// contraction `c` of the box `cur` (enclosure `e`), `advance(cur, e, c)`
+    /// gives the next box, or the box to report as `Undecided`.
+    fn iterate(
+        &self,
+        start: IBox,
+        max_iter: usize,
+        tighten: impl Fn(IBox) -> (IBox, usize),
+        advance: impl Fn(&IBox, &BoxEnclosure, IBox) -> Result<IBox, IBox>,
+    ) -> (KOutcome, usize) {
+        let mut cur = start;
         let mut iters = 0;
         while iters < max_iter {
             let e = self.enclose(&cur);
@@ -401,17 +428,13 @@ impl System2 {
             match self.step(&cur, &e) {
                 KStep::NoRoot => return (KOutcome::NoRoot, iters),
                 KStep::Unique(k) => {
-                    let (tight, more) = self.contract(k, max_iter);
+                    let (tight, more) = tighten(k);
                     return (KOutcome::Unique { region: cur, tight }, iters + more);
                 }
-                KStep::Contracted(c) => {
-                    // Continue only while the box shrinks substantially.
-                    let shrink = |a: Interval, b: Interval| a.wid() <= 0.9 * b.wid();
-                    if !(shrink(c[0], cur[0]) || shrink(c[1], cur[1])) {
-                        return (KOutcome::Undecided { last: c }, iters);
-                    }
-                    cur = c;
-                }
+                KStep::Contracted(c) => match advance(&cur, &e, c) {
+                    Ok(next) => cur = next,
+                    Err(last) => return (KOutcome::Undecided { last }, iters),
+                },
             }
         }
         (KOutcome::Undecided { last: cur }, iters)
@@ -478,32 +501,23 @@ impl System2 {
     /// ulps. `Unique { region, .. }` then proves exactly one zero in a
     /// `region ⊇ x0`; `NoRoot` proves none in an inflated box `⊇ x0`.
     pub fn inflate_and_prove(&self, x0: &IBox, max_iter: usize) -> (KOutcome, usize) {
-        let mut cur = inflate(x0, 0.1);
-        let mut iters = 0;
-        while iters < max_iter {
-            let e = self.enclose(&cur);
-            iters += 1;
-            match self.step(&cur, &e) {
-                KStep::NoRoot => return (KOutcome::NoRoot, iters),
-                KStep::Unique(k) => {
-                    let (tight, more) = self.contract_steps(k, max_iter);
-                    return (KOutcome::Unique { region: cur, tight }, iters + more);
+        self.iterate(
+            inflate(x0, 0.1),
+            max_iter,
+            |k| self.contract_steps(k, max_iter),
+            |cur, e, _| {
+                // Recompute the full K(X) (not cut by X) for the next iterate.
+                let k = self.raw_k(cur, e).unwrap_or(*cur);
+                let next = inflate(&hull(x0, &k), 0.1);
+                // Give up when the iterate keeps growing beyond the
+                // start box (plus numerical slack at f64 accuracy).
+                let limit = |i: usize| (4.0 * x0[i].wid()).max(1e-9 * (1.0 + x0[i].mag()));
+                if next[0].wid() > limit(0) || next[1].wid() > limit(1) {
+                    return Err(*cur);
                 }
-                KStep::Contracted(_) => {
-                    // Recompute the full K(X) (not cut by X) for the next iterate.
-                    let k = self.raw_k(&cur, &e).unwrap_or(cur);
-                    let next = inflate(&hull(x0, &k), 0.1);
-                    // Give up when the iterate keeps growing beyond the
-                    // start box (plus numerical slack at f64 accuracy).
-                    let limit = |i: usize| (4.0 * x0[i].wid()).max(1e-9 * (1.0 + x0[i].mag()));
-                    if next[0].wid() > limit(0) || next[1].wid() > limit(1) {
-                        return (KOutcome::Undecided { last: cur }, iters);
-                    }
-                    cur = next;
-                }
-            }
-        }
-        (KOutcome::Undecided { last: cur }, iters)
+                Ok(next)
+            },
+        )
     }
     /// `K(X)` itself (not intersected with `X`), `None` if `Y` is not finite.
     fn raw_k(&self, x: &IBox, e: &BoxEnclosure) -> Option<IBox> {

@@ -541,11 +541,7 @@ impl Parser<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scalar::frac;
-
-    fn q(p: i64, d: i64) -> Rational {
-        frac(p, d)
-    }
+    use crate::test_util::qi as q;
 
     #[test]
     fn parses_and_evaluates_exactly() {

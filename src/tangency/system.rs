@@ -185,11 +185,7 @@ pub fn curve_polys(h: &HermiteData<Rational>) -> (Poly2<Rational>, Poly2<Rationa
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scalar::frac;
-
-    fn q(p: i64, d: i64) -> Rational {
-        frac(p, d)
-    }
+    use crate::test_util::qi as q;
 
     #[test]
     fn curve_interpolates_the_hermite_data_for_every_a2() {

@@ -28,6 +28,11 @@ pub fn q(p: i64, d: i64) -> Rational {
     frac(p, d)
 }
 
+/// The exact rational written `s` (`"1/3"`, `"-2.5"`, ...); panics on bad text.
+pub fn qs(s: &str) -> Rational {
+    parse_rational(s).unwrap()
+}
+
 /// A rational `n/d` with `|n| <= 40`, `1 <= d <= 12`.
 pub fn rat() -> impl Strategy<Value = Rational> {
     (-40i64..=40, 1i64..=12).prop_map(|(n, d)| q(n, d))

@@ -118,8 +118,9 @@ fn top_level(mut e: Invalid) -> Invalid {
 #[cfg(test)]
 mod tests;
 
-/// The keys of a version 3 certificate, all required.
-const KEYS: [&str; 8] = [
+/// The keys of a version 3 certificate, all required (the certificate
+/// writes them in this order).
+pub(super) const KEYS: [&str; 8] = [
     "format",
     "version",
     "claim",

@@ -50,8 +50,8 @@ mod prove;
 use super::driver::Kernel;
 use super::fit::{self, Reach};
 use super::options::{bad, check_options};
-use super::results::sub_exact;
-use super::{exact_bezier, OffsetError, OffsetOptions, Output, ProofPath};
+use super::results::{approximant_of, sub_exact};
+use super::{OffsetError, OffsetOptions, Output, ProofPath};
 use crate::certify::Certificate;
 use crate::curve::Bezier;
 use crate::scalar::{Rational, Scalar};
@@ -156,13 +156,7 @@ impl GridOffset {
     }
     /// The cubics as one exact shape (the certificate's `b`).
     pub fn approximant_shape(&self) -> Result<ShapeDesc, OffsetError> {
-        let pieces = self
-            .segments
-            .iter()
-            .map(|s| exact_bezier(&s.bezier))
-            .collect::<Option<Vec<_>>>()
-            .ok_or_else(|| bad("approximant", "a control point is not finite"))?;
-        ShapeDesc::curve(pieces).map_err(|e| bad("approximant", e.to_string()))
+        approximant_of(self.segments.iter().map(|s| &s.bezier))
     }
     /// The exact outline the cubics are proven against (the certificate's
     /// `a`): the exact offset of every target span, and with corner arcs the

@@ -1,13 +1,9 @@
 //! Tests of the symbolic scalar.
 use super::*;
 use crate::poly::Poly;
-use crate::scalar::parse_rational;
 use crate::scalar::{Rational, Scalar, Sign};
+use crate::test_util::q;
 use num_traits::Zero;
-
-fn q(s: &str) -> Rational {
-    parse_rational(s).unwrap()
-}
 
 fn c(n: i64) -> RatFunc {
     RatFunc::from_i64(n)

@@ -2,15 +2,11 @@
 //! independent dense measurement, the spec's special cases, the report.
 
 use super::*;
-use crate::scalar::parse_rational;
 use crate::shape::{
     parse_curve_reported, parse_svg_path, parse_svg_path_reported, CurveParseError,
 };
+use crate::test_util::q;
 use proptest::prelude::*;
-
-fn q(s: &str) -> Rational {
-    parse_rational(s).unwrap()
-}
 
 fn f(r: &Rational) -> f64 {
     crate::scalar::Scalar::approx(r)

@@ -29,7 +29,7 @@ fn sampled_dist(p: (f64, f64), q: &Piece) -> f64 {
 #[test]
 fn the_certified_reach_is_never_below_the_sampled_distance() {
     let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
-    let mut rng = crate::test_rng::TestRng::new(0x9e37_79b9_7f4a_7c15);
+    let mut rng = crate::test_util::TestRng::new(0x9e37_79b9_7f4a_7c15);
     let (mut decided, mut refused) = (0, 0);
     for _ in 0..60 {
         // a short cubic near the start of a reference cubic (a spur at Y)
@@ -118,7 +118,7 @@ fn a_spur_near_the_output_is_dropped_and_a_far_one_is_kept() {
 #[test]
 fn interval_areas_enclose_the_exact_ones() {
     let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
-    let mut rng = crate::test_rng::TestRng::new(0x2545_f491_4f6c_dd1d);
+    let mut rng = crate::test_util::TestRng::new(0x2545_f491_4f6c_dd1d);
     let mut next = || rng.int(1000);
     for deg in 1..=6 {
         for _ in 0..20 {

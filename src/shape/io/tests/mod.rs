@@ -6,11 +6,8 @@ mod svg_path;
 
 use super::*;
 use crate::curve::V2;
+use crate::test_util::q;
 use proptest::prelude::*;
-
-fn q(s: &str) -> Rational {
-    parse_rational(s).unwrap()
-}
 
 fn p(x: &str, y: &str) -> V2<Rational> {
     V2::new(q(x), q(y))

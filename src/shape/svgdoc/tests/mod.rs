@@ -5,11 +5,7 @@ mod transforms;
 mod walk;
 
 use super::*;
-use crate::scalar::parse_rational;
-
-fn q(s: &str) -> Rational {
-    parse_rational(s).unwrap()
-}
+use crate::test_util::q;
 
 fn pts(b: &Bezier<Rational>) -> Vec<(Rational, Rational)> {
     b.points()

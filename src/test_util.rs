@@ -1,0 +1,33 @@
+//! Helpers for the library's unit tests: a deterministic generator
+//! (xorshift64: the same cases on every run, no dependency) and the exact
+//! rationals `q("1/3")` and `qi(1, 3)`.
+
+use crate::scalar::{frac, parse_rational, Rational};
+
+/// The exact rational written `s` (`"1/3"`, `"-2.5"`, ...); panics on bad text.
+pub(crate) fn q(s: &str) -> Rational {
+    parse_rational(s).unwrap()
+}
+
+/// The exact rational `p/d`.
+pub(crate) fn qi(p: i64, d: i64) -> Rational {
+    frac(p, d)
+}
+
+/// Xorshift64 state.
+pub(crate) struct TestRng(u64);
+
+impl TestRng {
+    /// A generator from a nonzero seed.
+    pub(crate) fn new(seed: u64) -> Self {
+        TestRng(seed.max(1))
+    }
+    /// A uniform-ish integer in `[-m, m]`.
+    pub(crate) fn int(&mut self, m: i64) -> i64 {
+        let s = &mut self.0;
+        *s ^= *s << 13;
+        *s ^= *s >> 7;
+        *s ^= *s << 17;
+        (*s % (2 * m as u64 + 1)) as i64 - m
+    }
+}
