@@ -171,16 +171,7 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
     let tol_q = number("--tol", &a.tol)?;
     let tol = interval_from_rational(&tol_q).inf();
     let pen = pen_of(a, tol)?;
-    let meta = std::fs::metadata(&a.curve)
-        .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
-    if meta.len() > super::curve_input::MAX_FILE_BYTES {
-        return Err(bad(
-            "CURVE",
-            format!("{}: file too large", a.curve.display()),
-        ));
-    }
-    let text = std::fs::read_to_string(&a.curve)
-        .map_err(|e| bad("CURVE", format!("{}: {e}", a.curve.display())))?;
+    let text = super::curve_input::read_text(&a.curve)?;
     let curve = parse_curve(&text).map_err(|e| bad("CURVE", e))?;
     if a.trim {
         let sa = super::stroke::StrokeArgs {

@@ -47,29 +47,46 @@ pub enum CurveInput {
     },
 }
 
-/// Reads `path` as a text file of at most
+/// The bytes of `path`, at most `limit` of them (checked before reading and
+/// again while reading, should the file grow); errors name `flag`. Every
+/// input file of the CLI is read here.
+pub fn read_limited(flag: &str, path: &Path, limit: u64) -> Result<Vec<u8>, CliError> {
+    use std::io::Read;
+    let io = |e: std::io::Error| bad(flag, format!("{}: {e}", path.display()));
+    let too_big = || {
+        bad(
+            flag,
+            format!("{}: larger than the limit of {limit} bytes", path.display()),
+        )
+    };
+    let file = std::fs::File::open(path).map_err(io)?;
+    if file.metadata().map_err(io)?.len() > limit {
+        return Err(too_big());
+    }
+    let mut bytes = Vec::new();
+    file.take(limit + 1).read_to_end(&mut bytes).map_err(io)?;
+    if bytes.len() as u64 > limit {
+        return Err(too_big());
+    }
+    Ok(bytes)
+}
+
+/// [`read_limited`] as UTF-8 text.
+pub fn read_text_limited(flag: &str, path: &Path, limit: u64) -> Result<String, CliError> {
+    String::from_utf8(read_limited(flag, path, limit)?)
+        .map_err(|e| bad(flag, format!("{}: not UTF-8 text ({e})", path.display())))
+}
+
+/// Reads `path` (the argument CURVE) as a text file of at most
 /// [`MAX_FILE_BYTES`] bytes.
 pub fn read_text(path: &Path) -> Result<String, CliError> {
-    let meta =
-        std::fs::metadata(path).map_err(|e| bad("CURVE", format!("{}: {e}", path.display())))?;
-    if meta.len() > MAX_FILE_BYTES {
-        return Err(bad("CURVE", format!("{}: file too large", path.display())));
-    }
-    std::fs::read_to_string(path).map_err(|e| bad("CURVE", format!("{}: {e}", path.display())))
+    read_text_limited("CURVE", path, MAX_FILE_BYTES)
 }
 
 /// The contours of the glyph of `ch` in the font file `path`, exactly as
 /// stored (font units, or em with `em`).
 pub fn read_glyph(path: &Path, ch: char, em: bool) -> Result<Vec<Bezier<Rational>>, CliError> {
-    let meta =
-        std::fs::metadata(path).map_err(|e| bad("CURVE", format!("{}: {e}", path.display())))?;
-    if meta.len() > MAX_FONT_BYTES {
-        return Err(bad(
-            "CURVE",
-            format!("{}: font file too large", path.display()),
-        ));
-    }
-    let data = std::fs::read(path).map_err(|e| bad("CURVE", format!("{}: {e}", path.display())))?;
+    let data = read_limited("CURVE", path, MAX_FONT_BYTES)?;
     let mut outline = lncert::shape::glyph_outline(&data, ch).map_err(|e| bad("--glyph", e))?;
     if em {
         let upem = lncert::shape::units_per_em(&data).map_err(|e| bad("--em", e))?;
@@ -127,4 +144,31 @@ pub fn input_line(label: &str, approx: &InputApprox) -> Option<String> {
     approx
         .summary()
         .map(|s| format!("{label}: {s}; the results are about the approximated curve\n"))
+}
+
+#[cfg(test)]
+mod read_tests {
+    use super::*;
+
+    #[test]
+    fn files_over_the_limit_are_refused_naming_the_flag() {
+        let dir = std::env::temp_dir().join(format!("lncert-read-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let p = dir.join("five.txt");
+        std::fs::write(&p, "12345").unwrap();
+        assert_eq!(read_limited("CURVE", &p, 5).unwrap(), b"12345");
+        let e = read_limited("IN", &p, 4).unwrap_err();
+        assert_eq!(e.field, "IN");
+        assert!(
+            e.reason.contains("larger than the limit of 4 bytes"),
+            "{}",
+            e.reason
+        );
+        std::fs::write(&p, [0xffu8, 0xfe]).unwrap();
+        let e = read_text_limited("A", &p, 5).unwrap_err();
+        assert!(e.reason.contains("not UTF-8"), "{}", e.reason);
+        let e = read_limited("B", &dir.join("missing"), 5).unwrap_err();
+        assert_eq!(e.field, "B");
+        std::fs::remove_dir_all(&dir).ok();
+    }
 }

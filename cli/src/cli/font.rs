@@ -993,16 +993,7 @@ pub fn run(a: &FontArgs) -> Result<i32, CliError> {
         let info = u.info.clone();
         (Source::Ufo(u), info)
     } else {
-        let meta = std::fs::metadata(&a.input)
-            .map_err(|e| bad("IN", format!("{}: {e}", a.input.display())))?;
-        if meta.len() > MAX_FONT_BYTES {
-            return Err(bad(
-                "IN",
-                format!("{}: font file too large", a.input.display()),
-            ));
-        }
-        let data = std::fs::read(&a.input)
-            .map_err(|e| bad("IN", format!("{}: {e}", a.input.display())))?;
+        let data = super::curve_input::read_limited("IN", &a.input, MAX_FONT_BYTES)?;
         let info = font_info(&data).map_err(|e| bad("IN", e))?;
         (Source::Binary(data), info)
     };

@@ -58,18 +58,9 @@ pub struct HausdorffArgs {
 /// circles, ellipses, rounded rects); errors name the argument.
 pub fn read_shape_reported(
     flag: &str,
-    path: &PathBuf,
+    path: &std::path::Path,
 ) -> Result<(ShapeDesc, InputApprox), CliError> {
-    let meta =
-        std::fs::metadata(path).map_err(|e| bad(flag, format!("{}: {e}", path.display())))?;
-    if meta.len() > MAX_FILE_BYTES {
-        return Err(bad(
-            flag,
-            format!("{}: larger than {MAX_FILE_BYTES} bytes", path.display()),
-        ));
-    }
-    let text =
-        std::fs::read_to_string(path).map_err(|e| bad(flag, format!("{}: {e}", path.display())))?;
+    let text = super::curve_input::read_text_limited(flag, path, MAX_FILE_BYTES)?;
     ShapeDesc::parse_reported(&text).map_err(|e| bad(flag, format!("{}: {e}", path.display())))
 }
 
