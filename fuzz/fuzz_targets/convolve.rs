@@ -24,7 +24,7 @@
 //! `max_segments` 1..=8, `max_boxes` 8..=64).
 //!
 //! Checks (exact consequences of the contract and of the driver in
-//! src/approx/mod.rs; no sampled "expected" geometry):
+//! src/offset/; no sampled "expected" geometry):
 //! * no panic; an `Err` names a non-empty field and reason, both in its
 //!   `Display`; the expected field where the input decides it (above);
 //! * the pen: `q = M Mᵀ` exactly; a matrix pen is exact (`margin` and

@@ -12,7 +12,7 @@
 //! `paper_error` stays off (it runs a search with the default 200 000 boxes).
 //!
 //! Checks (exact consequences of the contract and of the driver in
-//! src/approx/mod.rs; no sampled "expected" geometry):
+//! src/offset/; no sampled "expected" geometry):
 //! * no panic; an `Err` is fine (the input is rejected) but names a non-empty
 //!   field and reason, both in its `Display`;
 //! * a tolerance that is not a finite number `>= 1e-11 (1 + scale)` (0, -1,
