@@ -292,11 +292,9 @@ pub fn show_tau(t: &Tau<Rational>) -> String {
 pub fn offset_err(e: OffsetError) -> CliError {
     let OffsetError { field, reason } = e;
     let flag = match field.as_str() {
-        "distance" => "--distance".to_string(),
-        "tol" => "--tol".to_string(),
-        "max_depth" => "--max-depth".to_string(),
-        "max_segments" => "--max-segments".to_string(),
-        "grid" => "--grid".to_string(),
+        "distance" | "tol" | "side" | "method" | "max_depth" | "max_segments" | "grid" => {
+            format!("--{}", field.replace('_', "-"))
+        }
         f => format!("CURVE: {f}"),
     };
     bad(&flag, reason)

@@ -20,13 +20,13 @@
 //! Exit codes as `offset`: 0 = every side proven within `T`, 3 = not reached
 //! within the limits, 2 = bad input.
 
-use super::args::{bad, number, q};
+use super::args::{bad, number, offset_err, q};
 use super::modes::{Accept, Method, Output, Side, Subdivision};
 use super::pen::ellipse_pen;
 use super::{print_out, CliError};
 use lncert::curve::{Bezier, V2};
 use lncert::offset::{
-    convolve, union_certificate, union_certificate_all, OffsetError, OffsetOptions, OffsetResult,
+    convolve, union_certificate, union_certificate_all, OffsetOptions, OffsetResult,
 };
 use lncert::offset::{Angle, Pen};
 use lncert::scalar::{interval_from_rational, rational_from_f64, Rational, Scalar};
@@ -144,20 +144,6 @@ fn pen_of(a: &ConvolveArgs, tol: f64) -> Result<Pen, CliError> {
     }
 }
 
-fn conv_err(e: OffsetError) -> CliError {
-    let OffsetError { field, reason } = e;
-    let flag = match field.as_str() {
-        "tol" => "--tol".to_string(),
-        "side" => "--side".to_string(),
-        "method" => "--method".to_string(),
-        "max_depth" => "--max-depth".to_string(),
-        "max_segments" => "--max-segments".to_string(),
-        "grid" => "--grid".to_string(),
-        f => format!("CURVE: {f}"),
-    };
-    bad(&flag, reason)
-}
-
 /// Runs the command; returns the exit code.
 pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
     let sides = a.side.signs();
@@ -217,7 +203,7 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
     let mut results = Vec::new();
     for (sigma, name) in &sides {
         let t0 = std::time::Instant::now();
-        let r = convolve(&curve, &pen, *sigma, &opts).map_err(conv_err)?;
+        let r = convolve(&curve, &pen, *sigma, &opts).map_err(offset_err)?;
         results.push((*name, r, t0.elapsed().as_secs_f64()));
     }
     let total = start.elapsed().as_secs_f64();
@@ -245,7 +231,7 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
         } else {
             union_certificate_all(&curve, &rs, &claim)
         }
-        .map_err(conv_err)?;
+        .map_err(offset_err)?;
         match cert {
             Some(c) => {
                 std::fs::write(path, c.to_json_string())
