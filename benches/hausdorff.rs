@@ -11,7 +11,7 @@
 use criterion::{criterion_group, criterion_main, Criterion};
 use lncert::certify::verify::verify;
 use lncert::certify::{hausdorff, Certificate, Config};
-use lncert::scalar::{interval_from_rational, Rational};
+use lncert::scalar::Rational;
 use lncert::shape::ShapeDesc;
 use std::hint::black_box;
 
@@ -78,11 +78,11 @@ fn bench(c: &mut Criterion) {
             },
         )
         .unwrap();
-        let tol = Rational::from_float(r.hi * 1.01).unwrap();
+        let tol = lncert::Tolerance::new(Rational::from_float(r.hi * 1.01).unwrap()).unwrap();
         // the default path (parametric proof first) and the two-directional
         // search, whose box covers a certificate is built from
         let cfg = Config {
-            tol: Some(interval_from_rational(&tol).inf()),
+            tol: Some(tol.clone()),
             ..Config::default()
         };
         let cfg_search = Config {

@@ -21,6 +21,7 @@ use std::hint::black_box;
 const CUBIC: &str = r#"{"bezier": [[-0.95, 0.7], [-0.3, 0.5], [0.3, -2.5], [0.9, -0.2]]}"#;
 
 fn opts(m: OffsetMethod, tol: f64) -> OffsetOptions {
+    let tol = lncert::Tolerance::from_f64(tol).unwrap();
     let mut o = OffsetOptions::new(parse_rational("0.5").unwrap(), tol);
     o.method = m;
     o

@@ -225,7 +225,7 @@ fn global_bounds(
         &Config {
             rel: 1e-2,
             max_boxes: GLOBAL_MAX_BOXES,
-            tol,
+            tol: tol.map(|t| lncert::Tolerance::from_f64(t).expect("a positive tolerance")),
             ..Config::default()
         },
     )
@@ -304,7 +304,7 @@ fn span_bound(
         &Config {
             rel: 1e-2,
             max_boxes: 400_000,
-            tol,
+            tol: tol.map(|t| lncert::Tolerance::from_f64(t).expect("a positive tolerance")),
             ..Config::default()
         },
     )
@@ -385,7 +385,10 @@ fn run_lncert(
     tol: f64,
     method: OffsetMethod,
 ) -> Result<Cell, String> {
-    let mut opts = OffsetOptions::new(d.clone(), tol);
+    let mut opts = OffsetOptions::new(
+        d.clone(),
+        lncert::Tolerance::from_f64(tol).map_err(|e| e.to_string())?,
+    );
     opts.method = method;
     let t0 = Instant::now();
     let r: OffsetResult = offset(&tc.pieces, &opts).map_err(|e| e.to_string())?;

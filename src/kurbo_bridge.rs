@@ -37,7 +37,7 @@ use crate::certify::{hausdorff, hausdorff_pieces, Config};
 use crate::curve::{Bezier, V2};
 use crate::scalar::{rational_from_f64, sin_cos_enclosure, Interval, Rational, Scalar, ScalarSqrt};
 use crate::shape::{ArcDesc, ShapeDesc};
-use crate::Error;
+use crate::{Error, Tolerance};
 use kurbo::{Arc, BezPath, Circle, CubicBez, Line, PathEl, Point, QuadBez};
 
 /// A certified verdict on `d_H(a, b) ≤ tol`.
@@ -328,11 +328,14 @@ pub fn exact_offset(c: CubicBez, d: f64) -> Result<ShapeDesc, Error> {
 
 /// Decides `d_H(a, b) ≤ tol` with certified bounds (the default budget).
 pub fn certify_within(a: &ShapeDesc, b: &ShapeDesc, tol: f64) -> Result<Verdict, Error> {
+    check_tol(tol)?;
     let r = hausdorff(
         a,
         b,
         &Config {
-            tol: Some(tol),
+            // the search's goal (a tolerance 0 aims at the smallest float);
+            // the verdict compares the bounds with `tol` itself
+            tol: Tolerance::goal(tol),
             ..Config::default()
         },
     )?;
@@ -626,7 +629,7 @@ fn union_bounds(a: &[ShapeDesc], b: &[ShapeDesc], goal: f64) -> Result<(f64, f64
     };
     let (pa, pb) = (pieces(a, "a")?, pieces(b, "b")?);
     let cfg = Config {
-        tol: Some(goal),
+        tol: Tolerance::goal(goal),
         ..Config::default()
     };
     let scale = a.iter().chain(b).map(ShapeDesc::scale).fold(0.0, f64::max);

@@ -14,6 +14,7 @@
 //! | task | entry points |
 //! |---|---|
 //! | read curves and shapes | [`parse_curve`], [`ShapeDesc::parse`], [`parse_rational`] |
+//! | a tolerance, given once to the options and the certificates | [`Tolerance`] (exact, and the largest `f64` below it) |
 //! | certify a Hausdorff distance or a tolerance | [`hausdorff`], [`HausdorffConfig`], [`HausdorffBounds`], [`Certificate`] |
 //! | re-check a certificate | [`verify`] |
 //! | a proven offset | [`offset()`], [`OffsetOptions`], [`OffsetResult`], [`union_certificate`] |
@@ -56,17 +57,18 @@
 //!
 //! # Examples
 //! ```
-//! use lncert::{hausdorff, verify, Certificate, HausdorffConfig, ShapeDesc};
+//! use lncert::{hausdorff, verify, Certificate, HausdorffConfig, ShapeDesc, Tolerance};
 //! # fn main() -> Result<(), lncert::Error> {
 //! let a = ShapeDesc::parse("M 0 0 Q 0.5 0.5 1 0")?;
 //! let b = ShapeDesc::parse("M 0 0 L 1 0")?;
-//! // claim: d_H(a, b) ≤ 0.26 (the true distance is 1/4)
-//! let tol = lncert::parse_rational("0.26")?;
-//! let r = hausdorff(&a, &b, &HausdorffConfig { tol: Some(0.26), ..Default::default() })?;
-//! assert!(r.hi <= 0.26);
+//! // claim: d_H(a, b) ≤ 0.26 (the true distance is 1/4), exactly 13/50
+//! let tol: Tolerance = "0.26".parse()?;
+//! let cfg = HausdorffConfig { tol: Some(tol.clone()), ..Default::default() };
+//! let r = hausdorff(&a, &b, &cfg)?;
+//! assert!(r.hi <= tol.value()); // the largest f64 ≤ 13/50
 //! let cert = Certificate::new(&a, &b, &tol, &r).expect("proven");
 //! let valid = verify(&cert.to_json_string())?;
-//! assert_eq!(valid.tol, tol);
+//! assert_eq!(&valid.tol, tol.exact());
 //! # Ok(())
 //! # }
 //! ```
@@ -101,6 +103,9 @@ pub mod write;
 
 mod error;
 pub use error::Error;
+
+mod tolerance;
+pub use tolerance::Tolerance;
 
 pub use certify::verify::{verify, Valid};
 pub use certify::{

@@ -14,6 +14,12 @@ pub(crate) fn qi(p: i64, d: i64) -> Rational {
     frac(p, d)
 }
 
+/// The tolerance equal to the float `x` (`value() == x`); panics when `x` is
+/// not a positive normal float.
+pub(crate) fn tol(x: f64) -> crate::Tolerance {
+    crate::Tolerance::from_f64(x).unwrap()
+}
+
 /// Xorshift64 state.
 pub(crate) struct TestRng(u64);
 

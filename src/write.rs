@@ -302,7 +302,7 @@ pub fn beziers_path_data(pieces: &[Bezier<Rational>]) -> Result<String, Error> {
 /// ```
 /// use lncert::{offset, parse_curve, OffsetMethod, OffsetOptions};
 /// let c = parse_curve("M 0 0 L 4 0").unwrap();
-/// let mut o = OffsetOptions::new(lncert::parse_rational("1").unwrap(), 1e-3);
+/// let mut o = OffsetOptions::new(lncert::parse_rational("1").unwrap(), "1e-3".parse().unwrap());
 /// o.method = OffsetMethod::LnPair;
 /// let d = lncert::write::offset_path_data(&offset(&c, &o).unwrap()).unwrap();
 /// assert!(d.starts_with("M 0 1 C "), "{d}");
@@ -501,7 +501,7 @@ impl SvgShape {
     /// # Examples
     /// ```
     /// use lncert::{offset, parse_curve, OffsetMethod, OffsetOptions};
-    /// let mut o = OffsetOptions::new(lncert::parse_rational("1").unwrap(), 1e-3);
+    /// let mut o = OffsetOptions::new(lncert::parse_rational("1").unwrap(), "1e-3".parse().unwrap());
     /// o.method = OffsetMethod::LnPair;
     /// let r = offset(&parse_curve("M 0 0 L 4 0").unwrap(), &o).unwrap();
     /// let s = lncert::write::SvgShape::offset(&r).unwrap();

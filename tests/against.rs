@@ -225,9 +225,9 @@ fn high_degree_offset_certificate(points: usize) -> Result<(), String> {
         distance: d,
     };
     let (a, c) = (off(q(1, 3)), off(q(334, 1000)));
-    let tol = q(1, 500);
+    let tol = lncert::Tolerance::new(q(1, 500)).map_err(|e| e.to_string())?;
     let cfg = Config {
-        tol: Some(2e-3),
+        tol: Some(tol.clone()),
         parametric: false,
         ..Config::default()
     };

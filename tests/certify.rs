@@ -144,12 +144,12 @@ fn bad_input_is_a_typed_error() {
             max_boxes: 0,
             ..Config::default()
         },
-        Config {
-            tol: Some(-1.0),
-            ..Config::default()
-        },
     ] {
         assert!(hausdorff(&a, &a, &c).is_err());
+    }
+    // a tolerance is valid by construction: the bad ones are refused where it is made
+    for bad in [-1.0, 0.0, f64::NAN, f64::INFINITY] {
+        assert_eq!(lncert::Tolerance::from_f64(bad).unwrap_err().field, "tol");
     }
 }
 
@@ -301,12 +301,12 @@ enum Kind {
 const KINDS: [Kind; 2] = [Kind::Search, Kind::Map];
 
 fn certified_by(a: &ShapeDesc, b: &ShapeDesc, tol: &str, kind: Kind) -> Certificate {
-    let t = parse_rational(tol).unwrap();
+    let t: lncert::Tolerance = tol.parse().unwrap();
     let r = hausdorff(
         a,
         b,
         &Config {
-            tol: Some(interval_from_rational(&t).inf()),
+            tol: Some(t.clone()),
             parametric: kind == Kind::Map,
             ..Config::default()
         },
@@ -785,7 +785,7 @@ fn moved_control_points(kind: Kind) {
                     &a,
                     &moved,
                     &Config {
-                        tol: Some(0.03),
+                        tol: Some(common::tol(0.03)),
                         ..Config::default()
                     },
                 )
@@ -829,12 +829,12 @@ fn certificate_for_arc_and_offset_shapes() {
         &cfg(1e-3),
     )
     .unwrap();
-    let tol = Rational::from_float(r.hi * 1.01).unwrap();
+    let tol = lncert::Tolerance::new(Rational::from_float(r.hi * 1.01).unwrap()).unwrap();
     let r = hausdorff(
         &off,
         &shape("M -0.0707 0.0707 Q 1 1.2 2.0707 0.0707"),
         &Config {
-            tol: Some(interval_from_rational(&tol).inf()),
+            tol: Some(tol.clone()),
             parametric: false,
             ..Config::default()
         },
@@ -848,7 +848,7 @@ fn certificate_for_arc_and_offset_shapes() {
     )
     .unwrap();
     assert!(check(&cert.doc).is_ok());
-    let _ = Scalar::approx(&tol);
+    let _ = Scalar::approx(tol.exact());
 }
 
 // ----- fuzz regressions (fuzz/regressions/hausdorff/) --------------------------------

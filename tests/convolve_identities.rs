@@ -172,7 +172,7 @@ fn equation_4_1_agrees_on_the_test_cubic_segments() {
     .unwrap();
     let r = q(1, 2);
     let pen = Pen::from_matrix([[r.clone(), q(0, 1)], [q(0, 1), r.clone()]]).unwrap();
-    let res = convolve(&x, &pen, 1, &OffsetOptions::new(q(0, 1), 3e-1)).unwrap();
+    let res = convolve(&x, &pen, 1, &OffsetOptions::new(q(0, 1), common::tol(3e-1))).unwrap();
     let cfg = Config {
         rel: 1e-6,
         ..Config::default()
@@ -258,7 +258,13 @@ fn equation_4_1_fails_with_an_ellipse() {
     };
     let mut report = Vec::new();
     for side in [1i8, -1] {
-        let res = convolve(&x, &pen, side, &OffsetOptions::new(q(0, 1), 2e-2)).unwrap();
+        let res = convolve(
+            &x,
+            &pen,
+            side,
+            &OffsetOptions::new(q(0, 1), common::tol(2e-2)),
+        )
+        .unwrap();
         for s in &res.segments {
             let (t0, t1) = (
                 rational_from_f64(s.t.0).unwrap(),

@@ -19,7 +19,7 @@ use proptest::prelude::*;
 const TEST_CUBIC: &str = r#"{"bezier": [[-0.95, 0.7], [-0.3, 0.5], [0.3, -2.5], [0.9, -0.2]]}"#;
 
 fn opts(d: &str, tol: f64, m: OffsetMethod) -> OffsetOptions {
-    let mut o = OffsetOptions::new(parse_rational(d).unwrap(), tol);
+    let mut o = OffsetOptions::new(parse_rational(d).unwrap(), common::tol(tol));
     o.method = m;
     o
 }
@@ -244,7 +244,7 @@ fn offset_cusp_at_the_end_point() {
         V2::new(q(-5, 4), q(3, 2)),
         V2::new(q(-1, 1), q(3, 2)),
     ]);
-    let mut o = OffsetOptions::new(q(-1, 8), 2e-2);
+    let mut o = OffsetOptions::new(q(-1, 8), common::tol(2e-2));
     o.max_depth = 10;
     let c = vec![x];
     let r = offset(&c, &o).unwrap();
@@ -263,7 +263,7 @@ proptest! {
         prop_assume!(dn != 0);
         let d = q(dn, 8);
         let m = if g2 { OffsetMethod::G2 } else { OffsetMethod::LnPair };
-        let mut o = OffsetOptions::new(d, 2e-2);
+        let mut o = OffsetOptions::new(d, common::tol(2e-2));
         o.method = m;
         o.max_depth = 10;
         let c = vec![x];
@@ -354,7 +354,7 @@ fn corners_get_a_join_arc_or_an_overlap() {
     assert!(corners(&parse_curve("M 0 0 Q 1 0 1 1 Q 1 2 2 2").unwrap(), &q(1, 2)).is_empty());
     let square = parse_curve("M 0 0 L 1 0 L 1 1 L 0 1 Z").unwrap();
     assert_eq!(corners(&square, &q(-1, 4)).len(), 4);
-    let r = offset(&square, &OffsetOptions::new(q(-1, 4), 1e-6)).unwrap();
+    let r = offset(&square, &OffsetOptions::new(q(-1, 4), common::tol(1e-6))).unwrap();
     assert!(r.reached() && r.corners.len() == 4);
     assert_eq!(
         lncert::offset::join_arcs(&r).len(),
@@ -406,7 +406,7 @@ fn arcs_are_offset_exactly() {
 #[test]
 fn unreachable_tolerance_is_reported_not_looped() {
     let c = parse_curve(TEST_CUBIC).unwrap();
-    let mut o = OffsetOptions::new(q(1, 2), 1e-9);
+    let mut o = OffsetOptions::new(q(1, 2), common::tol(1e-9));
     o.max_depth = 2;
     let r = offset(&c, &o).unwrap();
     assert!(!r.reached() && !r.unreached.is_empty());
@@ -423,7 +423,7 @@ fn unreachable_tolerance_is_reported_not_looped() {
 #[test]
 fn budget_exhausted_on_an_exact_segment_stops_splitting() {
     let c = parse_curve("M 0 0 C 1 0 2 0 3 0").unwrap();
-    let mut o = OffsetOptions::new(q(1, 2), 1e-9);
+    let mut o = OffsetOptions::new(q(1, 2), common::tol(1e-9));
     let proven = offset(&c, &o).unwrap();
     assert!(proven.reached() && proven.segments.len() == 1);
     o.max_boxes = 16;
@@ -443,16 +443,17 @@ fn budget_exhausted_on_an_exact_segment_stops_splitting() {
 #[test]
 fn bad_input_is_a_typed_error_naming_the_field() {
     let c = parse_curve(TEST_CUBIC).unwrap();
-    let field_of = |curve: &[Bezier<Rational>], d: Rational, tol: f64| match offset(
-        curve,
-        &OffsetOptions::new(d, tol),
-    ) {
-        Err(lncert::offset::OffsetError { field, reason }) => {
-            assert!(!reason.is_empty());
-            field
-        }
-        Ok(_) => panic!("accepted d, tol = {tol}"),
-    };
+    // a bad float is refused where the tolerance is made, a tiny one by `offset`
+    let field_of =
+        |curve: &[Bezier<Rational>], d: Rational, tol: f64| match lncert::Tolerance::from_f64(tol)
+            .and_then(|t| offset(curve, &OffsetOptions::new(d, t)))
+        {
+            Err(lncert::offset::OffsetError { field, reason }) => {
+                assert!(!reason.is_empty());
+                field
+            }
+            Ok(_) => panic!("accepted d, tol = {tol}"),
+        };
     for tol in [0.0, -1.0, f64::NAN, f64::INFINITY, 1e-300] {
         assert_eq!(field_of(&c, q(1, 2), tol), "tol");
     }
@@ -467,7 +468,7 @@ fn bad_input_is_a_typed_error_naming_the_field() {
     assert_eq!(field_of(&coincident, q(1, 2), 1e-2), "curve[0]");
     let huge = parse_curve(r#"{"bezier": [[0, 0], ["1e200", 1]]}"#).unwrap();
     assert!(field_of(&huge, q(1, 2), 1e-2).starts_with("curve"));
-    assert!(offset(&[], &OffsetOptions::new(q(1, 2), 1e-2)).is_err());
+    assert!(offset(&[], &OffsetOptions::new(q(1, 2), common::tol(1e-2))).is_err());
 }
 
 /// Seed 000's error measure (8), `d_H(p, pa) + |r| d_H(c, ca)`, is evaluated for every

@@ -94,7 +94,7 @@ fn check(a: &Bezier<Rational>, b: &Bezier<Rational>) -> Result<(), TestCaseError
     // the fallback search is not under test here: a small budget keeps the
     // undecidable cases (tol at the true distance) short
     let cfg = Config {
-        tol: Some(tol),
+        tol: Some(common::tol(tol)),
         max_boxes: 2_000,
         ..Config::default()
     };
@@ -203,7 +203,7 @@ fn the_parametric_path_decides_most_pairs() {
             continue;
         }
         let cfg = Config {
-            tol: Some(est * 1.02),
+            tol: Some(common::tol(est * 1.02)),
             max_boxes: 2_000,
             ..Config::default()
         };

@@ -138,7 +138,7 @@ fn attempt(
         })
         .map_err(|e| e.to_string())?;
         let cfg = Config {
-            tol: Some(target),
+            tol: Some(crate::Tolerance::from_f64(target).map_err(|e| e.to_string())?),
             verdict_only: true,
             max_boxes: 20_000,
             ..Config::default()

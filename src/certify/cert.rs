@@ -57,8 +57,9 @@
 use super::param::ParamBox;
 use super::search::CoverBox;
 use super::HausdorffBounds;
-use crate::scalar::{rational_from_f64, Rational};
+use crate::scalar::rational_from_f64;
 use crate::shape::ShapeDesc;
+use crate::Tolerance;
 use serde_json::{json, Value};
 
 /// Format name in the `format` field.
@@ -136,7 +137,7 @@ impl Certificate {
     pub fn new(
         a: &ShapeDesc,
         b: &ShapeDesc,
-        tol: &Rational,
+        tol: &Tolerance,
         r: &HausdorffBounds,
     ) -> Option<Certificate> {
         match &r.parametric {
@@ -162,12 +163,13 @@ impl Certificate {
     pub fn assemble(
         a: &ShapeDesc,
         b: &ShapeDesc,
-        tol: &Rational,
+        tol: &Tolerance,
         maps: &[MapCover],
         a_to_b: &[CoverBox],
         b_to_a: &[CoverBox],
     ) -> Option<Certificate> {
-        let tol_f = crate::scalar::interval_from_rational(tol).inf();
+        // the largest float ≤ the exact tolerance: a bound ≤ it is ≤ the claim
+        let tol_f = tol.value();
         let boxes_ok = a_to_b.iter().chain(b_to_a).all(|bx| {
             bx.bound <= tol_f && [bx.s.0, bx.s.1, bx.t, bx.k].iter().all(|x| x.is_finite())
         });
@@ -185,7 +187,7 @@ impl Certificate {
             "format": FORMAT,
             "version": VERSION,
             "claim": CLAIM,
-            "tol": tol.to_string(),
+            "tol": tol.exact().to_string(),
             "a": a.to_json(),
             "b": b.to_json(),
             "maps": maps.iter().map(map_json).collect::<Vec<_>>(),

@@ -98,11 +98,6 @@ fn check_config(cfg: &Config) -> Result<(), CertifyError> {
     if cfg.max_boxes == 0 {
         return bad("max_boxes", "must be ≥ 1");
     }
-    if let Some(t) = cfg.tol {
-        if !(t.is_finite() && t >= 0.0) {
-            return bad("tol", "must be a finite number ≥ 0");
-        }
-    }
     Ok(())
 }
 
@@ -247,7 +242,7 @@ pub(crate) fn hausdorff_pieces(
     }
     let abs = abs_of();
     let ab = search::one_sided(pa, pb, cfg, abs, (0.0, 0.0));
-    let refuted = cfg.tol.is_some_and(|t| ab.lo > t);
+    let refuted = cfg.tol.as_ref().is_some_and(|t| ab.lo > t.value());
     let ba = if refuted && cfg.verdict_only {
         OneSided {
             lo: 0.0,
@@ -301,8 +296,8 @@ fn parametric_path(
     if !cfg.parametric || pa.len() != 1 || pb.len() != 1 {
         return None;
     }
-    let goal = match cfg.tol {
-        Some(t) => param::Goal::Tol(t),
+    let goal = match &cfg.tol {
+        Some(t) => param::Goal::Tol(t.value()),
         None => param::Goal::Gap { rel: cfg.rel, abs },
     };
     let (a, b) = (&pa[0], &pb[0]);

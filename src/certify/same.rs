@@ -154,12 +154,13 @@ fn same_arc(a: &ArcDesc, b: &ArcDesc) -> Result<(), String> {
 /// ```
 /// use lncert::certify::{hausdorff, verify_against, Certificate, Config};
 /// use lncert::shape::ShapeDesc;
-/// use lncert::scalar::parse_rational;
+/// use lncert::Tolerance;
 /// let a = ShapeDesc::parse("M 0 0 Q 0.5 0.5 1 0").unwrap();
 /// let b = ShapeDesc::parse("M 0 0 L 1 0").unwrap();
-/// let cfg = Config { tol: Some(0.26), parametric: false, ..Config::default() };
+/// let tol: Tolerance = "0.26".parse().unwrap();
+/// let cfg = Config { tol: Some(tol.clone()), parametric: false, ..Config::default() };
 /// let r = hausdorff(&a, &b, &cfg).unwrap();
-/// let cert = Certificate::new(&a, &b, &parse_rational("0.26").unwrap(), &r).unwrap();
+/// let cert = Certificate::new(&a, &b, &tol, &r).unwrap();
 /// let text = cert.to_json_string();
 /// assert!(verify_against(&text, &a, &b).is_ok());
 /// // a dot far away added to B: not the shape the certificate speaks about

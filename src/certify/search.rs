@@ -36,6 +36,7 @@
 use super::jet::{dist2, Jet, JetPoint};
 use super::piece::Piece;
 use crate::scalar::{Interval, Scalar};
+use crate::Tolerance;
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
@@ -51,8 +52,10 @@ pub struct Config {
     /// Maximum number of parameter boxes per direction (default 200 000).
     pub max_boxes: usize,
     /// A claimed tolerance: the search then runs until it is decided (`hi ≤ tol`
-    /// or `lo > tol`), down to a relative gap of `1e-12`, instead of stopping at `rel`.
-    pub tol: Option<f64>,
+    /// or `lo > tol`, compared with [`Tolerance::value`], the largest float ≤
+    /// the exact tolerance), down to a relative gap of `1e-12`, instead of
+    /// stopping at `rel`.
+    pub tol: Option<Tolerance>,
     /// With `tol`: once the first direction refutes the tolerance, skip the second
     /// (its bounds are reported as `[0, ∞]`) instead of bounding it coarsely.
     /// For callers that only need the verdict (the offset driver splits a refuted span).
@@ -652,6 +655,7 @@ pub(crate) fn one_sided(
     abs: f64,
     other: (f64, f64),
 ) -> OneSided {
+    let tol = cfg.tol.as_ref().map(Tolerance::value);
     let mut heap = BinaryHeap::new();
     let mut evaluated = 0usize;
     for (i, piece) in a.iter().enumerate() {
@@ -710,7 +714,7 @@ pub(crate) fn one_sided(
             if !(c.est > *lo && c.est > abs) {
                 return;
             }
-            if cfg.tol.is_some_and(|t| c.est > t) {
+            if tol.is_some_and(|t| c.est > t) {
                 certify(&c, lo, witness);
             } else if pending.as_ref().is_none_or(|p| c.est > p.est) {
                 *pending = Some(c);
@@ -732,7 +736,7 @@ pub(crate) fn one_sided(
         let hi = top.b.bound;
         // Without a tolerance the goal is the relative gap; with one, it is the
         // verdict (refined down to a 1e-12 relative gap if need be).
-        let rel = if cfg.tol.is_some() { 1e-12 } else { cfg.rel };
+        let rel = if tol.is_some() { 1e-12 } else { cfg.rel };
         let ohi = hi.max(other.1);
         let closes = |l: f64| ohi.is_finite() && ohi - l.max(other.0) <= (rel * ohi).max(abs);
         if pending.as_ref().is_some_and(|c| closes(c.est)) {
@@ -745,7 +749,7 @@ pub(crate) fn one_sided(
         if closes(lo) {
             break;
         }
-        if let Some(tol) = cfg.tol {
+        if let Some(tol) = tol {
             if hi <= tol || lo > tol {
                 break;
             }

@@ -8,8 +8,9 @@ use super::results::{exact_bezier, ConvSide, OffsetResult};
 use super::{conv, lnpair};
 use crate::certify::{hausdorff, Config};
 use crate::curve::{Bezier, V2};
-use crate::scalar::{interval_from_rational, rational_from_f64, Rational};
+use crate::scalar::{interval_from_rational, rational_from_f64, Interval, IntervalExt, Rational};
 use crate::shape::ShapeDesc;
+use crate::Tolerance;
 use num_traits::Zero;
 use rayon::prelude::*;
 
@@ -33,8 +34,10 @@ use rayon::prelude::*;
 /// let q = |s: &str| lncert::parse_rational(s).unwrap();
 /// let x = parse_curve("M 0 0 C 1 0.2 2 1 2.4 2.5").unwrap();
 /// let pen = Pen::ellipse(&q("0.3"), &q("0.1"), &Angle::parse("pi/6").unwrap()).unwrap();
-/// let r = convolve(&x, &pen, 1, &OffsetOptions::new(q("0"), 1e-4)).unwrap();
-/// assert!(r.reached() && r.certified_hi <= 1e-4);
+/// let r = convolve(&x, &pen, 1, &OffsetOptions::new(q("0"), "1e-4".parse().unwrap())).unwrap();
+/// assert!(r.reached() && r.certified_hi <= r.tol.value());
+/// // the pen's rotation is represented within a margin: certified below tol
+/// assert!(r.certified_tol().exact() < r.tol.exact());
 /// assert_eq!(r.degree(), 6);
 /// ```
 pub fn convolve(
@@ -58,7 +61,19 @@ pub fn convolve(
         bad(field, e.reason)
     })?;
     check_limits(opts, shape.scale(), pen.margin)?;
-    let certified_tol = opts.tol - pen.margin;
+    // tol − margin rounded down (a bound ≤ it plus the margin is ≤ tol)
+    let inner_tol = if pen.margin == 0.0 {
+        opts.tol.clone()
+    } else {
+        let below = match (
+            Interval::point(opts.tol.value()),
+            Interval::point(pen.margin),
+        ) {
+            (Some(t), Some(m)) => (t - m).inf(),
+            _ => f64::NAN,
+        };
+        Tolerance::from_f64(below)?
+    };
     let cusps: Vec<conv::ConvCusp> = curve
         .par_iter()
         .enumerate()
@@ -84,7 +99,7 @@ pub fn convolve(
         sigma: side,
     };
     let inner = OffsetOptions {
-        tol: certified_tol,
+        tol: inner_tol.clone(),
         ..opts.clone()
     };
     let (segments, unreached, certified_hi, certifications, spans) =
@@ -92,7 +107,7 @@ pub fn convolve(
     Ok(OffsetResult {
         method: opts.method,
         distance: <Rational as Zero>::zero(),
-        tol: opts.tol,
+        tol: opts.tol.clone(),
         segments,
         unreached,
         certified_hi,
@@ -105,7 +120,7 @@ pub fn convolve(
             pen: pen.clone(),
             side,
             cusps,
-            certified_tol,
+            certified_tol: inner_tol,
         }),
     })
 }

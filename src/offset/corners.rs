@@ -8,6 +8,7 @@ use super::results::{join_arc_of, Corner, OffsetResult, OffsetSegment, SegmentPr
 use crate::certify::{Config, CoverBox};
 use crate::curve::{Bezier, V2};
 use crate::scalar::Rational;
+use crate::Tolerance;
 
 /// The junctions of consecutive pieces that need a join arc or trimming, and the
 /// closing junction when the curve is closed.
@@ -54,14 +55,14 @@ fn prove_given(
     let pa = kernel.span_piece(x, t)?;
     let pb = crate::certify::piece::bezier_f64(&bez)?;
     let cfg = Config {
-        tol: Some(opts.tol),
+        tol: Some(opts.tol.clone()),
         max_boxes: opts.max_boxes,
         verdict_only: true,
         parametric: !opts.search_only,
         ..Config::default()
     };
     let r = crate::certify::hausdorff_pieces(&[pa], &[pb], &cfg, &|| 0.0);
-    (r.hi <= opts.tol).then(|| OffsetSegment {
+    (r.hi <= opts.tol.value()).then(|| OffsetSegment {
         piece,
         t,
         bezier: bez,
@@ -78,7 +79,7 @@ pub(super) fn arc_cover(
     arc: &crate::shape::ArcDesc,
     sa: &Bezier<f64>,
     sb: &Bezier<f64>,
-    tol: f64,
+    tol: &Tolerance,
     max_boxes: usize,
 ) -> Option<Vec<CoverBox>> {
     let pa = crate::certify::piece::Piece::arc(arc).ok()?;
@@ -87,12 +88,12 @@ pub(super) fn arc_cover(
         crate::certify::piece::bezier_f64(sb)?,
     ];
     let cfg = Config {
-        tol: Some(tol),
+        tol: Some(tol.clone()),
         max_boxes,
         ..Config::default()
     };
     let r = crate::certify::search::one_sided(&[pa], &pb, &cfg, 0.0, (0.0, 0.0));
-    (r.hi <= tol && !r.boxes.is_empty()).then_some(r.boxes)
+    (r.hi <= tol.value() && !r.boxes.is_empty()).then_some(r.boxes)
 }
 
 /// [`OffsetOptions::smooth_kinks`]: absorbs the corners whose offset ends are
@@ -114,7 +115,7 @@ pub(super) fn absorb_kinks(
         let (pa, pb) = (sa.bezier.points(), sb.bezier.points());
         let (p, q) = (&pa[pa.len() - 1], &pb[0]);
         let gap = (p.x - q.x).hypot(p.y - q.y);
-        if gap.is_nan() || gap > opts.tol {
+        if gap.is_nan() || gap > opts.tol.value() {
             continue;
         }
         let m = V2::new(0.5 * (p.x + q.x), 0.5 * (p.y + q.y));
@@ -131,7 +132,15 @@ pub(super) fn absorb_kinks(
         };
         // the convex side's join arc must lie within tol of the two segments
         if let Some(arc) = join_arc_of(&res.corners[ci], &res.distance) {
-            if arc_cover(&arc, &new_a.bezier, &new_b.bezier, opts.tol, opts.max_boxes).is_none() {
+            if arc_cover(
+                &arc,
+                &new_a.bezier,
+                &new_b.bezier,
+                &opts.tol,
+                opts.max_boxes,
+            )
+            .is_none()
+            {
                 continue;
             }
         }

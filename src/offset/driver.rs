@@ -262,7 +262,7 @@ fn certify_segment(
     searches.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let r = prove_span(&pa, &pb, &bez, task, opts, kernel.reach());
     let paper_error = paper_error(x, task.t, pair.as_ref(), opts, kernel);
-    let proof = (r.hi <= opts.tol).then(|| SegmentProof::of(&r));
+    let proof = (r.hi <= opts.tol.value()).then(|| SegmentProof::of(&r));
     let seg = OffsetSegment {
         piece: task.piece,
         t: task.t,
@@ -272,7 +272,7 @@ fn certify_segment(
         proof,
         estimate: None,
     };
-    let stuck = r.incomplete() && r.hi > opts.tol && r.lo * 64.0 < opts.tol;
+    let stuck = r.incomplete() && r.hi > opts.tol.value() && r.lo * 64.0 < opts.tol.value();
     (
         Some(seg),
         split_point(opts, x, task.t, kernel, pair.as_ref()),
@@ -289,10 +289,10 @@ fn on_grid(
     opts: &OffsetOptions,
 ) -> Option<(Bezier<f64>, Option<Bezier<f64>>, f64)> {
     match &opts.grid {
-        None => Some((built, None, opts.tol)),
+        None => Some((built, None, opts.tol.value())),
         Some(g) => {
             let r = fit::round_to_grid(&built, g)?;
-            Some((r, Some(built), opts.tol - fit::rounding_move(g)))
+            Some((r, Some(built), opts.tol.value() - fit::rounding_move(g)))
         }
     }
 }
@@ -323,7 +323,7 @@ fn prove_span(
     d: f64,
 ) -> HausdorffBounds {
     let cfg = Config {
-        tol: Some(opts.tol),
+        tol: Some(opts.tol.clone()),
         max_boxes: opts.max_boxes,
         // a refuted span is split: its other direction is not needed — unless it
         // cannot be split any more and its bounds are reported
@@ -468,7 +468,10 @@ pub fn offset(
     } else {
         // a fitted cubic or quadratic cannot turn back: cut at the cusps first
         let cusps = find_cusps();
-        let cuts = cusp_cuts(curve.len(), fit::cusps_to_cut(&cusps, opts.tol).into_iter());
+        let cuts = cusp_cuts(
+            curve.len(),
+            fit::cusps_to_cut(&cusps, opts.tol.value()).into_iter(),
+        );
         let segs = offset_segments(curve, opts, &kernel, &cuts);
         (cusps, segs)
     };
@@ -476,7 +479,7 @@ pub fn offset(
     let mut res = OffsetResult {
         method: opts.method,
         distance: opts.distance.clone(),
-        tol: opts.tol,
+        tol: opts.tol.clone(),
         segments,
         unreached,
         certified_hi,
@@ -608,8 +611,8 @@ fn next_round(
 /// split even when its true error is below it).
 fn accepted(o: &Outcome, opts: &OffsetOptions) -> bool {
     o.segment.as_ref().is_some_and(|s| match s.paper_error {
-        Some(e) if opts.accept_paper => e <= opts.tol,
-        _ => s.error.1 <= opts.tol || s.estimate.is_some_and(|e| e <= opts.tol),
+        Some(e) if opts.accept_paper => e <= opts.tol.value(),
+        _ => s.error.1 <= opts.tol.value() || s.estimate.is_some_and(|e| e <= opts.tol.value()),
     })
 }
 

@@ -38,10 +38,10 @@
 //! use lncert::shape::parse_curve;
 //! use lncert::scalar::parse_rational;
 //! let c = parse_curve("M 0 0 C 1 1 2 1 3 0").unwrap();
-//! let opts = OffsetOptions::new(parse_rational("0.25").unwrap(), 1e-3);
+//! let opts = OffsetOptions::new(parse_rational("0.25").unwrap(), "1e-3".parse().unwrap());
 //! let r = offset(&c, &opts).unwrap();
 //! assert!(r.reached());
-//! assert!(r.certified_hi <= 1e-3);
+//! assert!(r.certified_hi <= r.tol.value()); // the largest f64 ≤ 1/1000
 //! assert_eq!(r.degree(), 6);
 //! assert_eq!(r.control_points(), 6 * r.segments.len() + 1);
 //! ```

@@ -6,6 +6,7 @@ use super::lnpair;
 use crate::curve::Bezier;
 use crate::scalar::Rational;
 use crate::shape::ShapeDesc;
+use crate::Tolerance;
 
 /// Which construction builds the segments.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -32,8 +33,11 @@ impl OffsetMethod {
 pub struct OffsetOptions {
     /// Signed offset distance (`> 0` to the left), exact.
     pub distance: Rational,
-    /// The tolerance to prove: `d_H(offset, approximant) ≤ tol`.
-    pub tol: f64,
+    /// The tolerance to prove: `d_H(offset, approximant) ≤ tol` (the
+    /// segments' proven bounds are compared with [`Tolerance::value`], the
+    /// largest float ≤ the exact tolerance; certificates claim
+    /// [`Tolerance::exact`]).
+    pub tol: Tolerance,
     /// Which construction builds the segments (default [`OffsetMethod::G2`]).
     pub method: OffsetMethod,
     /// Subdivision depth limit per input piece (default 24: segments of
@@ -104,7 +108,16 @@ pub struct OffsetOptions {
 
 impl OffsetOptions {
     /// Defaults for a distance and a tolerance (method G2).
-    pub fn new(distance: Rational, tol: f64) -> Self {
+    ///
+    /// # Examples
+    /// ```
+    /// use lncert::{parse_rational, OffsetOptions, Tolerance};
+    /// let opts = OffsetOptions::new(parse_rational("0.4").unwrap(), "1e-3".parse().unwrap());
+    /// assert_eq!(opts.tol.to_string(), "1/1000");
+    /// assert!(opts.tol.value() <= 1e-3);
+    /// # let _: Tolerance = opts.tol;
+    /// ```
+    pub fn new(distance: Rational, tol: Tolerance) -> Self {
         OffsetOptions {
             distance,
             tol,
@@ -150,19 +163,17 @@ pub(super) fn check_options(
     Ok(shape)
 }
 
-/// The checks shared by [`offset`] and [`convolve`]: a finite positive
-/// tolerance that, less `margin` (the pen's rotation margin; 0 for offsets),
-/// is at least [`MIN_REL_TOL`] × (1 + scale), and sane limits.
+/// The checks shared by [`offset`] and [`convolve`]: a tolerance that, less
+/// `margin` (the pen's rotation margin; 0 for offsets), is at least
+/// [`MIN_REL_TOL`] × (1 + scale), and sane limits.
 pub(super) fn check_limits(
     opts: &OffsetOptions,
     scale: f64,
     margin: f64,
 ) -> Result<(), OffsetError> {
-    if !(opts.tol.is_finite() && opts.tol > 0.0) {
-        return Err(bad("tol", "must be a finite number > 0"));
-    }
+    let tol = opts.tol.value();
     let min = MIN_REL_TOL * (1.0 + scale);
-    if opts.tol - margin < min {
+    if tol - margin < min {
         let less = if margin > 0.0 {
             format!(" (less the pen's rotation margin {margin:e})")
         } else {
@@ -172,7 +183,7 @@ pub(super) fn check_limits(
             "tol",
             format!(
                 "{:e}{less} is below {:e} = 1e-11 × (1 + coordinate scale): float control points cannot resolve it",
-                opts.tol, min
+                opts.tol.approx(), min
             ),
         ));
     }
@@ -183,7 +194,7 @@ pub(super) fn check_limits(
         return Err(bad("max_segments", "limits must be ≥ 1"));
     }
     if let Some(g) = &opts.grid {
-        fit::check_grid(g, opts.tol - margin, scale)?;
+        fit::check_grid(g, tol - margin, scale)?;
     }
     Ok(())
 }

@@ -8,6 +8,7 @@ use crate::certify::{CoverBox, HausdorffBounds};
 use crate::curve::{Bezier, V2};
 use crate::scalar::{rational_from_f64, Rational};
 use crate::shape::ShapeDesc;
+use crate::Tolerance;
 use num_traits::Zero;
 
 /// One certified output segment.
@@ -113,8 +114,9 @@ pub struct OffsetResult {
     pub method: OffsetMethod,
     /// Signed offset distance (`> 0` to the left), exact, from the options.
     pub distance: Rational,
-    /// The tolerance to prove, from the options.
-    pub tol: f64,
+    /// The tolerance to prove, from the options (segments are accepted when
+    /// their proven bound is `≤ tol.value()`, hence `≤ tol.exact()`).
+    pub tol: Tolerance,
     /// Segments in input order.
     pub segments: Vec<OffsetSegment>,
     /// Indices of segments whose certified bound stayed above `tol` (depth or
@@ -155,12 +157,23 @@ pub struct ConvSide {
     pub side: i8,
     /// The cusps of the exact convolution curve on this side (exact).
     pub cusps: Vec<conv::ConvCusp>,
-    /// The tolerance certified for the exact pen: `tol − margin` (the claim
-    /// for the pen as given is `tol`).
-    pub certified_tol: f64,
+    /// The tolerance certified for the exact pen: `tol − margin`, rounded
+    /// down to a float (the claim for the pen as given is `tol`); `tol`
+    /// itself when the margin is 0.
+    pub certified_tol: Tolerance,
 }
 
 impl OffsetResult {
+    /// The tolerance the segments are certified within against the exact
+    /// curve of the result: [`OffsetResult::tol`], or for a convolution
+    /// [`ConvSide::certified_tol`] (`tol` less the pen's rotation margin).
+    /// The claim of [`union_certificate`](super::union_certificate).
+    pub fn certified_tol(&self) -> &Tolerance {
+        match &self.convolution {
+            Some(c) => &c.certified_tol,
+            None => &self.tol,
+        }
+    }
     /// True when every segment is certified within `tol` (with `certify: false`:
     /// estimated within it, see [`OffsetResult::proven`]).
     pub fn reached(&self) -> bool {

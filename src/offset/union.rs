@@ -6,8 +6,9 @@ use super::options::{bad, OffsetError};
 use super::results::{exact_offset_shape, join_arc_of, join_arcs, OffsetResult};
 use crate::certify::{hausdorff, Certificate, Config, CoverBox, HausdorffBounds, MapCover};
 use crate::curve::Bezier;
-use crate::scalar::{interval_from_rational, Rational};
+use crate::scalar::Rational;
 use crate::shape::ShapeDesc;
+use crate::Tolerance;
 
 /// Certified global bounds `lo ≤ d_H ≤ hi` between the exact offset of the
 /// whole input and the whole approximant (relative gap `rel`), by a two-sided
@@ -33,8 +34,12 @@ pub fn global_bounds(
 
 /// The certificate of `d_H(exact offset, approximant) ≤ tol`, assembled from the
 /// per-segment proofs without any further search (linear in the segments), or
-/// `None` when the tolerance was not reached. `tol` is the claim, exactly as the
-/// user gave it (every segment's bound is ≤ `res.tol`, the largest float ≤ it).
+/// `None` when the tolerance was not reached. The claim is the result's own
+/// tolerance, exactly as the user gave it ([`Tolerance::exact`] of
+/// [`OffsetResult::tol`]; every segment's bound is ≤ its
+/// [`value`](Tolerance::value), the largest float ≤ it) — for a convolution
+/// whose pen rotation is represented within a margin, the tolerance certified
+/// for the exact pen used ([`OffsetResult::certified_tol`]).
 ///
 /// Shapes: the exact offset of the input split exactly at the segments'
 /// parameters ([`exact_offset_shape`], piece `i` = segment `i`'s span) and the
@@ -50,9 +55,32 @@ pub fn global_bounds(
 pub fn union_certificate(
     curve: &[Bezier<Rational>],
     res: &OffsetResult,
-    tol: &Rational,
 ) -> Result<Option<Certificate>, OffsetError> {
-    assemble(curve, &[res], tol, false)
+    assemble(curve, &[res], false)
+}
+
+/// The claim of a certificate of `results`: the smallest tolerance they are
+/// certified within ([`OffsetResult::certified_tol`]); an error (field
+/// `results`) when there are none or their tolerances differ.
+fn claim(results: &[&OffsetResult]) -> Result<Tolerance, OffsetError> {
+    let Some(first) = results.first() else {
+        return Err(bad("results", "no results"));
+    };
+    if let Some(i) = results.iter().position(|r| r.tol != first.tol) {
+        return Err(bad(
+            "results",
+            format!(
+                "one tolerance for all results: result {i} has {}, result 0 {}",
+                results[i].tol, first.tol
+            ),
+        ));
+    }
+    Ok(results
+        .iter()
+        .map(|r| r.certified_tol())
+        .min_by(|a, b| a.exact().cmp(b.exact()))
+        .unwrap_or(&first.tol)
+        .clone())
 }
 
 /// The certificate of [`union_certificate`] (one result) or
@@ -63,12 +91,9 @@ pub fn union_certificate(
 fn assemble(
     curve: &[Bezier<Rational>],
     results: &[&OffsetResult],
-    tol: &Rational,
     always_union: bool,
 ) -> Result<Option<Certificate>, OffsetError> {
-    if results.is_empty() {
-        return Err(bad("results", "no results"));
-    }
+    let tol = &claim(results)?;
     if results
         .iter()
         .any(|r| !r.reached() || r.segments.iter().any(|s| s.proof.is_none()))
@@ -80,9 +105,8 @@ fn assemble(
         parts.add_segments(curve, res)?;
     }
     // the join arcs: the same exact arc on both sides, covered by a search
-    let tol_f = interval_from_rational(tol).inf();
     for res in results {
-        if !parts.add_join_arcs(res, tol_f)? {
+        if !parts.add_join_arcs(res, tol)? {
             return Ok(None);
         }
     }
@@ -90,7 +114,7 @@ fn assemble(
     // segments that meet there
     let mut seg_base = 0usize;
     for res in results {
-        if !parts.add_absorbed_arcs(res, seg_base, tol_f)? {
+        if !parts.add_absorbed_arcs(res, seg_base, tol)? {
             return Ok(None);
         }
         seg_base += res.segments.len();
@@ -171,18 +195,18 @@ impl Parts {
     }
 
     /// The join arcs of `res` in both shapes, each covered by a search of
-    /// the arc against itself; false when one is not proven within `tol_f`.
-    fn add_join_arcs(&mut self, res: &OffsetResult, tol_f: f64) -> Result<bool, OffsetError> {
+    /// the arc against itself; false when one is not proven within `tol`.
+    fn add_join_arcs(&mut self, res: &OffsetResult, tol: &Tolerance) -> Result<bool, OffsetError> {
         for arc in join_arcs(res) {
             let shape = ShapeDesc::arc(arc)?;
             let cfg = Config {
-                tol: Some(tol_f),
+                tol: Some(tol.clone()),
                 ..Config::default()
             };
             let Ok(h) = hausdorff(&shape, &shape, &cfg) else {
                 return Ok(false);
             };
-            if h.hi > tol_f || h.a_to_b.boxes.is_empty() || h.b_to_a.boxes.is_empty() {
+            if h.hi > tol.value() || h.a_to_b.boxes.is_empty() || h.b_to_a.boxes.is_empty() {
                 return Ok(false);
             }
             self.ab.extend(renumber(self.base, &h.a_to_b.boxes));
@@ -201,7 +225,7 @@ impl Parts {
         &mut self,
         res: &OffsetResult,
         seg_base: usize,
-        tol_f: f64,
+        tol: &Tolerance,
     ) -> Result<bool, OffsetError> {
         let pieces = res
             .segments
@@ -221,7 +245,7 @@ impl Parts {
                 &arc,
                 &res.segments[ia].bezier,
                 &res.segments[ib].bezier,
-                tol_f,
+                tol,
                 200_000,
             ) else {
                 return Ok(false);
@@ -244,8 +268,11 @@ impl Parts {
 /// `A` the union of the exact curves ([`exact_offset_shape`] of each result)
 /// and `B` the union of the approximants, each a member of a
 /// [`ShapeDesc::Union`] in the order given, with every piece proven against
-/// its own span as in [`union_certificate`]. `None` when a result is not
-/// reached or a segment has no proof; an error when `results` is empty.
+/// its own span as in [`union_certificate`]. The claim is the results'
+/// tolerance (as in [`union_certificate`]: the smallest
+/// [`OffsetResult::certified_tol`]). `None` when a result is not
+/// reached or a segment has no proof; an error (field `results`) when
+/// `results` is empty or their tolerances ([`OffsetResult::tol`]) differ.
 ///
 /// # Examples
 /// ```
@@ -254,17 +281,76 @@ impl Parts {
 /// let q = |s: &str| lncert::parse_rational(s).unwrap();
 /// let x = parse_curve("M 0 0 C 1 0.2 2 1 2.4 2.5").unwrap();
 /// let pen = Pen::from_matrix([[q("0.3"), q("0")], [q("0.1"), q("0.2")]]).unwrap();
-/// let opts = OffsetOptions::new(q("0"), 1e-3);
+/// let opts = OffsetOptions::new(q("0"), "1e-3".parse().unwrap());
 /// let plus = convolve(&x, &pen, 1, &opts).unwrap();
 /// let minus = convolve(&x, &pen, -1, &opts).unwrap();
-/// let cert = union_certificate_all(&x, &[&plus, &minus], &q("1/1000")).unwrap().unwrap();
+/// let cert = union_certificate_all(&x, &[&plus, &minus]).unwrap().unwrap();
 /// let valid = lncert::verify(&cert.to_json_string()).unwrap();
 /// assert!(valid.a.starts_with("the union of 2 shapes"));
+/// assert_eq!(valid.tol, q("1/1000"));
+/// // results of different tolerances: no one claim
+/// let coarse = OffsetOptions::new(q("0"), "1e-2".parse().unwrap());
+/// let minus = convolve(&x, &pen, -1, &coarse).unwrap();
+/// let e = union_certificate_all(&x, &[&plus, &minus]).unwrap_err();
+/// assert_eq!(e.field, "results");
 /// ```
 pub fn union_certificate_all(
     curve: &[Bezier<Rational>],
     results: &[&OffsetResult],
-    tol: &Rational,
 ) -> Result<Option<Certificate>, OffsetError> {
-    assemble(curve, results, tol, true)
+    assemble(curve, results, true)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::test_util::{q, tol};
+    use crate::{offset, parse_curve, OffsetOptions};
+
+    /// The seam of issue 29: `--tol 1e-3` is the rational 1/1000, and the float
+    /// the engine compares its bounds with is the largest one ≤ it (below the
+    /// f64 `1e-3`, which is above 1/1000), so a result within `tol.value()` is
+    /// within 1/1000 exactly, and its certificate claims exactly 1/1000.
+    #[test]
+    fn proven_within_the_float_is_proven_within_the_exact_tolerance() {
+        let t: Tolerance = "1e-3".parse().unwrap();
+        assert!(Rational::from_float(1e-3).unwrap() > q("1/1000"));
+        assert!(t.value() < 1e-3);
+        let curve = parse_curve("M 0 0 C 1 1 2 1 3 0").unwrap();
+        let res = offset(&curve, &OffsetOptions::new(q("0.25"), t.clone())).unwrap();
+        assert_eq!(res.tol, t);
+        assert!(res.reached() && res.certified_hi <= res.tol.value());
+        for s in &res.segments {
+            assert!(Rational::from_float(s.error.1).unwrap() <= q("1/1000"));
+        }
+        assert!(Rational::from_float(res.certified_hi).unwrap() <= q("1/1000"));
+        let cert = union_certificate(&curve, &res).unwrap().unwrap();
+        let valid = crate::verify(&cert.to_json_string()).unwrap();
+        assert_eq!(valid.tol, q("1/1000"));
+        // a float tolerance claims exactly that float
+        let res = offset(&curve, &OffsetOptions::new(q("0.25"), tol(1e-3))).unwrap();
+        let cert = union_certificate(&curve, &res).unwrap().unwrap();
+        let valid = crate::verify(&cert.to_json_string()).unwrap();
+        assert_eq!(valid.tol, Rational::from_float(1e-3).unwrap());
+    }
+
+    /// One certificate needs one tolerance: results of different tolerances,
+    /// or none, are a typed error of the field `results`.
+    #[test]
+    fn results_must_share_one_tolerance() {
+        let curve = parse_curve("M 0 0 C 1 1 2 1 3 0").unwrap();
+        let a = offset(&curve, &OffsetOptions::new(q("0.25"), tol(1e-2))).unwrap();
+        let b = offset(&curve, &OffsetOptions::new(q("-0.25"), tol(2e-2))).unwrap();
+        let e = union_certificate_all(&curve, &[&a, &b]).unwrap_err();
+        assert_eq!(e.field, "results");
+        assert!(e.reason.contains("one tolerance"), "{e}");
+        assert_eq!(
+            union_certificate_all(&curve, &[]).unwrap_err().field,
+            "results"
+        );
+        let b = offset(&curve, &OffsetOptions::new(q("-0.25"), tol(1e-2))).unwrap();
+        let cert = union_certificate_all(&curve, &[&a, &b]).unwrap().unwrap();
+        let valid = crate::verify(&cert.to_json_string()).unwrap();
+        assert_eq!(valid.tol, Rational::from_float(1e-2).unwrap());
+    }
 }

@@ -22,7 +22,7 @@
 //! use lncert::{parse_curve, parse_rational};
 //! # fn main() -> Result<(), lncert::Error> {
 //! let curve = parse_curve("M 0 0 L 4 0")?;
-//! let s = stroke(&curve, &StrokeOptions::new(parse_rational("1")?, 1e-2))?;
+//! let s = stroke(&curve, &StrokeOptions::new(parse_rational("1")?, "1e-2".parse()?))?;
 //! assert!(s.proven()); // claims (a), (b) and (c)
 //! assert_eq!(s.contours.len(), 1); // one closed contour: two sides, two round caps
 //! # Ok(())

@@ -24,6 +24,12 @@ pub fn config() -> ProptestConfig {
     }
 }
 
+/// The tolerance equal to the float `x` (`value() == x`); panics when `x` is
+/// not a positive normal float.
+pub fn tol(x: f64) -> lncert::Tolerance {
+    lncert::Tolerance::from_f64(x).expect("a positive tolerance")
+}
+
 pub fn q(p: i64, d: i64) -> Rational {
     frac(p, d)
 }

@@ -140,12 +140,12 @@ const KEYS_2: [&str; 7] = ["format", "version", "claim", "tol", "a", "b", "direc
 /// use lncert::certify::{hausdorff, Certificate, Config};
 /// use lncert::shape::ShapeDesc;
 /// use lncert::certify::verify::verify;
-/// use lncert::scalar::parse_rational;
+/// use lncert::Tolerance;
 /// let a = ShapeDesc::parse("M 0 0 Q 0.5 0.5 1 0").unwrap();
 /// let b = ShapeDesc::parse("M 0 0 L 1 0").unwrap();
-/// let tol = parse_rational("0.26").unwrap();
+/// let tol: Tolerance = "0.26".parse().unwrap();
 /// // a certificate is built from the search's box covers: `parametric: false`
-/// let cfg = Config { tol: Some(0.26), parametric: false, ..Config::default() };
+/// let cfg = Config { tol: Some(tol.clone()), parametric: false, ..Config::default() };
 /// let r = hausdorff(&a, &b, &cfg).unwrap();
 /// let cert = Certificate::new(&a, &b, &tol, &r).unwrap();
 /// let valid = verify(&cert.to_json_string()).unwrap();

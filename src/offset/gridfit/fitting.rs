@@ -49,7 +49,7 @@ impl Ctx<'_> {
         let refined = fit::refine_minimax(&e, &pts, best);
         // where the end tangents constrain too much (a hairpin round a cusp,
         // joints moved off their nominal places) free both inner points
-        let refined = if two_sided(&pts, &refined) > 0.25 * self.tol {
+        let refined = if two_sided(&pts, &refined) > 0.25 * self.tol.value() {
             free_inner_points(&pts, refined)
         } else {
             refined

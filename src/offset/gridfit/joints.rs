@@ -17,7 +17,7 @@ impl Ctx<'_> {
         window: f64,
     ) -> Option<(Joint, f64)> {
         let first = self.snap_within(c, nominal, lo, hi, window)?;
-        if first.1 <= JOINT_SHARE * self.tol {
+        if first.1 <= JOINT_SHARE * self.tol.value() {
             return Some(first);
         }
         self.snap_within(c, nominal, lo, hi, f64::INFINITY)
@@ -37,7 +37,7 @@ impl Ctx<'_> {
         hi: Pos,
         window: f64,
     ) -> Option<(Joint, f64)> {
-        let delta = JOINT_SHARE * self.tol;
+        let delta = JOINT_SHARE * self.tol.value();
         let h = self.gf / 16.0;
         let p0 = self.point(&c.parts[nominal.part], nominal.u)?;
         let score = |p: DVec2| (p - self.nearest_grid(p)).length();
@@ -204,7 +204,7 @@ impl Ctx<'_> {
             let open_end = i == 0 && !c.closed;
             let found = if open_end {
                 // an open end moves inwards by tol/2 at most
-                self.snap_within(c, pos, lo, hi, JOINT_SHARE * self.tol)
+                self.snap_within(c, pos, lo, hi, JOINT_SHARE * self.tol.value())
             } else {
                 let window = (WINDOW_STEPS * self.gf).min(0.45 * prev_len.min(next_len));
                 self.snap(c, pos, lo, hi, window)
@@ -213,14 +213,17 @@ impl Ctx<'_> {
                 .ok_or_else(|| bad("curve", "the exact offset cannot be evaluated at a joint"))?;
             // no grid point near the curve up to the next joint: no joint here
             // (the cubic runs on), unless it is an open end
-            if dist <= JOINT_SHARE * self.tol || open_end || (i + 1 == n && joints.is_empty()) {
+            if dist <= JOINT_SHARE * self.tol.value()
+                || open_end
+                || (i + 1 == n && joints.is_empty())
+            {
                 joints.push(j);
             }
         }
         if !c.closed {
             let lo = joints.last().map_or(last, |j| j.pos);
             let (j, _) = self
-                .snap_within(c, last, lo, last, JOINT_SHARE * self.tol)
+                .snap_within(c, last, lo, last, JOINT_SHARE * self.tol.value())
                 .ok_or_else(|| bad("curve", "the exact offset cannot be evaluated at its end"))?;
             joints.push(j);
         }

@@ -56,6 +56,7 @@ use crate::certify::Certificate;
 use crate::curve::Bezier;
 use crate::scalar::{Rational, Scalar};
 use crate::shape::{ArcDesc, ShapeDesc};
+use crate::Tolerance;
 use outline::Ctx;
 use prove::{Built, Stats};
 
@@ -110,8 +111,8 @@ pub struct GridSegment {
 pub struct GridOffset {
     /// The grid (exact, dyadic).
     pub grid: Rational,
-    /// The tolerance.
-    pub tol: f64,
+    /// The tolerance, from the options (the certificate claims it exactly).
+    pub tol: Tolerance,
     /// The cubics, contour after contour, in travel order.
     pub segments: Vec<GridSegment>,
     /// Per contour: first segment, number of segments, closed.
@@ -227,11 +228,11 @@ fn exact_shape_of(
 /// let q = |s: &str| lncert::parse_rational(s).unwrap();
 /// // a closed curve in "font units"; a grid of 1 and a tolerance of 0.2 units
 /// let x = parse_curve("M 0 0 C 300 -100 500 200 400 400 C 300 600 -100 300 0 0").unwrap();
-/// let mut opts = OffsetOptions::new(q("40"), 0.2);
+/// let mut opts = OffsetOptions::new(q("40"), "0.2".parse().unwrap());
 /// opts.output = Output::Cubic;
 /// opts.grid = Some(q("1"));
 /// let r = offset_on_grid(&x, &opts).unwrap();
-/// assert!(r.reached() && r.certified_hi <= 0.2);
+/// assert!(r.reached() && r.certified_hi <= r.tol.value());
 /// for s in &r.segments {
 ///     assert!(s.bezier.points().iter().all(|p| p.x.fract() == 0.0 && p.y.fract() == 0.0));
 /// }
@@ -257,7 +258,7 @@ pub fn offset_on_grid(
     fit::check_grid_storage(&grid, shape.scale())?;
     let mut base_opts = opts.clone();
     base_opts.grid = None;
-    base_opts.tol = opts.tol * FIT_SHARE;
+    base_opts.tol = Tolerance::from_f64(opts.tol.value() * FIT_SHARE)?;
     let base = super::offset(curve, &base_opts)?;
     let d = opts.distance.clone();
     let kernel = Kernel::Offset {
@@ -271,7 +272,7 @@ pub fn offset_on_grid(
         reach: Reach::of(&kernel),
         gf: grid.approx(),
         grid: grid.clone(),
-        tol: opts.tol,
+        tol: opts.tol.clone(),
         max_boxes: opts.max_boxes,
         max_splits: opts.max_segments,
         quadratic: opts.output == Output::Quadratic,
@@ -303,7 +304,7 @@ pub fn offset_on_grid(
     let certified_hi = segments.iter().map(|s| s.error.1).fold(0.0, f64::max);
     let mut out = GridOffset {
         grid,
-        tol: opts.tol,
+        tol: opts.tol.clone(),
         segments,
         contours: contour_ranges,
         unreached,

@@ -57,7 +57,7 @@ pub(super) struct Ctx<'a> {
     pub(super) reach: Reach,
     pub(super) grid: Rational,
     pub(super) gf: f64,
-    pub(super) tol: f64,
+    pub(super) tol: crate::Tolerance,
     pub(super) max_boxes: usize,
     /// Splits after failed proofs, in all (`OffsetOptions::max_segments`).
     pub(super) max_splits: usize,

@@ -4,16 +4,14 @@
 use super::fitting::two_sided;
 use super::outline::{Contour, Ctx, Joint, Part, Pos};
 use super::{
-    bad, GridOffset, GridSegment, OffsetError, ProofPath, Target, MAX_DEPTH, SPLIT_SHARE,
-    WINDOW_STEPS,
+    GridOffset, GridSegment, OffsetError, ProofPath, Target, MAX_DEPTH, SPLIT_SHARE, WINDOW_STEPS,
 };
 use crate::certify::piece::Piece as CPiece;
 use crate::certify::{Certificate, Config, CoverBox, HausdorffBounds, MapCover};
 use crate::curve::{Bezier, V2};
-use crate::scalar::{rational_from_f64, Rational};
+use crate::scalar::Rational;
 use crate::shape::ArcDesc;
 use glam::DVec2;
-use num_traits::Zero;
 use rayon::prelude::*;
 
 /// One proven (or failed) cubic before numbering.
@@ -72,7 +70,7 @@ impl Ctx<'_> {
             // a joint off the curve by more than tol/2 leaves the cubics less
             // room, but may still be proven: up to 0.9 tol
             if dist.is_nan()
-                || dist > SPLIT_SHARE * self.tol
+                || dist > SPLIT_SHARE * self.tol.value()
                 || m.pos == a.pos
                 || m.pos == b.pos
                 || m.g == a.g
@@ -116,13 +114,13 @@ impl Ctx<'_> {
         let pts: Vec<DVec2> = dense
             .as_ref()
             .map_or(Vec::new(), |d| d.iter().map(|p| p.1).collect());
-        if depth < MAX_DEPTH && two_sided(&pts, &bez) > self.tol {
+        if depth < MAX_DEPTH && two_sided(&pts, &bez) > self.tol.value() {
             if let Some(v) = split(stats) {
                 return v;
             }
         }
         let cfg = Config {
-            tol: Some(self.tol),
+            tol: Some(self.tol.clone()),
             max_boxes: self.max_boxes,
             verdict_only: depth < MAX_DEPTH,
             ..Config::default()
@@ -132,7 +130,7 @@ impl Ctx<'_> {
             .fetch_add(1, std::sync::atomic::Ordering::Relaxed);
         let abs = || 1e-10 * (1.0 + a.g.abs().max_element() + b.g.abs().max_element());
         let r = crate::certify::hausdorff_pieces(&pa, &[pb], &cfg, &abs);
-        if r.hi <= self.tol {
+        if r.hi <= self.tol.value() {
             return vec![Built {
                 bezier: bez,
                 targets,
@@ -307,9 +305,5 @@ pub(super) fn certificate(
     }
     let a = res.exact_shape(curve, d)?;
     let b = res.approximant_shape()?;
-    let tol = rational_from_f64(res.tol).ok_or_else(|| bad("tol", "not finite"))?;
-    if tol.is_zero() {
-        return Err(bad("tol", "must be > 0"));
-    }
-    Ok(Certificate::assemble(&a, &b, &tol, &maps, &ab, &ba))
+    Ok(Certificate::assemble(&a, &b, &res.tol, &maps, &ab, &ba))
 }

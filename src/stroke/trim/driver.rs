@@ -31,7 +31,7 @@ use std::time::Instant;
 /// use lncert::parse_rational;
 /// // a straight segment: the stadium, two segments and two half circles
 /// let x = parse_curve("M 0 0 L 2 0").unwrap();
-/// let s = stroke(&x, &StrokeOptions::new(parse_rational("1/2").unwrap(), 1e-3)).unwrap();
+/// let s = stroke(&x, &StrokeOptions::new(parse_rational("1/2").unwrap(), "1e-3".parse().unwrap())).unwrap();
 /// assert!(s.proven(), "{:?} {:?} {:?}", s.a, s.b, s.c);
 /// assert_eq!(s.contours.len(), 1);
 /// assert_eq!(s.contours[0].orientation, Orientation::CounterClockwise);
@@ -105,7 +105,7 @@ fn stroke_at(
         opts,
         form: &form,
         raws: &raws,
-        tol: opts.tol,
+        tol: opts.tol.value(),
         t0,
     };
     let classes = classify(&run, &subs);
@@ -133,7 +133,7 @@ fn stroke_at(
     }
 
     let butt = !closed && opts.cap == Cap::Butt;
-    let (a, b) = claims_ab(&tally, &notes, opts.tol, butt);
+    let (a, b) = claims_ab(&tally, &notes, opts.tol.value(), butt);
     let c = Claim {
         proven: c_ok,
         bound: 0.0,
@@ -149,7 +149,7 @@ fn stroke_at(
         b,
         c,
         classified: tally.classified,
-        tol: opts.tol,
+        tol: opts.tol.clone(),
         closed_curve: closed,
         notes,
         pen: opts.ellipse.clone(),

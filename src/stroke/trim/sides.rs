@@ -10,6 +10,7 @@ use crate::offset::{convolve, exact_bezier, offset, OffsetOptions, OffsetResult}
 use crate::scalar::{interval_from_rational, rational_from_f64, Interval, Rational, Scalar};
 use crate::stroke::circle::{snap, Arc};
 use crate::stroke::ellipse::{half_ellipse_cap, pen_point_enclosure};
+use crate::Tolerance;
 use num_traits::{Signed, Zero};
 
 /// What a raw piece is.
@@ -210,7 +211,8 @@ fn chain_side(
     let link = |s: &crate::offset::OffsetSegment| -> Option<Link> {
         let proof = s.proof.as_ref()?;
         let map = proof.map.as_ref()?;
-        if map.source_a || map.boxes.is_empty() || s.error.1.is_nan() || s.error.1 > res.tol {
+        if map.source_a || map.boxes.is_empty() || s.error.1.is_nan() || s.error.1 > res.tol.value()
+        {
             return None;
         }
         Some(Link {
@@ -566,9 +568,6 @@ pub(super) fn check(
     if opts.ellipse.is_none() && !opts.radius.is_positive() {
         return Err(bad("radius", "must be > 0"));
     }
-    if !(opts.tol.is_finite() && opts.tol > 0.0) {
-        return Err(bad("tol", "must be a positive number"));
-    }
     for (i, b) in curve.iter().enumerate() {
         if b.degree() == 0 {
             return Err(bad("curve", format!("piece {i} is a point")));
@@ -622,9 +621,9 @@ pub(super) fn raw_contours(
     raw_div: f64,
 ) -> Result<(Vec<Vec<Raw>>, Vec<String>, Vec<CapReport>), StrokeError> {
     let r = &opts.radius;
-    let tol_off = opts.tol / raw_div;
+    let tol_off = Tolerance::from_f64(opts.tol.value() / raw_div)?;
     let run = |d: Rational| {
-        let mut o = OffsetOptions::new(d.clone(), tol_off);
+        let mut o = OffsetOptions::new(d.clone(), tol_off.clone());
         o.output = opts.output;
         o.method = opts.method;
         match &opts.ellipse {
@@ -648,7 +647,7 @@ pub(super) fn raw_contours(
         }
     }
     // joins and connectors shorter than this are merged into one exact point
-    let merge = opts.tol / 64.0;
+    let merge = opts.tol.value() / 64.0;
     // the exact-interval kept test is for a circular pen (offset sides)
     let strip = |mut side: Vec<Raw>| {
         if opts.ellipse.is_some() {
@@ -741,7 +740,7 @@ fn ellipse_cap_piece(
             link: None,
         }]);
     }
-    let cap = half_ellipse_cap(&c, pen, &dir_from, &out, opts.tol / 8.0)
+    let cap = half_ellipse_cap(&c, pen, &dir_from, &out, opts.tol.value() / 8.0)
         .ok_or_else(|| bad("pen", "the half-ellipse cap could not be proven"))?;
     let x1 = cap.pieces[0].points()[0].clone();
     let x2 = cap.pieces.last().expect("k ≥ 2").points()[3].clone();

@@ -7,6 +7,7 @@ use crate::offset::OffsetMethod;
 use crate::scalar::{interval_from_rational, Interval, Rational, Scalar};
 use crate::stroke::circle::Arc;
 use crate::stroke::ellipse::Form;
+use crate::Tolerance;
 use num_traits::One;
 
 /// How an open curve's ends are closed.
@@ -24,8 +25,9 @@ pub enum Cap {
 pub struct StrokeOptions {
     /// Pen radius `r > 0`, exact.
     pub radius: Rational,
-    /// The tolerance to prove for claims (a) and (b).
-    pub tol: f64,
+    /// The tolerance to prove for claims (a) and (b) (their bounds are
+    /// compared with [`Tolerance::value`], the largest float ≤ it).
+    pub tol: Tolerance,
     /// End caps of an open curve (default round).
     pub cap: Cap,
     /// Solver boxes per pair for the intersection searches (default 20 000).
@@ -55,7 +57,7 @@ pub enum PenShape {
 
 impl StrokeOptions {
     /// Round caps and the default budgets.
-    pub fn new(radius: Rational, tol: f64) -> Self {
+    pub fn new(radius: Rational, tol: Tolerance) -> Self {
         StrokeOptions {
             radius,
             tol,
@@ -75,12 +77,13 @@ impl StrokeOptions {
     /// use lncert::stroke::{PenShape, StrokeOptions};
     /// let q = |s: &str| lncert::parse_rational(s).unwrap();
     /// let pen = Pen::ellipse(&q("0.7"), &q("0.3"), &Angle::parse("pi/6").unwrap()).unwrap();
-    /// let o = StrokeOptions::with_pen(PenShape::Ellipse(pen), 0.1);
+    /// let tol: lncert::Tolerance = "0.1".parse().unwrap();
+    /// let o = StrokeOptions::with_pen(PenShape::Ellipse(pen), tol.clone());
     /// assert!(matches!(o.pen(), PenShape::Ellipse(_)));
-    /// let c = StrokeOptions::with_pen(PenShape::Circle(q("1")), 0.1);
+    /// let c = StrokeOptions::with_pen(PenShape::Circle(q("1")), tol);
     /// assert_eq!(c.pen(), PenShape::Circle(q("1")));
     /// ```
-    pub fn with_pen(pen: PenShape, tol: f64) -> Self {
+    pub fn with_pen(pen: PenShape, tol: Tolerance) -> Self {
         match pen {
             PenShape::Circle(r) => Self::new(r, tol),
             PenShape::Ellipse(p) => {
@@ -326,8 +329,8 @@ pub struct Stroke {
     pub c: Claim,
     /// Classification counts.
     pub classified: Classified,
-    /// The tolerance asked for.
-    pub tol: f64,
+    /// The tolerance asked for, from the options.
+    pub tol: Tolerance,
     /// The curve is closed.
     pub closed_curve: bool,
     /// What was left undecided on the way (raw regions, sub-pieces, offsets);
