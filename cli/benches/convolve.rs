@@ -20,6 +20,7 @@ use lncert_cli::reproduce::seed001::{nonic, pen};
 use std::hint::black_box;
 
 fn opts(tol: f64, certify: bool) -> OffsetOptions {
+    let tol = lncert::Tolerance::from_f64(tol).unwrap();
     let mut o = OffsetOptions::new(Rational::from_integer(0.into()), tol);
     o.certify = certify;
     o

@@ -32,7 +32,7 @@ use std::time::Instant;
 const CUBIC: &str = r#"{"bezier": [[-0.95, 0.7], [-0.3, 0.5], [0.3, -2.5], [0.9, -0.2]]}"#;
 
 fn opts(r: Rational, tol: f64) -> StrokeOptions {
-    let mut o = StrokeOptions::new(r, tol);
+    let mut o = StrokeOptions::new(r, lncert::Tolerance::from_f64(tol).unwrap());
     o.output = Output::Cubic;
     o
 }

@@ -182,7 +182,8 @@ struct LncertRun {
 }
 
 fn run_lncert(name: &str, curve: &[Bezier<Rational>]) -> Result<LncertRun, String> {
-    let mut o = StrokeOptions::new(Rational::from_integer(RADIUS.into()), TOL);
+    let tol = lncert::Tolerance::from_f64(TOL).map_err(|e| e.to_string())?;
+    let mut o = StrokeOptions::new(Rational::from_integer(RADIUS.into()), tol);
     o.output = Output::Cubic;
     let mut times = Vec::new();
     let mut first: Option<Stroke> = None;

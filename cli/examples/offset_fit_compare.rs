@@ -106,7 +106,7 @@ fn certify_call(
             &Config {
                 rel: 1e-2,
                 max_boxes: 2_000_000,
-                tol: goal,
+                tol: goal.map(|t| lncert::Tolerance::from_f64(t).expect("a positive goal")),
                 ..Config::default()
             },
         )
@@ -162,7 +162,8 @@ fn main() {
                     (Output::Cubic, &mut t_cubic),
                     (Output::Native, &mut t_native),
                 ] {
-                    let mut o = OffsetOptions::new(d.clone(), tol);
+                    let mut o =
+                        OffsetOptions::new(d.clone(), lncert::Tolerance::from_f64(tol).unwrap());
                     o.output = out;
                     let t0 = Instant::now();
                     let cell = match offset(pieces, &o) {

@@ -115,7 +115,7 @@ struct Lncert {
 }
 
 fn run_lncert(curve: &[Bezier<Rational>], r: &Rational, tol: f64, out: Output) -> Lncert {
-    let mut o = StrokeOptions::new(r.clone(), tol);
+    let mut o = StrokeOptions::new(r.clone(), lncert::Tolerance::from_f64(tol).unwrap());
     o.output = out;
     let t0 = Instant::now();
     let s = stroke(curve, &o);

@@ -53,7 +53,7 @@ fn circle_pen_is_the_offset() {
     let pen = Pen::from_matrix([[r.clone(), q("0")], [q("0"), r.clone()]]).unwrap();
     for side in [1i8, -1] {
         let d = &r * Rational::from_integer(side.into());
-        let opts = OffsetOptions::new(d.clone(), 1e-4);
+        let opts = OffsetOptions::new(d.clone(), common::tol(1e-4));
         let off = offset(&x, &opts).unwrap();
         let conv = convolve(&x, &pen, side, &opts).unwrap();
         assert!(off.reached() && conv.reached());
@@ -140,7 +140,7 @@ proptest! {
         let b = &a * common::q(b_frac, 4);
         let pen = Pen::ellipse(&a, &b, &Angle::Degrees(Rational::from_integer(angle_deg.into()))).unwrap();
         let side = if plus { 1 } else { -1 };
-        let mut opts = OffsetOptions::new(q("0"), 1e-3);
+        let mut opts = OffsetOptions::new(q("0"), common::tol(1e-3));
         opts.max_segments = 400;
         if ln_pair {
             opts.method = lncert::offset::OffsetMethod::LnPair;
@@ -288,7 +288,7 @@ fn subdivision_rules_and_the_k_piece_split() {
         Subdivision::Chord,
         Subdivision::Weighted,
     ] {
-        let mut opts = OffsetOptions::new(q("0"), 1e-2);
+        let mut opts = OffsetOptions::new(q("0"), common::tol(1e-2));
         opts.method = OffsetMethod::LnPair;
         opts.subdivision = rule;
         let r = convolve(&x, &pen, 1, &opts).unwrap();
@@ -430,15 +430,14 @@ fn paper_measure_does_not_bound_the_convolution_error() {
     let x = nonic();
     let pen =
         Pen::ellipse_within(&q("0.7"), &q("0.3"), &Angle::parse("pi/6").unwrap(), 1e-6).unwrap();
-    let mut opts = OffsetOptions::new(q("0"), 0.1);
+    let mut opts = OffsetOptions::new(q("0"), common::tol(0.1));
     opts.method = lncert::offset::OffsetMethod::LnPair;
     opts.accept_paper = true;
     let r = convolve(&x, &pen, 1, &opts).unwrap();
     let c = r.convolution.as_ref().unwrap();
-    let found = r
-        .segments
-        .iter()
-        .find(|s| s.paper_error.is_some_and(|m| m <= c.certified_tol) && s.error.0 > opts.tol);
+    let found = r.segments.iter().find(|s| {
+        s.paper_error.is_some_and(|m| m <= c.certified_tol.value()) && s.error.0 > opts.tol.value()
+    });
     let s = found.expect("a segment accepted by the paper's measure with a true error above TOL");
     eprintln!(
         "t ∈ {:?}: paper measure ≤ {:.4e}, true error ≥ {:.4e}",
@@ -449,7 +448,7 @@ fn paper_measure_does_not_bound_the_convolution_error() {
     // lncert's acceptance never accepts it: the certified result stays within TOL
     opts.accept_paper = false;
     let r = convolve(&x, &pen, 1, &opts).unwrap();
-    assert!(r.reached() && r.certified_hi <= opts.tol);
+    assert!(r.reached() && r.certified_hi <= opts.tol.value());
 }
 
 /// `hausdorff_ellipse_arc` against the exact-arc path (a circle is an ellipse
@@ -571,7 +570,7 @@ fn paper_acceptance_splits_by_the_measure_alone() {
     let x = nonic();
     let pen =
         Pen::ellipse_within(&q("0.7"), &q("0.3"), &Angle::parse("pi/6").unwrap(), 1e-6).unwrap();
-    let mut opts = OffsetOptions::new(q("0"), 1.0);
+    let mut opts = OffsetOptions::new(q("0"), common::tol(1.0));
     opts.method = lncert::offset::OffsetMethod::LnPair;
     opts.subdivision = lncert::offset::kernels::Subdivision::Weighted;
     opts.accept_paper = true;

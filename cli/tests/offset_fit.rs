@@ -96,16 +96,18 @@ fn check_joints(r: &OffsetResult) -> usize {
     joints
 }
 
+/// The certificate of `r` verifies, and claims exactly `tol`.
 fn certificate_verifies(x: &[Bezier<Rational>], r: &OffsetResult, tol: &Rational) {
-    let cert = union_certificate(x, r, tol)
+    let cert = union_certificate(x, r)
         .unwrap()
         .expect("a certificate of a reached result");
     let v = verify(&cert.to_json_string());
     assert!(v.is_ok(), "{:?}", v.err());
+    assert_eq!(&v.unwrap().tol, tol);
 }
 
 fn fitted(x: &[Bezier<Rational>], d: &Rational, tol: &str, out: Output) -> OffsetResult {
-    let mut o = OffsetOptions::new(d.clone(), q(tol).approx());
+    let mut o = OffsetOptions::new(d.clone(), tol.parse().unwrap());
     o.output = out;
     offset(x, &o).unwrap()
 }
@@ -118,7 +120,9 @@ fn fitted_cubics_are_certified_sampled_and_connected() {
             for tol in ["1e-2", "1e-4"] {
                 let r = fitted(&x, d, tol, Output::Cubic);
                 assert!(
-                    r.reached() && r.certified_hi <= q(tol).approx(),
+                    r.reached()
+                        && r.certified_hi <= r.tol.value()
+                        && r.tol.value() < q(tol).approx(),
                     "{name} {d} {tol}"
                 );
                 assert_eq!(r.degree(), 3);
@@ -153,14 +157,14 @@ fn fitted_union_certificate_verifies() {
     let mut pts = forged.segments[0].bezier.points().to_vec();
     pts[1] = pts[1].add(&V2::new(0.25, 0.0));
     forged.segments[0].bezier = Bezier::new(pts);
-    let cert = union_certificate(&x, &forged, &q("1e-3")).unwrap().unwrap();
+    let cert = union_certificate(&x, &forged).unwrap().unwrap();
     assert!(verify(&cert.to_json_string()).is_err());
 }
 
 #[test]
 fn native_is_the_default_and_unchanged_by_the_new_fields() {
     let (x, ds) = curve("cubic_bezier");
-    let o = OffsetOptions::new(ds[0].clone(), 1e-3);
+    let o = OffsetOptions::new(ds[0].clone(), common::tol(1e-3));
     assert_eq!(o.output, Output::Native);
     assert_eq!(o.grid, None);
     let r = offset(&x, &o).unwrap();
@@ -191,7 +195,7 @@ fn grid_rounded_results_are_grid_multiples_and_proven() {
     let (x, ds) = curve("cubic_bezier");
     let grid = q("1/1024");
     for (out, deg) in [(Output::Cubic, 3), (Output::Native, 6)] {
-        let mut o = OffsetOptions::new(ds[1].clone(), 1e-3);
+        let mut o = OffsetOptions::new(ds[1].clone(), "1e-3".parse().unwrap());
         o.output = out;
         o.grid = Some(grid.clone());
         let r = offset(&x, &o).unwrap();
@@ -213,7 +217,7 @@ fn grid_rounded_results_are_grid_multiples_and_proven() {
 fn grid_errors_name_the_field() {
     let (x, ds) = curve("cubic_bezier");
     let field = |g: &str, tol: f64| {
-        let mut o = OffsetOptions::new(ds[0].clone(), tol);
+        let mut o = OffsetOptions::new(ds[0].clone(), common::tol(tol));
         o.grid = Some(q(g));
         match offset(&x, &o) {
             Err(OffsetError { field, .. }) => field,
@@ -237,20 +241,22 @@ fn fitted_convolutions_are_certified_sampled_and_verified() {
     let pen = test_pen();
     for side in [1i8, -1] {
         for (out, deg) in [(Output::Cubic, 3), (Output::Quadratic, 2)] {
-            let mut o = OffsetOptions::new(q("0"), 1e-3);
+            let mut o = OffsetOptions::new(q("0"), common::tol(1e-3));
             o.output = out;
             let r = convolve(&x, &pen, side, &o).unwrap();
-            let certified_tol = r.convolution.as_ref().unwrap().certified_tol;
-            assert!(r.reached() && r.certified_hi <= certified_tol);
+            let certified_tol = &r.convolution.as_ref().unwrap().certified_tol;
+            assert!(r.reached() && r.certified_hi <= certified_tol.value());
+            // the rotation margin is charged: certified below the tolerance
+            assert!(certified_tol.exact() < r.tol.exact());
+            assert_eq!(r.certified_tol(), certified_tol);
             assert_eq!(r.degree(), deg);
             check_samples(&x, &Exact::Pen(pen.q_f64(), side), &r);
             check_joints(&r);
-            let claim = rational_from_f64(certified_tol).unwrap();
-            certificate_verifies(&x, &r, &claim);
+            certificate_verifies(&x, &r, certified_tol.exact());
         }
     }
     // with a grid
-    let mut o = OffsetOptions::new(q("0"), 1e-3);
+    let mut o = OffsetOptions::new(q("0"), common::tol(1e-3));
     o.output = Output::Cubic;
     o.grid = Some(q("1/2048"));
     let r = convolve(&x, &pen, 1, &o).unwrap();
@@ -351,7 +357,7 @@ fn cli_bad_output_or_grid_exits_2_naming_the_flag() {
 fn near_smooth_corners_are_absorbed_and_proven() {
     let x = lncert::shape::parse_curve("M 0 0 C 1 0 2 0 3 0 C 4 0.001 5 0.002 6 0.003").unwrap();
     for d in ["1/2", "-1/2"] {
-        let mut o = OffsetOptions::new(q(d), 1e-3);
+        let mut o = OffsetOptions::new(q(d), "1/1000".parse().unwrap());
         o.output = Output::Cubic;
         let kept = offset(&x, &o).unwrap();
         assert_eq!(kept.corners.len(), 1);

@@ -16,7 +16,7 @@ use lncert::scalar::{Rational, Scalar};
 use lncert::shape::parse_curve;
 
 fn opts(d: &str, tol: f64, grid: &str) -> OffsetOptions {
-    let mut o = OffsetOptions::new(q(d), tol);
+    let mut o = OffsetOptions::new(q(d), common::tol(tol));
     o.output = Output::Cubic;
     o.grid = Some(q(grid));
     o
@@ -80,7 +80,7 @@ fn sampled_agrees(x: &[Bezier<Rational>], d: f64, r: &GridOffset) {
     );
     // the grid really is coarser than the tolerance: plain rounding of the
     // exact curve would not do
-    assert!(r.tol < 0.5);
+    assert!(r.tol.value() < 0.5);
 }
 
 #[test]

@@ -166,7 +166,7 @@ fn check_closed_simple(s: &Stroke) {
 fn stadium_of_a_segment() {
     let x = parse_curve("M 0 0 L 2 0").unwrap();
     let tol = 1e-3;
-    let s = stroke(&x, &StrokeOptions::new(q("1/2"), tol)).unwrap();
+    let s = stroke(&x, &StrokeOptions::new(q("1/2"), common::tol(tol))).unwrap();
     assert!(s.proven(), "{:?} {:?} {:?}", s.a, s.b, s.c);
     check_closed_simple(&s);
     assert_eq!(s.contours.len(), 1);
@@ -200,7 +200,7 @@ fn test_cubic_swallowtail_is_trimmed() {
     let x = test_cubic();
     let tol = 1e-3;
     let t0 = std::time::Instant::now();
-    let s = stroke(&x, &StrokeOptions::new(q("0.4"), tol)).unwrap();
+    let s = stroke(&x, &StrokeOptions::new(q("0.4"), common::tol(tol))).unwrap();
     eprintln!(
         "test cubic: {} raw pieces, {} crossings, {} output pieces, {} contours, {:?}, {:?}",
         s.raw_pieces,
@@ -236,7 +236,7 @@ fn closed_rounded_square_inner_loops_go() {
     let x = rounded_square();
     let tol = 1e-3;
     let t0 = std::time::Instant::now();
-    let s = stroke(&x, &StrokeOptions::new(q("0.4"), tol)).unwrap();
+    let s = stroke(&x, &StrokeOptions::new(q("0.4"), common::tol(tol))).unwrap();
     eprintln!(
         "rounded square: {} raw pieces, {} crossings, {} output pieces, {} contours, {:?}, {:?}",
         s.raw_pieces,
@@ -269,20 +269,21 @@ fn closed_rounded_square_inner_loops_go() {
 #[test]
 fn bad_inputs_are_typed_errors() {
     let x = parse_curve("M 0 0 L 2 0").unwrap();
-    let e = stroke(&x, &StrokeOptions::new(q("0"), 1e-3)).unwrap_err();
+    let e = stroke(&x, &StrokeOptions::new(q("0"), common::tol(1e-3))).unwrap_err();
     assert_eq!(e.field, "radius");
-    let e = stroke(&x, &StrokeOptions::new(q("-1"), 1e-3)).unwrap_err();
+    let e = stroke(&x, &StrokeOptions::new(q("-1"), common::tol(1e-3))).unwrap_err();
     assert_eq!(e.field, "radius");
-    let e = stroke(&x, &StrokeOptions::new(q("1"), f64::NAN)).unwrap_err();
+    // a bad tolerance is refused where it is made
+    let e = lncert::Tolerance::from_f64(f64::NAN).unwrap_err();
     assert_eq!(e.field, "tol");
-    let e = stroke(&[], &StrokeOptions::new(q("1"), 1e-3)).unwrap_err();
+    let e = stroke(&[], &StrokeOptions::new(q("1"), common::tol(1e-3))).unwrap_err();
     assert_eq!(e.field, "curve");
 }
 
 #[test]
 fn butt_caps_close_but_make_no_distance_claims() {
     let x = parse_curve("M 0 0 C 1 1 2 1 3 0").unwrap();
-    let mut o = StrokeOptions::new(q("1/4"), 1e-3);
+    let mut o = StrokeOptions::new(q("1/4"), common::tol(1e-3));
     o.cap = Cap::Butt;
     let s = stroke(&x, &o).unwrap();
     assert!(s.c.proven, "{:?} {:?}", s.c, s.notes);
@@ -512,7 +513,7 @@ fn ellipse_pen_test_cubic_is_proven_and_matches_brute_force() {
     let tol = 1e-2;
     let s = stroke(
         &x,
-        &StrokeOptions::with_pen(PenShape::Ellipse(pen.clone()), tol),
+        &StrokeOptions::with_pen(PenShape::Ellipse(pen.clone()), common::tol(tol)),
     )
     .unwrap();
     assert!(s.proven(), "{:?} {:?} {:?} {:?}", s.a, s.b, s.c, s.notes);
@@ -655,7 +656,7 @@ fn ellipse_pen_font_h_at_tol_0_1() {
     let x = lncert_cli::reproduce::seed001::nonic().unwrap();
     let pen = lncert_cli::reproduce::seed001::pen(1e-6).unwrap();
     let tol = 0.1;
-    let mut o = StrokeOptions::with_pen(PenShape::Ellipse(pen.clone()), tol);
+    let mut o = StrokeOptions::with_pen(PenShape::Ellipse(pen.clone()), common::tol(tol));
     o.method = lncert::offset::OffsetMethod::LnPair;
     let t0 = std::time::Instant::now();
     let s = stroke(&x, &o).unwrap();
@@ -694,7 +695,11 @@ fn ellipse_pen_font_h_at_tol_0_1() {
 fn ellipse_pen_rejects_g0_corners_and_cli_bad_pens() {
     let x = parse_curve("M 0 0 L 1 0 L 1 1").unwrap();
     let pen = ellipse_pen("0.4", "0.2", "0");
-    let e = stroke(&x, &StrokeOptions::with_pen(PenShape::Ellipse(pen), 1e-2)).unwrap_err();
+    let e = stroke(
+        &x,
+        &StrokeOptions::with_pen(PenShape::Ellipse(pen), common::tol(1e-2)),
+    )
+    .unwrap_err();
     assert_eq!(e.field, "curve");
     let dir = std::env::temp_dir().join(format!("lncert-stroke-ell-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
@@ -760,7 +765,7 @@ fn ellipse_pen_font_h_at_tol_0_01() {
     let x = lncert_cli::reproduce::seed001::nonic().unwrap();
     let pen = lncert_cli::reproduce::seed001::pen(1e-6).unwrap();
     let tol = 0.01;
-    let mut o = StrokeOptions::with_pen(PenShape::Ellipse(pen.clone()), tol);
+    let mut o = StrokeOptions::with_pen(PenShape::Ellipse(pen.clone()), common::tol(tol));
     o.method = lncert::offset::OffsetMethod::LnPair;
     let s = stroke(&x, &o).unwrap();
     eprintln!(
@@ -912,11 +917,15 @@ fn separate_contours_are_trimmed_together() {
             .collect()
     };
     let tol = 1e-2;
-    let single = stroke(&rounded_square(), &StrokeOptions::new(q("1/2"), tol)).unwrap();
+    let single = stroke(
+        &rounded_square(),
+        &StrokeOptions::new(q("1/2"), common::tol(tol)),
+    )
+    .unwrap();
     for (dx, outer) in [("14/5", 1usize), ("5", 2)] {
         let mut x = rounded_square();
         x.extend(shifted(dx));
-        let s = stroke(&x, &StrokeOptions::new(q("1/2"), tol)).unwrap();
+        let s = stroke(&x, &StrokeOptions::new(q("1/2"), common::tol(tol))).unwrap();
         assert!(
             s.proven(),
             "dx {dx}: {:?} {:?} {:?} {:?}",
@@ -978,7 +987,7 @@ const ICONS: [(&str, &str); 6] = [
 
 fn icon_stroke(name: &str, svg: &str, tol: f64) -> (Vec<Bezier<Rational>>, Stroke) {
     let x = lncert::shape::parse_svg_document(svg).unwrap_or_else(|e| panic!("{name}: {e}"));
-    let mut o = StrokeOptions::new(q("1"), tol);
+    let mut o = StrokeOptions::new(q("1"), common::tol(tol));
     o.output = lncert::offset::Output::Cubic;
     let s = stroke(&x, &o).unwrap_or_else(|e| panic!("{name}: {e:?}"));
     (x, s)
@@ -1070,7 +1079,7 @@ fn near_g1_corners_are_joints_not_crossings() {
         "M 0 0 C 1 1 2 1 3 0 C 4 -1.01 5 -1 6 0",
     ] {
         let x = parse_curve(d).unwrap();
-        let mut o = StrokeOptions::new(q("1/2"), 1e-2);
+        let mut o = StrokeOptions::new(q("1/2"), common::tol(1e-2));
         o.output = lncert::offset::Output::Cubic;
         let s = stroke(&x, &o).unwrap();
         assert!(
@@ -1112,7 +1121,7 @@ fn glyph_strokes_that_need_spurs_witnesses_and_refinement_are_proven() {
         }
         let data = std::fs::read(font).unwrap();
         let x = lncert::shape::glyph_outline(&data, ch).unwrap();
-        let mut o = StrokeOptions::new(q("40"), tol);
+        let mut o = StrokeOptions::new(q("40"), common::tol(tol));
         o.output = lncert::offset::Output::Cubic;
         let s = stroke(&x, &o).unwrap();
         assert!(

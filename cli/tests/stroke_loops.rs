@@ -99,7 +99,7 @@ fn closed_lens_inner_offset_loops_are_cut() {
     assert_eq!(self_crossings(&outer), 0);
 
     let t0 = std::time::Instant::now();
-    let mut opts = StrokeOptions::new(r.clone(), tol);
+    let mut opts = StrokeOptions::new(r.clone(), lncert::Tolerance::from_f64(tol).unwrap());
     opts.output = lncert::offset::Output::Cubic;
     let s = stroke(&x, &opts).unwrap();
     eprintln!(

@@ -398,11 +398,10 @@ fn certificate_of(
     cubic: &ShapeDesc,
 ) -> String {
     use lncert::certify::{hausdorff, Certificate, Config};
-    use lncert::scalar::parse_rational;
     let a = ShapeDesc::Curve(pieces);
-    let tol = parse_rational("1/1000").unwrap();
+    let tol: lncert::Tolerance = "1/1000".parse().unwrap();
     let cfg = Config {
-        tol: Some(1e-3),
+        tol: Some(tol.clone()),
         parametric: false,
         ..Config::default()
     };

@@ -13,7 +13,7 @@ use lncert::write::{offset_path_data, path_data, svg_document, SvgOptions, SvgSh
 
 /// A stroke with cubic sides (no piece above degree 3).
 fn stroke_cubic(curve: &[Bezier<Rational>], r: &str, tol: f64) -> Stroke {
-    let mut o = StrokeOptions::new(q(r), tol);
+    let mut o = StrokeOptions::new(q(r), common::tol(tol));
     o.output = lncert::offset::Output::Cubic;
     let s = stroke(curve, &o).unwrap();
     assert!(s.proven(), "{:?} {:?} {:?}", s.a, s.b, s.c);
@@ -108,7 +108,7 @@ fn path_data_of_a_stroke_reads_back_to_the_same_points() {
 fn high_degree_pieces_are_refused_naming_the_piece() {
     let s = stroke(
         &parse_curve("M 0 0 C 1 2 3 2 4 0").unwrap(),
-        &StrokeOptions::new(q("1/3"), 1e-3),
+        &StrokeOptions::new(q("1/3"), common::tol(1e-3)),
     )
     .unwrap();
     let e = path_data(&s.contours).unwrap_err();
@@ -121,7 +121,7 @@ fn high_degree_pieces_are_refused_naming_the_piece() {
 #[test]
 fn offset_path_data_reads_back_exactly() {
     let x = parse_curve("M 0 0 C 1 2 3 2 4 0").unwrap();
-    let mut o = lncert::OffsetOptions::new(q("-0.5"), 1e-3);
+    let mut o = lncert::OffsetOptions::new(q("-0.5"), common::tol(1e-3));
     o.method = lncert::OffsetMethod::LnPair;
     let r = lncert::offset(&x, &o).unwrap();
     let d = offset_path_data(&r).unwrap();
@@ -301,7 +301,7 @@ mod kurbo_out {
     #[test]
     fn arcs_out_to_kurbo_keep_area_and_ends() {
         let x = parse_curve("M 0 0 L 2 0").unwrap();
-        let s = stroke(&x, &StrokeOptions::new(q("1/2"), 1e-3)).unwrap();
+        let s = stroke(&x, &StrokeOptions::new(q("1/2"), common::tol(1e-3))).unwrap();
         assert!(s.contours[0]
             .pieces
             .iter()

@@ -4,6 +4,7 @@
 //! | syntax | example | parser |
 //! |---|---|---|
 //! | number | `0.95`, `-1/3`, `2.5e-1` | [`number`] |
+//! | tolerance `--tol` | `1e-3` (exactly 1/1000) | [`tolerance`] |
 //! | point `x,y` | `2.5,-1` | [`point`] |
 //! | frame `b0x,b0y;bmx,bmy;b3x,b3y` | `0,0;1,1;2,0` | [`frame`] |
 //! | power coefficients `c0,c1,...` | `0,0,-1,1` | [`coefficients`] |
@@ -16,6 +17,7 @@ use lncert::ln::LnError;
 use lncert::offset::OffsetError;
 use lncert::poly::Poly;
 use lncert::scalar::{parse_rational, Rational};
+use lncert::Tolerance;
 
 /// A bad-input error `--flag: reason`.
 pub fn bad(flag: &str, reason: impl std::fmt::Display) -> CliError {
@@ -135,6 +137,12 @@ pub fn number(flag: &str, text: &str) -> Result<Rational, CliError> {
         ));
     }
     Ok(r)
+}
+
+/// `--tol T`: the tolerance, exactly as written (`1e-3` is 1/1000), parsed
+/// once and given both to the engine's options and to the certificates.
+pub fn tolerance(text: &str) -> Result<Tolerance, CliError> {
+    Tolerance::new(number("--tol", text)?).map_err(|e| bad("--tol", e.reason))
 }
 
 /// A required exact number.

@@ -29,7 +29,7 @@ use lncert::offset::{
     convolve, union_certificate, union_certificate_all, OffsetOptions, OffsetResult,
 };
 use lncert::offset::{Angle, Pen};
-use lncert::scalar::{interval_from_rational, rational_from_f64, Rational, Scalar};
+use lncert::scalar::{Rational, Scalar};
 use lncert::shape::parse_curve;
 use serde_json::json;
 use std::fmt::Write as _;
@@ -154,8 +154,8 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
     }
     let output = lncert::offset::Output::from(a.output);
     let grid = super::args::grid(a.grid.as_deref())?;
-    let tol_q = number("--tol", &a.tol)?;
-    let tol = interval_from_rational(&tol_q).inf();
+    let tolerance = super::args::tolerance(&a.tol)?;
+    let tol = tolerance.value();
     let pen = pen_of(a, tol)?;
     let text = super::curve_input::read_text(&a.curve)?;
     let curve = parse_curve(&text).map_err(|e| bad("CURVE", e))?;
@@ -179,7 +179,7 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
     if a.max_boxes == 0 || a.max_boxes > 50_000_000 {
         return Err(bad("--max-boxes", "out of range (1 to 50000000)"));
     }
-    let mut opts = OffsetOptions::new(Rational::from_integer(0.into()), tol);
+    let mut opts = OffsetOptions::new(Rational::from_integer(0.into()), tolerance);
     opts.method = a.method.into();
     opts.subdivision = a.subdivision.for_method(a.method)?;
     opts.output = output;
@@ -208,18 +208,15 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
     }
     let total = start.elapsed().as_secs_f64();
     // the certificate: one for all sides; the claim for the exact pen is
-    // tol − margin (as a float ≤ it)
+    // tol − margin (as a float ≤ it: the results' `certified_tol`)
     let mut cert_notes = Vec::new();
     if let Some(path) = &a.certificate {
-        let claim_f = results
+        let claim = results
             .iter()
-            .filter_map(|(_, r, _)| r.convolution.as_ref().map(|c| c.certified_tol))
-            .fold(tol, f64::min);
-        let claim = if claim_f == tol {
-            tol_q.clone()
-        } else {
-            rational_from_f64(claim_f).ok_or_else(|| bad("--tol", "not finite"))?
-        };
+            .map(|(_, r, _)| r.certified_tol())
+            .min_by(|x, y| x.exact().cmp(y.exact()))
+            .map(ToString::to_string)
+            .unwrap_or_default();
         let rs: Vec<&OffsetResult> = results.iter().map(|(_, r, _)| r).collect();
         let names = results
             .iter()
@@ -227,9 +224,9 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
             .collect::<Vec<_>>()
             .join(" and ");
         let cert = if rs.len() == 1 {
-            union_certificate(&curve, rs[0], &claim)
+            union_certificate(&curve, rs[0])
         } else {
-            union_certificate_all(&curve, &rs, &claim)
+            union_certificate_all(&curve, &rs)
         }
         .map_err(offset_err)?;
         match cert {
@@ -253,9 +250,8 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
     // proven within tol: every segment's certified bound ≤ the tolerance
     // certified for the exact pen (with --accept paper a segment may be
     // accepted above it)
-    let proven_within = |r: &OffsetResult| {
-        r.reached() && r.certified_hi <= r.convolution.as_ref().map_or(tol, |c| c.certified_tol)
-    };
+    let proven_within =
+        |r: &OffsetResult| r.reached() && r.certified_hi <= r.certified_tol().value();
     let within_all = results
         .iter()
         .all(|(_, r, _)| proven_within(r) || !opts.certify && r.reached());
@@ -300,7 +296,7 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
                     "control_points": r.control_points(),
                     "degree": r.degree(),
                     "certified_error": if proven { json!([0.0, r.certified_hi]) } else { serde_json::Value::Null },
-                    "certified_tol": c.map(|c| c.certified_tol),
+                    "certified_tol": c.map(|c| c.certified_tol.value()),
                     "verdict": verdict_of(r),
                     "split_points": split_points(r),
                     "cusps": c.map(|c| c.cusps.iter().map(|k| json!({

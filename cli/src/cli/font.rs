@@ -474,6 +474,13 @@ fn prove(src: &Source, job: &Job, g: &mut GlyphResult) {
     } else {
         0.9 * job.tol
     };
+    let stroke_tol = match lncert::Tolerance::from_f64(stroke_tol) {
+        Ok(t) => t,
+        Err(e) => {
+            g.reason = format!("no tolerance is left for the stroke: {e}");
+            return;
+        }
+    };
     let mut opts = StrokeOptions::new(r.clone(), stroke_tol);
     opts.output = if job.quadratic {
         lncert::offset::Output::Quadratic
@@ -932,11 +939,7 @@ pub fn run(a: &FontArgs) -> Result<i32, CliError> {
             ))
         }
     };
-    let tol_q = number("--tol", &a.tol)?;
-    let tol = interval_from_rational(&tol_q).inf();
-    if !(tol.is_finite() && tol > 0.0) {
-        return Err(bad("--tol", "must be a positive number"));
-    }
+    let tol = super::args::tolerance(&a.tol)?.value();
     let grid = parse_grid(&a.grid)?;
     let quadratic = a.output == FontOutput::Quadratic;
     let jobs = match a.jobs {

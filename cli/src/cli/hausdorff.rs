@@ -97,12 +97,9 @@ pub fn run(a: &HausdorffArgs) -> Result<i32, CliError> {
     if !(1e-12..=0.5).contains(&rel_f) {
         return Err(bad("--rel", "must be between 1e-12 and 0.5"));
     }
-    let tol = a.tol.as_deref().map(|t| number("--tol", t)).transpose()?;
+    let tol = a.tol.as_deref().map(super::args::tolerance).transpose()?;
     if let Some(t) = &tol {
-        if num_traits::Signed::is_negative(t) {
-            return Err(bad("--tol", "must be ≥ 0"));
-        }
-        if interval_from_rational(t).sup() > lncert::shape::MAX_COORDINATE {
+        if interval_from_rational(t.exact()).sup() > lncert::shape::MAX_COORDINATE {
             return Err(bad("--tol", "absurdly large"));
         }
     }
@@ -118,11 +115,11 @@ pub fn run(a: &HausdorffArgs) -> Result<i32, CliError> {
     let (sa, approx_a) = read_shape_reported("A", &a.a)?;
     let (sb, approx_b) = read_shape_reported("B", &a.b)?;
     // The search compares f64 bounds with the largest f64 ≤ tol (sound).
-    let tol_f = tol.as_ref().map(|t| interval_from_rational(t).inf());
+    let tol_f = tol.as_ref().map(lncert::Tolerance::value);
     let cfg = Config {
         rel: rel_f,
         max_boxes: a.max_boxes,
-        tol: tol_f,
+        tol: tol.clone(),
         ..Config::default()
     };
     let start = std::time::Instant::now();

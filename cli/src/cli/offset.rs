@@ -30,7 +30,7 @@ use lncert::offset::{
     ProofPath,
 };
 use lncert::offset::{offset_arc, ArcOffset};
-use lncert::scalar::{interval_from_rational, Rational};
+use lncert::scalar::Rational;
 use lncert::shape::TravelledArc;
 use serde_json::{json, Value};
 use std::path::PathBuf;
@@ -158,8 +158,8 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
         super::svg_out::check(p)?;
     }
     let distance = number("--distance", &a.distance)?;
-    let tol_q = number("--tol", &a.tol)?;
-    let tol = interval_from_rational(&tol_q).inf();
+    let tolerance = super::args::tolerance(&a.tol)?;
+    let tol = tolerance.value();
     let method = OffsetMethod::from(a.method);
     let output = Output::from(a.output);
     let grid = grid(a.grid.as_deref())?;
@@ -207,7 +207,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
         CurveInput::Arc(arc) => return run_arcs(a, &[*arc], &distance, tol),
         CurveInput::Circle { arcs, .. } => return run_arcs(a, &arcs, &distance, tol),
     };
-    let mut opts = OffsetOptions::new(distance, tol);
+    let mut opts = OffsetOptions::new(distance, tolerance);
     opts.method = method;
     opts.subdivision = a.subdivision.for_method(a.method)?;
     opts.output = output;
@@ -250,7 +250,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     let res = offset(&curve, &opts).map_err(offset_err)?;
     let build = start.elapsed().as_secs_f64();
     let cert = match a.certificate {
-        Some(_) => union_certificate(&curve, &res, &tol_q).map_err(offset_err)?,
+        Some(_) => union_certificate(&curve, &res).map_err(offset_err)?,
         None => None,
     };
     // without --global-bounds: 0 ≤ d_H ≤ the union bound of the per-segment proofs

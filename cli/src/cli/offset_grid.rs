@@ -86,7 +86,7 @@ pub fn run(
     let grid = opts.grid.clone().unwrap_or_default();
     let how = format!(
         "joints placed where the exact offset passes within {:e} of a grid point, inner control points searched on the grid; each cubic proven against the exact curve between its joints (corner arcs included)",
-        0.5 * opts.tol
+        0.5 * opts.tol.value()
     );
     let verdict = if r.reached() {
         "certified"

@@ -129,7 +129,7 @@ pub fn render(curve: &[Bezier<Rational>], res: &OffsetResult, y_down: bool) -> S
             None => format!("certified d_H ≤ {:.3e}", res.certified_hi),
             Some(e) => format!("UNPROVEN sampled estimate d_H ≈ {e:.3e}"),
         },
-        res.tol
+        res.tol.value()
     );
     let _ = writeln!(s, r#"<rect width="100%" height="100%" fill="white"/>"#);
     for seg in &res.segments {

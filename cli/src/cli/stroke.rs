@@ -34,7 +34,7 @@
 //! Exit codes: 0 = decided (all contours closed, all three claims proven),
 //! 3 = something undecided, 2 = bad input (naming the flag).
 
-use super::args::{arc_json, bad, number, point_json, q};
+use super::args::{arc_json, bad, point_json, q};
 use super::curve_input::{read_curve_input, CurveInput};
 use super::modes::{Cap, Method, Output};
 use super::{print_out, CliError};
@@ -43,6 +43,7 @@ use lncert::scalar::{interval_from_rational, Rational, Scalar};
 use lncert::shape::InputApprox;
 use lncert::stroke::Arc;
 use lncert::stroke::{stroke, Claim, Contour, Orientation, PenShape, Piece, Stroke, StrokeOptions};
+use lncert::Tolerance;
 use serde_json::json;
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -194,21 +195,16 @@ pub fn svg(
     )
 }
 
-/// `--tol`: an exact number `> 0`, rounded down to a float.
-pub(crate) fn tol(a: &StrokeArgs) -> Result<f64, CliError> {
-    let tol_q = number("--tol", &a.tol)?;
-    let tol = interval_from_rational(&tol_q).inf();
-    if !(tol.is_finite() && tol > 0.0) {
-        return Err(bad("--tol", "must be a positive number"));
-    }
-    Ok(tol)
+/// `--tol`: an exact number `> 0` ([`super::args::tolerance`]).
+pub(crate) fn tol(a: &StrokeArgs) -> Result<Tolerance, CliError> {
+    super::args::tolerance(&a.tol)
 }
 
 /// Runs `lncert stroke` with `--pen` (the text `pen`); without it
 /// [`super::run`] runs [`super::stroke_doc::run`].
 pub fn run(a: &StrokeArgs, pen: &str) -> Result<i32, CliError> {
     let tol = tol(a)?;
-    let pen = super::pen::pen_shape(pen, tol)?;
+    let pen = super::pen::pen_shape(pen, tol.value())?;
     let input = read_curve_input(&a.curve, a.glyph, a.em)?;
     run_input(a, &input, pen)
 }
@@ -237,7 +233,7 @@ pub fn run_input(a: &StrokeArgs, input: &CurveInput, pen: PenShape) -> Result<i3
                 ));
             };
             let t0 = std::time::Instant::now();
-            let s = circle_stroke(center, radius, &r, opts.tol);
+            let s = circle_stroke(center, radius, &r, opts.tol.clone());
             report(
                 a,
                 &s,
@@ -366,7 +362,7 @@ fn circle_contour(center: &V2<Rational>, radius: &Rational, clockwise: bool) -> 
 /// (clockwise); for `r ≥ ρ` the disk is filled. Every output point is exactly
 /// on `∂S` and every point of `∂S` is on the output: claims (a), (b) with
 /// bound 0; (c) because concentric circles of different radii do not meet.
-pub fn circle_stroke(c: &V2<Rational>, rho: &Rational, r: &Rational, tol: f64) -> Stroke {
+pub fn circle_stroke(c: &V2<Rational>, rho: &Rational, r: &Rational, tol: Tolerance) -> Stroke {
     let mut contours = vec![circle_contour(c, &(rho + r), false)];
     let hole = rho > r;
     if hole {

@@ -22,13 +22,20 @@ use lncert::offset::{offset, OffsetMethod, OffsetOptions, Output};
 use lncert::offset::{offset_arc, ArcOffset, TravelledArc};
 use lncert::scalar::Rational;
 use lncert::shape::ArcDesc;
+use lncert::Tolerance;
 use serde_json::Value;
 
 /// The built-in copy of `../shared/data/offset_test_curves.json`.
 pub const CURVES: &str = include_str!("../../../data/offset_test_curves.json");
 
-/// Tolerances run by `lncert reproduce`.
-pub const TOLS: [(f64, &str); 3] = [(1e-1, "1e-1"), (1e-2, "1e-2"), (1e-3, "1e-3")];
+/// Tolerances run by `lncert reproduce`, exactly as written (`1e-3` is 1/1000).
+pub const TOLS: [&str; 3] = ["1e-1", "1e-2", "1e-3"];
+
+/// The options at distance `d` and the tolerance written `tol_s` (one of [`TOLS`]).
+fn options(d: &Rational, tol_s: &str) -> Result<OffsetOptions, String> {
+    let tol: Tolerance = tol_s.parse().map_err(|e: lncert::Error| e.to_string())?;
+    Ok(OffsetOptions::new(d.clone(), tol))
+}
 
 /// Peer columns of seed 004 Table 1 (the Lee et al. cubic; columns Lst, M2, QS,
 /// QL, [26]) at `TOL = 1e-1 … 1e-5`.
@@ -154,14 +161,16 @@ pub(super) fn claims(out: &mut Vec<Claim>) {
     for (name, pieces, ds) in &curves {
         for d in ds {
             for method in [OffsetMethod::G2, OffsetMethod::LnPair] {
-                for (k, (tol, tol_s)) in TOLS.iter().enumerate() {
-                    let mut o = OffsetOptions::new(d.clone(), *tol);
-                    o.method = method;
+                for (k, tol_s) in TOLS.iter().enumerate() {
                     let id = format!("offset-{name}-{}-d{d}-tol{tol_s}", method.name());
                     let statement = format!(
                         "the offset at d = {d} of {name} is approximated within TOL = {tol_s}, proven"
                     );
-                    let (verdict, detail) = match offset(pieces, &o) {
+                    let run = options(d, tol_s).and_then(|mut o| {
+                        o.method = method;
+                        offset(pieces, &o).map_err(|e| e.to_string())
+                    });
+                    let (verdict, detail) = match run {
                         Ok(r) => (
                             if r.reached() { Verdict::Certified } else { Verdict::Undecided },
                             format!(
@@ -174,13 +183,13 @@ pub(super) fn claims(out: &mut Vec<Claim>) {
                                 peer_note(name, method, k)
                             ),
                         ),
-                        Err(e) => (Verdict::Undecided, e.to_string()),
+                        Err(e) => (Verdict::Undecided, e),
                     };
                     out.push(Claim::new(&id, source(method), statement, verdict, detail));
                 }
             }
-            for (tol, tol_s) in TOLS.iter() {
-                out.push(cubic_claim(name, pieces, d, *tol, tol_s));
+            for tol_s in TOLS.iter() {
+                out.push(cubic_claim(name, pieces, d, tol_s));
             }
         }
     }
@@ -189,21 +198,17 @@ pub(super) fn claims(out: &mut Vec<Claim>) {
 
 /// The offset proven for fitted cubics ([`Output::Cubic`]), with the native
 /// G2 count beside.
-fn cubic_claim(
-    name: &str,
-    pieces: &[Bezier<Rational>],
-    d: &Rational,
-    tol: f64,
-    tol_s: &str,
-) -> Claim {
-    let mut o = OffsetOptions::new(d.clone(), tol);
-    o.output = Output::Cubic;
-    let native = offset(pieces, &OffsetOptions::new(d.clone(), tol))
-        .map(|r| r.control_points().to_string())
-        .unwrap_or_else(|e| e.to_string());
-    let (verdict, detail) = match offset(pieces, &o) {
+fn cubic_claim(name: &str, pieces: &[Bezier<Rational>], d: &Rational, tol_s: &str) -> Claim {
+    let native = options(d, tol_s)
+        .and_then(|o| offset(pieces, &o).map_err(|e| e.to_string()))
+        .map_or_else(|e| e, |r| r.control_points().to_string());
+    let run = options(d, tol_s).and_then(|mut o| {
+        o.output = Output::Cubic;
+        offset(pieces, &o).map_err(|e| e.to_string())
+    });
+    let (verdict, detail) = match run {
         Ok(r) => (
-            if r.reached() && r.certified_hi <= tol {
+            if r.reached() && r.certified_hi <= r.tol.value() {
                 Verdict::Certified
             } else {
                 Verdict::Undecided
@@ -215,7 +220,7 @@ fn cubic_claim(
                 r.certified_hi
             ),
         ),
-        Err(e) => (Verdict::Undecided, e.to_string()),
+        Err(e) => (Verdict::Undecided, e),
     };
     Claim::new(
         &format!("offset-{name}-cubic-d{d}-tol{tol_s}"),

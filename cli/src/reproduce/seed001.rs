@@ -83,6 +83,7 @@ pub fn both_sides_rule(
 ) -> Result<(OffsetResult, OffsetResult), String> {
     let x = nonic()?;
     let pen = pen((tol * 1e-3 / 2.5).clamp(1e-12, 1e-6))?;
+    let tol = lncert::Tolerance::from_f64(tol).map_err(|e| e.to_string())?;
     let mut opts = OffsetOptions::new(Rational::from_integer(0.into()), tol);
     opts.method = method;
     opts.accept_paper = accept_paper;
@@ -402,7 +403,8 @@ pub fn font_h_stroke() -> Result<(lncert::stroke::Stroke, f64), String> {
     use lncert::stroke::{stroke, PenShape, StrokeOptions};
     let x = nonic()?;
     let pen = pen(1e-6)?;
-    let mut o = StrokeOptions::with_pen(PenShape::Ellipse(pen), 0.1);
+    let tol = lncert::Tolerance::from_f64(0.1).map_err(|e| e.to_string())?;
+    let mut o = StrokeOptions::with_pen(PenShape::Ellipse(pen), tol);
     o.method = OffsetMethod::LnPair;
     let t0 = std::time::Instant::now();
     let s = stroke(&x, &o).map_err(|e| e.to_string())?;

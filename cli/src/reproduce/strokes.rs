@@ -186,6 +186,7 @@ pub fn runs() -> Vec<Run> {
         .map(|(id, name, curve, radius)| {
             let t0 = Instant::now();
             let attempt = |tol: f64| {
+                let tol = lncert::Tolerance::from_f64(tol).map_err(|e| e.to_string())?;
                 let mut opts = StrokeOptions::new(radius.clone(), tol);
                 opts.output = OUTPUT;
                 stroke(&curve, &opts).map_err(|e| e.to_string())
