@@ -68,6 +68,7 @@ use lncert::scalar::{
     frac, interval_from_rational, parse_rational, rational_from_f64, Rational, Scalar,
 };
 use lncert::shape::ShapeDesc;
+use lncert::Tolerance;
 use serde_json::Value;
 use std::collections::BTreeMap;
 use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
@@ -872,7 +873,7 @@ fn certificate_uncached(
     mode: u8,
     fixed: Option<Rational>,
 ) -> Option<(Rational, String)> {
-    let search = |tol: Option<f64>| Config {
+    let search = |tol: Option<Tolerance>| Config {
         rel: 1e-2,
         max_boxes: 48,
         tol,
@@ -883,7 +884,8 @@ fn certificate_uncached(
         // searched for the fixed tol (its float rounded down: the boxes' bounds
         // must be below the rational)
         Some(tol) => {
-            let r = hausdorff(ac, bc, &search(Some(interval_from_rational(&tol).inf()))).ok()?;
+            let tol = Tolerance::new(tol).ok()?;
+            let r = hausdorff(ac, bc, &search(Some(tol.clone()))).ok()?;
             (tol, r)
         }
         None => {
@@ -898,15 +900,16 @@ fn certificate_uncached(
                     let g = (1u64 << 40) as f64;
                     rational_from_f64(((hi * (1.0 + 1.0 / 64.0) + 1.0 / g) * g).ceil() / g)
                 }
-                // the next float: as tight as the search's bounds allow
-                1 => rational_from_f64(hi.next_up()),
+                // the next float: as tight as the search's bounds allow (a
+                // tolerance is a normal float at least)
+                1 => rational_from_f64(hi.next_up().max(f64::MIN_POSITIVE)),
                 _ => rational_from_f64(((hi * 1024.0).floor() + 1.0) / 1024.0),
             }?;
-            (tol, r)
+            (Tolerance::new(tol).ok()?, r)
         }
     };
     let cert = Certificate::new(ac, bc, &tol, &r)?;
-    Some((tol, cert.to_json_string()))
+    Some((tol.exact().clone(), cert.to_json_string()))
 }
 
 fn run(u: &mut Unstructured) -> Result<()> {
@@ -1098,7 +1101,9 @@ fn check_accepted(
     let cfg = Config {
         rel: 1e-2,
         max_boxes: 64,
-        tol: Some(interval_from_rational(tol).sup()),
+        // the search's goal: the float just above the claim (a refutation
+        // needs lo > tol)
+        tol: Tolerance::from_f64(interval_from_rational(tol).sup()).ok(),
         verdict_only: true,
         ..Config::default()
     };

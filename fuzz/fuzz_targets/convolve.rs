@@ -33,11 +33,13 @@
 //!   requested angle (checked against f64 `cos`/`sin`), `rotation_error <=`
 //!   the requested bound, `margin >= (a + a²/b) rotation_error` and `margin = 0`
 //!   iff `rotation_error = 0`, which holds for every quarter turn;
-//! * a tolerance that is not a finite number `> 0`, or with
-//!   `tol - margin < 1e-11` (so below `1e-11 (1 + scale)`), must be an error;
+//! * a tolerance that is not a finite number `> 0` is refused by
+//!   `lncert::Tolerance` (checked in `offset_oracle::tol`); one with
+//!   `tol - margin < 1e-11` (so below `1e-11 (1 + scale)`) must be an error;
 //! * the result: `tol` and the method as given, distance 0, no offset cusps or
 //!   corners, `convolution` set with this pen and side and
-//!   `certified_tol = tol - pen.margin`;
+//!   `certified_tol = tol - pen.margin` rounded down to a float (`tol` itself
+//!   when the margin is 0), checked exactly;
 //! * every segment has `0 <= lo <= hi` (no NaN); `certified_hi` is the max of
 //!   the segments' `hi`; `unreached` is exactly the (sorted) indices of the
 //!   segments with `hi > certified_tol` — **not** `tol`: `convolve` runs the
@@ -416,12 +418,12 @@ fn make_pen(spec: &PenSpec) -> Option<Pen> {
 fn check_ok(inp: &Input, pen: &Pen, r: &OffsetResult) {
     let curve = &inp.curve;
     let opts = &inp.opts;
-    let tol = opts.tol;
+    let tol = opts.tol.value();
     let segs = &r.segments;
     let sigma = inp.side;
     let qm = &pen.q;
     let zero = q(0, 1);
-    assert!(r.tol == tol && r.method == opts.method && r.distance == zero);
+    assert!(r.tol == opts.tol && r.method == opts.method && r.distance == zero);
     assert!(r.proven, "certify is on but the result is not proven");
     assert!(
         r.cusps.is_empty() && r.corners.is_empty(),
@@ -433,12 +435,21 @@ fn check_ok(inp: &Input, pen: &Pen, r: &OffsetResult) {
         .expect("convolve's result has no `convolution`");
     assert!(conv.pen == *pen, "the result's pen is not the pen given");
     assert_eq!(conv.side, sigma, "the result's side");
-    let ctol = conv.certified_tol;
-    assert!(
-        ctol == tol - pen.margin,
-        "certified_tol {ctol} != tol {tol} - margin {}",
-        pen.margin
-    );
+    // certified_tol: tol itself without a margin, else tol − margin rounded
+    // down to a float (checked exactly: ≤ the difference, the next float above)
+    let ctol = conv.certified_tol.value();
+    if pen.margin == 0.0 {
+        assert!(conv.certified_tol == opts.tol, "certified_tol {ctol} != tol {tol}");
+    } else {
+        let exact = rational_from_f64(tol).unwrap() - rational_from_f64(pen.margin).unwrap();
+        let (c, up) = (rational_from_f64(ctol).unwrap(), rational_from_f64(ctol.next_up()).unwrap());
+        assert!(
+            c <= exact && up > exact,
+            "certified_tol {ctol} is not tol {tol} - margin {} rounded down",
+            pen.margin
+        );
+    }
+    assert!(r.certified_tol() == &conv.certified_tol);
     offset_oracle::check_spans(
         curve,
         opts,
@@ -525,9 +536,9 @@ fuzz_target!(|data: &[u8]| -> Corpus {
     let Some(pen) = make_pen(&inp.pen) else {
         return Corpus::Reject;
     };
-    let tol = inp.opts.tol;
+    let tol = inp.opts.tol.value();
     let bad_side = inp.side != 1 && inp.side != -1;
-    let bad_tol = !(tol.is_finite() && tol > 0.0 && tol - pen.margin >= 1e-11);
+    let bad_tol = tol - pen.margin < 1e-11;
     match convolve(&inp.curve, &pen, inp.side, &inp.opts) {
         Err(e) => {
             let field = check_error(&e, &inp);

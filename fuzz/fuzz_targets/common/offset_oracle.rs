@@ -9,6 +9,7 @@ use lncert::curve::{Bezier, V2};
 use lncert::offset::kernels::Subdivision;
 use lncert::offset::{OffsetMethod, OffsetOptions, OffsetResult, OffsetSegment};
 use lncert::scalar::{frac, Rational, Scalar};
+use lncert::Tolerance;
 
 /// Tolerances: absurd ones (must be errors, except the huge 1e9) and a few
 /// reachable ones.
@@ -65,9 +66,24 @@ pub fn curve(u: &mut Unstructured) -> Result<Vec<Bezier<Rational>>> {
     Ok(curve)
 }
 
-/// One of [`TOLS`].
-pub fn tol(u: &mut Unstructured) -> Result<f64> {
-    Ok(TOLS[usize::from(u.int_in_range(0..=(TOLS.len() - 1) as u8)?)])
+/// One of [`TOLS`] as a [`Tolerance`]. The absurd floats (0, -1, NaN, inf)
+/// are refused where the tolerance is made, with an error naming `tol` (checked
+/// here); the input is then rejected. The others (1e-300 and 1e9 included)
+/// make a tolerance equal to the float.
+pub fn tol(u: &mut Unstructured) -> Result<Tolerance> {
+    let x = TOLS[usize::from(u.int_in_range(0..=(TOLS.len() - 1) as u8)?)];
+    match Tolerance::from_f64(x) {
+        Ok(t) => {
+            assert!(x.is_normal() && x > 0.0, "tolerance {x} accepted");
+            assert_eq!(t.value(), x, "the tolerance of a float is that float");
+            Ok(t)
+        }
+        Err(e) => {
+            assert!(!(x.is_normal() && x > 0.0), "tolerance {x} refused: {e}");
+            assert!(e.field == "tol" && !e.reason.is_empty(), "{e:?}");
+            Err(libfuzzer_sys::arbitrary::Error::IncorrectFormat)
+        }
+    }
 }
 
 /// The subdivision rule (a), (b) or (c) of seed 000 §5 for LN pairs, small
