@@ -1,7 +1,7 @@
 //! The user's claims, proven (or refuted) by lncert through its root API.
 
 use lncert::gen::{strategy, BezierCase};
-use lncert::{hausdorff, parse_rational, verify, Certificate, HausdorffConfig, ShapeDesc};
+use lncert::{hausdorff, parse_rational, verify, Certificate, HausdorffConfig, ShapeDesc, Tolerance};
 use lncert_downstream::{bezier_point, quarter_circle_cubic, QUARTER_CIRCLE_CLAIM};
 use proptest::prelude::*;
 
@@ -22,13 +22,14 @@ fn quarter_circle_claim_is_proven() -> Result<(), lncert::Error> {
         ))?;
         let cubic = cubic_shape(quarter_circle_cubic(r));
         let claim = QUARTER_CIRCLE_CLAIM * r;
-        let cfg = HausdorffConfig { tol: Some(claim), ..Default::default() };
+        // one tolerance for the proof and the certificate: exactly the float
+        let tol = Tolerance::from_f64(claim)?;
+        let cfg = HausdorffConfig { tol: Some(tol.clone()), ..Default::default() };
         let proof = hausdorff(&arc, &cubic, &cfg)?;
         assert!(proof.hi <= claim, "r = {r}: not proven ({})", proof.hi);
-        let tol = parse_rational(&format!("{claim:?}"))?;
         let cert = Certificate::new(&arc, &cubic, &tol, &proof).expect("a certificate");
-        verify(&cert.to_json_string())?;
-        let too_small = HausdorffConfig { tol: Some(claim / 10.0), ..Default::default() };
+        assert_eq!(&verify(&cert.to_json_string())?.tol, tol.exact());
+        let too_small = HausdorffConfig { tol: Some(Tolerance::from_f64(claim / 10.0)?), ..Default::default() };
         let refuted = hausdorff(&arc, &cubic, &too_small)?;
         assert!(refuted.lo > claim / 10.0, "r = {r}: a false claim was not refuted");
     }
@@ -91,12 +92,17 @@ fn question_mark_works_across_every_engine() {
             hausdorff(&a, &a, &HausdorffConfig { rel: 2.0, ..Default::default() })?;
             Ok(())
         })),
+        ("tolerance", "tol", Box::new(|| {
+            Tolerance::from_f64(-1.0)?;
+            Ok(())
+        })),
         ("offset", "tol", Box::new(move || {
-            lncert::offset(&curve(), &lncert::OffsetOptions::new(q("1/4"), -1.0))?;
+            let tiny: Tolerance = "1e-300".parse()?;
+            lncert::offset(&curve(), &lncert::OffsetOptions::new(q("1/4"), tiny))?;
             Ok(())
         })),
         ("stroke", "radius", Box::new(move || {
-            lncert::stroke(&curve(), &lncert::StrokeOptions::new(zero(), 1e-2))?;
+            lncert::stroke(&curve(), &lncert::StrokeOptions::new(zero(), "1e-2".parse()?))?;
             Ok(())
         })),
         ("ln kernel", "b0,bm,b3", Box::new(move || {
