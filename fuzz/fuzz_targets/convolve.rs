@@ -439,10 +439,16 @@ fn check_ok(inp: &Input, pen: &Pen, r: &OffsetResult) {
     // down to a float (checked exactly: ≤ the difference, the next float above)
     let ctol = conv.certified_tol.value();
     if pen.margin == 0.0 {
-        assert!(conv.certified_tol == opts.tol, "certified_tol {ctol} != tol {tol}");
+        assert!(
+            conv.certified_tol == opts.tol,
+            "certified_tol {ctol} != tol {tol}"
+        );
     } else {
         let exact = rational_from_f64(tol).unwrap() - rational_from_f64(pen.margin).unwrap();
-        let (c, up) = (rational_from_f64(ctol).unwrap(), rational_from_f64(ctol.next_up()).unwrap());
+        let (c, up) = (
+            rational_from_f64(ctol).unwrap(),
+            rational_from_f64(ctol.next_up()).unwrap(),
+        );
         assert!(
             c <= exact && up > exact,
             "certified_tol {ctol} is not tol {tol} - margin {} rounded down",

@@ -214,7 +214,12 @@ fn check_grid(inp: &Input) {
             );
         }
         assert!(s.error.0 <= s.error.1, "{:?}", s.error);
-        assert_eq!(s.proof.is_some(), s.error.1 <= o.tol.value(), "{:?}", s.error);
+        assert_eq!(
+            s.proof.is_some(),
+            s.error.1 <= o.tol.value(),
+            "{:?}",
+            s.error
+        );
     }
     for &(first, n, closed) in &r.contours {
         let segs = &r.segments[first..first + n];
