@@ -10,6 +10,53 @@ use std::process::Output;
 
 const CUBIC: &str = r#"{"bezier": [[-0.95, 0.7], [-0.3, 0.5], [0.3, -2.5], [0.9, -0.2]]}"#;
 
+/// `--tol 1e-3` is parsed once, exactly (1/1000): the bounds are compared
+/// with the largest float ≤ 1/1000 (the f64 `1e-3` is above it), so the
+/// proven bound is ≤ 1/1000 as a rational, and the certificate claims exactly
+/// 1/1000 and verifies (issue 29).
+#[test]
+fn tol_1e_3_is_one_thousandth_for_the_proof_and_the_certificate() {
+    use lncert::scalar::{parse_rational, rational_from_f64};
+    let curve = tmp("cubic_seam.json", CUBIC);
+    let cert = curve.with_file_name("cert_seam.json");
+    let o = lncert(&[
+        "offset",
+        curve.to_str().unwrap(),
+        "--distance",
+        "-0.5",
+        "--tol",
+        "1e-3",
+        "--certificate",
+        cert.to_str().unwrap(),
+        "--json",
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let doc = json_of(&o);
+    assert_eq!(doc["tol"], "1e-3", "the tolerance as given");
+    let hi = doc["certified_error"][1].as_f64().unwrap();
+    let thousandth = parse_rational("1/1000").unwrap();
+    assert!(rational_from_f64(hi).unwrap() <= thousandth, "{hi}");
+    for p in doc["pieces"].as_array().unwrap() {
+        let h = p["error"][1].as_f64().unwrap();
+        assert!(rational_from_f64(h).unwrap() <= thousandth, "{h}");
+    }
+    let c: Value = serde_json::from_str(&std::fs::read_to_string(&cert).unwrap()).unwrap();
+    assert_eq!(c["tol"], "1/1000");
+    let v = lncert(&["verify", cert.to_str().unwrap(), "--json"]);
+    assert_eq!(
+        v.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&v.stdout)
+    );
+    assert_eq!(json_of(&v)["statement"]["tol"], "1/1000");
+}
+
 #[test]
 fn json_document_certificate_and_svg() {
     let curve = tmp("cubic.json", CUBIC);
