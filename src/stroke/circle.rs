@@ -559,15 +559,39 @@ pub fn bezier_arc(b: &Bezier<Rational>, arc: &Arc) -> ArcMeet {
 /// `Some(false)` proven apart (apart from `shared`), `Some(true)` a contact,
 /// `None` undecided.
 pub fn arcs_meet(a: &Arc, b: &Arc, shared: Option<&V2<Rational>>) -> Option<bool> {
+    match arc_meetings(a, b, shared)? {
+        Meetings::Apart => Some(false),
+        Meetings::Overlap => Some(true),
+        Meetings::Points(ps) => Some(!ps.is_empty()),
+    }
+}
+
+/// Where two arcs meet besides a shared end point (see [`arc_meetings`]).
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum Meetings {
+    /// Proven apart.
+    Apart,
+    /// Two arcs of one circle whose ranges overlap.
+    Overlap,
+    /// Meeting points of two different circles that are proven in both
+    /// ranges, each enclosed (the enclosures of distinct points are
+    /// disjoint unless the circles are tangent there).
+    Points(Vec<V2<Interval>>),
+}
+
+/// The meeting points of two arcs besides a shared end point `shared` (the
+/// circles' intersection points, enclosed, `c_a + α d ± h d⊥`); `None` when a
+/// range test is undecided.
+pub(crate) fn arc_meetings(a: &Arc, b: &Arc, shared: Option<&V2<Rational>>) -> Option<Meetings> {
     let d = b.center.sub(&a.center);
     let d2 = d.norm2();
     let rs = &a.radius + &b.radius;
     if d2 > &rs * &rs {
-        return Some(false);
+        return Some(Meetings::Apart);
     }
     if d2.is_zero() {
         if a.radius != b.radius {
-            return Some(false);
+            return Some(Meetings::Apart);
         }
         // the same circle: the ranges may only share the point `shared`
         let other_in = |x: &Arc, y: &Arc| -> bool {
@@ -582,7 +606,11 @@ pub fn arcs_meet(a: &Arc, b: &Arc, shared: Option<&V2<Rational>>) -> Option<bool
                 .unwrap_or(true);
             ends_in || mid_in
         };
-        return Some(other_in(a, b) || other_in(b, a));
+        return Some(if other_in(a, b) || other_in(b, a) {
+            Meetings::Overlap
+        } else {
+            Meetings::Apart
+        });
     }
     // two circles: the points c_a + α d ± h d⊥ (enclosed)
     let ra2 = &a.radius * &a.radius;
@@ -590,7 +618,7 @@ pub fn arcs_meet(a: &Arc, b: &Arc, shared: Option<&V2<Rational>>) -> Option<bool
     let alpha = (&d2 + &ra2 - &rb2) / (&d2 * Rational::from_integer(2.into()));
     let h2 = &ra2 / &d2 - &alpha * &alpha; // h² in units of |d|²
     if h2.is_negative() {
-        return Some(false);
+        return Some(Meetings::Apart);
     }
     let hi = interval_from_rational(&h2).sqrt();
     let di = d.map(interval_from_rational);
@@ -599,7 +627,7 @@ pub fn arcs_meet(a: &Arc, b: &Arc, shared: Option<&V2<Rational>>) -> Option<bool
         .map(interval_from_rational)
         .add(&di.scale(&interval_from_rational(&alpha)));
     let perp = di.rot90().scale(&hi);
-    let mut any = false;
+    let mut points = Vec::new();
     for p in [base.add(&perp), base.sub(&perp)] {
         if let Some(s) = shared {
             let si = s.map(interval_from_rational);
@@ -613,11 +641,15 @@ pub fn arcs_meet(a: &Arc, b: &Arc, shared: Option<&V2<Rational>>) -> Option<bool
         let inb = b.contains_dir(&p.sub(&b.center.map(interval_from_rational)));
         match (ina, inb) {
             (Some(false), _) | (_, Some(false)) => {}
-            (Some(true), Some(true)) => any = true,
+            (Some(true), Some(true)) => points.push(p),
             _ => return None,
         }
     }
-    Some(any)
+    Some(if points.is_empty() {
+        Meetings::Apart
+    } else {
+        Meetings::Points(points)
+    })
 }
 
 #[cfg(test)]
