@@ -764,6 +764,7 @@ impl Input {
         while let Some((a, b)) = todo.pop() {
             nodes += 1;
             if nodes > max_nodes {
+                log::trace!("onside: piece {i}: more than {max_nodes} nodes");
                 return None;
             }
             if let Some(arc) = self.holds(i, di, a, b) {
@@ -778,6 +779,7 @@ impl Input {
             if arc <= floor || !(a < m && m < b) {
                 leaves.push((false, arc));
                 if run_over(&leaves, budget) {
+                    log::trace!("onside: piece {i}: unproven run over {budget} at t {b}");
                     return None;
                 }
                 continue;
