@@ -546,7 +546,7 @@ fn select_contours<'s>(
             Op::Stroke(_) => true,
             Op::Offset(d) => {
                 let p = c.pieces[0].start();
-                match winding_number(&pieces, p) {
+                match winding_number(pieces, p) {
                     Some(w) => (w != 0) == d.is_negative(),
                     None => {
                         reasons.push(format!(

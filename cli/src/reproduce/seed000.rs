@@ -246,7 +246,7 @@ fn fig5_pair(
     let ok = pair.remark_4_3() == Some(true) && pair.prop_4_2() == Some(true);
     out.push(Claim::new(
         &id("compatible"),
-        &src,
+        src,
         "the two curves are compatible and λl, λr satisfy eq. (7)",
         if ok {
             Verdict::Certified
@@ -262,7 +262,7 @@ fn fig5_pair(
         let (v, det) = judge_normal(which, &d[key], l);
         out.push(Claim::new(
             &id(&format!("N{which}")),
-            &src,
+            src,
             format!("N{which} = {}", d[key]),
             v,
             det,
@@ -275,7 +275,7 @@ fn fig5_pair(
         let (v, det) = judge(p, lam);
         out.push(Claim::new(
             &id(key.trim_end_matches("_printed")),
-            &src,
+            src,
             format!("{} = {p}", &key[..8]),
             v,
             det,
@@ -288,7 +288,7 @@ fn fig5_pair(
     let kappa = Surd::sqrt_of(&kappa2).ok_or("κ")?;
     let p = d["kappa_printed"].as_str().unwrap_or_default();
     let (v, det) = judge(p, &kappa);
-    out.push(Claim::new(&id("kappa"), &src, format!("κ = {p}"), v, det));
+    out.push(Claim::new(&id("kappa"), src, format!("κ = {p}"), v, det));
     Ok(lam_l)
 }
 
@@ -332,7 +332,7 @@ fn fig5_kappa_interval(
             .collect();
         out.push(Claim::new(
             &id("kappa-interval"),
-            &src,
+            src,
             format!("κ may be chosen in {printed}"),
             verdict,
             format!(
@@ -364,7 +364,7 @@ fn fig5_deltas(out: &mut Vec<Claim>, f: &Fig5, ln: &LnPair<Surd>) {
             let side = &key[6..7];
             out.push(Claim::new(
                 &id(&format!("delta{side}{i}")),
-                &src,
+                src,
                 format!("δ{i}^{side} = {p}"),
                 v,
                 det,
@@ -402,7 +402,7 @@ fn fig5_hodographs(out: &mut Vec<Claim>, f: &Fig5, ln: &LnPair<Surd>) {
             let (v, det) = judge_vector(p, x, y);
             out.push(Claim::new(
                 &id(name),
-                &src,
+                src,
                 format!("{}'(t) = {p}", &name[..2]),
                 v,
                 det,
@@ -414,7 +414,7 @@ fn fig5_hodographs(out: &mut Vec<Claim>, f: &Fig5, ln: &LnPair<Surd>) {
     let parallel = cross.coeffs().iter().all(|c| c.sign() == Sign::Zero);
     out.push(Claim::new(
         &id("parallel"),
-        &src,
+        src,
         "b'l(t) ∥ b'r(t) for all t (one linear normal map)",
         if parallel {
             Verdict::Certified
@@ -441,7 +441,7 @@ fn fig5_convolution(
             let (v, det) = judge(p, dv);
             out.push(Claim::new(
                 &id(&format!("conv-delta{i}")),
-                &src,
+                src,
                 format!("convolution δ{i} = {p}"),
                 v,
                 det,
@@ -455,7 +455,7 @@ fn fig5_convolution(
         let (v, det) = judge_vector(p, cx, cy);
         out.push(Claim::new(
             &id("conv-prime"),
-            &src,
+            src,
             format!("(bl*br)'(t) = {p}"),
             v,
             det,
@@ -503,7 +503,7 @@ fn fig5_cusp(
     };
     out.push(Claim::new(
         &id("conv-cusp"),
-        &src,
+        src,
         format!("Prop 4.4: the convolution has {} cusp in (0,1)", if printed_says == Some(true) { "a" } else { "no" }),
         verdict,
         format!("convolution δ = ({}, {}); cusp parameter τ = {tau_txt}; direct check (hodograph zero in (0,1)): {direct:?}", show(&conv.deltas.0), show(&conv.deltas.1)),
@@ -516,7 +516,7 @@ fn fig5_cusp(
         let (v, det) = judge(p, t);
         out.push(Claim::new(
             &id("cusp-tau"),
-            &src,
+            src,
             format!("the convolution's cusp is at τ = {p}"),
             v,
             det,

@@ -89,7 +89,7 @@ fn sec6_normals(out: &mut Vec<Claim>, th: &Rot, r3: &Surd) -> R<Surd> {
     let (src, c, sn) = (SEC6, &th.c, &th.sn);
     let rot = |v: &V2<Surd>, sign: i64| th.rot(v, sign);
     // Start normal (-tan θ, 1) ∥ R(θ)(0, 1).
-    let n0 = V2::new(-(sn.div(&c).ok_or("tan")?), Surd::one());
+    let n0 = V2::new(-(sn.div(c).ok_or("tan")?), Surd::one());
     let start_ok = n0
         .cross(&rot(&V2::new(Surd::zero(), Surd::one()), 1))
         .sign()
@@ -162,12 +162,12 @@ fn sec6_convolution(
     let conv = |g: &Poly<Surd>| -> (Poly<Surd>, Poly<Surd>) {
         let (kx, ky) = normal_form(g);
         let x = kx
-            .scale(&c)
-            .sub(&ky.scale(&sn))
+            .scale(c)
+            .sub(&ky.scale(sn))
             .add(&Poly::constant(start_sum.x.clone()));
         let y = kx
-            .scale(&sn)
-            .add(&ky.scale(&c))
+            .scale(sn)
+            .add(&ky.scale(c))
             .add(&Poly::constant(start_sum.y.clone()));
         (x, y)
     };
