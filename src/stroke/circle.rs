@@ -371,6 +371,97 @@ fn no_hit(
     no_hit(left, b, c, arc, (lo, m), d) && no_hit(right, b, c, arc, (m, hi), d)
 }
 
+/// The hits of the piece on the arc when every root of `g = |B − c|² − r²`
+/// on `[0, 1]` is simple and decided by intervals, `None` otherwise (the exact
+/// isolation decides). `g` (interval Bernstein coefficients) is subdivided:
+/// a part where every coefficient has one strict sign has no root; a part
+/// whose point box is proven outside the arc's range has no hit; a part where
+/// every coefficient of `g′` has one strict sign (monotone) has no root when
+/// its end values have the same strict sign, and exactly one when they have
+/// strictly opposite signs. That root is narrowed by bisection on the sign
+/// of `g` at the midpoint (while it is strict, to width `2⁻⁴⁰`), and counts as
+/// a hit when the point box of its parameter interval is proven inside the
+/// arc's range (outside: no hit; undecided: `None`).
+fn simple_hits(
+    g: Vec<Interval>,
+    b: &Bezier<Interval>,
+    c: &V2<Interval>,
+    arc: &Arc,
+    (lo, hi): (f64, f64),
+    depth: u32,
+) -> Option<Vec<ArcHit>> {
+    let strict = |v: &Interval| -> i8 {
+        if v.inf() > 0.0 {
+            1
+        } else if v.sup() < 0.0 {
+            -1
+        } else {
+            0
+        }
+    };
+    let sg = strict(&g[0]);
+    if sg != 0 && g.iter().all(|v| strict(v) == sg) {
+        return Some(Vec::new());
+    }
+    let box_dir = |lo: f64, hi: f64| -> Option<bool> {
+        let iv = |x: f64| Interval::try_from((x, x)).expect("finite");
+        let part = b.restrict(&iv(lo), &iv(hi));
+        let pts = part.points();
+        let hull = |f: &dyn Fn(&V2<Interval>) -> Interval| {
+            let (mut a, mut z) = (f64::INFINITY, f64::NEG_INFINITY);
+            for p in pts {
+                a = a.min(f(p).inf());
+                z = z.max(f(p).sup());
+            }
+            Interval::try_from((a, z)).ok()
+        };
+        let (x, y) = (hull(&|p| p.x)?, hull(&|p| p.y)?);
+        arc.contains_dir(&V2::new(x - c.x, y - c.y))
+    };
+    if box_dir(lo, hi) == Some(false) {
+        return Some(Vec::new());
+    }
+    let n = g.len() - 1;
+    let ds = strict(&(g[1] - g[0]));
+    let monotone = n >= 1 && ds != 0 && (1..n).all(|j| strict(&(g[j + 1] - g[j])) == ds);
+    let (s0, s1) = (strict(&g[0]), strict(&g[n]));
+    if monotone && s0 != 0 && s1 != 0 {
+        if s0 == s1 {
+            return Some(Vec::new());
+        }
+        // one simple root: narrow it while the midpoint sign is strict
+        let (mut a, mut z, mut part) = (lo, hi, g);
+        while z - a > f64::powi(2.0, -40) {
+            let (left, right) = crate::curve::bernstein_halves(&part);
+            let sm = strict(&left[left.len() - 1]);
+            let m = 0.5 * (a + z);
+            if sm == 0 || !(a < m && m < z) {
+                break;
+            }
+            if sm == s0 {
+                (a, part) = (m, right);
+            } else {
+                (z, part) = (m, left);
+            }
+        }
+        return match box_dir(a, z)? {
+            false => Some(Vec::new()),
+            true => Some(vec![ArcHit {
+                t: (rational_from_f64(a)?, rational_from_f64(z)?),
+                multiple: false,
+            }]),
+        };
+    }
+    if depth == 0 {
+        return None;
+    }
+    let (left, right) = crate::curve::bernstein_halves(&g);
+    let m = 0.5 * (lo + hi);
+    let mut hits = simple_hits(left, b, c, arc, (lo, m), depth - 1)?;
+    hits.extend(simple_hits(right, b, c, arc, (m, hi), depth - 1)?);
+    Some(hits)
+}
+
 /// When `B(0)` or `B(1)` lies exactly on the circle: `g = |B − c|² − r²` is
 /// `t^a (1 − t)^b h` with `a`, `b` the multiplicities of the exact end roots
 /// (a vanishing first Bernstein coefficient divides out one factor `t`:
@@ -487,11 +578,22 @@ pub fn bezier_arc(b: &Bezier<Rational>, arc: &Arc) -> ArcMeet {
             let bi = b.map(interval_from_rational);
             let ci = c.map(interval_from_rational);
             let gi: Vec<Interval> = g.iter().map(interval_from_rational).collect();
-            if no_hit(gi, &bi, &ci, arc, (0.0, 1.0), 14) {
+            if no_hit(gi.clone(), &bi, &ci, arc, (0.0, 1.0), 14) {
+                return out;
+            }
+            if let Some(hits) = simple_hits(gi, &bi, &ci, arc, (0.0, 1.0), 14) {
+                out.hits = hits;
                 return out;
             }
         }
     }
+    log::trace!(
+        "bezier_arc: exact isolation (degree {}, ends {:?} {:?}, arc centre {:?})",
+        b.degree(),
+        b.points()[0].map(Scalar::approx),
+        b.points().last().map(|p| p.map(Scalar::approx)),
+        arc.center.map(Scalar::approx)
+    );
     let g = circle_poly(b, c, r);
     if g.clone().trimmed().degree().is_none() {
         // the piece lies on the circle: an overlap
@@ -559,15 +661,39 @@ pub fn bezier_arc(b: &Bezier<Rational>, arc: &Arc) -> ArcMeet {
 /// `Some(false)` proven apart (apart from `shared`), `Some(true)` a contact,
 /// `None` undecided.
 pub fn arcs_meet(a: &Arc, b: &Arc, shared: Option<&V2<Rational>>) -> Option<bool> {
+    match arc_meetings(a, b, shared)? {
+        Meetings::Apart => Some(false),
+        Meetings::Overlap => Some(true),
+        Meetings::Points(ps) => Some(!ps.is_empty()),
+    }
+}
+
+/// Where two arcs meet besides a shared end point (see [`arc_meetings`]).
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum Meetings {
+    /// Proven apart.
+    Apart,
+    /// Two arcs of one circle whose ranges overlap.
+    Overlap,
+    /// Meeting points of two different circles that are proven in both
+    /// ranges, each enclosed (the enclosures of distinct points are
+    /// disjoint unless the circles are tangent there).
+    Points(Vec<V2<Interval>>),
+}
+
+/// The meeting points of two arcs besides a shared end point `shared` (the
+/// circles' intersection points, enclosed, `c_a + α d ± h d⊥`); `None` when a
+/// range test is undecided.
+pub(crate) fn arc_meetings(a: &Arc, b: &Arc, shared: Option<&V2<Rational>>) -> Option<Meetings> {
     let d = b.center.sub(&a.center);
     let d2 = d.norm2();
     let rs = &a.radius + &b.radius;
     if d2 > &rs * &rs {
-        return Some(false);
+        return Some(Meetings::Apart);
     }
     if d2.is_zero() {
         if a.radius != b.radius {
-            return Some(false);
+            return Some(Meetings::Apart);
         }
         // the same circle: the ranges may only share the point `shared`
         let other_in = |x: &Arc, y: &Arc| -> bool {
@@ -582,7 +708,11 @@ pub fn arcs_meet(a: &Arc, b: &Arc, shared: Option<&V2<Rational>>) -> Option<bool
                 .unwrap_or(true);
             ends_in || mid_in
         };
-        return Some(other_in(a, b) || other_in(b, a));
+        return Some(if other_in(a, b) || other_in(b, a) {
+            Meetings::Overlap
+        } else {
+            Meetings::Apart
+        });
     }
     // two circles: the points c_a + α d ± h d⊥ (enclosed)
     let ra2 = &a.radius * &a.radius;
@@ -590,7 +720,7 @@ pub fn arcs_meet(a: &Arc, b: &Arc, shared: Option<&V2<Rational>>) -> Option<bool
     let alpha = (&d2 + &ra2 - &rb2) / (&d2 * Rational::from_integer(2.into()));
     let h2 = &ra2 / &d2 - &alpha * &alpha; // h² in units of |d|²
     if h2.is_negative() {
-        return Some(false);
+        return Some(Meetings::Apart);
     }
     let hi = interval_from_rational(&h2).sqrt();
     let di = d.map(interval_from_rational);
@@ -599,7 +729,7 @@ pub fn arcs_meet(a: &Arc, b: &Arc, shared: Option<&V2<Rational>>) -> Option<bool
         .map(interval_from_rational)
         .add(&di.scale(&interval_from_rational(&alpha)));
     let perp = di.rot90().scale(&hi);
-    let mut any = false;
+    let mut points = Vec::new();
     for p in [base.add(&perp), base.sub(&perp)] {
         if let Some(s) = shared {
             let si = s.map(interval_from_rational);
@@ -613,17 +743,72 @@ pub fn arcs_meet(a: &Arc, b: &Arc, shared: Option<&V2<Rational>>) -> Option<bool
         let inb = b.contains_dir(&p.sub(&b.center.map(interval_from_rational)));
         match (ina, inb) {
             (Some(false), _) | (_, Some(false)) => {}
-            (Some(true), Some(true)) => any = true,
+            (Some(true), Some(true)) => points.push(p),
             _ => return None,
         }
     }
-    Some(any)
+    Some(if points.is_empty() {
+        Meetings::Apart
+    } else {
+        Meetings::Points(points)
+    })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::test_util::qi as q;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(256))]
+        /// The interval path of `bezier_arc` ([`simple_hits`]) against exact
+        /// root isolation: where it decides, each hit's parameter interval
+        /// holds exactly one exact root of `|B − c|² − r²`, and it finds as
+        /// many hits as there are exact roots whose refined point is proven
+        /// in the arc's range (cases the oracle cannot decide are skipped).
+        #[test]
+        fn interval_hits_match_exact_isolation(
+            pts in proptest::collection::vec((-8i64..8, -8i64..8), 4),
+            (cx, cy, rr) in (-4i64..4, -4i64..4, 1i64..8),
+            (u0, u1) in (-30i64..30, -30i64..30),
+        ) {
+            let b = Bezier::new(pts.iter().map(|&(x, y)| V2::new(q(x, 2), q(y, 2))).collect());
+            let c = V2::new(q(cx, 2), q(cy, 2));
+            let r = q(rr, 2);
+            let at = |u: i64| snap(&c, &r, ((u as f64 * 0.2).cos(), (u as f64 * 0.2).sin()));
+            let (Some(from), Some(to)) = (at(u0), at(u1)) else { return Ok(()) };
+            prop_assume!(from != to);
+            let arc = Arc { center: c.clone(), radius: r.clone(), from, to, clockwise: u1 < u0 };
+            let g = circle_bernstein(&b, &c, &r);
+            prop_assume!(!g[0].is_zero() && !g[g.len() - 1].is_zero());
+            let bi = b.map(interval_from_rational);
+            let ci = c.map(interval_from_rational);
+            let gi: Vec<Interval> = g.iter().map(interval_from_rational).collect();
+            let Some(hits) = simple_hits(gi, &bi, &ci, &arc, (0.0, 1.0), 14) else { return Ok(()) };
+            let poly = circle_poly(&b, &c, &r);
+            let roots: Vec<crate::poly::RealRoot> = isolate_roots(&poly, &Span::unit_closed())
+                .iter()
+                .map(|rt| refine_root(&poly, rt, &Rational::new(1.into(), num_bigint::BigInt::from(1) << 60)))
+                .collect();
+            for h in &hits {
+                let inside = roots.iter().filter(|rt| rt.lo >= h.t.0 && rt.hi <= h.t.1).count();
+                let meets = roots.iter().filter(|rt| !(rt.hi < h.t.0 || rt.lo > h.t.1)).count();
+                prop_assert_eq!((inside, meets), (1, 1), "hit {:?} roots {:?}", h.t, roots);
+            }
+            let mut in_range = 0;
+            for rt in &roots {
+                let t = Interval::try_from((interval_from_rational(&rt.lo).inf(), interval_from_rational(&rt.hi).sup())).unwrap();
+                let p = bi.eval(&t);
+                match arc.contains_dir(&V2::new(p.x - ci.x, p.y - ci.y)) {
+                    Some(true) => in_range += 1,
+                    Some(false) => {}
+                    None => return Ok(()),
+                }
+            }
+            prop_assert_eq!(hits.len(), in_range);
+        }
+    }
 
     #[test]
     fn snapped_points_are_on_the_circle() {

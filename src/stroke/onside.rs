@@ -265,6 +265,12 @@ const MAX_WINDOW: f64 = 1.0;
 const MAX_CHAIN: usize = 16;
 /// Subdivision depth of a far range.
 const FAR_DEPTH: u32 = 10;
+/// The floors tried in turn for unproven leaves, as divisors of the budget:
+/// `budget/8` first (few nodes); where a run exceeds the budget — next to a
+/// shallow crossing, where the clearance grows only like `s·sin θ` with the
+/// distance `s` from it, so the unproven run is about `floor / sin θ` long —
+/// again at `budget/128`.
+const FLOOR_DIVS: [f64; 2] = [8.0, 128.0];
 
 impl Input {
     /// `comps`: the connected components `(first, end, closed)` of `curve`.
@@ -662,6 +668,14 @@ impl Input {
     /// from `c` and decreasing towards it (so `≥ |p − c|² = r²`, equality at
     /// `c` only), and everything else is farther than `r`.
     pub(crate) fn prove_arc(&self, arc: &Arc, budget: f64, max_nodes: usize) -> Option<f64> {
+        FLOOR_DIVS
+            .iter()
+            .find_map(|&div| self.prove_arc_at(arc, budget, budget / div, max_nodes))
+    }
+
+    /// [`Input::prove_arc`] with unproven parts split down to a tangent
+    /// polygon length of `floor`.
+    fn prove_arc_at(&self, arc: &Arc, budget: f64, floor: f64, max_nodes: usize) -> Option<f64> {
         let ri = interval_from_rational(&arc.radius);
         if !(ri.inf() <= self.r.sup() && self.r.inf() <= ri.sup()) {
             return None;
@@ -694,7 +708,7 @@ impl Input {
                 continue;
             }
             match a.midpoint() {
-                Some(m) if len > budget / 8.0 => {
+                Some(m) if len > floor => {
                     let (l, r) = a.split_at(&m);
                     parts.push(r);
                     parts.push(l);
@@ -723,6 +737,22 @@ impl Input {
         budget: f64,
         max_nodes: usize,
     ) -> Option<f64> {
+        FLOOR_DIVS.iter().find_map(|&div| {
+            self.prove_interval_at(i, d, (t0, t1), budget, budget / div, max_nodes)
+        })
+    }
+
+    /// [`Input::prove_interval`] with unproven leaves split down to an arc
+    /// length bound of `floor`.
+    fn prove_interval_at(
+        &self,
+        i: usize,
+        d: &Rational,
+        (t0, t1): (f64, f64),
+        budget: f64,
+        floor: f64,
+        max_nodes: usize,
+    ) -> Option<f64> {
         if !(0.0..=1.0).contains(&t0) || !(0.0..=1.0).contains(&t1) || t0 > t1 {
             return None;
         }
@@ -734,6 +764,7 @@ impl Input {
         while let Some((a, b)) = todo.pop() {
             nodes += 1;
             if nodes > max_nodes {
+                log::trace!("onside: piece {i}: more than {max_nodes} nodes");
                 return None;
             }
             if let Some(arc) = self.holds(i, di, a, b) {
@@ -745,9 +776,10 @@ impl Input {
                 .map(|x| x.1)
                 .unwrap_or(f64::INFINITY);
             let m = 0.5 * (a + b);
-            if arc <= budget / 8.0 || !(a < m && m < b) {
+            if arc <= floor || !(a < m && m < b) {
                 leaves.push((false, arc));
                 if run_over(&leaves, budget) {
+                    log::trace!("onside: piece {i}: unproven run over {budget} at t {b}");
                     return None;
                 }
                 continue;

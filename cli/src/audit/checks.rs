@@ -222,6 +222,14 @@ fn hermite_in<S: Scalar>(c: &HermiteCase, f: impl Fn(f64) -> S) -> Option<Hermit
     HermiteData::new(f(c.x1), f(c.y1), f(c.u)).ok()
 }
 
+/// A Hermite case in the three arithmetics: exact, and interval and `f64`
+/// (when they build).
+struct HermiteIn3<'a> {
+    he: &'a HermiteData<Rational>,
+    hi: &'a Option<HermiteData<Interval>>,
+    hf: &'a Option<HermiteData<f64>>,
+}
+
 /// Seed 003 Props 2.1, 3.1/3.2 (corrected for `x1 < 0`), 3.3: decisions,
 /// coefficients, and the direct checks by root isolation of `f''`.
 pub fn check_hermite(c: &HermiteCase, st: &mut KernelStats) {
@@ -237,7 +245,20 @@ pub fn check_hermite(c: &HermiteCase, st: &mut KernelStats) {
     st.cases += 1;
     let hi = hermite_in(c, iv);
     let hf = hermite_in(c, |x| x);
-    // Degeneracy: u/s against every case boundary, a2 against 0, α2 and α0, α1.
+    let h = HermiteIn3 {
+        he: &he,
+        hi: &hi,
+        hf: &hf,
+    };
+    let (du, da) = hermite_degeneracy(c, &h);
+    hermite_decisions(c, st, &h, [&a2, &m, &b], (du, da));
+    hermite_values(c, st, &h, &a2);
+}
+
+/// Degeneracy: u/s against every case boundary (`du`); and that or a2
+/// against 0, α2 and α0, α1 (`da`).
+fn hermite_degeneracy(c: &HermiteCase, h: &HermiteIn3) -> (f64, f64) {
+    let HermiteIn3 { he, hi, .. } = *h;
     let s = he.s().approx();
     let r3 = 3f64.sqrt();
     let du = if s > 0.0 {
@@ -253,6 +274,19 @@ pub fn check_hermite(c: &HermiteCase, st: &mut KernelStats) {
         alphas.extend([a0.mid(), a1.mid()]);
     }
     let da = du.min(rel_dist(c.a2, &alphas));
+    (du, da)
+}
+
+/// The decisions of Props 2.1, 3.1, 3.2 and 3.3 in the three arithmetics, and
+/// Props 2.1 and 3.2 against root isolation.
+fn hermite_decisions(
+    c: &HermiteCase,
+    st: &mut KernelStats,
+    h: &HermiteIn3,
+    [a2, m, b]: [&Rational; 3],
+    (du, da): (f64, f64),
+) {
+    let HermiteIn3 { he, hi, hf } = *h;
     let (ia2, im, ib) = (iv(c.a2), iv(c.m), iv(c.b));
     st.decision(
         "hermite: Prop 2.1",
@@ -268,7 +302,7 @@ pub fn check_hermite(c: &HermiteCase, st: &mut KernelStats) {
         hf.as_ref().and_then(|h| h.prop_3_2_exists()),
         du,
     );
-    let ea = he.nonsingular_a2_contains(&a2);
+    let ea = he.nonsingular_a2_contains(a2);
     st.decision(
         "hermite: Prop 3.2 a2",
         ea,
@@ -276,7 +310,7 @@ pub fn check_hermite(c: &HermiteCase, st: &mut KernelStats) {
         hf.as_ref().and_then(|h| h.nonsingular_a2_contains(&c.a2)),
         da,
     );
-    let eb = he.valid_intercept(&m, &b);
+    let eb = he.valid_intercept(m, b);
     st.decision(
         "hermite: Prop 3.3 b",
         eb,
@@ -292,16 +326,22 @@ pub fn check_hermite(c: &HermiteCase, st: &mut KernelStats) {
     st.direct(
         "hermite: Prop 3.2 vs root isolation",
         ea,
-        normal_form_regular(&he.quartic_f(&a2), &he.u),
+        normal_form_regular(&he.quartic_f(a2), &he.u),
     );
-    if let (Some(hi), Some(hf)) = (&hi, &hf) {
+}
+
+/// The coefficients, α2 and D(a2) in the three arithmetics.
+fn hermite_values(c: &HermiteCase, st: &mut KernelStats, h: &HermiteIn3, a2: &Rational) {
+    let HermiteIn3 { he, hi, hf } = *h;
+    let ia2 = iv(c.a2);
+    if let (Some(hi), Some(hf)) = (hi, hf) {
         let e = [
             he.cubic_coefficients().0,
             he.cubic_coefficients().1,
-            he.quartic_coefficients(&a2).0,
-            he.quartic_coefficients(&a2).1,
+            he.quartic_coefficients(a2).0,
+            he.quartic_coefficients(a2).1,
             he.alpha2(),
-            he.discriminant_d(&a2),
+            he.discriminant_d(a2),
         ];
         let i = [
             hi.cubic_coefficients().0,

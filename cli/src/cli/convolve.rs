@@ -31,9 +31,10 @@ use lncert::offset::{
 use lncert::offset::{Angle, Pen};
 use lncert::scalar::{Rational, Scalar};
 use lncert::shape::parse_curve;
+use lncert::Tolerance;
 use serde_json::json;
 use std::fmt::Write as _;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Arguments of `lncert convolve`.
 #[derive(clap::Args, Debug)]
@@ -160,26 +161,89 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
     let text = super::curve_input::read_text(&a.curve)?;
     let curve = parse_curve(&text).map_err(|e| bad("CURVE", e))?;
     if a.trim {
-        let sa = super::stroke::StrokeArgs {
-            curve: a.curve.clone(),
-            glyph: None,
-            em: false,
-            pen: Some(String::new()),
-            tol: a.tol.clone(),
-            cap: super::modes::Cap::Round,
-            output: Some(a.output),
-            method: a.method,
-            svg: a.svg.clone(),
-            path_out: None,
-            out: None,
-            json: a.json,
-        };
-        return super::stroke::run_with(&sa, &curve, lncert::stroke::PenShape::Ellipse(pen));
+        return run_trim(a, &curve, pen);
     }
+    let opts = options(a, tolerance, output, &grid)?;
+    let start = std::time::Instant::now();
+    let mut results = Vec::new();
+    for (sigma, name) in &sides {
+        let t0 = std::time::Instant::now();
+        let r = convolve(&curve, &pen, *sigma, &opts).map_err(offset_err)?;
+        results.push((*name, r, t0.elapsed().as_secs_f64()));
+    }
+    let total = start.elapsed().as_secs_f64();
+    let cert_notes = match &a.certificate {
+        Some(path) => write_certificate(path, &curve, &results)?,
+        None => Vec::new(),
+    };
+    if let Some(path) = &a.svg {
+        let svg = render(&curve, &pen, &results);
+        std::fs::write(path, svg).map_err(|e| bad("--svg", format!("{}: {e}", path.display())))?;
+    }
+    let judge = Judge {
+        tol,
+        proven: opts.certify,
+    };
+    let within_all = results
+        .iter()
+        .all(|(_, r, _)| judge.within(r) || !opts.certify && r.reached());
+    let report = Report {
+        a,
+        pen: &pen,
+        output,
+        grid: &grid,
+        tol,
+        results: &results,
+        total,
+        cert_notes: &cert_notes,
+        judge,
+        within_all,
+    };
+    if a.json {
+        print_out(&format!(
+            "{}\n",
+            serde_json::to_string_pretty(&report.json()).unwrap_or_default()
+        ));
+    } else {
+        print_out(&report.text());
+    }
+    Ok(if within_all {
+        super::EXIT_OK
+    } else {
+        super::EXIT_UNDECIDED
+    })
+}
+
+/// `--trim`: the outline of the region the pen sweeps, as `lncert stroke`.
+fn run_trim(a: &ConvolveArgs, curve: &[Bezier<Rational>], pen: Pen) -> Result<i32, CliError> {
+    let sa = super::stroke::StrokeArgs {
+        curve: a.curve.clone(),
+        glyph: None,
+        em: false,
+        pen: Some(String::new()),
+        tol: a.tol.clone(),
+        cap: super::modes::Cap::Round,
+        output: Some(a.output),
+        method: a.method,
+        svg: a.svg.clone(),
+        path_out: None,
+        out: None,
+        json: a.json,
+    };
+    super::stroke::run_with(&sa, curve, lncert::stroke::PenShape::Ellipse(pen))
+}
+
+/// The engine's options from the flags (limits checked).
+fn options(
+    a: &ConvolveArgs,
+    tol: Tolerance,
+    output: lncert::offset::Output,
+    grid: &Option<Rational>,
+) -> Result<OffsetOptions, CliError> {
     if a.max_boxes == 0 || a.max_boxes > 50_000_000 {
         return Err(bad("--max-boxes", "out of range (1 to 50000000)"));
     }
-    let mut opts = OffsetOptions::new(Rational::from_integer(0.into()), tolerance);
+    let mut opts = OffsetOptions::new(Rational::from_integer(0.into()), tol);
     opts.method = a.method.into();
     opts.subdivision = a.subdivision.for_method(a.method)?;
     opts.output = output;
@@ -199,80 +263,125 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
     opts.max_segments = a.max_segments;
     opts.max_boxes = a.max_boxes;
     opts.certify = !a.no_certify;
-    let start = std::time::Instant::now();
-    let mut results = Vec::new();
-    for (sigma, name) in &sides {
-        let t0 = std::time::Instant::now();
-        let r = convolve(&curve, &pen, *sigma, &opts).map_err(offset_err)?;
-        results.push((*name, r, t0.elapsed().as_secs_f64()));
-    }
-    let total = start.elapsed().as_secs_f64();
-    // the certificate: one for all sides; the claim for the exact pen is
-    // tol − margin (as a float ≤ it: the results' `certified_tol`)
+    Ok(opts)
+}
+
+/// `--certificate`: one certificate for all sides, written to `path`; the
+/// claim for the exact pen is tol − margin (as a float ≤ it: the results'
+/// `certified_tol`). Returns the notes printed about it.
+fn write_certificate(
+    path: &Path,
+    curve: &[Bezier<Rational>],
+    results: &[(&str, OffsetResult, f64)],
+) -> Result<Vec<String>, CliError> {
     let mut cert_notes = Vec::new();
-    if let Some(path) = &a.certificate {
-        let claim = results
-            .iter()
-            .map(|(_, r, _)| r.certified_tol())
-            .min_by(|x, y| x.exact().cmp(y.exact()))
-            .map(ToString::to_string)
-            .unwrap_or_default();
-        let rs: Vec<&OffsetResult> = results.iter().map(|(_, r, _)| r).collect();
-        let names = results
-            .iter()
-            .map(|(n, _, _)| *n)
-            .collect::<Vec<_>>()
-            .join(" and ");
-        let cert = if rs.len() == 1 {
-            union_certificate(&curve, rs[0])
-        } else {
-            union_certificate_all(&curve, &rs)
-        }
-        .map_err(offset_err)?;
-        match cert {
-            Some(c) => {
-                std::fs::write(path, c.to_json_string())
-                    .map_err(|e| bad("--certificate", format!("{}: {e}", path.display())))?;
-                cert_notes.push(format!(
-                    "side {names}: written to {} (d_H ≤ {claim})",
-                    path.display()
-                ));
-            }
-            None => cert_notes.push(format!(
-                "side {names}: not written (the tolerance is not certified)"
-            )),
-        }
-    }
-    if let Some(path) = &a.svg {
-        let svg = render(&curve, &pen, &results);
-        std::fs::write(path, svg).map_err(|e| bad("--svg", format!("{}: {e}", path.display())))?;
-    }
-    // proven within tol: every segment's certified bound ≤ the tolerance
-    // certified for the exact pen (with --accept paper a segment may be
-    // accepted above it)
-    let proven_within =
-        |r: &OffsetResult| r.reached() && r.certified_hi <= r.certified_tol().value();
-    let within_all = results
+    let claim = results
         .iter()
-        .all(|(_, r, _)| proven_within(r) || !opts.certify && r.reached());
-    let proven = opts.certify;
-    let verdict_of = |r: &OffsetResult| match (r.reached(), proven, proven_within(r)) {
-        (true, true, true) => "certified",
-        (true, true, false) => "accepted by the paper's measure, NOT proven within tol",
-        (true, false, _) => "unproven: within tol by a sampled estimate",
-        (false, _, _) => "not reached",
-    };
-    let overall = if within_all {
-        if proven {
-            "certified"
-        } else {
-            "unproven"
-        }
+        .map(|(_, r, _)| r.certified_tol())
+        .min_by(|x, y| x.exact().cmp(y.exact()))
+        .map(ToString::to_string)
+        .unwrap_or_default();
+    let rs: Vec<&OffsetResult> = results.iter().map(|(_, r, _)| r).collect();
+    let names = results
+        .iter()
+        .map(|(n, _, _)| *n)
+        .collect::<Vec<_>>()
+        .join(" and ");
+    let cert = if rs.len() == 1 {
+        union_certificate(curve, rs[0])
     } else {
-        "not reached"
-    };
-    if a.json {
-        let doc = json!({
+        union_certificate_all(curve, &rs)
+    }
+    .map_err(offset_err)?;
+    match cert {
+        Some(c) => {
+            std::fs::write(path, c.to_json_string())
+                .map_err(|e| bad("--certificate", format!("{}: {e}", path.display())))?;
+            cert_notes.push(format!(
+                "side {names}: written to {} (d_H ≤ {claim})",
+                path.display()
+            ));
+        }
+        None => cert_notes.push(format!(
+            "side {names}: not written (the tolerance is not certified)"
+        )),
+    }
+    Ok(cert_notes)
+}
+
+/// How a side's result is judged.
+struct Judge {
+    tol: f64,
+    /// The segments were certified (not `--no-certify`).
+    proven: bool,
+}
+
+impl Judge {
+    /// Proven within tol: every segment's certified bound ≤ the tolerance
+    /// certified for the exact pen (with --accept paper a segment may be
+    /// accepted above it).
+    fn within(&self, r: &OffsetResult) -> bool {
+        r.reached()
+            && r.certified_hi
+                <= r.convolution
+                    .as_ref()
+                    .map_or(self.tol, |c| c.certified_tol.value())
+    }
+
+    fn verdict(&self, r: &OffsetResult) -> &'static str {
+        match (r.reached(), self.proven, self.within(r)) {
+            (true, true, true) => "certified",
+            (true, true, false) => "accepted by the paper's measure, NOT proven within tol",
+            (true, false, _) => "unproven: within tol by a sampled estimate",
+            (false, _, _) => "not reached",
+        }
+    }
+}
+
+/// Everything the printed report (JSON or text) shows.
+struct Report<'a> {
+    a: &'a ConvolveArgs,
+    pen: &'a Pen,
+    output: lncert::offset::Output,
+    grid: &'a Option<Rational>,
+    tol: f64,
+    results: &'a [(&'a str, OffsetResult, f64)],
+    total: f64,
+    cert_notes: &'a [String],
+    judge: Judge,
+    within_all: bool,
+}
+
+impl Report<'_> {
+    /// The overall verdict.
+    fn overall(&self) -> &'static str {
+        if self.within_all {
+            if self.judge.proven {
+                "certified"
+            } else {
+                "unproven"
+            }
+        } else {
+            "not reached"
+        }
+    }
+
+    /// The `--json` document.
+    fn json(&self) -> serde_json::Value {
+        let Report {
+            a,
+            pen,
+            output,
+            grid,
+            tol,
+            results,
+            total,
+            cert_notes,
+            ..
+        } = self;
+        let (tol, total) = (*tol, *total);
+        let proven = self.judge.proven;
+        json!({
             "pen": {
                 "description": pen.description,
                 "matrix": pen.m.iter().map(|r| r.iter().map(q).collect::<Vec<_>>()).collect::<Vec<_>>(),
@@ -287,7 +396,7 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
                 "rounding_move": lncert::offset::kernels::rounding_move(g),
                 "fit_tol": tol - pen.margin - lncert::offset::kernels::rounding_move(g),
             })),
-            "verdict": overall,
+            "verdict": self.overall(),
             "sides": results.iter().map(|(name, r, secs)| {
                 let c = r.convolution.as_ref();
                 json!({
@@ -297,7 +406,7 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
                     "degree": r.degree(),
                     "certified_error": if proven { json!([0.0, r.certified_hi]) } else { serde_json::Value::Null },
                     "certified_tol": c.map(|c| c.certified_tol.value()),
-                    "verdict": verdict_of(r),
+                    "verdict": self.judge.verdict(r),
                     "split_points": split_points(r),
                     "cusps": c.map(|c| c.cusps.iter().map(|k| json!({
                         "piece": k.piece, "t": [q(&k.t.0), q(&k.t.1)], "point": [k.point.0, k.point.1],
@@ -316,12 +425,22 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
             }).collect::<Vec<_>>(),
             "seconds": total,
             "certificates": cert_notes,
-        });
-        print_out(&format!(
-            "{}\n",
-            serde_json::to_string_pretty(&doc).unwrap_or_default()
-        ));
-    } else {
+        })
+    }
+
+    /// The text report.
+    fn text(&self) -> String {
+        let Report {
+            a,
+            pen,
+            output,
+            grid,
+            tol,
+            results,
+            cert_notes,
+            ..
+        } = self;
+        let tol = *tol;
         let mut s = format!(
             "convolution with the pen {} ({}, tol {}):\n",
             pen.description,
@@ -333,7 +452,7 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
             },
             a.tol
         );
-        if let Some(line) = super::args::grid_line(&grid, tol - pen.margin) {
+        if let Some(line) = super::args::grid_line(grid, tol - pen.margin) {
             s += &format!("  {line}\n");
         }
         if pen.margin > 0.0 {
@@ -342,7 +461,7 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
                 pen.rotation_error, pen.margin
             );
         }
-        for (name, r, secs) in &results {
+        for (name, r, secs) in results.iter() {
             let c = r.convolution.as_ref();
             s += &format!(
                 "  side {name}: {} segment(s) of degree {}, {} control points; certified d_H ≤ {:.6e} — {} ({:.3} s)\n",
@@ -350,7 +469,7 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
                 r.degree(),
                 r.control_points(),
                 r.certified_hi,
-                verdict_of(r),
+                self.judge.verdict(r),
                 secs
             );
             if let Some(c) = c {
@@ -369,16 +488,11 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
                 );
             }
         }
-        for n in &cert_notes {
+        for n in cert_notes.iter() {
             s += &format!("  certificate {n}\n");
         }
-        print_out(&s);
+        s
     }
-    Ok(if within_all {
-        super::EXIT_OK
-    } else {
-        super::EXIT_UNDECIDED
-    })
 }
 
 /// The parameters where consecutive segments meet (per piece, interior only).

@@ -60,7 +60,7 @@ use lncert::curve::{Bezier, V2};
 use lncert::scalar::{interval_from_rational, rational_from_f64, Rational, Scalar};
 use lncert::shape::{font_info, glyph_outline_by_id, winding_number, FontInfo};
 use lncert::stroke::{intersections, IntersectOptions};
-use lncert::stroke::{stroke, Piece, StrokeOptions};
+use lncert::stroke::{stroke, Contour, Piece, StrokeOptions};
 use num_traits::{One, Signed, Zero};
 use rayon::prelude::*;
 use serde_json::json;
@@ -502,14 +502,58 @@ fn prove(src: &Source, job: &Job, g: &mut GlyphResult) {
         }
     }
     let stroke_bound = s.a.bound.max(s.b.bound);
-    // the selection of --offset
+    let kept = select_contours(job, &pieces, &s.contours, &mut reasons);
+    if matches!(job.op, Op::Offset(_)) && !(stroke_bound < r.approx() && s.a.proven) {
+        reasons.push(format!(
+            "the in/out selection is not proven: it needs claim (a) with a bound below |D| = {r}"
+        ));
+    }
+    let (contours, arc_bound) = to_beziers(kept, job.quadratic, arc_target, &mut reasons);
+    let (rounded, move2) = round_contours(&contours, &job.grid, &mut reasons);
+    let delta = sqrt_up(&move2);
+    let bound = stroke_bound + arc_bound + delta;
+    g.bound = bound;
+    // (a NaN bound is not proven either)
+    if bound.is_nan() || bound > job.tol {
+        reasons.push(format!(
+            "the bound {bound:.4} (stroke {stroke_bound:.4} + arcs {arc_bound:.2e} + rounding {delta:.4}) exceeds TOL {}",
+            job.tol
+        ));
+    }
+    let simple_ok = match simple(&rounded) {
+        Ok(()) => true,
+        Err(e) => {
+            reasons.push(e);
+            false
+        }
+    };
+    let oriented = orient(&rounded, simple_ok, &mut reasons);
+    g.contours = oriented;
+    if reasons.is_empty() {
+        g.verdict = Verdict::Proven;
+    } else {
+        g.verdict = Verdict::NotProven;
+        reasons.truncate(6);
+        g.reason = reasons.join("; ");
+    }
+}
+
+/// The selection of `--offset`: the stroke's contours outside the glyph's
+/// fill (`D > 0`) or inside it (`D < 0`), decided by the exact winding number
+/// at each contour's first point (every contour for `--stroke`).
+fn select_contours<'s>(
+    job: &Job,
+    pieces: &[Bezier<Rational>],
+    contours: &'s [Contour],
+    reasons: &mut Vec<String>,
+) -> Vec<&'s Contour> {
     let mut kept = Vec::new();
-    for (k, c) in s.contours.iter().enumerate() {
+    for (k, c) in contours.iter().enumerate() {
         let keep = match &job.op {
             Op::Stroke(_) => true,
             Op::Offset(d) => {
                 let p = c.pieces[0].start();
-                match winding_number(&pieces, p) {
+                match winding_number(pieces, p) {
                     Some(w) => (w != 0) == d.is_negative(),
                     None => {
                         reasons.push(format!(
@@ -524,12 +568,17 @@ fn prove(src: &Source, job: &Job, g: &mut GlyphResult) {
             kept.push(c);
         }
     }
-    if matches!(job.op, Op::Offset(_)) && !(stroke_bound < r.approx() && s.a.proven) {
-        reasons.push(format!(
-            "the in/out selection is not proven: it needs claim (a) with a bound below |D| = {r}"
-        ));
-    }
-    // arcs to cubics
+    kept
+}
+
+/// The stroke's pieces as Béziers: its exact arcs converted to certified
+/// cubics (or quadratics); returns the contours and the arcs' bound.
+fn to_beziers(
+    kept: Vec<&Contour>,
+    quadratic: bool,
+    arc_target: f64,
+    reasons: &mut Vec<String>,
+) -> (Vec<Vec<Bezier<Rational>>>, f64) {
     let zero = <Rational as Zero>::zero();
     let mut arc_bound: f64 = 0.0;
     let mut contours: Vec<Vec<Bezier<Rational>>> = Vec::new();
@@ -538,7 +587,7 @@ fn prove(src: &Source, job: &Job, g: &mut GlyphResult) {
         for p in &c.pieces {
             match p {
                 Piece::Bezier(b) => out.push(b.clone()),
-                Piece::Arc(a) if job.quadratic => {
+                Piece::Arc(a) if quadratic => {
                     match lncert::certify::circular_arc_quadratics(
                         &a.center,
                         &a.radius,
@@ -588,17 +637,26 @@ fn prove(src: &Source, job: &Job, g: &mut GlyphResult) {
         }
         contours.push(out);
     }
-    // rounding
+    (contours, arc_bound)
+}
+
+/// Every control point rounded to the grid; returns the rounded contours
+/// and the largest squared move of a control point.
+fn round_contours(
+    contours: &[Vec<Bezier<Rational>>],
+    grid: &Option<Rational>,
+    reasons: &mut Vec<String>,
+) -> (Vec<Vec<Bezier<Rational>>>, Rational) {
     let mut move2 = <Rational as Zero>::zero();
     let mut rounded: Vec<Vec<Bezier<Rational>>> = Vec::new();
-    for c in &contours {
+    for c in contours {
         let mut out = Vec::new();
         for b in c {
             let pts: Vec<V2<Rational>> = b
                 .points()
                 .iter()
                 .map(|p| {
-                    let q = V2::new(round_to(&p.x, &job.grid), round_to(&p.y, &job.grid));
+                    let q = V2::new(round_to(&p.x, grid), round_to(&p.y, grid));
                     let d = q.sub(p);
                     let m = d.dot(&d);
                     if m > move2 {
@@ -632,24 +690,16 @@ fn prove(src: &Source, job: &Job, g: &mut GlyphResult) {
             rounded.push(out);
         }
     }
-    let delta = sqrt_up(&move2);
-    let bound = stroke_bound + arc_bound + delta;
-    g.bound = bound;
-    // (a NaN bound is not proven either)
-    if bound.is_nan() || bound > job.tol {
-        reasons.push(format!(
-            "the bound {bound:.4} (stroke {stroke_bound:.4} + arcs {arc_bound:.2e} + rounding {delta:.4}) exceeds TOL {}",
-            job.tol
-        ));
-    }
-    let simple_ok = match simple(&rounded) {
-        Ok(()) => true,
-        Err(e) => {
-            reasons.push(e);
-            false
-        }
-    };
-    // orientation by exact nesting (meaningful when the contours are simple and disjoint)
+    (rounded, move2)
+}
+
+/// Orientation by exact nesting (meaningful when the contours are simple and
+/// disjoint): the UFO convention, outer contours counter-clockwise.
+fn orient(
+    rounded: &[Vec<Bezier<Rational>>],
+    simple_ok: bool,
+    reasons: &mut Vec<String>,
+) -> Vec<Vec<Bezier<Rational>>> {
     let n = rounded.len();
     let mut oriented = Vec::with_capacity(n);
     for i in 0..n {
@@ -693,14 +743,7 @@ fn prove(src: &Source, job: &Job, g: &mut GlyphResult) {
             );
         }
     }
-    g.contours = oriented;
-    if reasons.is_empty() {
-        g.verdict = Verdict::Proven;
-    } else {
-        g.verdict = Verdict::NotProven;
-        reasons.truncate(6);
-        g.reason = reasons.join("; ");
-    }
+    oriented
 }
 
 /// The UFO contour of exact pieces (every coordinate an exact f64 after the rounding).
@@ -917,28 +960,7 @@ fn report_html(doc: &serde_json::Value, info: &FontInfo, results: &[GlyphResult]
 
 /// Runs `lncert font`.
 pub fn run(a: &FontArgs) -> Result<i32, CliError> {
-    let op = match (&a.offset, &a.stroke) {
-        (Some(d), None) => {
-            let d = number("--offset", d)?;
-            if d.is_zero() {
-                return Err(bad("--offset", "must not be 0"));
-            }
-            Op::Offset(d)
-        }
-        (None, Some(r)) => {
-            let r = number("--stroke", r)?;
-            if !r.is_positive() {
-                return Err(bad("--stroke", "the pen radius must be > 0"));
-            }
-            Op::Stroke(r)
-        }
-        _ => {
-            return Err(bad(
-                "--offset",
-                "give exactly one of --offset D and --stroke R",
-            ))
-        }
-    };
+    let op = op_of(a)?;
     let tol = super::args::tolerance(&a.tol)?.value();
     let grid = parse_grid(&a.grid)?;
     let quadratic = a.output == FontOutput::Quadratic;
@@ -947,59 +969,9 @@ pub fn run(a: &FontArgs) -> Result<i32, CliError> {
         Some(n) if n > 1024 => return Err(bad("--jobs", "at most 1024")),
         j => j,
     };
-    // output paths before any work
-    if a.out.as_os_str().is_empty() {
-        return Err(bad("--out", "empty path"));
-    }
-    if a.out.exists() && !a.force {
-        return Err(bad(
-            "--out",
-            format!("{} exists (give --force to replace it)", a.out.display()),
-        ));
-    }
-    if a.out.exists() && !a.out.is_dir() {
-        return Err(bad(
-            "--out",
-            format!("{} is a file, not a UFO directory", a.out.display()),
-        ));
-    }
-    if let Some(parent) = a.out.parent().filter(|p| !p.as_os_str().is_empty()) {
-        if !parent.is_dir() {
-            return Err(bad(
-                "--out",
-                format!("the directory {} does not exist", parent.display()),
-            ));
-        }
-    }
-    let html = match &a.report {
-        Some(p) => {
-            let ext = p.extension().and_then(|e| e.to_str()).unwrap_or_default();
-            let html = match ext {
-                "json" => false,
-                "html" | "htm" => true,
-                _ => return Err(bad("--report", "must end in .json or .html")),
-            };
-            super::args::output_file("--report", p)?;
-            html
-        }
-        None => false,
-    };
-    // the font
-    let ext = a
-        .input
-        .extension()
-        .and_then(|e| e.to_str())
-        .unwrap_or_default()
-        .to_ascii_lowercase();
-    let (src, info) = if ext == "ufo" || a.input.is_dir() {
-        let u = super::ufo_input::read_ufo(&a.input).map_err(|e| bad("IN", e))?;
-        let info = u.info.clone();
-        (Source::Ufo(u), info)
-    } else {
-        let data = super::curve_input::read_limited("IN", &a.input, MAX_FONT_BYTES)?;
-        let info = font_info(&data).map_err(|e| bad("IN", e))?;
-        (Source::Binary(data), info)
-    };
+    check_out(a)?;
+    let html = report_is_html(a)?;
+    let (src, info) = read_font(a)?;
     let ids = select(a.glyphs.as_deref(), &info, &src)?;
     let job = Job {
         op,
@@ -1007,29 +979,7 @@ pub fn run(a: &FontArgs) -> Result<i32, CliError> {
         grid,
         quadratic,
     };
-    // the work
-    let t0 = std::time::Instant::now();
-    let mut builder = rayon::ThreadPoolBuilder::new();
-    if let Some(n) = jobs {
-        builder = builder.num_threads(n);
-    }
-    let pool = builder.build().map_err(|e| bad("--jobs", e))?;
-    let bar = progress_bar(ids.len());
-    let results: Vec<GlyphResult> = pool.install(|| {
-        ids.par_iter()
-            .map(|&id| {
-                let r = process(&src, id, &job);
-                if let Some(b) = &bar {
-                    b.inc(1);
-                }
-                r
-            })
-            .collect()
-    });
-    if let Some(b) = bar {
-        b.finish_and_clear();
-    }
-    let secs = t0.elapsed().as_secs_f64();
+    let (results, secs) = prove_all(&src, &ids, &job, jobs)?;
     if a.out.exists() && a.force {
         std::fs::remove_dir_all(&a.out)
             .map_err(|e| bad("--out", format!("{}: {e}", a.out.display())))?;
@@ -1057,34 +1007,170 @@ pub fn run(a: &FontArgs) -> Result<i32, CliError> {
             json!({"summary": s, "out": a.out.display().to_string(), "exit_code": code})
         ));
     } else {
-        let mut out = String::new();
-        for r in &results {
-            if matches!(r.verdict, Verdict::NotProven | Verdict::Error) {
-                let _ = writeln!(
-                    out,
-                    "  {} {}: {}",
-                    info.glyphs[usize::from(r.id)].name,
-                    r.verdict.name(),
-                    r.reason
-                );
-            }
-        }
-        let _ = writeln!(
-            out,
-            "font: {} glyphs ({}), {} proven, {} not proven, {} errors, {} empty, {:.1} s ({:.1} glyphs/s); wrote {}",
-            results.len(),
-            job.op.describe(),
-            s["proven"],
-            s["not_proven"],
-            s["errors"],
-            s["empty"],
-            secs,
-            s["glyphs_per_second"].as_f64().unwrap_or(0.0),
-            a.out.display()
-        );
-        super::print_out(&out);
+        super::print_out(&summary_text(a, &info, &job, &results, s, secs));
     }
     Ok(code)
+}
+
+/// `--offset D` or `--stroke R`, exactly one.
+fn op_of(a: &FontArgs) -> Result<Op, CliError> {
+    Ok(match (&a.offset, &a.stroke) {
+        (Some(d), None) => {
+            let d = number("--offset", d)?;
+            if d.is_zero() {
+                return Err(bad("--offset", "must not be 0"));
+            }
+            Op::Offset(d)
+        }
+        (None, Some(r)) => {
+            let r = number("--stroke", r)?;
+            if !r.is_positive() {
+                return Err(bad("--stroke", "the pen radius must be > 0"));
+            }
+            Op::Stroke(r)
+        }
+        _ => {
+            return Err(bad(
+                "--offset",
+                "give exactly one of --offset D and --stroke R",
+            ))
+        }
+    })
+}
+
+/// The output directory, checked before any work.
+fn check_out(a: &FontArgs) -> Result<(), CliError> {
+    if a.out.as_os_str().is_empty() {
+        return Err(bad("--out", "empty path"));
+    }
+    if a.out.exists() && !a.force {
+        return Err(bad(
+            "--out",
+            format!("{} exists (give --force to replace it)", a.out.display()),
+        ));
+    }
+    if a.out.exists() && !a.out.is_dir() {
+        return Err(bad(
+            "--out",
+            format!("{} is a file, not a UFO directory", a.out.display()),
+        ));
+    }
+    if let Some(parent) = a.out.parent().filter(|p| !p.as_os_str().is_empty()) {
+        if !parent.is_dir() {
+            return Err(bad(
+                "--out",
+                format!("the directory {} does not exist", parent.display()),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// `--report`: HTML (`.html`, `.htm`) or JSON (`.json`; also without
+/// `--report`); the file is checked before any work.
+fn report_is_html(a: &FontArgs) -> Result<bool, CliError> {
+    Ok(match &a.report {
+        Some(p) => {
+            let ext = p.extension().and_then(|e| e.to_str()).unwrap_or_default();
+            let html = match ext {
+                "json" => false,
+                "html" | "htm" => true,
+                _ => return Err(bad("--report", "must end in .json or .html")),
+            };
+            super::args::output_file("--report", p)?;
+            html
+        }
+        None => false,
+    })
+}
+
+/// The font: a UFO, or a TrueType/OpenType file.
+fn read_font(a: &FontArgs) -> Result<(Source, FontInfo), CliError> {
+    let ext = a
+        .input
+        .extension()
+        .and_then(|e| e.to_str())
+        .unwrap_or_default()
+        .to_ascii_lowercase();
+    Ok(if ext == "ufo" || a.input.is_dir() {
+        let u = super::ufo_input::read_ufo(&a.input).map_err(|e| bad("IN", e))?;
+        let info = u.info.clone();
+        (Source::Ufo(u), info)
+    } else {
+        let data = super::curve_input::read_limited("IN", &a.input, MAX_FONT_BYTES)?;
+        let info = font_info(&data).map_err(|e| bad("IN", e))?;
+        (Source::Binary(data), info)
+    })
+}
+
+/// The work: every glyph proven on `jobs` threads (with a progress bar);
+/// returns the results and the seconds taken.
+fn prove_all(
+    src: &Source,
+    ids: &[u16],
+    job: &Job,
+    jobs: Option<usize>,
+) -> Result<(Vec<GlyphResult>, f64), CliError> {
+    let t0 = std::time::Instant::now();
+    let mut builder = rayon::ThreadPoolBuilder::new();
+    if let Some(n) = jobs {
+        builder = builder.num_threads(n);
+    }
+    let pool = builder.build().map_err(|e| bad("--jobs", e))?;
+    let bar = progress_bar(ids.len());
+    let results: Vec<GlyphResult> = pool.install(|| {
+        ids.par_iter()
+            .map(|&id| {
+                let r = process(src, id, job);
+                if let Some(b) = &bar {
+                    b.inc(1);
+                }
+                r
+            })
+            .collect()
+    });
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    let secs = t0.elapsed().as_secs_f64();
+    Ok((results, secs))
+}
+
+/// The text summary: the glyphs not proven, then one line.
+fn summary_text(
+    a: &FontArgs,
+    info: &FontInfo,
+    job: &Job,
+    results: &[GlyphResult],
+    s: &serde_json::Value,
+    secs: f64,
+) -> String {
+    let mut out = String::new();
+    for r in results {
+        if matches!(r.verdict, Verdict::NotProven | Verdict::Error) {
+            let _ = writeln!(
+                out,
+                "  {} {}: {}",
+                info.glyphs[usize::from(r.id)].name,
+                r.verdict.name(),
+                r.reason
+            );
+        }
+    }
+    let _ = writeln!(
+        out,
+        "font: {} glyphs ({}), {} proven, {} not proven, {} errors, {} empty, {:.1} s ({:.1} glyphs/s); wrote {}",
+        results.len(),
+        job.op.describe(),
+        s["proven"],
+        s["not_proven"],
+        s["errors"],
+        s["empty"],
+        secs,
+        s["glyphs_per_second"].as_f64().unwrap_or(0.0),
+        a.out.display()
+    );
+    out
 }
 
 fn progress_bar(n: usize) -> Option<indicatif::ProgressBar> {

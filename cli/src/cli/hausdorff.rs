@@ -24,11 +24,12 @@
 use super::args::{bad, number};
 use super::curve_input::MAX_FILE_BYTES;
 use super::{print_out, CliError, EXIT_OK, EXIT_REFUTED, EXIT_UNDECIDED};
-use lncert::certify::{hausdorff, Certificate, Config, OneSided};
+use lncert::certify::{hausdorff, Certificate, Config, HausdorffBounds, OneSided};
 use lncert::scalar::interval_from_rational;
 use lncert::shape::{InputApprox, ShapeDesc};
+use lncert::Tolerance;
 use serde_json::json;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Arguments of `lncert hausdorff`.
 #[derive(clap::Args, Debug)]
@@ -89,6 +90,68 @@ fn one_json(d: &OneSided) -> serde_json::Value {
 
 /// Runs the command; returns the exit code.
 pub fn run(a: &HausdorffArgs) -> Result<i32, CliError> {
+    let (rel_f, tol) = checked_flags(a)?;
+    let (sa, approx_a) = read_shape_reported("A", &a.a)?;
+    let (sb, approx_b) = read_shape_reported("B", &a.b)?;
+    // The search compares f64 bounds with the largest f64 ≤ tol (sound).
+    let tol_f = tol.as_ref().map(Tolerance::value);
+    let cfg = Config {
+        rel: rel_f,
+        max_boxes: a.max_boxes,
+        tol: tol.clone(),
+        ..Config::default()
+    };
+    let start = std::time::Instant::now();
+    let r = hausdorff(&sa, &sb, &cfg).map_err(|e| CliError {
+        field: e.field,
+        reason: e.reason,
+    })?;
+    let elapsed = start.elapsed();
+    let verdict = tol_f.map(|t| {
+        if r.hi <= t {
+            "certified"
+        } else if r.lo > t {
+            "refuted"
+        } else {
+            "undecided"
+        }
+    });
+    let cert_note = match (&a.certificate, &tol) {
+        (Some(path), Some(t)) => write_certificate(path, &sa, &sb, t, &r)?,
+        _ => None,
+    };
+    let report = Report {
+        r: &r,
+        shapes: (&sa, &sb),
+        approx: (&approx_a, &approx_b),
+        rel_f,
+        tol: &tol,
+        verdict,
+        cert_note: &cert_note,
+        seconds: elapsed.as_secs_f64(),
+    };
+    if a.json {
+        print_out(&format!(
+            "{}\n",
+            serde_json::to_string_pretty(&report.json()).unwrap_or_default()
+        ));
+    } else {
+        print_out(&report.text());
+    }
+    Ok(match verdict {
+        Some("certified") => EXIT_OK,
+        Some("refuted") => EXIT_REFUTED,
+        Some(_) => EXIT_UNDECIDED,
+        // no claim: the bounds are all there is; incomplete when the budget
+        // stopped the search before the gap was reached
+        None if r.incomplete() => EXIT_UNDECIDED,
+        None => EXIT_OK,
+    })
+}
+
+/// The flags checked before any work: returns `--rel` (as a float) and
+/// `--tol` (exact).
+fn checked_flags(a: &HausdorffArgs) -> Result<(f64, Option<Tolerance>), CliError> {
     if let Some(path) = &a.certificate {
         super::args::output_file("--certificate", path)?;
     }
@@ -112,48 +175,59 @@ pub fn run(a: &HausdorffArgs) -> Result<i32, CliError> {
     if a.max_boxes == 0 || a.max_boxes > 50_000_000 {
         return Err(bad("--max-boxes", "out of range (1 to 50000000)"));
     }
-    let (sa, approx_a) = read_shape_reported("A", &a.a)?;
-    let (sb, approx_b) = read_shape_reported("B", &a.b)?;
-    // The search compares f64 bounds with the largest f64 ≤ tol (sound).
-    let tol_f = tol.as_ref().map(lncert::Tolerance::value);
-    let cfg = Config {
-        rel: rel_f,
-        max_boxes: a.max_boxes,
-        tol: tol.clone(),
-        ..Config::default()
-    };
-    let start = std::time::Instant::now();
-    let r = hausdorff(&sa, &sb, &cfg).map_err(|e| CliError {
-        field: e.field,
-        reason: e.reason,
-    })?;
-    let elapsed = start.elapsed();
-    let verdict = tol_f.map(|t| {
-        if r.hi <= t {
-            "certified"
-        } else if r.lo > t {
-            "refuted"
-        } else {
-            "undecided"
+    Ok((rel_f, tol))
+}
+
+/// `--certificate`: writes it when `d_H ≤ t` is certified; returns the note
+/// printed about it.
+fn write_certificate(
+    path: &Path,
+    sa: &ShapeDesc,
+    sb: &ShapeDesc,
+    t: &Tolerance,
+    r: &HausdorffBounds,
+) -> Result<Option<String>, CliError> {
+    Ok(match Certificate::new(sa, sb, t, r) {
+        Some(c) => {
+            std::fs::write(path, c.to_json_string())
+                .map_err(|e| bad("--certificate", format!("{}: {e}", path.display())))?;
+            Some(format!(
+                "written to {} ({} boxes)",
+                path.display(),
+                c.box_count()
+            ))
         }
-    });
-    let mut cert_note = None;
-    if let (Some(path), Some(t)) = (&a.certificate, &tol) {
-        match Certificate::new(&sa, &sb, t, &r) {
-            Some(c) => {
-                std::fs::write(path, c.to_json_string())
-                    .map_err(|e| bad("--certificate", format!("{}: {e}", path.display())))?;
-                cert_note = Some(format!(
-                    "written to {} ({} boxes)",
-                    path.display(),
-                    c.box_count()
-                ));
-            }
-            None => cert_note = Some("not written: the tolerance is not certified".to_string()),
-        }
-    }
-    if a.json {
-        let doc = json!({
+        None => Some("not written: the tolerance is not certified".to_string()),
+    })
+}
+
+/// Everything the printed report (JSON or text) shows.
+struct Report<'a> {
+    r: &'a HausdorffBounds,
+    /// A and B.
+    shapes: (&'a ShapeDesc, &'a ShapeDesc),
+    /// What of A and B was approximated.
+    approx: (&'a InputApprox, &'a InputApprox),
+    rel_f: f64,
+    tol: &'a Option<Tolerance>,
+    verdict: Option<&'a str>,
+    cert_note: &'a Option<String>,
+    seconds: f64,
+}
+
+impl Report<'_> {
+    /// The `--json` document.
+    fn json(&self) -> serde_json::Value {
+        let Report {
+            r,
+            approx: (approx_a, approx_b),
+            rel_f,
+            tol,
+            verdict,
+            cert_note,
+            ..
+        } = self;
+        json!({
             "lo": r.lo, "hi": r.hi,
             "a_to_b": one_json(&r.a_to_b), "b_to_a": one_json(&r.b_to_a),
             "rel": rel_f,
@@ -163,17 +237,25 @@ pub fn run(a: &HausdorffArgs) -> Result<i32, CliError> {
             "proof": if r.parametric.is_some() { "parametric" } else { "search" },
             "parametric_boxes": r.parametric.as_ref().map(|p| p.boxes.len()),
             "certificate": cert_note,
-            "seconds": elapsed.as_secs_f64(),
-            "input_approximation": approx_json(&approx_a, &approx_b),
-        });
-        print_out(&format!(
-            "{}\n",
-            serde_json::to_string_pretty(&doc).unwrap_or_default()
-        ));
-    } else {
+            "seconds": self.seconds,
+            "input_approximation": approx_json(approx_a, approx_b),
+        })
+    }
+
+    /// The text report.
+    fn text(&self) -> String {
+        let Report {
+            r,
+            shapes: (sa, sb),
+            approx: (approx_a, approx_b),
+            tol,
+            verdict,
+            cert_note,
+            ..
+        } = self;
         let mut out = String::new();
         out += &format!("A: {}\nB: {}\n", sa.summary(), sb.summary());
-        for (name, ap) in [("input A", &approx_a), ("input B", &approx_b)] {
+        for (name, ap) in [("input A", approx_a), ("input B", approx_b)] {
             if let Some(line) = super::curve_input::input_line(name, ap) {
                 out += &line;
             }
@@ -184,47 +266,45 @@ pub fn run(a: &HausdorffArgs) -> Result<i32, CliError> {
             r.hi,
             r.hi - r.lo
         );
-        if let Some(p) = &r.parametric {
-            out += &format!(
-                "  proof: parametric, one cover of {} boxes for both directions ({} evaluated)\n",
-                p.boxes.len(),
-                p.evaluated
-            );
-        }
-        for (name, d) in [("h(A→B)", &r.a_to_b), ("h(B→A)", &r.b_to_a)] {
-            if r.parametric.is_some() && d.witness.is_none() {
-                continue;
-            }
-            out += &format!(
-                "  {name} ∈ [{:e}, {:e}]  {} boxes",
-                d.lo,
-                d.hi,
-                d.boxes.len()
-            );
-            if let Some((p, s)) = d.witness {
-                out += &format!(", witness piece {p} at s = {s}");
-            }
-            out += "\n";
-        }
+        out += &text_directions(r);
         if r.incomplete() {
             out += "note: the box budget or the float resolution stopped the search; the bounds are sound but wider than asked\n";
         }
-        if let (Some(v), Some(t)) = (verdict, &tol) {
+        if let (Some(v), Some(t)) = (verdict, tol) {
             out += &format!("verdict: {v} (d_H ≤ {t}?)\n");
         }
-        if let Some(n) = &cert_note {
+        if let Some(n) = cert_note {
             out += &format!("certificate: {n}\n");
         }
-        out += &format!("time: {:.3} ms\n", elapsed.as_secs_f64() * 1e3);
-        print_out(&out);
+        out += &format!("time: {:.3} ms\n", self.seconds * 1e3);
+        out
     }
-    Ok(match verdict {
-        Some("certified") => EXIT_OK,
-        Some("refuted") => EXIT_REFUTED,
-        Some(_) => EXIT_UNDECIDED,
-        // no claim: the bounds are all there is; incomplete when the budget
-        // stopped the search before the gap was reached
-        None if r.incomplete() => EXIT_UNDECIDED,
-        None => EXIT_OK,
-    })
+}
+
+/// The proof's lines: the parametric cover, or the two directions' searches.
+fn text_directions(r: &HausdorffBounds) -> String {
+    let mut out = String::new();
+    if let Some(p) = &r.parametric {
+        out += &format!(
+            "  proof: parametric, one cover of {} boxes for both directions ({} evaluated)\n",
+            p.boxes.len(),
+            p.evaluated
+        );
+    }
+    for (name, d) in [("h(A→B)", &r.a_to_b), ("h(B→A)", &r.b_to_a)] {
+        if r.parametric.is_some() && d.witness.is_none() {
+            continue;
+        }
+        out += &format!(
+            "  {name} ∈ [{:e}, {:e}]  {} boxes",
+            d.lo,
+            d.hi,
+            d.boxes.len()
+        );
+        if let Some((p, s)) = d.witness {
+            out += &format!(", witness piece {p} at s = {s}");
+        }
+        out += "\n";
+    }
+    out
 }

@@ -24,6 +24,7 @@ use super::args::{arc_json, bad, grid, grid_line, number, offset_err, point_json
 use super::curve_input::{input_line, CurveInput};
 use super::modes::{Cap, Method, Subdivision};
 use super::{print_out, CliError};
+use lncert::curve::Bezier;
 use lncert::offset::kernels::Junction;
 use lncert::offset::{
     global_bounds, offset, union_certificate, OffsetMethod, OffsetOptions, OffsetResult, Output,
@@ -31,9 +32,11 @@ use lncert::offset::{
 };
 use lncert::offset::{offset_arc, ArcOffset};
 use lncert::scalar::Rational;
+use lncert::shape::InputApprox;
 use lncert::shape::TravelledArc;
+use lncert::{Certificate, Tolerance};
 use serde_json::{json, Value};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Relative gap of the global bounds `[lo, hi]` that `--global-bounds` prints as
 /// `certified_error` (the proof of `hi ≤ tol` is per segment and does not depend on it).
@@ -143,60 +146,17 @@ pub struct OffsetArgs {
 
 /// Runs the command; returns the exit code.
 pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
-    for (flag, path) in [
-        ("--certificate", &a.certificate),
-        ("--svg", &a.svg),
-        ("--curve-out", &a.curve_out),
-        ("--exact-out", &a.exact_out),
-        ("--path-out", &a.path_out),
-    ] {
-        if let Some(p) = path {
-            super::args::output_file(flag, p)?;
-        }
-    }
-    if let Some(p) = &a.out {
-        super::svg_out::check(p)?;
-    }
+    check_outputs(a)?;
     let distance = number("--distance", &a.distance)?;
     let tolerance = super::args::tolerance(&a.tol)?;
     let tol = tolerance.value();
     let method = OffsetMethod::from(a.method);
     let output = Output::from(a.output);
     let grid = grid(a.grid.as_deref())?;
-    // path data (also inside --out's document) has no command above degree 3
-    let path_flag = [("--path-out", &a.path_out), ("--out", &a.out)]
-        .into_iter()
-        .find(|(_, p)| p.is_some())
-        .map(|(flag, _)| flag);
-    if let (Some(flag), OffsetMethod::G2, Output::Native) = (path_flag, method, output) {
-        return Err(bad(
-            flag,
-            "G2 segments have degree n + 3 ≥ 4, which SVG path data cannot store: use --output cubic, --method ln-pair (cubic), or --curve-out",
-        ));
-    }
+    check_path_degree(a, method, output)?;
     let input = super::curve_input::read_curve_input(&a.curve, a.glyph, a.em)?;
     if a.trim {
-        // the boundary of x ⊕ disk(|R|), as `lncert stroke --pen circle:|R|`
-        // computes it, for every input `stroke` reads (a circle included)
-        let sa = super::stroke::StrokeArgs {
-            curve: a.curve.clone(),
-            glyph: a.glyph,
-            em: a.em,
-            pen: Some(format!("circle:{}", num_traits::Signed::abs(&distance))),
-            tol: a.tol.clone(),
-            cap: Cap::Round,
-            output: Some(a.output),
-            method: a.method,
-            svg: a.svg.clone(),
-            path_out: a.path_out.clone(),
-            out: a.out.clone(),
-            json: a.json,
-        };
-        let r = num_traits::Signed::abs(&distance);
-        if r == Rational::from_integer(0.into()) {
-            return Err(bad("--distance", "must be nonzero"));
-        }
-        return super::stroke::run_input(&sa, &input, lncert::stroke::PenShape::Circle(r));
+        return run_trim(a, &input, &distance);
     }
     let (curve, approx, y_down) = match input {
         CurveInput::Curve {
@@ -207,43 +167,12 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
         CurveInput::Arc(arc) => return run_arcs(a, &[*arc], &distance, tol),
         CurveInput::Circle { arcs, .. } => return run_arcs(a, &arcs, &distance, tol),
     };
-    let mut opts = OffsetOptions::new(distance, tolerance);
-    opts.method = method;
-    opts.subdivision = a.subdivision.for_method(a.method)?;
-    opts.output = output;
-    opts.grid = grid.clone();
-    opts.max_depth = a.max_depth;
-    opts.max_segments = a.max_segments;
-    if a.max_boxes == 0 || a.max_boxes > 50_000_000 {
-        return Err(bad("--max-boxes", "out of range (1 to 50000000)"));
-    }
-    opts.max_boxes = a.max_boxes;
-    opts.paper_error = a.paper_error;
-    opts.certify = !a.no_certify;
-    opts.smooth_kinks = output != Output::Native && !a.keep_kinks;
+    let opts = options(a, distance, tolerance, method, output, &grid)?;
     if let Some(g) = &grid {
         if matches!(output, Output::Cubic | Output::Quadratic)
             && lncert::offset::kernels::rounding_move(g) >= tol
         {
-            if a.svg.is_some() || a.global_bounds || a.no_certify || a.paper_error {
-                return Err(bad(
-                    "--grid",
-                    "with a tolerance below the grid's rounding move, --svg, --global-bounds, \
-                     --no-certify and --paper-error are not available",
-                ));
-            }
-            let flags = super::offset_grid::GridFlags {
-                curve: &a.curve,
-                glyph: a.glyph.is_some(),
-                tol: &a.tol,
-                json: a.json,
-                certificate: a.certificate.as_deref(),
-                curve_out: a.curve_out.as_deref(),
-                exact_out: a.exact_out.as_deref(),
-                path_out: a.path_out.as_deref(),
-                out: a.out.as_deref(),
-            };
-            return super::offset_grid::run(&flags, &curve, &opts, y_down);
+            return run_on_grid(a, &curve, &opts, y_down);
         }
     }
     let start = std::time::Instant::now();
@@ -263,8 +192,172 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     };
     let proven = res.proven || a.global_bounds;
     let total = start.elapsed().as_secs_f64();
+    let cert_note = write_certificate(a.certificate.as_deref(), cert)?;
+    // unproven: every segment within tol by its sampled estimate (res.reached())
+    let within = res.reached() && (hi <= tol || !proven);
+    write_outputs(a, &curve, &res, y_down, within && proven)?;
+    let verdict = match (within, proven) {
+        (true, true) => "certified",
+        (true, false) => "unproven: within tol by a sampled estimate",
+        (false, _) => "not reached",
+    };
+    let report = Report {
+        res: &res,
+        method,
+        output,
+        grid: &grid,
+        tol,
+        tol_text: &a.tol,
+        bounds: (lo, hi),
+        proven,
+        verdict,
+        seconds: (build, total),
+        cert_note,
+        global: a.global_bounds,
+    };
+    if a.json {
+        let doc = report.json(&approx);
+        print_out(&format!(
+            "{}\n",
+            serde_json::to_string_pretty(&doc).unwrap_or_default()
+        ));
+    } else {
+        if let Some(line) = input_line("input", &approx) {
+            print_out(&line);
+        }
+        if let Some(line) = grid_line(&grid, tol) {
+            print_out(&format!("{line}\n"));
+        }
+        print_out(&report.text());
+    }
+    Ok(if within {
+        super::EXIT_OK
+    } else {
+        super::EXIT_UNDECIDED
+    })
+}
+
+/// The output files: writable, checked before any work.
+fn check_outputs(a: &OffsetArgs) -> Result<(), CliError> {
+    for (flag, path) in [
+        ("--certificate", &a.certificate),
+        ("--svg", &a.svg),
+        ("--curve-out", &a.curve_out),
+        ("--exact-out", &a.exact_out),
+        ("--path-out", &a.path_out),
+    ] {
+        if let Some(p) = path {
+            super::args::output_file(flag, p)?;
+        }
+    }
+    if let Some(p) = &a.out {
+        super::svg_out::check(p)?;
+    }
+    Ok(())
+}
+
+/// Path data (also inside `--out`'s document) has no command above degree 3.
+fn check_path_degree(a: &OffsetArgs, method: OffsetMethod, output: Output) -> Result<(), CliError> {
+    let path_flag = [("--path-out", &a.path_out), ("--out", &a.out)]
+        .into_iter()
+        .find(|(_, p)| p.is_some())
+        .map(|(flag, _)| flag);
+    if let (Some(flag), OffsetMethod::G2, Output::Native) = (path_flag, method, output) {
+        return Err(bad(
+            flag,
+            "G2 segments have degree n + 3 ≥ 4, which SVG path data cannot store: use --output cubic, --method ln-pair (cubic), or --curve-out",
+        ));
+    }
+    Ok(())
+}
+
+/// `--trim`: the boundary of x ⊕ disk(|R|), as `lncert stroke --pen
+/// circle:|R|` computes it, for every input `stroke` reads (a circle included).
+fn run_trim(a: &OffsetArgs, input: &CurveInput, distance: &Rational) -> Result<i32, CliError> {
+    let sa = super::stroke::StrokeArgs {
+        curve: a.curve.clone(),
+        glyph: a.glyph,
+        em: a.em,
+        pen: Some(format!("circle:{}", num_traits::Signed::abs(distance))),
+        tol: a.tol.clone(),
+        cap: Cap::Round,
+        output: Some(a.output),
+        method: a.method,
+        svg: a.svg.clone(),
+        path_out: a.path_out.clone(),
+        out: a.out.clone(),
+        json: a.json,
+    };
+    let r = num_traits::Signed::abs(distance);
+    if r == Rational::from_integer(0.into()) {
+        return Err(bad("--distance", "must be nonzero"));
+    }
+    super::stroke::run_input(&sa, input, lncert::stroke::PenShape::Circle(r))
+}
+
+/// The engine's options from the flags (limits checked).
+fn options(
+    a: &OffsetArgs,
+    distance: Rational,
+    tol: Tolerance,
+    method: OffsetMethod,
+    output: Output,
+    grid: &Option<Rational>,
+) -> Result<OffsetOptions, CliError> {
+    let mut opts = OffsetOptions::new(distance, tol);
+    opts.method = method;
+    opts.subdivision = a.subdivision.for_method(a.method)?;
+    opts.output = output;
+    opts.grid = grid.clone();
+    opts.max_depth = a.max_depth;
+    opts.max_segments = a.max_segments;
+    if a.max_boxes == 0 || a.max_boxes > 50_000_000 {
+        return Err(bad("--max-boxes", "out of range (1 to 50000000)"));
+    }
+    opts.max_boxes = a.max_boxes;
+    opts.paper_error = a.paper_error;
+    opts.certify = !a.no_certify;
+    opts.smooth_kinks = output != Output::Native && !a.keep_kinks;
+    Ok(opts)
+}
+
+/// A tolerance below the grid's rounding move: the grid path
+/// ([`super::offset_grid`]).
+fn run_on_grid(
+    a: &OffsetArgs,
+    curve: &[Bezier<Rational>],
+    opts: &OffsetOptions,
+    y_down: bool,
+) -> Result<i32, CliError> {
+    if a.svg.is_some() || a.global_bounds || a.no_certify || a.paper_error {
+        return Err(bad(
+            "--grid",
+            "with a tolerance below the grid's rounding move, --svg, --global-bounds, \
+             --no-certify and --paper-error are not available",
+        ));
+    }
+    let flags = super::offset_grid::GridFlags {
+        curve: &a.curve,
+        glyph: a.glyph.is_some(),
+        tol: &a.tol,
+        json: a.json,
+        certificate: a.certificate.as_deref(),
+        curve_out: a.curve_out.as_deref(),
+        exact_out: a.exact_out.as_deref(),
+        path_out: a.path_out.as_deref(),
+        out: a.out.as_deref(),
+    };
+    super::offset_grid::run(&flags, curve, opts, y_down)
+}
+
+/// `--certificate`: writes it when the tolerance is certified; returns the
+/// note printed about it.
+fn write_certificate(
+    path: Option<&Path>,
+    cert: Option<Certificate>,
+) -> Result<Option<String>, CliError> {
     let mut cert_note = None;
-    if let Some(path) = &a.certificate {
+    if let Some(path) = path {
         match cert {
             Some(c) => {
                 std::fs::write(path, c.to_json_string())
@@ -278,8 +371,20 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             None => cert_note = Some("not written: the tolerance is not certified".to_string()),
         }
     }
+    Ok(cert_note)
+}
+
+/// `--svg`, `--curve-out`, `--exact-out`, `--path-out` and `--out` (its
+/// shape marked proven when `proven_within`).
+fn write_outputs(
+    a: &OffsetArgs,
+    curve: &[Bezier<Rational>],
+    res: &OffsetResult,
+    y_down: bool,
+    proven_within: bool,
+) -> Result<(), CliError> {
     if let Some(path) = &a.svg {
-        let svg = super::offset_svg::render(&curve, &res, y_down);
+        let svg = super::offset_svg::render(curve, res, y_down);
         std::fs::write(path, svg).map_err(|e| bad("--svg", format!("{}: {e}", path.display())))?;
     }
     if let Some(path) = &a.curve_out {
@@ -289,31 +394,65 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             .map_err(|e| bad("--curve-out", format!("{}: {e}", path.display())))?;
     }
     if let Some(path) = &a.exact_out {
-        let shape = res.exact_outline_shape(&curve).map_err(offset_err)?;
+        let shape = res.exact_outline_shape(curve).map_err(offset_err)?;
         let text = format!("{}\n", shape.to_json());
         std::fs::write(path, text)
             .map_err(|e| bad("--exact-out", format!("{}: {e}", path.display())))?;
     }
     if let Some(path) = &a.path_out {
-        let text = lncert::write::offset_path_data(&res).map_err(|e| bad("--path-out", e))? + "\n";
+        let text = lncert::write::offset_path_data(res).map_err(|e| bad("--path-out", e))? + "\n";
         std::fs::write(path, text)
             .map_err(|e| bad("--path-out", format!("{}: {e}", path.display())))?;
     }
-    // unproven: every segment within tol by its sampled estimate (res.reached())
-    let within = res.reached() && (hi <= tol || !proven);
     if let Some(path) = &a.out {
         let frame = super::svg_out::frame(&a.curve, a.glyph.is_some(), y_down)?;
-        let shape = lncert::write::SvgShape::offset(&res).map_err(|e| bad("--out", e))?;
-        let shape = super::svg_out::proven(shape, within && proven);
+        let shape = lncert::write::SvgShape::offset(res).map_err(|e| bad("--out", e))?;
+        let shape = super::svg_out::proven(shape, proven_within);
         super::svg_out::write(path, &[shape], &frame)?;
     }
-    let verdict = match (within, proven) {
-        (true, true) => "certified",
-        (true, false) => "unproven: within tol by a sampled estimate",
-        (false, _) => "not reached",
-    };
-    if a.json {
-        let doc = json!({
+    Ok(())
+}
+
+/// The report's parts, computed by [`run`] (most as the pairs they are
+/// printed in).
+struct Report<'a> {
+    res: &'a OffsetResult,
+    method: OffsetMethod,
+    output: Output,
+    grid: &'a Option<Rational>,
+    tol: f64,
+    /// `--tol` as given.
+    tol_text: &'a str,
+    /// The certified `[lo, hi]`.
+    bounds: (f64, f64),
+    proven: bool,
+    verdict: &'a str,
+    /// Seconds to build and certify, and in all.
+    seconds: (f64, f64),
+    cert_note: Option<String>,
+    /// `--global-bounds`.
+    global: bool,
+}
+
+impl Report<'_> {
+    /// The `--json` document.
+    fn json(&self, approx: &InputApprox) -> Value {
+        let Report {
+            res,
+            method,
+            output,
+            grid,
+            tol,
+            tol_text,
+            bounds: (lo, hi),
+            proven,
+            verdict,
+            seconds: (build, total),
+            cert_note,
+            global,
+        } = self;
+        let (tol, proven, build, total) = (*tol, *proven, *build, *total);
+        json!({
             "method": method.name(),
             "output": output.name(),
             "grid": grid.as_ref().map(|g| json!({
@@ -322,12 +461,12 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
                 "fit_tol": tol - lncert::offset::kernels::rounding_move(g),
             })),
             "distance": q(&res.distance),
-            "tol": a.tol,
+            "tol": tol_text,
             "segments": res.segments.len(),
             "control_points": res.control_points(),
             "degree": res.degree(),
             "certified_error": if proven { json!([lo, hi]) } else { Value::Null },
-            "certified_error_from": if a.global_bounds { "global search" } else if res.proven { "union of the per-segment proofs" } else { "none: --no-certify" },
+            "certified_error_from": if *global { "global search" } else if res.proven { "union of the per-segment proofs" } else { "none: --no-certify" },
             "proven": proven,
             "estimated_error": res.estimated_hi(),
             "verdict": verdict,
@@ -359,110 +498,120 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
             }).collect::<Vec<_>>(),
             "certifications": res.certifications,
             "spans": res.spans,
-            "seconds": {"construct_and_certify": build, "total": total, "global_bounds": a.global_bounds.then_some(total - build)},
+            "seconds": {"construct_and_certify": build, "total": total, "global_bounds": global.then_some(total - build)},
             "certificate": cert_note,
             "input_approximation": approx.to_json(),
-        });
-        print_out(&format!(
-            "{}\n",
-            serde_json::to_string_pretty(&doc).unwrap_or_default()
-        ));
-    } else {
-        if let Some(line) = input_line("input", &approx) {
-            print_out(&line);
-        }
-        if let Some(line) = grid_line(&grid, tol) {
-            print_out(&format!("{line}\n"));
-        }
-        print_out(&text_report(
-            &res,
-            (method, output),
-            &a.tol,
-            (lo, hi),
-            verdict,
-            (build, total),
-            cert_note,
-            a.global_bounds,
-        ));
+        })
     }
-    Ok(if within {
-        super::EXIT_OK
-    } else {
-        super::EXIT_UNDECIDED
-    })
+
+    /// The text report (after the input and grid lines).
+    fn text(&self) -> String {
+        let res = self.res;
+        let mut s = format!(
+            "offset at {} ({}{}, tol {}): {} segment(s) of degree {}, {} control points\n",
+            res.distance,
+            self.method.name(),
+            match self.output {
+                Output::Native => String::new(),
+                o => format!(", output {}", o.name()),
+            },
+            self.tol_text,
+            res.segments.len(),
+            res.degree(),
+            res.control_points()
+        );
+        s += &self.text_error();
+        if res.proven {
+            s += &text_proofs(res);
+        }
+        for c in &res.cusps {
+            s += &format!(
+                "  cusp of the exact offset: piece {} at t ≈ {:.9} ({:.6}, {:.6})\n",
+                c.piece, c.t_approx, c.point.0, c.point.1
+            );
+        }
+        s += &text_corners(res);
+        for &i in &res.unreached {
+            let g = &res.segments[i];
+            s += &match g.estimate {
+                Some(e) => format!(
+                    "  not reached: piece {} t ∈ [{}, {}], estimated error (UNPROVEN) ≈ {e:.3e}\n",
+                    g.piece, g.t.0, g.t.1
+                ),
+                None => format!(
+                    "  not reached: piece {} t ∈ [{}, {}], certified error ≤ {:.3e}\n",
+                    g.piece, g.t.0, g.t.1, g.error.1
+                ),
+            };
+        }
+        if let Some(n) = &self.cert_note {
+            s += &format!("  certificate: {n}\n");
+        }
+        s
+    }
+
+    /// The error lines: estimated, global or per-segment union bound.
+    fn text_error(&self) -> String {
+        let Report {
+            res,
+            bounds: (lo, hi),
+            verdict,
+            seconds: (build, total),
+            global,
+            ..
+        } = self;
+        let global = *global;
+        let mut s = String::new();
+        if !res.proven && !global {
+            let e = res.estimated_hi().unwrap_or(f64::INFINITY);
+            s += &format!("  estimated error (sampled, UNPROVEN): d_H ≈ {e:.6e} — {verdict}\n");
+            s += &format!(
+                "  {} segments built, {:.3} s, nothing proven\n",
+                res.segments.len(),
+                build
+            );
+        } else if global {
+            s += &format!(
+                "  certified error: {lo:.6e} ≤ d_H ≤ {hi:.6e} (global search) — {verdict}\n"
+            );
+            s += &format!(
+                "  {} certified searches, {:.3} s to build and certify, {:.3} s with the global bounds\n",
+                res.certifications, build, total
+            );
+        } else {
+            s += &format!(
+                "  certified error: d_H ≤ {hi:.6e} (union of the per-segment proofs; --global-bounds for a two-sided enclosure) — {verdict}\n"
+            );
+            s += &format!(
+                "  {} certified searches, {:.3} s to build and certify, {:.3} s in all\n",
+                res.certifications, build, total
+            );
+        }
+        s
+    }
 }
 
-// The report's parts, each already computed by the caller (most as the pairs
-// they are printed in): a struct for one call would only repeat them.
-#[allow(clippy::too_many_arguments)]
-fn text_report(
-    res: &OffsetResult,
-    (method, output): (OffsetMethod, Output),
-    tol_text: &str,
-    (lo, hi): (f64, f64),
-    verdict: &str,
-    (build, total): (f64, f64),
-    cert_note: Option<String>,
-    global: bool,
-) -> String {
-    let mut s = format!(
-        "offset at {} ({}{}, tol {}): {} segment(s) of degree {}, {} control points\n",
-        res.distance,
-        method.name(),
-        match output {
-            Output::Native => String::new(),
-            o => format!(", output {}", o.name()),
-        },
-        tol_text,
-        res.segments.len(),
-        res.degree(),
-        res.control_points()
-    );
-    if !res.proven && !global {
-        let e = res.estimated_hi().unwrap_or(f64::INFINITY);
-        s += &format!("  estimated error (sampled, UNPROVEN): d_H ≈ {e:.6e} — {verdict}\n");
-        s += &format!(
-            "  {} segments built, {:.3} s, nothing proven\n",
-            res.segments.len(),
-            build
-        );
-    } else if global {
-        s += &format!("  certified error: {lo:.6e} ≤ d_H ≤ {hi:.6e} (global search) — {verdict}\n");
-        s += &format!(
-            "  {} certified searches, {:.3} s to build and certify, {:.3} s with the global bounds\n",
-            res.certifications, build, total
-        );
-    } else {
-        s += &format!(
-            "  certified error: d_H ≤ {hi:.6e} (union of the per-segment proofs; --global-bounds for a two-sided enclosure) — {verdict}\n"
-        );
-        s += &format!(
-            "  {} certified searches, {:.3} s to build and certify, {:.3} s in all\n",
-            res.certifications, build, total
-        );
-    }
-    if res.proven {
-        let parametric = res
-            .segments
-            .iter()
-            .filter(|g| {
-                g.proof
-                    .as_ref()
-                    .is_some_and(|p| p.path == ProofPath::Parametric)
-            })
-            .count();
-        let proven = res.segments.iter().filter(|g| g.proof.is_some()).count();
-        s += &format!(
-            "  proofs: {parametric} parametric (one cover, both directions), {} by the two-directional search\n",
-            proven - parametric
-        );
-    }
-    for c in &res.cusps {
-        s += &format!(
-            "  cusp of the exact offset: piece {} at t ≈ {:.9} ({:.6}, {:.6})\n",
-            c.piece, c.t_approx, c.point.0, c.point.1
-        );
-    }
+/// How the segments were proven.
+fn text_proofs(res: &OffsetResult) -> String {
+    let parametric = res
+        .segments
+        .iter()
+        .filter(|g| {
+            g.proof
+                .as_ref()
+                .is_some_and(|p| p.path == ProofPath::Parametric)
+        })
+        .count();
+    let proven = res.segments.iter().filter(|g| g.proof.is_some()).count();
+    format!(
+        "  proofs: {parametric} parametric (one cover, both directions), {} by the two-directional search\n",
+        proven - parametric
+    )
+}
+
+/// The corners: absorbed kinks, join arcs, overlaps.
+fn text_corners(res: &OffsetResult) -> String {
+    let mut s = String::new();
     for c in &res.corners {
         if c.absorbed {
             s += &format!(
@@ -494,22 +643,6 @@ fn text_report(
             }
             _ => {}
         }
-    }
-    for &i in &res.unreached {
-        let g = &res.segments[i];
-        s += &match g.estimate {
-            Some(e) => format!(
-                "  not reached: piece {} t ∈ [{}, {}], estimated error (UNPROVEN) ≈ {e:.3e}\n",
-                g.piece, g.t.0, g.t.1
-            ),
-            None => format!(
-                "  not reached: piece {} t ∈ [{}, {}], certified error ≤ {:.3e}\n",
-                g.piece, g.t.0, g.t.1, g.error.1
-            ),
-        };
-    }
-    if let Some(n) = cert_note {
-        s += &format!("  certificate: {n}\n");
     }
     s
 }

@@ -9,7 +9,7 @@ use super::args::{bad, q};
 use super::{print_out, CliError};
 use lncert::curve::Bezier;
 use lncert::offset::OffsetOptions;
-use lncert::offset::{offset_on_grid, Target};
+use lncert::offset::{offset_on_grid, GridOffset, Target};
 use lncert::scalar::Rational;
 use serde_json::json;
 use std::path::Path;
@@ -57,6 +57,56 @@ pub fn run(
     let start = std::time::Instant::now();
     let r = offset_on_grid(curve, opts).map_err(offset_err)?;
     let secs = start.elapsed().as_secs_f64();
+    let cert_note = write_files(a, curve, opts, &r)?;
+    let grid = opts.grid.clone().unwrap_or_default();
+    let how = format!(
+        "joints placed where the exact offset passes within {:e} of a grid point, inner control points searched on the grid; each cubic proven against the exact curve between its joints (corner arcs included)",
+        0.5 * opts.tol.value()
+    );
+    let verdict = if r.reached() {
+        "certified"
+    } else {
+        "not reached"
+    };
+    if let Some(path) = a.out {
+        let frame = super::svg_out::frame(a.curve, a.glyph, y_down)?;
+        let shape = lncert::write::SvgShape::grid_offset(&r).map_err(|e| bad("--out", e))?;
+        let shape = super::svg_out::proven(shape, r.reached());
+        super::svg_out::write(path, &[shape], &frame)?;
+    }
+    let report = Report {
+        a,
+        opts,
+        r: &r,
+        grid: &grid,
+        how: &how,
+        verdict,
+        secs,
+        cert_note: &cert_note,
+    };
+    if a.json {
+        print_out(&format!(
+            "{}\n",
+            serde_json::to_string_pretty(&report.json()).unwrap_or_default()
+        ));
+    } else {
+        print_out(&report.text());
+    }
+    Ok(if r.reached() {
+        super::EXIT_OK
+    } else {
+        super::EXIT_UNDECIDED
+    })
+}
+
+/// `--certificate`, `--curve-out`, `--exact-out` and `--path-out`; returns
+/// the note printed about the certificate.
+fn write_files(
+    a: &GridFlags,
+    curve: &[Bezier<Rational>],
+    opts: &OffsetOptions,
+    r: &GridOffset,
+) -> Result<Option<String>, CliError> {
     let mut cert_note = None;
     if let Some(path) = a.certificate {
         cert_note = Some(match &r.certificate {
@@ -79,32 +129,44 @@ pub fn run(
             .map_err(|e| bad("--exact-out", format!("{}: {e}", path.display())))?;
     }
     if let Some(path) = a.path_out {
-        let d = lncert::write::grid_path_data(&r).map_err(|e| bad("--path-out", e))? + "\n";
+        let d = lncert::write::grid_path_data(r).map_err(|e| bad("--path-out", e))? + "\n";
         std::fs::write(path, d)
             .map_err(|e| bad("--path-out", format!("{}: {e}", path.display())))?;
     }
-    let grid = opts.grid.clone().unwrap_or_default();
-    let how = format!(
-        "joints placed where the exact offset passes within {:e} of a grid point, inner control points searched on the grid; each cubic proven against the exact curve between its joints (corner arcs included)",
-        0.5 * opts.tol.value()
-    );
-    let verdict = if r.reached() {
-        "certified"
-    } else {
-        "not reached"
-    };
-    if let Some(path) = a.out {
-        let frame = super::svg_out::frame(a.curve, a.glyph, y_down)?;
-        let shape = lncert::write::SvgShape::grid_offset(&r).map_err(|e| bad("--out", e))?;
-        let shape = super::svg_out::proven(shape, r.reached());
-        super::svg_out::write(path, &[shape], &frame)?;
-    }
-    if a.json {
-        let doc = json!({
+    Ok(cert_note)
+}
+
+/// Everything the printed report (JSON or text) shows.
+struct Report<'a> {
+    a: &'a GridFlags<'a>,
+    opts: &'a OffsetOptions,
+    r: &'a GridOffset,
+    grid: &'a Rational,
+    /// How the joints and control points were found.
+    how: &'a str,
+    verdict: &'a str,
+    secs: f64,
+    cert_note: &'a Option<String>,
+}
+
+impl Report<'_> {
+    /// The `--json` document.
+    fn json(&self) -> serde_json::Value {
+        let Report {
+            a,
+            opts,
+            r,
+            grid,
+            how,
+            verdict,
+            secs,
+            cert_note,
+        } = self;
+        json!({
             "method": "grid-fit",
             "output": opts.output.name(),
             "degree": if opts.output == lncert::offset::Output::Quadratic { 2 } else { 3 },
-            "grid": {"grid": q(&grid), "rounding_move": lncert::offset::kernels::rounding_move(&grid), "how": how},
+            "grid": {"grid": q(grid), "rounding_move": lncert::offset::kernels::rounding_move(grid), "how": how},
             "distance": q(&opts.distance),
             "tol": a.tol,
             "segments": r.segments.len(),
@@ -128,16 +190,25 @@ pub fn run(
             "max_joint_offset": r.max_joint_offset,
             "seconds": {"total": secs},
             "certificate": cert_note,
-        });
-        print_out(&format!(
-            "{}\n",
-            serde_json::to_string_pretty(&doc).unwrap_or_default()
-        ));
-    } else {
+        })
+    }
+
+    /// The text report.
+    fn text(&self) -> String {
+        let Report {
+            a,
+            opts,
+            r,
+            grid,
+            how,
+            secs,
+            cert_note,
+            ..
+        } = self;
         let mut s = format!(
             "offset at distance {} on the grid {}: {} {} segment(s) in {} contour(s), {} control points, every coordinate a multiple of the grid\n",
             q(&opts.distance),
-            q(&grid),
+            q(grid),
             r.segments.len(),
             opts.output.name(),
             r.contours.len(),
@@ -147,7 +218,7 @@ pub fn run(
         s += &format!(
             "  tolerance {} below the rounding move {:.3e} (grid·√2/2)\n",
             a.tol,
-            lncert::offset::kernels::rounding_move(&grid)
+            lncert::offset::kernels::rounding_move(grid)
         );
         s += &format!(
             "  {} segment(s) of the grid-free fit at tol/2, {} corner arc(s), {} re-fit(s) after a failed proof, {} certified search(es), largest joint offset {:.3e}\n",
@@ -166,11 +237,6 @@ pub fn run(
             s += &format!("  certificate: {n}\n");
         }
         s += &format!("  time {secs:.2} s\n");
-        print_out(&s);
+        s
     }
-    Ok(if r.reached() {
-        super::EXIT_OK
-    } else {
-        super::EXIT_UNDECIDED
-    })
 }

@@ -71,47 +71,9 @@ pub fn render(curve: &[Bezier<Rational>], res: &OffsetResult, y_down: bool) -> S
     let d = res.distance.approx();
     let input: Vec<Bezier<f64>> = curve.iter().map(|b| b.map(|v| v.approx())).collect();
     let exact = exact_samples(curve, d);
-    let approx: Vec<Vec<(f64, V2<f64>, f64)>> = res
-        .segments
-        .iter()
-        .map(|s| {
-            (0..=SAMPLES / 4)
-                .map(|k| {
-                    let u = k as f64 / (SAMPLES / 4) as f64;
-                    let g = s.piece as f64 + s.t.0 + u * (s.t.1 - s.t.0);
-                    (g, s.bezier.eval(&u), curvature(&s.bezier, u))
-                })
-                .collect()
-        })
-        .collect();
-    // bounding box of everything drawn
-    let all = input
-        .iter()
-        .flat_map(|b| b.points().iter().cloned())
-        .chain(
-            res.segments
-                .iter()
-                .flat_map(|s| s.bezier.points().iter().cloned()),
-        )
-        .chain(exact.iter().flatten().map(|s| s.1.clone()))
-        .filter(|p| p.x.is_finite() && p.y.is_finite());
-    let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
-    for p in all {
-        x0 = x0.min(p.x);
-        x1 = x1.max(p.x);
-        y0 = y0.min(p.y);
-        y1 = y1.max(p.y);
-    }
-    let span = (x1 - x0).max(y1 - y0).max(1e-300);
-    let sc = ((W - 2.0 * PAD) / span).min((H_MAIN - 2.0 * PAD) / span);
-    let map = |p: &V2<f64>| {
-        let y = if y_down {
-            PAD + (p.y - y0) * sc
-        } else {
-            H_MAIN - PAD - (p.y - y0) * sc
-        };
-        (PAD + (p.x - x0) * sc, y)
-    };
+    let approx = approx_samples(res);
+    let view = View::new(&input, res, &exact, y_down);
+    let map = |p: &V2<f64>| view.map(p);
     let mut s = String::new();
     let _ = writeln!(
         s,
@@ -132,37 +94,117 @@ pub fn render(curve: &[Bezier<Rational>], res: &OffsetResult, y_down: bool) -> S
         res.tol.value()
     );
     let _ = writeln!(s, r#"<rect width="100%" height="100%" fill="white"/>"#);
+    draw_main(&mut s, res, &input, &exact, &approx, &map);
+    draw_curvature(&mut s, curve.len(), &exact, &approx);
+    s.push_str("</svg>\n");
+    s
+}
+
+/// Samples `(global parameter, point, curvature)` of the approximant.
+fn approx_samples(res: &OffsetResult) -> Vec<Vec<(f64, V2<f64>, f64)>> {
+    res.segments
+        .iter()
+        .map(|s| {
+            (0..=SAMPLES / 4)
+                .map(|k| {
+                    let u = k as f64 / (SAMPLES / 4) as f64;
+                    let g = s.piece as f64 + s.t.0 + u * (s.t.1 - s.t.0);
+                    (g, s.bezier.eval(&u), curvature(&s.bezier, u))
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// Where the main picture puts a point: the bounding box of everything
+/// drawn, scaled into it.
+struct View {
+    x0: f64,
+    y0: f64,
+    sc: f64,
+    y_down: bool,
+}
+
+impl View {
+    fn new(
+        input: &[Bezier<f64>],
+        res: &OffsetResult,
+        exact: &[Vec<(f64, V2<f64>, f64)>],
+        y_down: bool,
+    ) -> View {
+        let all = input
+            .iter()
+            .flat_map(|b| b.points().iter().cloned())
+            .chain(
+                res.segments
+                    .iter()
+                    .flat_map(|s| s.bezier.points().iter().cloned()),
+            )
+            .chain(exact.iter().flatten().map(|s| s.1.clone()))
+            .filter(|p| p.x.is_finite() && p.y.is_finite());
+        let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+        for p in all {
+            x0 = x0.min(p.x);
+            x1 = x1.max(p.x);
+            y0 = y0.min(p.y);
+            y1 = y1.max(p.y);
+        }
+        let span = (x1 - x0).max(y1 - y0).max(1e-300);
+        let sc = ((W - 2.0 * PAD) / span).min((H_MAIN - 2.0 * PAD) / span);
+        View { x0, y0, sc, y_down }
+    }
+
+    fn map(&self, p: &V2<f64>) -> (f64, f64) {
+        let View { x0, y0, sc, y_down } = *self;
+        let y = if y_down {
+            PAD + (p.y - y0) * sc
+        } else {
+            H_MAIN - PAD - (p.y - y0) * sc
+        };
+        (PAD + (p.x - x0) * sc, y)
+    }
+}
+
+/// The main picture: control polygons, input, exact offset, approximant, cusps.
+fn draw_main(
+    s: &mut String,
+    res: &OffsetResult,
+    input: &[Bezier<f64>],
+    exact: &[Vec<(f64, V2<f64>, f64)>],
+    approx: &[Vec<(f64, V2<f64>, f64)>],
+    map: &dyn Fn(&V2<f64>) -> (f64, f64),
+) {
     for seg in &res.segments {
         let _ = writeln!(
             s,
             r##"<polyline fill="none" stroke="#aaa" stroke-width="0.6" points="{}"/>"##,
-            poly(seg.bezier.points(), &map)
+            poly(seg.bezier.points(), map)
         );
     }
-    for b in &input {
+    for b in input {
         let pts: Vec<V2<f64>> = (0..=SAMPLES)
             .map(|k| b.eval(&(k as f64 / SAMPLES as f64)))
             .collect();
         let _ = writeln!(
             s,
             r##"<polyline fill="none" stroke="#1f4fd1" stroke-width="1.5" points="{}"/>"##,
-            poly(&pts, &map)
+            poly(&pts, map)
         );
     }
-    for e in &exact {
+    for e in exact {
         let pts: Vec<V2<f64>> = e.iter().map(|x| x.1.clone()).collect();
         let _ = writeln!(
             s,
             r##"<polyline fill="none" stroke="#1a9c3a" stroke-width="3" stroke-opacity="0.5" points="{}"/>"##,
-            poly(&pts, &map)
+            poly(&pts, map)
         );
     }
-    for a in &approx {
+    for a in approx {
         let pts: Vec<V2<f64>> = a.iter().map(|x| x.1.clone()).collect();
         let _ = writeln!(
             s,
             r##"<polyline fill="none" stroke="#c2188f" stroke-width="1" points="{}"/>"##,
-            poly(&pts, &map)
+            poly(&pts, map)
         );
     }
     for c in &res.cusps {
@@ -172,7 +214,16 @@ pub fn render(curve: &[Bezier<Rational>], res: &OffsetResult, y_down: bool) -> S
             r##"<circle cx="{x:.2}" cy="{y:.2}" r="3" fill="#d11f1f"/>"##
         );
     }
-    // curvature plot: exact offset (green) vs approximant (magenta), clipped to a robust range
+}
+
+/// The curvature plot: exact offset (green) vs approximant (magenta), clipped
+/// to a robust range; `pieces` input pieces on the horizontal axis.
+fn draw_curvature(
+    s: &mut String,
+    pieces: usize,
+    exact: &[Vec<(f64, V2<f64>, f64)>],
+    approx: &[Vec<(f64, V2<f64>, f64)>],
+) {
     let ks: Vec<f64> = exact
         .iter()
         .flatten()
@@ -192,7 +243,7 @@ pub fn render(curve: &[Bezier<Rational>], res: &OffsetResult, y_down: bool) -> S
             (a - 1.0, a + 1.0)
         }
     };
-    let n = curve.len().max(1) as f64;
+    let n = pieces.max(1) as f64;
     let top = H_MAIN + 10.0;
     let pmap = |g: f64, k: f64| {
         let k = k.clamp(klo, khi);
@@ -217,7 +268,7 @@ pub fn render(curve: &[Bezier<Rational>], res: &OffsetResult, y_down: bool) -> S
             .join(" ");
         format!(r#"<polyline fill="none" stroke="{color}" stroke-width="{w}" points="{p}"/>"#)
     };
-    for e in &exact {
+    for e in exact {
         let pts: Vec<(f64, f64)> = e
             .iter()
             .map(|x| (x.0, x.2))
@@ -225,7 +276,7 @@ pub fn render(curve: &[Bezier<Rational>], res: &OffsetResult, y_down: bool) -> S
             .collect();
         let _ = writeln!(s, "{}", line(&pts, "#1a9c3a", 3.0));
     }
-    for a in &approx {
+    for a in approx {
         let pts: Vec<(f64, f64)> = a
             .iter()
             .map(|x| (x.0, x.2))
@@ -233,6 +284,4 @@ pub fn render(curve: &[Bezier<Rational>], res: &OffsetResult, y_down: bool) -> S
             .collect();
         let _ = writeln!(s, "{}", line(&pts, "#c2188f", 1.0));
     }
-    s.push_str("</svg>\n");
-    s
 }

@@ -57,6 +57,44 @@ fn stroked(elements: &[SvgElement]) -> Result<Vec<(&SvgElement, Rational)>, CliE
 
 /// Runs the per-element stroke of an SVG document.
 pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
+    let (text, elements) = read_document(a)?;
+    let jobs = stroked(&elements)?;
+    let (strokes, secs) = stroke_all(a, &jobs)?;
+    let mut approx = InputApprox::default();
+    for (e, _) in &jobs {
+        approx.elements.extend(e.approx.elements.iter().cloned());
+    }
+    let decided: Vec<bool> = strokes
+        .iter()
+        .map(|(s, _)| super::stroke::uncertain(s).is_empty())
+        .collect();
+    let all = decided.iter().all(|d| *d);
+    let verdict = if all { "proven" } else { "undecided" };
+    let refs: Vec<&Stroke> = strokes.iter().map(|(s, _)| s).collect();
+    write_files(a, &text, &jobs, &refs, &decided)?;
+    let report = Report {
+        a,
+        jobs: &jobs,
+        strokes: &strokes,
+        decided: &decided,
+        secs,
+        verdict,
+        approx: &approx,
+    };
+    if a.json {
+        print_out(&format!("{}\n", report.json()));
+    } else {
+        print_out(&report.text());
+    }
+    Ok(if all {
+        super::EXIT_OK
+    } else {
+        super::EXIT_UNDECIDED
+    })
+}
+
+/// The document's text and its elements, after the flags' checks.
+fn read_document(a: &StrokeArgs) -> Result<(String, Vec<SvgElement>), CliError> {
     super::stroke::tol(a)?;
     if a.glyph.is_some() {
         return Err(bad("--pen", "required with --glyph"));
@@ -69,7 +107,15 @@ pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
         ));
     }
     let elements = parse_svg_document_elements(&text).map_err(|e| bad("CURVE", e))?;
-    let jobs = stroked(&elements)?;
+    Ok((text, elements))
+}
+
+/// Every element stroked (in parallel) with its own pen; returns the strokes
+/// with their seconds, and the seconds in all.
+fn stroke_all(
+    a: &StrokeArgs,
+    jobs: &[(&SvgElement, Rational)],
+) -> Result<(Vec<(Stroke, f64)>, f64), CliError> {
     // every flag checked once, before any work
     options(a, PenShape::Circle(jobs[0].1.clone()))?;
     let t0 = std::time::Instant::now();
@@ -85,28 +131,28 @@ pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
         })
         .collect::<Result<_, CliError>>()?;
     let secs = t0.elapsed().as_secs_f64();
-    let mut approx = InputApprox::default();
-    for (e, _) in &jobs {
-        approx.elements.extend(e.approx.elements.iter().cloned());
-    }
-    let decided: Vec<bool> = strokes
-        .iter()
-        .map(|(s, _)| super::stroke::uncertain(s).is_empty())
-        .collect();
-    let all = decided.iter().all(|d| *d);
-    let verdict = if all { "proven" } else { "undecided" };
-    let refs: Vec<&Stroke> = strokes.iter().map(|(s, _)| s).collect();
+    Ok((strokes, secs))
+}
+
+/// `--path-out`, `--out` and `--svg`.
+fn write_files(
+    a: &StrokeArgs,
+    text: &str,
+    jobs: &[(&SvgElement, Rational)],
+    refs: &[&Stroke],
+    decided: &[bool],
+) -> Result<(), CliError> {
     if let Some(p) = &a.path_out {
         let mut d = Vec::new();
-        for s in &refs {
+        for s in refs {
             d.push(path_data(s)?);
         }
         std::fs::write(p, d.join(" ") + "\n").map_err(|e| bad("--path-out", e))?;
     }
     if let Some(p) = &a.out {
-        let frame = lncert::write::SvgOptions::from_svg(&text).map_err(|e| bad("CURVE", e))?;
+        let frame = lncert::write::SvgOptions::from_svg(text).map_err(|e| bad("CURVE", e))?;
         let mut shapes = Vec::new();
-        for (((e, _), s), d) in jobs.iter().zip(&refs).zip(&decided) {
+        for (((e, _), s), d) in jobs.iter().zip(refs).zip(decided) {
             let shape = lncert::write::SvgShape::outline(&s.contours)
                 .map_err(|err| bad("--out", format!("{}: {err}", e.at)))?
                 .with("data-lncert-at", e.at.clone());
@@ -123,14 +169,39 @@ pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
             .iter()
             .flat_map(|(e, _)| e.pieces.iter().cloned())
             .collect();
-        std::fs::write(p, super::stroke::svg(&refs, &skeleton, &d.join(" "), true))
+        std::fs::write(p, super::stroke::svg(refs, &skeleton, &d.join(" "), true))
             .map_err(|e| bad("--svg", e))?;
     }
-    if a.json {
+    Ok(())
+}
+
+/// Everything the printed report (JSON or text) shows.
+struct Report<'a> {
+    a: &'a StrokeArgs,
+    jobs: &'a [(&'a SvgElement, Rational)],
+    strokes: &'a [(Stroke, f64)],
+    decided: &'a [bool],
+    secs: f64,
+    verdict: &'a str,
+    approx: &'a InputApprox,
+}
+
+impl Report<'_> {
+    /// The `--json` document.
+    fn json(&self) -> serde_json::Value {
+        let Report {
+            a,
+            jobs,
+            strokes,
+            decided,
+            secs,
+            verdict,
+            approx,
+        } = self;
         let elements: Vec<serde_json::Value> = jobs
             .iter()
-            .zip(&strokes)
-            .zip(&decided)
+            .zip(strokes.iter())
+            .zip(decided.iter())
             .map(|(((e, r), (s, t)), d)| {
                 let mut v = stroke_json(s, &format!("circle:{}", q(r)));
                 v["at"] = json!(e.at);
@@ -142,23 +213,34 @@ pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
                 v
             })
             .collect();
-        let doc = json!({
+        json!({
             "elements": elements,
             "seconds": secs,
             "tol": a.tol,
             "verdict": verdict,
             "input_approximation": approx.to_json(),
-        });
-        print_out(&format!("{doc}\n"));
-    } else {
-        let mut out = super::curve_input::input_line("input", &approx).unwrap_or_default();
+        })
+    }
+
+    /// The text report.
+    fn text(&self) -> String {
+        let Report {
+            jobs,
+            strokes,
+            decided,
+            secs,
+            verdict,
+            approx,
+            ..
+        } = self;
+        let mut out = super::curve_input::input_line("input", approx).unwrap_or_default();
         let _ = writeln!(
             out,
             "{} element(s) stroked with their own stroke-width, {:.2} s",
             jobs.len(),
             secs
         );
-        for (((e, r), (s, t)), d) in jobs.iter().zip(&strokes).zip(&decided) {
+        for (((e, r), (s, t)), d) in jobs.iter().zip(strokes.iter()).zip(decided.iter()) {
             let _ = writeln!(
                 out,
                 "element {} (pen circle:{}): {}",
@@ -171,11 +253,6 @@ pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
             }
         }
         let _ = writeln!(out, "verdict: {verdict}");
-        print_out(&out);
+        out
     }
-    Ok(if all {
-        super::EXIT_OK
-    } else {
-        super::EXIT_UNDECIDED
-    })
 }

@@ -8,7 +8,8 @@ use lncert::ln::circle::ArcApprox;
 use lncert::ln::cubic::{deltas_from_rho, tau_from_rho, LnFrame, Tau};
 use lncert::ln::direct::singular_points;
 use lncert::ln::pair::{
-    convolution_has_interior_cusp, cusp_parameter, prop_4_4_as_printed, CompatiblePair, KappaChoice,
+    convolution_has_interior_cusp, cusp_parameter, prop_4_4_as_printed, CompatiblePair,
+    Convolution, KappaChoice, LnPair,
 };
 use lncert::poly::{Poly, Span};
 use lncert::scalar::{
@@ -178,14 +179,64 @@ fn judge_normal(which: usize, printed: &Value, f: &LnFrame<Surd>) -> (Verdict, S
     }
 }
 
+/// One case of Fig. 5: its data, the printed text values, the source label.
+struct Fig5<'a> {
+    case: &'a str,
+    d: &'a Value,
+    text: &'a Value,
+    src: String,
+}
+
+impl Fig5<'_> {
+    /// The claim id `000-fig5{case}-{s}`.
+    fn id(&self, s: &str) -> String {
+        format!("000-fig5{}-{s}", self.case)
+    }
+}
+
+/// The hodograph of `c` in the power basis.
+fn hodo(c: &Bezier<Surd>) -> (Poly<Surd>, Poly<Surd>) {
+    let (x, y) = c.hodograph().power_coords();
+    (x, y)
+}
+
 fn fig5(out: &mut Vec<Claim>, case: &str) -> R<()> {
     let all: Value = serde_json::from_str(data::FIG5).map_err(|e| e.to_string())?;
     let text: Value = serde_json::from_str(data::TEXT).map_err(|e| e.to_string())?;
-    let d = &all[case];
-    let src = format!("seed 000 Fig. 5({case})");
-    let id = |s: &str| format!("000-fig5{case}-{s}");
-    let (l, r) = (frame(&d["left"])?, frame(&d["right"])?);
+    let f = Fig5 {
+        case,
+        d: &all[case],
+        text: &text,
+        src: format!("seed 000 Fig. 5({case})"),
+    };
+    let (l, r) = (frame(&f.d["left"])?, frame(&f.d["right"])?);
     let pair = CompatiblePair::new(l.clone(), r.clone()).map_err(|e| e.to_string())?;
+    let lam_l = fig5_pair(out, &f, &pair, &l, &r)?;
+    fig5_kappa_interval(out, &f, &pair, &lam_l)?;
+    // δ's from κ = geometric mean (exact in Q(√q)).
+    let ln = pair
+        .ln_pair(&KappaChoice::GeometricMean)
+        .map_err(|e| e.to_string())?;
+    fig5_deltas(out, &f, &ln);
+    fig5_hodographs(out, &f, &ln);
+    // Convolution.
+    let conv = pair.convolution(&ln).map_err(|e| e.to_string())?;
+    let (cx, cy) = hodo(&conv.curve);
+    fig5_convolution(out, &f, &conv, &cx, &cy);
+    fig5_cusp(out, &f, &conv, &cx, &cy);
+    Ok(())
+}
+
+/// The pair: compatible, its normals N0 and N1, λl, λr and κ; returns λl.
+fn fig5_pair(
+    out: &mut Vec<Claim>,
+    f: &Fig5,
+    pair: &CompatiblePair<Surd>,
+    l: &LnFrame<Surd>,
+    r: &LnFrame<Surd>,
+) -> R<Surd> {
+    let (d, src) = (f.d, &f.src);
+    let id = |s: &str| f.id(s);
     let qr = pair.ratio();
     let orient = if pair.c0.sign() == Sign::Positive {
         "parallel"
@@ -195,7 +246,7 @@ fn fig5(out: &mut Vec<Claim>, case: &str) -> R<()> {
     let ok = pair.remark_4_3() == Some(true) && pair.prop_4_2() == Some(true);
     out.push(Claim::new(
         &id("compatible"),
-        &src,
+        src,
         "the two curves are compatible and λl, λr satisfy eq. (7)",
         if ok {
             Verdict::Certified
@@ -208,10 +259,10 @@ fn fig5(out: &mut Vec<Claim>, case: &str) -> R<()> {
         ),
     ));
     for (which, key) in [(0, "N0_printed"), (1, "N1_printed")] {
-        let (v, det) = judge_normal(which, &d[key], &l);
+        let (v, det) = judge_normal(which, &d[key], l);
         out.push(Claim::new(
             &id(&format!("N{which}")),
-            &src,
+            src,
             format!("N{which} = {}", d[key]),
             v,
             det,
@@ -224,7 +275,7 @@ fn fig5(out: &mut Vec<Claim>, case: &str) -> R<()> {
         let (v, det) = judge(p, lam);
         out.push(Claim::new(
             &id(key.trim_end_matches("_printed")),
-            &src,
+            src,
             format!("{} = {p}", &key[..8]),
             v,
             det,
@@ -237,8 +288,19 @@ fn fig5(out: &mut Vec<Claim>, case: &str) -> R<()> {
     let kappa = Surd::sqrt_of(&kappa2).ok_or("κ")?;
     let p = d["kappa_printed"].as_str().unwrap_or_default();
     let (v, det) = judge(p, &kappa);
-    out.push(Claim::new(&id("kappa"), &src, format!("κ = {p}"), v, det));
-    // The admissible κ interval λl·((1/2, 2) ∩ (q/2, 2q)).
+    out.push(Claim::new(&id("kappa"), src, format!("κ = {p}"), v, det));
+    Ok(lam_l)
+}
+
+/// The admissible κ interval λl·((1/2, 2) ∩ (q/2, 2q)) against the printed one.
+fn fig5_kappa_interval(
+    out: &mut Vec<Claim>,
+    f: &Fig5,
+    pair: &CompatiblePair<Surd>,
+    lam_l: &Surd,
+) -> R<()> {
+    let (case, text, src) = (f.case, f.text, &f.src);
+    let id = |s: &str| f.id(s);
     let range = pair.admissible_rho_left().ok_or("range")?;
     let (klo, khi) = (lam_l.clone() * range.lo, lam_l.clone() * range.hi);
     let key = format!("fig5{case}_kappa_interval");
@@ -270,7 +332,7 @@ fn fig5(out: &mut Vec<Claim>, case: &str) -> R<()> {
             .collect();
         out.push(Claim::new(
             &id("kappa-interval"),
-            &src,
+            src,
             format!("κ may be chosen in {printed}"),
             verdict,
             format!(
@@ -281,10 +343,13 @@ fn fig5(out: &mut Vec<Claim>, case: &str) -> R<()> {
             ),
         ));
     }
-    // δ's from κ = geometric mean (exact in Q(√q)).
-    let ln = pair
-        .ln_pair(&KappaChoice::GeometricMean)
-        .map_err(|e| e.to_string())?;
+    Ok(())
+}
+
+/// The printed δ's of the two curves (κ the geometric mean).
+fn fig5_deltas(out: &mut Vec<Claim>, f: &Fig5, ln: &LnPair<Surd>) {
+    let (case, d, text, src) = (f.case, f.d, f.text, &f.src);
+    let id = |s: &str| f.id(s);
     for (key, deltas) in [
         ("delta_l_printed", &ln.deltas_left),
         ("delta_r_printed", &ln.deltas_right),
@@ -299,18 +364,19 @@ fn fig5(out: &mut Vec<Claim>, case: &str) -> R<()> {
             let side = &key[6..7];
             out.push(Claim::new(
                 &id(&format!("delta{side}{i}")),
-                &src,
+                src,
                 format!("δ{i}^{side} = {p}"),
                 v,
                 det,
             ));
         }
     }
-    // Hodographs as printed.
-    let hodo = |c: &Bezier<Surd>| {
-        let (x, y) = c.hodograph().power_coords();
-        (x, y)
-    };
+}
+
+/// The hodographs as printed, and b'l ∥ b'r.
+fn fig5_hodographs(out: &mut Vec<Claim>, f: &Fig5, ln: &LnPair<Surd>) {
+    let (case, d, text, src) = (f.case, f.d, f.text, &f.src);
+    let id = |s: &str| f.id(s);
     let (lx, ly) = hodo(&ln.left);
     let (rx, ry) = hodo(&ln.right);
     let printed_hodo = [
@@ -336,7 +402,7 @@ fn fig5(out: &mut Vec<Claim>, case: &str) -> R<()> {
             let (v, det) = judge_vector(p, x, y);
             out.push(Claim::new(
                 &id(name),
-                &src,
+                src,
                 format!("{}'(t) = {p}", &name[..2]),
                 v,
                 det,
@@ -348,7 +414,7 @@ fn fig5(out: &mut Vec<Claim>, case: &str) -> R<()> {
     let parallel = cross.coeffs().iter().all(|c| c.sign() == Sign::Zero);
     out.push(Claim::new(
         &id("parallel"),
-        &src,
+        src,
         "b'l(t) ∥ b'r(t) for all t (one linear normal map)",
         if parallel {
             Verdict::Certified
@@ -357,35 +423,56 @@ fn fig5(out: &mut Vec<Claim>, case: &str) -> R<()> {
         },
         "x'l y'r - y'l x'r is the zero polynomial (exact)",
     ));
-    // Convolution.
-    let conv = pair.convolution(&ln).map_err(|e| e.to_string())?;
+}
+
+/// The convolution's printed δ's and hodograph.
+fn fig5_convolution(
+    out: &mut Vec<Claim>,
+    f: &Fig5,
+    conv: &Convolution<Surd>,
+    cx: &Poly<Surd>,
+    cy: &Poly<Surd>,
+) {
+    let (case, d, text, src) = (f.case, f.d, f.text, &f.src);
+    let id = |s: &str| f.id(s);
     if let Some(arr) = d.get("convolution_delta_printed") {
         for (i, dv) in [&conv.deltas.0, &conv.deltas.1].into_iter().enumerate() {
             let p = arr[i].as_str().unwrap_or_default();
             let (v, det) = judge(p, dv);
             out.push(Claim::new(
                 &id(&format!("conv-delta{i}")),
-                &src,
+                src,
                 format!("convolution δ{i} = {p}"),
                 v,
                 det,
             ));
         }
     }
-    let (cx, cy) = hodo(&conv.curve);
     if let Some(p) = text["seed000"]
         .get(format!("fig5{case}_conv_prime"))
         .and_then(Value::as_str)
     {
-        let (v, det) = judge_vector(p, &cx, &cy);
+        let (v, det) = judge_vector(p, cx, cy);
         out.push(Claim::new(
             &id("conv-prime"),
-            &src,
+            src,
             format!("(bl*br)'(t) = {p}"),
             v,
             det,
         ));
     }
+}
+
+/// Prop 4.4: the convolution's cusp, as printed, by the engine and directly.
+fn fig5_cusp(
+    out: &mut Vec<Claim>,
+    f: &Fig5,
+    conv: &Convolution<Surd>,
+    cx: &Poly<Surd>,
+    cy: &Poly<Surd>,
+) {
+    let (d, src) = (f.d, &f.src);
+    let id = |s: &str| f.id(s);
     let printed_says = prop_4_4_as_printed(&conv.deltas);
     let engine_says = convolution_has_interior_cusp(&conv.deltas);
     let tau = cusp_parameter(&conv.deltas);
@@ -416,7 +503,7 @@ fn fig5(out: &mut Vec<Claim>, case: &str) -> R<()> {
     };
     out.push(Claim::new(
         &id("conv-cusp"),
-        &src,
+        src,
         format!("Prop 4.4: the convolution has {} cusp in (0,1)", if printed_says == Some(true) { "a" } else { "no" }),
         verdict,
         format!("convolution δ = ({}, {}); cusp parameter τ = {tau_txt}; direct check (hodograph zero in (0,1)): {direct:?}", show(&conv.deltas.0), show(&conv.deltas.1)),
@@ -429,13 +516,12 @@ fn fig5(out: &mut Vec<Claim>, case: &str) -> R<()> {
         let (v, det) = judge(p, t);
         out.push(Claim::new(
             &id("cusp-tau"),
-            &src,
+            src,
             format!("the convolution's cusp is at τ = {p}"),
             v,
             det,
         ));
     }
-    Ok(())
 }
 
 fn to_rational_curve(c: &Bezier<Surd>) -> Option<Bezier<Rational>> {

@@ -156,10 +156,22 @@ pub fn ln_pair_cusps(r: &OffsetResult, side: i8) -> Vec<(usize, f64)> {
 }
 
 pub(crate) fn claims(out: &mut Vec<Claim>) {
-    let undecided = |id: &str, e: String| {
-        Claim::new(id, "seed 001 §4", "(could not run)", Verdict::Undecided, e)
-    };
-    // the cusp counts, exactly
+    nonic_cusps(out);
+    table2(out);
+    gauss_split(out);
+    let counterexample = table1(out);
+    fig7a_cusps(out);
+    paper_measure(out, counterexample);
+    font_h_claim(out);
+}
+
+/// A claim that could not run.
+fn undecided(id: &str, e: String) -> Claim {
+    Claim::new(id, "seed 001 §4", "(could not run)", Verdict::Undecided, e)
+}
+
+/// Seed 001 §4, Fig. 2: the cusp counts, exactly.
+fn nonic_cusps(out: &mut Vec<Claim>) {
     match (nonic(), pen(1e-12)) {
         (Ok(x), Ok(p)) => {
             let minus = conv_cusps(0, &x[0], &p, -1);
@@ -187,6 +199,10 @@ pub(crate) fn claims(out: &mut Vec<Claim>) {
         }
         (Err(e), _) | (_, Err(e)) => out.push(undecided("001-nonic-cusps", e)),
     }
+}
+
+/// Seed 001 Table 2: G² and LN pairs at `TOL = 1e-1 … 1e-5`.
+fn table2(out: &mut Vec<Claim>) {
     for (tol, name, right, left) in TABLE2_LN_PAIRS {
         let id = format!("001-table2-tol-{name}");
         let start = std::time::Instant::now();
@@ -219,7 +235,10 @@ pub(crate) fn claims(out: &mut Vec<Claim>) {
             (Err(e), _) | (_, Err(e)) => out.push(undecided(&id, e)),
         }
     }
-    // seed 000 §5: the inflection and the k-piece Gauss-map split of the nonic
+}
+
+/// Seed 000 §5: the inflection and the k-piece Gauss-map split of the nonic.
+fn gauss_split(out: &mut Vec<Claim>) {
     match nonic() {
         Ok(x) => {
             let infl = lncert::offset::kernels::inflections(&x[0]);
@@ -273,8 +292,13 @@ pub(crate) fn claims(out: &mut Vec<Claim>) {
         }
         Err(e) => out.push(undecided("000-sec5-gauss-split", e)),
     }
-    // seed 000 Table 1: the font 'H' by cubic LN pairs at TOL = 1, 0.1, 0.01,
-    // with lncert's acceptance (certified true error) and the paper's
+}
+
+/// Seed 000 Table 1: the font 'H' by cubic LN pairs at TOL = 1, 0.1, 0.01,
+/// with lncert's acceptance (certified true error) and the paper's. Returns
+/// a segment the paper's measure accepts while its certified true error
+/// exceeds TOL, if any.
+fn table1(out: &mut Vec<Claim>) -> Option<String> {
     let mut counterexample: Option<String> = None;
     for (tol, name) in [(1.0, "1"), (0.1, "0.1"), (0.01, "0.01")] {
         let id = format!("000-table1-tol-{name}");
@@ -337,7 +361,12 @@ pub(crate) fn claims(out: &mut Vec<Claim>) {
             (Err(e), _) | (_, Err(e)) => out.push(undecided(&id, e)),
         }
     }
-    // seed 000 Fig. 7(a), (d)–(i): the approximant's cusps at TOL 0.1 (the paper's acceptance)
+    counterexample
+}
+
+/// Seed 000 Fig. 7(a), (d)–(i): the approximant's cusps at TOL 0.1 (the
+/// paper's acceptance).
+fn fig7a_cusps(out: &mut Vec<Claim>) {
     match both_sides_with(0.1, OffsetMethod::LnPair, true) {
         Ok((m, p)) => {
             let (cm, cp) = (ln_pair_cusps(&m, -1), ln_pair_cusps(&p, 1));
@@ -376,6 +405,10 @@ pub(crate) fn claims(out: &mut Vec<Claim>) {
         }
         Err(e) => out.push(undecided("000-fig7a-cusps", e)),
     }
+}
+
+/// Seed 000 §5: the paper's error measure, refuted by `counterexample`.
+fn paper_measure(out: &mut Vec<Claim>, counterexample: Option<String>) {
     out.push(match counterexample {
         Some(c) => Claim::new(
             "000-sec5-paper-measure",
@@ -392,7 +425,6 @@ pub(crate) fn claims(out: &mut Vec<Claim>) {
             "no segment separated the two on the font 'H' at TOL 1, 0.1, 0.01",
         ),
     });
-    font_h_claim(out);
 }
 
 /// Seed 000 Fig. 7(c): the font 'H' as a proven stroke outline — the nonic

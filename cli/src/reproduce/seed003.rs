@@ -49,22 +49,47 @@ fn prop_2_1_example(out: &mut Vec<Claim>) -> R<()> {
     Ok(())
 }
 
-/// The §6 example: two cubic LN curves in normal form rotated by θ = π/3.
-fn sec6(out: &mut Vec<Claim>) -> R<()> {
-    let d: Value = serde_json::from_str(data::SEC6).map_err(|e| e.to_string())?;
-    let src = "seed 003 §6";
-    // θ = π/3: cos θ = 1/2, sin θ = √3/2 (exact in Q(√3)).
-    let r3 = Surd::sqrt_of(&frac(3, 1)).ok_or("√3")?;
-    let (c, sn) = (s(frac(1, 2)), r3.clone() * s(frac(1, 2)));
-    let rot = |v: &V2<Surd>, sign: i64| -> V2<Surd> {
-        let sn = sn.scale(sign);
+/// The rotation by θ = π/3 of the §6 example: cos θ and sin θ, exact in Q(√3).
+struct Rot {
+    c: Surd,
+    sn: Surd,
+}
+
+impl Rot {
+    /// `R(sign θ) v`.
+    fn rot(&self, v: &V2<Surd>, sign: i64) -> V2<Surd> {
+        let c = &self.c;
+        let sn = self.sn.scale(sign);
         V2::new(
             c.clone() * v.x.clone() - sn.clone() * v.y.clone(),
             sn * v.x.clone() + c.clone() * v.y.clone(),
         )
-    };
+    }
+}
+
+/// The §6 example: two cubic LN curves in normal form rotated by θ = π/3.
+fn sec6(out: &mut Vec<Claim>) -> R<()> {
+    let d: Value = serde_json::from_str(data::SEC6).map_err(|e| e.to_string())?;
+    // θ = π/3: cos θ = 1/2, sin θ = √3/2 (exact in Q(√3)).
+    let r3 = Surd::sqrt_of(&frac(3, 1)).ok_or("√3")?;
+    let (c, sn) = (s(frac(1, 2)), r3.clone() * s(frac(1, 2)));
+    let th = Rot { c, sn };
+    let u = sec6_normals(out, &th, &r3)?;
+    let (fs, start_sum) = sec6_coefficients(out, &d, &th, &u)?;
+    sec6_convolution(out, &d, &th, &fs, &start_sum)?;
+    sec6_common_gauss_map(out, &fs);
+    Ok(())
+}
+
+/// The source of the §6 claims.
+const SEC6: &str = "seed 003 §6";
+
+/// The start and end normals; returns `u`, the end normal's parameter.
+fn sec6_normals(out: &mut Vec<Claim>, th: &Rot, r3: &Surd) -> R<Surd> {
+    let (src, c, sn) = (SEC6, &th.c, &th.sn);
+    let rot = |v: &V2<Surd>, sign: i64| th.rot(v, sign);
     // Start normal (-tan θ, 1) ∥ R(θ)(0, 1).
-    let n0 = V2::new(-(sn.div(&c).ok_or("tan")?), Surd::one());
+    let n0 = V2::new(-(sn.div(c).ok_or("tan")?), Surd::one());
     let start_ok = n0
         .cross(&rot(&V2::new(Surd::zero(), Surd::one()), 1))
         .sign()
@@ -82,7 +107,19 @@ fn sec6(out: &mut Vec<Claim>) -> R<()> {
         if start_ok && u.exact_eq(&Surd::one()) == Some(true) { Verdict::Certified } else { Verdict::Refuted },
         format!("engine: u = {}", show(&u)),
     ));
-    // Exact f and F from the printed end points (Prop 2.1's system (1)).
+    Ok(u)
+}
+
+/// Exact f and F from the printed end points (Prop 2.1's system (1)) against
+/// their printed coefficients; returns f, F and the sum of the start points.
+fn sec6_coefficients(
+    out: &mut Vec<Claim>,
+    d: &Value,
+    th: &Rot,
+    u: &Surd,
+) -> R<(Vec<Poly<Surd>>, V2<Surd>)> {
+    let src = SEC6;
+    let rot = |v: &V2<Surd>, sign: i64| th.rot(v, sign);
     let mut fs: Vec<Poly<Surd>> = Vec::new();
     let mut start_sum = V2::new(Surd::zero(), Surd::zero());
     for (key, coef_key, name) in [("c1", "f", "f"), ("c2", "F", "F")] {
@@ -109,16 +146,28 @@ fn sec6(out: &mut Vec<Claim>) -> R<()> {
         }
         fs.push(h.cubic_f());
     }
-    // The convolution c1 + c2 = R(θ) K_{f+F} + (start1 + start2), exact.
+    Ok((fs, start_sum))
+}
+
+/// The convolution c1 + c2 = R(θ) K_{f+F} + (start1 + start2), exact, against
+/// its printed coefficients.
+fn sec6_convolution(
+    out: &mut Vec<Claim>,
+    d: &Value,
+    th: &Rot,
+    fs: &[Poly<Surd>],
+    start_sum: &V2<Surd>,
+) -> R<()> {
+    let (src, c, sn) = (SEC6, &th.c, &th.sn);
     let conv = |g: &Poly<Surd>| -> (Poly<Surd>, Poly<Surd>) {
         let (kx, ky) = normal_form(g);
         let x = kx
-            .scale(&c)
-            .sub(&ky.scale(&sn))
+            .scale(c)
+            .sub(&ky.scale(sn))
             .add(&Poly::constant(start_sum.x.clone()));
         let y = kx
-            .scale(&sn)
-            .add(&ky.scale(&c))
+            .scale(sn)
+            .add(&ky.scale(c))
             .add(&Poly::constant(start_sum.y.clone()));
         (x, y)
     };
@@ -159,7 +208,11 @@ fn sec6(out: &mut Vec<Claim>) -> R<()> {
             ));
         }
     }
-    // Same normal at the same t: c1'(t) × c2'(t) ≡ 0, so the sum is the convolution.
+    Ok(())
+}
+
+/// Same normal at the same t: c1'(t) × c2'(t) ≡ 0, so the sum is the convolution.
+fn sec6_common_gauss_map(out: &mut Vec<Claim>, fs: &[Poly<Surd>]) {
     let d1 = normal_form(&fs[0]);
     let d2 = normal_form(&fs[1]);
     let cross =
@@ -174,7 +227,6 @@ fn sec6(out: &mut Vec<Claim>) -> R<()> {
         if parallel { Verdict::Certified } else { Verdict::Refuted },
         "c1'(t) × c2'(t) is the zero polynomial (exact, in Q(√3))",
     ));
-    Ok(())
 }
 
 /// Prop 7.1: the recommended τ-range versus the exact regular range.

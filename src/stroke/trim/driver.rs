@@ -4,8 +4,8 @@ use super::add_note;
 use super::chain::{chain, check_simple};
 use super::classify::{foot, prove_kept, prove_removed, Part};
 use super::pinch::pinched_loops;
-use super::sides::{check, raw_contours, Kind, Raw};
-use super::split::{find_crossings, split_piece, Sub};
+use super::sides::{check, dist_hi, raw_contours, Kind, Raw};
+use super::split::{find_crossings, split_piece, Bridge, Sub};
 use super::types::{Cap, CapReport, Claim, Classified, Piece, Stroke, StrokeError, StrokeOptions};
 use crate::curve::{Bezier, V2};
 use crate::scalar::{rational_from_f64, Rational, Scalar};
@@ -91,7 +91,10 @@ fn stroke_at(
         max_boxes_per_pair: opts.max_boxes_per_pair,
         self_intersections: true,
     };
-    let mut found = find_crossings(&raws, &iopts, &mut notes, t0);
+    // arc–arc crossings are split this far (arc length) from the crossing:
+    // far beyond the enclosures' widths, well inside λ ≥ TOL/2
+    let bridge_mu = opts.tol.value() / 1024.0;
+    let mut found = find_crossings(&raws, &iopts, bridge_mu, &mut notes, t0);
     let mut subs: Vec<Sub> = Vec::new();
     for (i, raw) in raws.iter().enumerate() {
         subs.extend(split_piece(i, &raw.piece, &mut found.splits[i]));
@@ -111,7 +114,11 @@ fn stroke_at(
     let classes = classify(&run, &subs);
     let mut tally = tally(&run, &subs, &classes, &mut notes);
     log::debug!("classified: {:?}", t0.elapsed());
-    drop_pinched(&run, &subs, &mut tally, &mut notes);
+    let mut bridges = bridge_connectors(&subs, &tally.keep, &classes.kept, &found.bridges);
+    for b in &bridges {
+        tally.a_bound = tally.a_bound.max(b.bound);
+    }
+    drop_pinched(&run, &subs, &mut tally, &mut bridges, &mut notes);
 
     // --- chain, and claim (c)
     let out_pieces: Vec<Piece> = subs
@@ -119,6 +126,7 @@ fn stroke_at(
         .zip(&tally.keep)
         .filter(|(_, k)| **k)
         .map(|(s, _)| s.post.clone())
+        .chain(bridges.into_iter().filter(|b| b.keep).map(|b| b.piece))
         .collect();
     let contours = chain(out_pieces);
     let (c_ok, c_complete, c_note) = check_simple(&contours, &iopts);
@@ -416,11 +424,61 @@ fn tally(run: &Run, subs: &[Sub], classes: &Classes, notes: &mut Vec<String>) ->
     t
 }
 
+/// A straight connector across an arc–arc crossing (see
+/// [`super::split::Bridge`]).
+struct BridgeConnector {
+    piece: Piece,
+    /// Claim (a) for its points: `|X − Y|` plus the bound of the kept piece
+    /// ending at its start `X` (every point is within `|X − Y|` of `X`).
+    bound: f64,
+    /// Still in the output (not dropped with a pinched loop or spur).
+    keep: bool,
+}
+
+/// The connectors of the arc–arc bridges: where an output piece ends at one
+/// split point and another starts at the other, the segment from the first
+/// to the second. Its points are not on any raw piece: claim (a) charges
+/// them `|X − Y|` above the bound of the piece ending at `X`; claims (b)
+/// and (c) do not need them to be anything but output (and (c) checks the
+/// output as it is).
+fn bridge_connectors(
+    subs: &[Sub],
+    keep: &[bool],
+    kept: &[Option<f64>],
+    bridges: &[Bridge],
+) -> Vec<BridgeConnector> {
+    let mut out = Vec::new();
+    for br in bridges {
+        for (x, y) in [(&br.ends[0], &br.ends[1]), (&br.ends[1], &br.ends[0])] {
+            if x == y {
+                continue;
+            }
+            let ending = (0..subs.len()).find(|&k| keep[k] && subs[k].post.end() == x);
+            let starting = (0..subs.len()).any(|k| keep[k] && subs[k].post.start() == y);
+            if let (Some(k), true) = (ending, starting) {
+                let len = dist_hi(x, y);
+                out.push(BridgeConnector {
+                    piece: Piece::Bezier(Bezier::new(vec![x.clone(), y.clone()])),
+                    bound: (kept[k].unwrap_or(f64::INFINITY) + len) * (1.0 + 1e-12),
+                    keep: true,
+                });
+            }
+        }
+    }
+    out
+}
+
 /// Pinched loops and spurs: kept pieces that close a loop at an exact point X
 /// of the output, or dangle from one, each within a certified reach of the
 /// pieces that stay at X, are dropped (a boundary point near them is within
 /// `e + δ + reach` of the output).
-fn drop_pinched(run: &Run, subs: &[Sub], tally: &mut Tally, notes: &mut Vec<String>) {
+fn drop_pinched(
+    run: &Run,
+    subs: &[Sub],
+    tally: &mut Tally,
+    bridges: &mut [BridgeConnector],
+    notes: &mut Vec<String>,
+) {
     let kept_idx: Vec<usize> = (0..subs.len()).filter(|&k| tally.keep[k]).collect();
     // a spur may reach as far from the live pieces as keeps (b) within tol
     let spur_caps: Vec<f64> = kept_idx
@@ -434,13 +492,23 @@ fn drop_pinched(run: &Run, subs: &[Sub], tally: &mut Tally, notes: &mut Vec<Stri
                 run.tol
             }
         })
+        // a bridge connector stands for no point of ∂S either
+        .chain(bridges.iter().map(|_| run.tol))
         .collect();
     let dropped = pinched_loops(
-        &kept_idx.iter().map(|&k| &subs[k].post).collect::<Vec<_>>(),
+        &kept_idx
+            .iter()
+            .map(|&k| &subs[k].post)
+            .chain(bridges.iter().map(|b| &b.piece))
+            .collect::<Vec<_>>(),
         &spur_caps,
     );
     if !dropped.is_empty() {
         for &(d, reach) in &dropped {
+            if d >= kept_idx.len() {
+                bridges[d - kept_idx.len()].keep = false;
+                continue;
+            }
             let k = kept_idx[d];
             tally.keep[k] = false;
             let raw = &run.raws[subs[k].raw];

@@ -34,7 +34,11 @@
 //!    Bézier–arc crossing is split at the midpoint `s*` of an isolating interval
 //!    refined to `2⁻⁴⁰`, and `X` is a rational point exactly on the circle near
 //!    `B(s*)` (so the arc splits exactly at `X`). Each half moves by at most
-//!    `|B(s*) − X|` (enclosed), added to its bound.
+//!    `|B(s*) − X|` (enclosed), added to its bound. An arc–arc crossing
+//!    (irrational in general) splits each arc at its own rational point on
+//!    its circle, `TOL/1024` beside the crossing outside the other arc's
+//!    disk; kept halves ending there are joined by a short straight *bridge*
+//!    whose length is added to claim (a).
 //! 4. Every sub-piece is classified (see `proofs/trimming.md`):
 //!    **kept** when every point `q` of it has, within the claimed bound, a point
 //!    `w` proven outside `S` (`dist(w, x) > r`, exact Bernstein signs of

@@ -4,8 +4,8 @@ use super::add_note;
 use super::sides::{approx_dir, dist_hi, set_end, Raw};
 use super::types::{Piece, RawCrossing};
 use crate::curve::{Bezier, V2};
-use crate::scalar::{rational_from_f64, Rational, Scalar};
-use crate::stroke::circle::{arcs_meet, bezier_arc, snap, Arc};
+use crate::scalar::{rational_from_f64, Interval, Rational, Scalar};
+use crate::stroke::circle::{arc_meetings, bezier_arc, snap, Arc, Meetings};
 use crate::stroke::intersect::{intersections, Crossing, IntersectOptions};
 use num_traits::{One, Signed, Zero};
 use std::time::Instant;
@@ -164,14 +164,26 @@ pub(super) struct Crossings {
     pub(super) crossings: Vec<RawCrossing>,
     /// Nothing of the raw arrangement was left undecided.
     pub(super) complete: bool,
+    /// The split points of arc–arc crossings, one per arc (see
+    /// [`arc_arc_crossings`]).
+    pub(super) bridges: Vec<Bridge>,
+}
+
+/// The two split points of one arc–arc crossing: `ends[0]` on the first
+/// arc's circle, `ends[1]` on the second's, about `2μ` apart.
+#[derive(Clone, Debug)]
+pub(super) struct Bridge {
+    pub(super) ends: [V2<Rational>; 2],
 }
 
 /// The certified crossings of the raw pieces and the split points they give
 /// (see the split convention in the module docs): Bézier pairs, then Bézier–arc
-/// pairs; arc–arc pairs that may meet are only noted (not split).
+/// pairs, then arc–arc pairs (split `bridge_mu` from the crossing, see
+/// [`arc_arc_crossings`]).
 pub(super) fn find_crossings(
     raws: &[Raw],
     iopts: &IntersectOptions,
+    bridge_mu: f64,
     notes: &mut Vec<String>,
     t0: Instant,
 ) -> Crossings {
@@ -185,6 +197,7 @@ pub(super) fn find_crossings(
         splits: vec![Vec::new(); raws.len()],
         crossings: Vec::new(),
         complete: true,
+        bridges: Vec::new(),
     };
     bezier_crossings(raws, &bez_idx, iopts, notes, &mut found, t0);
     for &ai in &arc_idx {
@@ -198,7 +211,7 @@ pub(super) fn find_crossings(
             bezier_arc_crossings((bi, b), (ai, arc), notes, &mut found);
         }
     }
-    arc_arc_meetings(raws, &arc_idx, notes, &mut found);
+    arc_arc_crossings(raws, &arc_idx, bridge_mu, notes, &mut found);
     log::debug!("arcs: {:?}", t0.elapsed());
     found
 }
@@ -395,11 +408,21 @@ fn bezier_arc_crossings(
     }
 }
 
-/// Arc–arc: a crossing cannot be split exactly, so any pair of raw arcs that
-/// may meet (besides a shared end point) leaves the search incomplete.
-fn arc_arc_meetings(
+/// Arc–arc crossings. Two different circles meet at irrational points in
+/// general, so no exact point is shared: each arc is split at its own
+/// rational point exactly on its circle, `μ` (arc length) from the enclosed
+/// crossing on the side **outside the other arc's disk** (the disk of a cap
+/// or join arc about an input point lies in `S`, so the part of an arc inside
+/// it is never boundary; this choice only decides which half can be kept, it
+/// is not used by any proof). The two split points are recorded as a
+/// [`Bridge`]: where the kept halves end at them, a straight connector joins
+/// them in the output, charged to (a) by its length. Pairs that may meet but
+/// cannot be split (same circle, an undecided range test, a crossing too near
+/// an arc end) leave the search incomplete with a note.
+fn arc_arc_crossings(
     raws: &[Raw],
     arc_idx: &[usize],
+    mu: f64,
     notes: &mut Vec<String>,
     found: &mut Crossings,
 ) {
@@ -411,13 +434,74 @@ fn arc_arc_meetings(
             let shared = [&a.from, &a.to]
                 .into_iter()
                 .find(|p| **p == b.from || **p == b.to);
-            if arcs_meet(a, b, shared) != Some(false) {
-                found.complete = false;
-                add_note(
-                    notes,
-                    format!("raw arcs {ai} and {aj} may meet (arc–arc crossings are not split)"),
-                );
+            let points = match arc_meetings(a, b, shared) {
+                Some(Meetings::Apart) => continue,
+                Some(Meetings::Points(ps)) if ps.len() == 1 || disjoint(&ps[0], &ps[1]) => ps,
+                _ => {
+                    found.complete = false;
+                    add_note(
+                        notes,
+                        format!("raw arcs {ai} and {aj} may meet (not split)"),
+                    );
+                    continue;
+                }
+            };
+            for p in points {
+                match (
+                    split_point_outside(a, b, &p, mu),
+                    split_point_outside(b, a, &p, mu),
+                ) {
+                    (Some(xa), Some(xb)) => {
+                        found.splits[ai].push(Split {
+                            param: <Rational as Zero>::zero(),
+                            point: xa.clone(),
+                        });
+                        found.splits[aj].push(Split {
+                            param: <Rational as Zero>::zero(),
+                            point: xb.clone(),
+                        });
+                        found.crossings.push(RawCrossing {
+                            pieces: (ai, aj),
+                            s: (0.0, 0.0),
+                            t: (0.0, 0.0),
+                        });
+                        found.bridges.push(Bridge { ends: [xa, xb] });
+                    }
+                    _ => {
+                        found.complete = false;
+                        add_note(
+                            notes,
+                            format!(
+                                "raw arcs {ai} and {aj}: crossing too near an arc end (not split)"
+                            ),
+                        );
+                    }
+                }
             }
         }
     }
+}
+
+fn disjoint(p: &V2<Interval>, q: &V2<Interval>) -> bool {
+    p.x.disjoint(q.x) || p.y.disjoint(q.y)
+}
+
+/// A rational point exactly on `a`'s circle, strictly inside its range,
+/// about `mu` (arc length) from the enclosed crossing `p` with `b`, and
+/// strictly outside `b`'s disk (exact test); `None` when neither side works.
+fn split_point_outside(a: &Arc, b: &Arc, p: &V2<Interval>, mu: f64) -> Option<V2<Rational>> {
+    let r = a.radius.approx();
+    let (px, py) = (
+        p.x.mid() - a.center.x.approx(),
+        p.y.mid() - a.center.y.approx(),
+    );
+    let th = py.atan2(px);
+    let dth = mu / r;
+    let rb2 = &b.radius * &b.radius;
+    [th + dth, th - dth].into_iter().find_map(|t| {
+        let x = snap(&a.center, &a.radius, (t.cos(), t.sin()))?;
+        let inside_range = a.contains_dir(&x.sub(&a.center)) == Some(true);
+        let outside_b = x.sub(&b.center).norm2() > rb2;
+        (inside_range && outside_b && x != a.from && x != a.to).then_some(x)
+    })
 }
