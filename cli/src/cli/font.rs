@@ -511,7 +511,8 @@ fn prove(src: &Source, job: &Job, g: &mut GlyphResult) {
     let (contours, arc_bound) = to_beziers(kept, job.quadratic, arc_target, &mut reasons);
     let (rounded, move2) = round_contours(&contours, &job.grid, &mut reasons);
     let delta = sqrt_up(&move2);
-    let bound = stroke_bound + arc_bound + delta;
+    // rounded up: the sum of three proven bounds
+    let bound = ((stroke_bound + arc_bound).next_up() + delta).next_up();
     g.bound = bound;
     // (a NaN bound is not proven either)
     if bound.is_nan() || bound > job.tol {

@@ -280,7 +280,8 @@ fn classify(run: &Run, subs: &[Sub]) -> Classes {
 fn kept_bound(run: &Run, onside_input: Option<&Input>, s: &Sub, est: f64) -> Option<f64> {
     let tol = run.tol;
     let raw = &run.raws[s.raw];
-    let e_in = raw.e_in + s.delta;
+    // f64 sums of bounds are rounded up (`next_up` of the rounded sum)
+    let e_in = (raw.e_in + s.delta).next_up();
     if raw.kind == Kind::Butt {
         return Some(e_in);
     }
@@ -294,7 +295,7 @@ fn kept_bound(run: &Run, onside_input: Option<&Input>, s: &Sub, est: f64) -> Opt
         let budget = tol - e_in;
         if budget > 0.0 {
             if let Some(l) = input.prove_arc(arc, budget, 2048) {
-                return Some(e_in + l);
+                return Some((e_in + l).next_up());
             }
         }
         log::trace!("onside failed: raw {} (arc)", s.raw);
@@ -306,7 +307,7 @@ fn kept_bound(run: &Run, onside_input: Option<&Input>, s: &Sub, est: f64) -> Opt
         if budget > 0.0 {
             if let Some((t0, t1)) = link.exact_range(range.0 - pad, range.1 + pad) {
                 if let Some(l) = input.prove_interval(link.piece, &link.d, t0, t1, budget, 2048) {
-                    return Some(e_in + l);
+                    return Some((e_in + l).next_up());
                 }
                 log::trace!(
                     "onside failed: raw {} piece {} t [{t0}, {t1}]",
@@ -387,7 +388,7 @@ fn tally(run: &Run, subs: &[Sub], classes: &Classes, notes: &mut Vec<String>) ->
             t.keep[k] = true;
             t.a_bound = t.a_bound.max(bd);
             if raw.kind == Kind::Boundary {
-                t.b_bound = t.b_bound.max(raw.e + s.delta);
+                t.b_bound = t.b_bound.max((raw.e + s.delta).next_up());
             }
         } else if raw.kind == Kind::Connector {
             t.classified.dropped_connectors += 1;
@@ -513,7 +514,9 @@ fn drop_pinched(
             tally.keep[k] = false;
             let raw = &run.raws[subs[k].raw];
             if raw.kind == Kind::Boundary {
-                tally.b_bound = tally.b_bound.max(raw.e + subs[k].delta + reach);
+                tally.b_bound = tally
+                    .b_bound
+                    .max(((raw.e + subs[k].delta).next_up() + reach).next_up());
             }
         }
         add_note(
