@@ -324,6 +324,30 @@ fn circle_bernstein(b: &Bezier<Rational>, c: &V2<Rational>, r: &Rational) -> Vec
         .collect()
 }
 
+/// Whether the part `[lo, hi]` of the piece lies in the arc's range of
+/// directions from `c`, decided on the box of its restricted control points
+/// (`None`: undecided, or a box that is not finite).
+fn part_in_range(
+    b: &Bezier<Interval>,
+    c: &V2<Interval>,
+    arc: &Arc,
+    (lo, hi): (f64, f64),
+) -> Option<bool> {
+    let iv = |x: f64| Interval::try_from((x, x)).ok();
+    let part = b.restrict(&iv(lo)?, &iv(hi)?);
+    let pts = part.points();
+    let hull = |f: &dyn Fn(&V2<Interval>) -> Interval| {
+        let (mut a, mut z) = (f64::INFINITY, f64::NEG_INFINITY);
+        for p in pts {
+            a = a.min(f(p).inf());
+            z = z.max(f(p).sup());
+        }
+        Interval::try_from((a, z)).ok()
+    };
+    let (x, y) = (hull(&|p| p.x)?, hull(&|p| p.y)?);
+    arc.contains_dir(&V2::new(x - c.x, y - c.y))
+}
+
 /// Every root on `[lo, hi]` of the polynomial with interval Bernstein
 /// coefficients `g` (on that range) is at a point of `B` outside the arc's
 /// range, or there is none: `g` of one strict sign on every part of a
@@ -340,23 +364,8 @@ fn no_hit(
     if g.iter().all(|v| v.inf() > 0.0) || g.iter().all(|v| v.sup() < 0.0) {
         return true;
     }
-    if hi - lo <= 1.0 / 64.0 {
-        let iv = |x: f64| Interval::try_from((x, x)).expect("finite");
-        let part = b.restrict(&iv(lo), &iv(hi));
-        let pts = part.points();
-        let hull = |f: &dyn Fn(&V2<Interval>) -> Interval| {
-            let (mut a, mut z) = (f64::INFINITY, f64::NEG_INFINITY);
-            for p in pts {
-                a = a.min(f(p).inf());
-                z = z.max(f(p).sup());
-            }
-            Interval::try_from((a, z)).ok()
-        };
-        if let (Some(x), Some(y)) = (hull(&|p| p.x), hull(&|p| p.y)) {
-            if arc.contains_dir(&V2::new(x - c.x, y - c.y)) == Some(false) {
-                return true;
-            }
-        }
+    if hi - lo <= 1.0 / 64.0 && part_in_range(b, c, arc, (lo, hi)) == Some(false) {
+        return true;
     }
     // parts at a piece end go deeper: a second root a few ulps from a
     // (nearly tangential) joint sits just outside the arc, and only a tiny
@@ -403,21 +412,7 @@ fn simple_hits(
     if sg != 0 && g.iter().all(|v| strict(v) == sg) {
         return Some(Vec::new());
     }
-    let box_dir = |lo: f64, hi: f64| -> Option<bool> {
-        let iv = |x: f64| Interval::try_from((x, x)).expect("finite");
-        let part = b.restrict(&iv(lo), &iv(hi));
-        let pts = part.points();
-        let hull = |f: &dyn Fn(&V2<Interval>) -> Interval| {
-            let (mut a, mut z) = (f64::INFINITY, f64::NEG_INFINITY);
-            for p in pts {
-                a = a.min(f(p).inf());
-                z = z.max(f(p).sup());
-            }
-            Interval::try_from((a, z)).ok()
-        };
-        let (x, y) = (hull(&|p| p.x)?, hull(&|p| p.y)?);
-        arc.contains_dir(&V2::new(x - c.x, y - c.y))
-    };
+    let box_dir = |lo: f64, hi: f64| part_in_range(b, c, arc, (lo, hi));
     if box_dir(lo, hi) == Some(false) {
         return Some(Vec::new());
     }
