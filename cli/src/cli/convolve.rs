@@ -23,7 +23,7 @@
 use super::args::{bad, number, offset_err, q};
 use super::modes::{Accept, Method, Output, Side, Subdivision};
 use super::pen::ellipse_pen;
-use super::{print_out, CliError};
+use super::{print_report, CliError};
 use lncert::curve::{Bezier, V2};
 use lncert::offset::{
     convolve, union_certificate, union_certificate_all, OffsetOptions, OffsetResult,
@@ -199,14 +199,7 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
         judge,
         within_all,
     };
-    if a.json {
-        print_out(&format!(
-            "{}\n",
-            serde_json::to_string_pretty(&report.json()).unwrap_or_default()
-        ));
-    } else {
-        print_out(&report.text());
-    }
+    print_report(a.json, || report.json(), || report.text());
     Ok(if within_all {
         super::EXIT_OK
     } else {

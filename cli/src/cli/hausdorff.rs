@@ -23,7 +23,7 @@
 
 use super::args::{bad, number};
 use super::curve_input::MAX_FILE_BYTES;
-use super::{print_out, CliError, EXIT_OK, EXIT_REFUTED, EXIT_UNDECIDED};
+use super::{print_report, CliError, EXIT_OK, EXIT_REFUTED, EXIT_UNDECIDED};
 use lncert::certify::{hausdorff, Certificate, Config, HausdorffBounds, OneSided};
 use lncert::scalar::interval_from_rational;
 use lncert::shape::{InputApprox, ShapeDesc};
@@ -130,14 +130,7 @@ pub fn run(a: &HausdorffArgs) -> Result<i32, CliError> {
         cert_note: &cert_note,
         seconds: elapsed.as_secs_f64(),
     };
-    if a.json {
-        print_out(&format!(
-            "{}\n",
-            serde_json::to_string_pretty(&report.json()).unwrap_or_default()
-        ));
-    } else {
-        print_out(&report.text());
-    }
+    print_report(a.json, || report.json(), || report.text());
     Ok(match verdict {
         Some("certified") => EXIT_OK,
         Some("refuted") => EXIT_REFUTED,

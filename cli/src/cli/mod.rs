@@ -153,6 +153,23 @@ pub fn print_out(text: &str) {
     let _ = out.write_all(text.as_bytes()).and_then(|_| out.flush());
 }
 
+/// Prints a command's report: the JSON document (pretty) with `--json`,
+/// else the text.
+pub(crate) fn print_report(
+    json: bool,
+    doc: impl FnOnce() -> serde_json::Value,
+    text: impl FnOnce() -> String,
+) {
+    if json {
+        print_out(&format!(
+            "{}\n",
+            serde_json::to_string_pretty(&doc()).unwrap_or_default()
+        ));
+    } else {
+        print_out(&text());
+    }
+}
+
 /// A command line that clap rejects (an unknown flag, a value that is not
 /// one of a flag's names, a number out of its type): clap's message on
 /// stderr and exit code [`EXIT_BAD_INPUT`] as for every bad input — with

@@ -6,7 +6,7 @@
 
 use super::args::offset_err;
 use super::args::{bad, q};
-use super::{print_out, CliError};
+use super::{print_report, CliError};
 use lncert::curve::Bezier;
 use lncert::offset::OffsetOptions;
 use lncert::offset::{offset_on_grid, GridOffset, Target};
@@ -84,14 +84,7 @@ pub fn run(
         secs,
         cert_note: &cert_note,
     };
-    if a.json {
-        print_out(&format!(
-            "{}\n",
-            serde_json::to_string_pretty(&report.json()).unwrap_or_default()
-        ));
-    } else {
-        print_out(&report.text());
-    }
+    print_report(a.json, || report.json(), || report.text());
     Ok(if r.reached() {
         super::EXIT_OK
     } else {
