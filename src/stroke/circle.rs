@@ -235,6 +235,86 @@ impl Arc {
     }
 }
 
+/// A sub-arc of an exact arc enclosed by intervals: the circle `(c, r)` and
+/// boxes `a`, `b` holding the unit directions of its counter-clockwise start
+/// and end, with `a·b > 0` and `a × b > 0` for every pair of points of the
+/// boxes (a minor arc below a quarter turn). Splitting one needs no exact
+/// point: the true middle direction `(a + b)/|a + b|` lies in the interval
+/// evaluation of that formula, so the two halves cover the sub-arc.
+#[derive(Clone, Debug)]
+pub(crate) struct ArcBox {
+    c: V2<Interval>,
+    r: Interval,
+    a: V2<Interval>,
+    b: V2<Interval>,
+    /// Travelled from `b` to `a` (as the exact arc it came from).
+    clockwise: bool,
+}
+
+impl ArcBox {
+    /// The enclosure of an exact arc below a quarter turn (`None` if that is
+    /// not proven on the boxes).
+    pub(crate) fn new(arc: &Arc) -> Option<ArcBox> {
+        let (u, v) = arc.ccw_dirs();
+        let r = interval_from_rational(&arc.radius);
+        let unit = |d: &V2<Rational>| {
+            V2::new(
+                interval_from_rational(&d.x) / r,
+                interval_from_rational(&d.y) / r,
+            )
+        };
+        let c = V2::new(
+            interval_from_rational(&arc.center.x),
+            interval_from_rational(&arc.center.y),
+        );
+        ArcBox {
+            c,
+            r,
+            a: unit(&u),
+            b: unit(&v),
+            clockwise: arc.clockwise,
+        }
+        .checked()
+    }
+    fn checked(self) -> Option<ArcBox> {
+        let (a, b) = (&self.a, &self.b);
+        let cross = a.x * b.y - a.y * b.x;
+        let dot = a.x * b.x + a.y * b.y;
+        (cross.inf() > 0.0 && dot.inf() > 0.0 && self.r.inf() > 0.0).then_some(self)
+    }
+    /// The two halves at the (enclosed) middle direction, in the order of
+    /// travel.
+    pub(crate) fn halves(&self) -> Option<(ArcBox, ArcBox)> {
+        let s = V2::new(self.a.x + self.b.x, self.a.y + self.b.y);
+        let n = (s.x * s.x + s.y * s.y).sqrt();
+        if !(n.inf() > 0.0) {
+            return None;
+        }
+        let m = V2::new(s.x / n, s.y / n);
+        let l = ArcBox {
+            b: m.clone(),
+            ..self.clone()
+        }
+        .checked()?;
+        let r = ArcBox {
+            a: m,
+            ..self.clone()
+        }
+        .checked()?;
+        Some(if self.clockwise { (r, l) } else { (l, r) })
+    }
+    /// Boxes holding the start, the apex (where the end tangents meet:
+    /// `c + r (a + b)/(1 + a·b)`) and the end of every sub-arc enclosed: the
+    /// sub-arc lies in the triangle of those three points.
+    pub(crate) fn hull(&self) -> [V2<Interval>; 3] {
+        let (a, b, c, r) = (&self.a, &self.b, &self.c, self.r);
+        let k = r
+            / (Interval::try_from((1.0, 1.0)).unwrap_or(Interval::ENTIRE) + a.x * b.x + a.y * b.y);
+        let at = |d: &V2<Interval>, k: Interval| V2::new(c.x + k * d.x, c.y + k * d.y);
+        [at(a, r), at(&V2::new(a.x + b.x, a.y + b.y), k), at(b, r)]
+    }
+}
+
 /// The angle of a minor arc below a right angle (`a·b > 0`), enclosed:
 /// `2 atan(t)`, `t = cross(a, b)/(r² + a·b) ∈ (0, 1)`, by the alternating
 /// Taylor series of `atan` (partial sums bracket it for `0 ≤ t ≤ 1`).
@@ -754,6 +834,83 @@ mod tests {
     use super::*;
     use crate::test_util::qi as q;
     use proptest::prelude::*;
+
+    fn in_box(b: &[V2<Interval>; 3], p: &V2<Rational>) -> bool {
+        let inside = |x: &Rational, f: fn(&V2<Interval>) -> Interval| {
+            let lo = b.iter().map(|v| f(v).inf()).fold(f64::INFINITY, f64::min);
+            let hi = b
+                .iter()
+                .map(|v| f(v).sup())
+                .fold(f64::NEG_INFINITY, f64::max);
+            let xi = interval_from_rational(x);
+            lo <= xi.inf() && xi.sup() <= hi
+        };
+        inside(&p.x, |v| v.x) && inside(&p.y, |v| v.y)
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(256))]
+        /// [`ArcBox`] halving against exact points of the arc: the leaves,
+        /// in the order [`ArcBox::halves`] gives them, start at the arc's
+        /// start, end at its end, touch one another in turn, and every exact
+        /// point of the arc (a rational point of the circle whose direction
+        /// is proven in range by [`Arc::contains_dir`]) is in some leaf's box.
+        #[test]
+        fn arc_boxes_cover_the_arc_in_travel_order(
+            (cx, cy, rr) in (-4i64..4, -4i64..4, 1i64..8),
+            (u0, u1) in (-31i64..31, -31i64..31),
+            clockwise in any::<bool>(),
+            depth in 0usize..4,
+        ) {
+            let c = V2::new(q(cx, 3), q(cy, 3));
+            let r = q(rr, 3);
+            let dir = |u: f64| (u.cos(), u.sin());
+            let at = |u: i64| snap(&c, &r, dir(u as f64 * 0.2));
+            let (Some(from), Some(to)) = (at(u0), at(u1)) else { return Ok(()) };
+            prop_assume!(from != to);
+            let arc = Arc { center: c.clone(), radius: r.clone(), from, to, clockwise };
+            let Some(parts) = arc.minor_parts() else { return Ok(()) };
+            let mut leaves: Vec<ArcBox> = Vec::new();
+            for p in &parts {
+                let mut level = vec![ArcBox::new(p).expect("a minor part below a quarter turn")];
+                for _ in 0..depth {
+                    level = level
+                        .iter()
+                        .flat_map(|b| {
+                            let (l, r) = b.halves().expect("halves of a small arc");
+                            [l, r]
+                        })
+                        .collect();
+                }
+                leaves.extend(level);
+            }
+            let hulls: Vec<[V2<Interval>; 3]> = leaves.iter().map(ArcBox::hull).collect();
+            prop_assert!(in_box(&hulls[0], &arc.from));
+            prop_assert!(in_box(&hulls[hulls.len() - 1], &arc.to));
+            let meets = |a: &[V2<Interval>; 3], b: &[V2<Interval>; 3]| {
+                let span = |h: &[V2<Interval>; 3], f: fn(&V2<Interval>) -> Interval| {
+                    (
+                        h.iter().map(|v| f(v).inf()).fold(f64::INFINITY, f64::min),
+                        h.iter().map(|v| f(v).sup()).fold(f64::NEG_INFINITY, f64::max),
+                    )
+                };
+                let ov = |f: fn(&V2<Interval>) -> Interval| {
+                    let ((a0, a1), (b0, b1)) = (span(a, f), span(b, f));
+                    a0 <= b1 && b0 <= a1
+                };
+                ov(|v| v.x) && ov(|v| v.y)
+            };
+            for w in hulls.windows(2) {
+                prop_assert!(meets(&w[0], &w[1]));
+            }
+            for k in 0..64 {
+                let Some(p) = snap(&c, &r, dir(k as f64 * 0.0982)) else { continue };
+                if arc.contains_dir(&p.sub(&c)) == Some(true) {
+                    prop_assert!(hulls.iter().any(|h| in_box(h, &p)), "point {:?} not covered", p);
+                }
+            }
+        }
+    }
 
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(256))]

@@ -37,7 +37,7 @@
 //!
 //! See `proofs/trimming.md`, "Kept by exact ∂S intervals".
 
-use super::circle::Arc;
+use super::circle::{Arc, ArcBox};
 use crate::curve::{Bezier, V2};
 use crate::scalar::{interval_from_rational, Interval, Rational};
 use num_traits::{Signed, Zero};
@@ -680,7 +680,11 @@ impl Input {
         if !(ri.inf() <= self.r.sup() && self.r.inf() <= ri.sup()) {
             return None;
         }
-        let mut parts = arc.minor_parts()?;
+        let mut parts = arc
+            .minor_parts()?
+            .iter()
+            .map(ArcBox::new)
+            .collect::<Option<Vec<_>>>()?;
         parts.reverse();
         let mut leaves: Vec<(bool, f64)> = Vec::new();
         let mut nodes = 0;
@@ -689,11 +693,7 @@ impl Input {
             if nodes > max_nodes {
                 return None;
             }
-            let h = a.hull()?;
-            let hv: Vec<IV> = h
-                .iter()
-                .map(|p| V2::new(interval_from_rational(&p.x), interval_from_rational(&p.y)))
-                .collect();
+            let hv = a.hull();
             let e = V2::new(hull(hv.iter().map(|p| p.x)), hull(hv.iter().map(|p| p.y)));
             let side = |p: &IV, q: &IV| {
                 let d = V2::new(q.x - p.x, q.y - p.y);
@@ -707,9 +707,8 @@ impl Input {
                 leaves.push((true, len));
                 continue;
             }
-            match a.midpoint() {
-                Some(m) if len > floor => {
-                    let (l, r) = a.split_at(&m);
+            match a.halves() {
+                Some((l, r)) if len > floor => {
                     parts.push(r);
                     parts.push(l);
                 }
