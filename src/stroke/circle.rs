@@ -287,7 +287,7 @@ impl ArcBox {
     pub(crate) fn halves(&self) -> Option<(ArcBox, ArcBox)> {
         let s = V2::new(self.a.x + self.b.x, self.a.y + self.b.y);
         let n = (s.x * s.x + s.y * s.y).sqrt();
-        if !(n.inf() > 0.0) {
+        if n.inf().partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
             return None;
         }
         let m = V2::new(s.x / n, s.y / n);
