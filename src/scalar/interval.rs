@@ -169,6 +169,61 @@ pub fn sin_cos_enclosure(x: Interval) -> (Interval, Interval) {
     (s.intersection(unit), c.intersection(unit))
 }
 
+/// A rigorous enclosure of `atan x` for every `x` in the interval (any
+/// finite or half-infinite interval; the empty interval gives the empty one).
+///
+/// Arguments beyond ±1 use `atan x = ±π/2 − atan(1/x)`. Three argument
+/// halvings `atan x = 2 atan(x/(1 + √(1 + x²)))` then bring every argument
+/// into `|z| ≤ tan(π/32) < 0.1`, where the alternating series
+/// `z − z³/3 + …` with 12 terms leaves a tail below its next term,
+/// `0.1²⁷/27 < 10⁻²⁸`; each step is evaluated with outward rounding.
+///
+/// # Examples
+/// ```
+/// use lncert::scalar::{atan_enclosure, Interval};
+/// let one = Interval::try_from((1.0, 1.0)).unwrap();
+/// let a = atan_enclosure(one);
+/// assert!(a.contains(std::f64::consts::FRAC_PI_4));
+/// assert!(a.wid() < 1e-14);
+/// ```
+pub fn atan_enclosure(x: Interval) -> Interval {
+    if x.is_empty() {
+        return x;
+    }
+    let half_pi = Interval::PI / Interval::try_from((2.0, 2.0)).unwrap();
+    // beyond ±1: atan x = ±π/2 − atan(1/x), which keeps huge arguments tight
+    let a = if x.inf() > 1.0 {
+        half_pi - atan_reduced(x.recip())
+    } else if x.sup() < -1.0 {
+        -half_pi - atan_reduced(x.recip())
+    } else {
+        atan_reduced(x)
+    };
+    // atan is odd and below π/2 in magnitude
+    a.intersection(Interval::try_from((-half_pi.sup(), half_pi.sup())).unwrap())
+}
+
+/// `atan` by three argument halvings and 12 terms of the series.
+fn atan_reduced(x: Interval) -> Interval {
+    let one = Interval::try_from((1.0, 1.0)).unwrap();
+    let mut z = x;
+    for _ in 0..3 {
+        z = z / (one + (one + z.sqr()).sqrt());
+    }
+    let z2 = z.sqr();
+    let mut term = z;
+    let mut sum = z;
+    let mut n = 1.0;
+    for _ in 0..12 {
+        term = -(term * z2);
+        n += 2.0;
+        sum += term / Interval::try_from((n, n)).unwrap();
+    }
+    let next = (term * z2 / Interval::try_from((n + 2.0, n + 2.0)).unwrap()).mag();
+    let rem = Interval::try_from((-next, next)).unwrap_or(Interval::ENTIRE);
+    Interval::try_from((8.0, 8.0)).unwrap() * (sum + rem)
+}
+
 /// Taylor polynomial of degree 2N+1 plus remainder, valid for |r| <= 1.
 fn sin_taylor(r: Interval) -> Interval {
     taylor(r, 1)
@@ -210,6 +265,32 @@ mod tests {
             let x = interval_from_rational(&r);
             assert!(x.contains_rational(&r), "{s}");
         }
+    }
+
+    #[test]
+    fn atan_encloses_std_and_is_tight() {
+        let mut xs: Vec<f64> = (-60..=60).map(|i| i as f64 * 0.173).collect();
+        xs.extend([1e-300, -1e-9, 1.0, -1.0, 1e6, -3e12, 1e300]);
+        for x in xs {
+            let a = atan_enclosure(Interval::point(x).unwrap());
+            // f64 atan is within an ulp or two of the truth
+            let t = x.atan();
+            assert!(
+                a.inf() <= t.next_up() && t.next_down() <= a.sup(),
+                "atan {x}: {a:?}"
+            );
+            assert!(a.wid() < 1e-14, "atan {x}: {a:?}");
+        }
+        // exact values: atan 1 = π/4, atan √3 = π/3 (√3 enclosed)
+        let pi = Interval::PI;
+        let four = Interval::point(4.0).unwrap();
+        let one = atan_enclosure(Interval::point(1.0).unwrap());
+        assert!(!(pi / four).disjoint(one));
+        let r3 = Interval::point(3.0).unwrap().sqrt();
+        assert!(!(pi / Interval::point(3.0).unwrap()).disjoint(atan_enclosure(r3)));
+        // a wide argument: every value inside
+        let w = atan_enclosure(Interval::try_from((-2.0, 0.5)).unwrap());
+        assert!(w.contains((-2f64).atan()) && w.contains(0.5f64.atan()) && w.contains(0.0));
     }
 
     #[test]

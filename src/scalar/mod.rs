@@ -24,7 +24,8 @@ mod surd;
 pub use ferr::FloatErr;
 pub use filter::{filter_stats, filtered, reset_filter_stats, Decision, FilterStats, Predicate};
 pub use interval::{
-    interval_from_rational, interval_to_json, sin_cos_enclosure, Interval, IntervalExt,
+    atan_enclosure, interval_from_rational, interval_to_json, sin_cos_enclosure, Interval,
+    IntervalExt,
 };
 pub use rational::{
     abs_le_pow10, parse_rational, rational_from_f64, rational_to_string, ParseNumberError, Rational,

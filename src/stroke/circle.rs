@@ -10,7 +10,9 @@
 
 use crate::curve::{bernstein_product, Bezier, V2};
 use crate::poly::{isolate_roots, refine_root, Poly, Span};
-use crate::scalar::{interval_from_rational, rational_from_f64, Interval, Rational, Scalar};
+use crate::scalar::{
+    atan_enclosure, interval_from_rational, rational_from_f64, Interval, Rational, Scalar,
+};
 use num_traits::{One, Signed, Zero};
 
 /// A circular arc with exact end points on its circle.
@@ -210,10 +212,7 @@ impl Arc {
     /// `½∫(x dy − y dx)` along the arc, enclosed: `½ cross(c, to − from) ± ½ r² Δφ`.
     pub fn area_term(&self) -> Option<Interval> {
         let poly = self.center.cross(&self.to.sub(&self.from)) * half();
-        let mut phi = Interval::try_from((0.0, 0.0)).ok()?;
-        for p in self.minor_parts()? {
-            phi += minor_angle(&p)?;
-        }
+        let phi = self.sweep();
         let r2 = interval_from_rational(&(&self.radius * &self.radius * half()));
         let sector = r2 * phi;
         let poly = interval_from_rational(&poly);
@@ -222,6 +221,34 @@ impl Arc {
         } else {
             poly + sector
         })
+    }
+    /// The angle the arc turns through, in `(0, 2π]` (a full turn when
+    /// `from == to`), enclosed: twice the half angle `h = atan2(s, k)`,
+    /// `s = a × b`, `k = r² + a·b` (`a`, `b` the counter-clockwise end
+    /// directions), whose branch the exact signs of `s` and `k` decide.
+    pub fn sweep(&self) -> Interval {
+        let (a, b) = self.ccw_dirs();
+        let s = a.cross(&b);
+        let k = &self.radius * &self.radius + a.dot(&b);
+        let pi = Interval::PI;
+        let two = Interval::try_from((2.0, 2.0)).expect("finite");
+        let h = if s.is_zero() {
+            // a full turn (a = b, k = 2r²) or a half turn (a = −b, k = 0)
+            if k.is_zero() {
+                pi / two
+            } else {
+                pi
+            }
+        } else {
+            // k ≥ 0 always, and k = 0 only at a half turn (s = 0)
+            let t = atan_enclosure(interval_from_rational(&s) / interval_from_rational(&k));
+            if s.is_positive() {
+                t
+            } else {
+                pi + t
+            }
+        };
+        two * h
     }
     /// As an `ArcDesc` (counter-clockwise directions) and the travel flag.
     pub fn desc(&self) -> crate::shape::ArcDesc {
@@ -313,35 +340,6 @@ impl ArcBox {
         let at = |d: &V2<Interval>, k: Interval| V2::new(c.x + k * d.x, c.y + k * d.y);
         [at(a, r), at(&V2::new(a.x + b.x, a.y + b.y), k), at(b, r)]
     }
-}
-
-/// The angle of a minor arc below a right angle (`a·b > 0`), enclosed:
-/// `2 atan(t)`, `t = cross(a, b)/(r² + a·b) ∈ (0, 1)`, by the alternating
-/// Taylor series of `atan` (partial sums bracket it for `0 ≤ t ≤ 1`).
-fn minor_angle(a: &Arc) -> Option<Interval> {
-    let (u, v) = a.ccw_dirs();
-    let t = u.cross(&v) / (&a.radius * &a.radius + u.dot(&v));
-    if !(t.is_positive() && t <= <Rational as One>::one()) {
-        return None;
-    }
-    let t2 = &t * &t;
-    let (mut lo, mut hi) = (<Rational as Zero>::zero(), <Rational as Zero>::zero());
-    let mut term = t.clone();
-    let mut s = <Rational as Zero>::zero();
-    for k in 0..12 {
-        let c = &term / Rational::from_integer((2 * k + 1).into());
-        if k % 2 == 0 {
-            s += c;
-            hi = s.clone();
-        } else {
-            s -= c;
-            lo = s.clone();
-        }
-        term = &term * &t2;
-    }
-    let two = Interval::try_from((2.0, 2.0)).ok()?;
-    let (l, h) = (interval_from_rational(&lo), interval_from_rational(&hi));
-    Some(two * Interval::try_from((l.inf(), h.sup())).ok()?)
 }
 
 /// One point where a Bézier piece meets the circle of an arc inside the arc's
@@ -846,6 +844,66 @@ mod tests {
             lo <= xi.inf() && xi.sup() <= hi
         };
         inside(&p.x, |v| v.x) && inside(&p.y, |v| v.y)
+    }
+
+    /// Oracle for [`Arc::sweep`]: the angle of a minor arc below a right angle (`a·b > 0`), enclosed:
+    /// `2 atan(t)`, `t = cross(a, b)/(r² + a·b) ∈ (0, 1)`, by the alternating
+    /// Taylor series of `atan` (partial sums bracket it for `0 ≤ t ≤ 1`).
+    fn minor_angle(a: &Arc) -> Option<Interval> {
+        let (u, v) = a.ccw_dirs();
+        let t = u.cross(&v) / (&a.radius * &a.radius + u.dot(&v));
+        if !(t.is_positive() && t <= <Rational as One>::one()) {
+            return None;
+        }
+        let t2 = &t * &t;
+        let (mut lo, mut hi) = (<Rational as Zero>::zero(), <Rational as Zero>::zero());
+        let mut term = t.clone();
+        let mut s = <Rational as Zero>::zero();
+        for k in 0..12 {
+            let c = &term / Rational::from_integer((2 * k + 1).into());
+            if k % 2 == 0 {
+                s += c;
+                hi = s.clone();
+            } else {
+                s -= c;
+                lo = s.clone();
+            }
+            term = &term * &t2;
+        }
+        let two = Interval::try_from((2.0, 2.0)).ok()?;
+        let (l, h) = (interval_from_rational(&lo), interval_from_rational(&hi));
+        Some(two * Interval::try_from((l.inf(), h.sup())).ok()?)
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(256))]
+        /// [`Arc::sweep`] (interval `atan`, one formula for any arc) against
+        /// an independent oracle: the sum over the exact minor parts of the
+        /// bracketing partial sums of the `atan` series in exact rationals.
+        /// The enclosures overlap and the sweep's is narrow.
+        #[test]
+        fn sweep_matches_the_rational_series(
+            (cx, cy, rr) in (-4i64..4, -4i64..4, 1i64..8),
+            (u0, u1) in (-31i64..31, -31i64..31),
+            clockwise in any::<bool>(),
+        ) {
+            let c = V2::new(q(cx, 3), q(cy, 3));
+            let r = q(rr, 3);
+            let at = |u: i64| snap(&c, &r, ((u as f64 * 0.2).cos(), (u as f64 * 0.2).sin()));
+            let (Some(from), Some(to)) = (at(u0), at(u1)) else { return Ok(()) };
+            let arc = Arc { center: c, radius: r, from, to, clockwise };
+            let Some(parts) = arc.minor_parts() else { return Ok(()) };
+            let mut oracle = Interval::try_from((0.0, 0.0)).unwrap();
+            for p in &parts {
+                oracle += minor_angle(p).expect("a minor part");
+            }
+            let sweep = arc.sweep();
+            prop_assert!(sweep.wid() < 1e-12, "{sweep:?}");
+            prop_assert!(
+                sweep.inf() <= oracle.sup() && oracle.inf() <= sweep.sup(),
+                "sweep {sweep:?}, oracle {oracle:?}"
+            );
+        }
     }
 
     proptest! {
