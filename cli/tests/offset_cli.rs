@@ -625,6 +625,112 @@ fn glyph_outlines_are_offset_and_certified() {
     assert!(String::from_utf8_lossy(&nf.stderr).contains("font"));
 }
 
+/// `offset --glyph` at 20 font units, unproven (`--no-certify`: the outline
+/// is what is compared), as JSON; exits 0.
+fn glyph_offset(font: &str, item: &str) -> Value {
+    let o = lncert(&[
+        "offset",
+        font,
+        "--glyph",
+        item,
+        "--distance",
+        "20",
+        "--tol",
+        "1",
+        "--no-certify",
+        "--json",
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{item:?}: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let doc = json_of(&o);
+    assert!(
+        !doc["pieces"].as_array().unwrap().is_empty(),
+        "{item:?}: no pieces"
+    );
+    doc
+}
+
+/// The geometry of an offset's JSON: its pieces and joins (not its timing).
+fn geometry(doc: &Value) -> (Value, Value) {
+    (doc["pieces"].clone(), doc["joins"].clone())
+}
+
+/// `--glyph` takes one item as `font --glyphs` reads it: a character, a code
+/// point (`uniXXXX`, `uXXXX` to `uXXXXXX`), `@name` or a bare glyph name; every
+/// way of naming a glyph gives the same offset, and different glyphs differ.
+#[test]
+fn glyph_items_by_character_code_point_and_name_give_one_offset() {
+    let Some(font) = dejavu() else { return };
+    let f = font.to_str().unwrap();
+    let a = geometry(&glyph_offset(f, "A"));
+    for item in ["uni0041", "u0041", "u000041", "@A"] {
+        assert_eq!(geometry(&glyph_offset(f, item)), a, "{item}");
+    }
+    let period = geometry(&glyph_offset(f, "period"));
+    for item in [".", "@period", "uni002E"] {
+        assert_eq!(geometry(&glyph_offset(f, item)), period, "{item}");
+    }
+    assert_ne!(period, a);
+    // names of glyphs that are not one ASCII character
+    let aacute = geometry(&glyph_offset(f, "Aacute"));
+    for item in ["\u{c1}", "uni00C1", "@Aacute"] {
+        assert_eq!(geometry(&glyph_offset(f, item)), aacute, "{item}");
+    }
+    assert_ne!(aacute, a);
+    // "@" alone is the character @, the glyph named "at"
+    assert_eq!(
+        geometry(&glyph_offset(f, "@")),
+        geometry(&glyph_offset(f, "at"))
+    );
+}
+
+/// Items that name no single glyph are bad input (exit 2) naming `--glyph`
+/// and the reason, in JSON and in text; never a panic.
+#[test]
+fn glyph_items_that_name_no_single_glyph_are_refused() {
+    let Some(font) = dejavu() else { return };
+    let f = font.to_str().unwrap();
+    for (item, why) in [
+        ("", "empty"),
+        ("A-Z", "a range"),
+        ("A,B", "not a comma list"),
+        ("@nosuchglyph", "no glyph named \"nosuchglyph\""),
+        ("nosuchglyph", "no glyph named \"nosuchglyph\""),
+        ("uD800", "not a Unicode scalar value"),
+        ("u110000", "not a Unicode scalar value"),
+        ("uni10FFFD", "no glyph for U+10FFFD"),
+        ("space", "has no outline"),
+    ] {
+        let args = [
+            "offset",
+            f,
+            "--glyph",
+            item,
+            "--distance",
+            "20",
+            "--tol",
+            "1",
+        ];
+        let o = lncert(&[&args[..], &["--json"]].concat());
+        assert_eq!(o.status.code(), Some(2), "{item:?}");
+        let doc = json_of(&o);
+        assert_eq!(doc["error"]["field"], "--glyph", "{item:?}");
+        let reason = doc["error"]["reason"].as_str().unwrap();
+        assert!(reason.contains(why), "{item:?}: {reason}");
+        let o = lncert(&args);
+        assert_eq!(o.status.code(), Some(2), "{item:?}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(
+            err.contains("--glyph") && err.contains(why),
+            "{item:?}: {err}"
+        );
+    }
+}
+
 /// A whole SVG document is a curve input: its paths, under their transforms.
 #[test]
 fn offset_reads_an_svg_document() {

@@ -306,6 +306,47 @@ fn cli_glyph_on_integer_font_units() {
     }
 }
 
+/// The grid path with a glyph named by code point and by name: the period of
+/// DejaVu Sans in em on integer font units, certified, the same cubics
+/// whichever way the glyph is named.
+#[test]
+fn cli_glyph_by_code_point_and_name_on_the_grid() {
+    let Some(font) = dejavu() else { return };
+    let f = font.to_str().unwrap();
+    let pieces = |item: &str| {
+        let out = lncert(&[
+            "offset",
+            f,
+            "--glyph",
+            item,
+            "--em",
+            "--distance",
+            "20/2048",
+            "--tol",
+            "1e-4",
+            "--output",
+            "cubic",
+            "--grid",
+            "1/2048",
+            "--json",
+        ]);
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{item:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(doc["verdict"], "certified", "{item:?}");
+        assert_eq!(doc["grid"]["grid"], "1/2048", "{item:?}");
+        doc["pieces"].clone()
+    };
+    let by_name = pieces("period");
+    assert!(!by_name.as_array().unwrap().is_empty());
+    assert_eq!(pieces("uni002E"), by_name);
+    assert_eq!(pieces("@period"), by_name);
+}
+
 #[test]
 fn cli_grid_refusals_name_the_flag() {
     let f = tmp("grid-smooth.txt", SMOOTH);

@@ -384,6 +384,63 @@ fn stroke_reads_glyphs_like_offset() {
     assert_eq!(json_of(&o)["error"]["field"], "--glyph");
 }
 
+/// `stroke --glyph` takes the items `offset --glyph` takes: the period by
+/// character, code point, `@name` and bare name gives one outline (two
+/// closed contours: the band around the dot's square), `I` another; an item
+/// naming no single glyph is bad input naming `--glyph`.
+#[test]
+fn stroke_glyph_items_by_code_point_and_name() {
+    let Some(font) = dejavu() else { return };
+    let f = font.to_str().unwrap();
+    let stroke = |item: &str| {
+        lncert(&[
+            "stroke",
+            f,
+            "--glyph",
+            item,
+            "--pen",
+            "circle:10",
+            "--tol",
+            "1",
+            "--json",
+        ])
+    };
+    let contours = |item: &str| {
+        let o = stroke(item);
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{item:?}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        let doc = json_of(&o);
+        assert_eq!(doc["outline"]["complete"], true, "{item:?}");
+        doc["outline"]["contours"].clone()
+    };
+    let period = contours("period");
+    assert_eq!(period.as_array().unwrap().len(), 2);
+    assert!(period.as_array().unwrap().iter().all(closed_exactly));
+    for item in [".", "uni002E", "u002E", "@period"] {
+        assert_eq!(contours(item), period, "{item}");
+    }
+    let i = contours("uni0049");
+    assert_eq!(contours("I"), i);
+    assert_ne!(i, period);
+    for (item, why) in [
+        ("A-Z", "a range"),
+        ("period,I", "not a comma list"),
+        ("@nosuchglyph", "no glyph named"),
+        ("u110000", "not a Unicode scalar value"),
+    ] {
+        let o = stroke(item);
+        assert_eq!(o.status.code(), Some(2), "{item:?}");
+        let doc = json_of(&o);
+        assert_eq!(doc["error"]["field"], "--glyph", "{item:?}");
+        let reason = doc["error"]["reason"].as_str().unwrap();
+        assert!(reason.contains(why), "{item:?}: {reason}");
+    }
+}
+
 // ---------------------------------------------------------------------------
 // 3. one arc form
 // ---------------------------------------------------------------------------

@@ -146,39 +146,23 @@ pub fn regularize(b: Bezier<Rational>) -> Vec<Bezier<Rational>> {
 ///
 /// Errors: the font cannot be read (`font`).
 pub fn units_per_em(data: &[u8]) -> Result<u16, CurveParseError> {
-    let face = ttf_parser::Face::parse(data, 0)
-        .map_err(|e| bad("font", format!("not a TrueType/OpenType font: {e}")))?;
-    Ok(face.units_per_em())
+    Ok(face(data)?.units_per_em())
 }
 
 /// The outline of the glyph of `ch` in the font `data` (face 0), in font
-/// units, as exact Bézier pieces, contour after contour.
+/// units, as exact Bézier pieces, contour after contour: the cmap's glyph
+/// read by [`glyph_outline_by_id`].
 ///
 /// Errors: the font cannot be read (`font`), it has no glyph for `ch` or the
 /// glyph has no outline (`glyph`).
 pub fn glyph_outline(data: &[u8], ch: char) -> Result<Vec<Bezier<Rational>>, CurveParseError> {
-    let face = ttf_parser::Face::parse(data, 0)
-        .map_err(|e| bad("font", format!("not a TrueType/OpenType font: {e}")))?;
-    let id = face
-        .glyph_index(ch)
+    let id = glyph_id_by_char(data, ch)?
         .ok_or_else(|| bad("glyph", format!("the font has no glyph for {ch:?}")))?;
-    let mut out = Outline {
-        pieces: Vec::new(),
-        start: None,
-        last: None,
-        error: None,
-    };
-    face.outline_glyph(id, &mut out)
-        .ok_or_else(|| bad("glyph", format!("the glyph for {ch:?} has no outline")))?;
-    if let Some(e) = out.error {
-        return Err(e);
+    let pieces = glyph_outline_by_id(data, id)?;
+    if pieces.is_empty() {
+        return Err(bad("glyph", format!("the glyph for {ch:?} has no outline")));
     }
-    if out.pieces.is_empty() {
-        return Err(CurveParseError::Empty {
-            what: format!("the glyph for {ch:?}"),
-        });
-    }
-    Ok(out.pieces)
+    Ok(pieces)
 }
 
 fn face(data: &[u8]) -> Result<ttf_parser::Face<'_>, CurveParseError> {

@@ -3,9 +3,13 @@
 //! `{"beziers": ...}`, `{"bspline": ...}`, SVG path data or an SVG document,
 //! with the report of what was approximated), an arc (`{"arc": {...}}`), a
 //! circle (`{"circle": {"center": [x, y], "radius": r}}`), or with `--glyph
-//! CHAR` a TrueType/OpenType font and the glyph's contours (`--em`: in em).
+//! ITEM` a TrueType/OpenType font and the contours of one glyph (`--em`: in
+//! em). `ITEM` names exactly one glyph: a character (`A`), a code point
+//! (`uni0041`, `u1F600`) or a glyph name (`@A`, or `Aacute`, `at`), read as
+//! `lncert font --glyphs` reads one item ([`super::glyph_item`]).
 
 use super::args::{bad, offset_err};
+use super::glyph_item::Resolver;
 use super::CliError;
 use lncert::curve::{Bezier, V2};
 use lncert::scalar::Rational;
@@ -83,13 +87,32 @@ pub fn read_text(path: &Path) -> Result<String, CliError> {
     read_text_limited("CURVE", path, MAX_FILE_BYTES)
 }
 
-/// The contours of the glyph of `ch` in the font file `path`, exactly as
-/// stored (font units, or em with `em`).
-pub fn read_glyph(path: &Path, ch: char, em: bool) -> Result<Vec<Bezier<Rational>>, CliError> {
+/// The contours of the glyph `item` names in the font file `path` (one
+/// character, `uniXXXX` / `uXXXX`, `@name` or a glyph name:
+/// [`super::glyph_item`]), exactly as stored (font units, or em with `em`).
+///
+/// Errors (`--glyph`): not a font, no such glyph, an item that is not one
+/// glyph (empty, a range, a comma list), a glyph without outline (a space).
+pub fn read_glyph(path: &Path, item: &str, em: bool) -> Result<Vec<Bezier<Rational>>, CliError> {
     let data = read_limited("CURVE", path, MAX_FONT_BYTES)?;
-    let mut outline = lncert::shape::glyph_outline(&data, ch).map_err(|e| bad("--glyph", e))?;
+    let font_err = |e: lncert::shape::CurveParseError| bad("--glyph", e);
+    let info = lncert::shape::font_info(&data).map_err(font_err)?;
+    let resolver = Resolver {
+        flag: "--glyph",
+        info: &info,
+        by_char: |ch| lncert::shape::glyph_id_by_char(&data, ch).map_err(font_err),
+    };
+    let id = resolver.one(item)?;
+    let mut outline = lncert::shape::glyph_outline_by_id(&data, id).map_err(font_err)?;
+    if outline.is_empty() {
+        let name = &info.glyphs[usize::from(id)].name;
+        return Err(bad(
+            "--glyph",
+            format!("{item:?}: the glyph {name:?} has no outline"),
+        ));
+    }
     if em {
-        let upem = lncert::shape::units_per_em(&data).map_err(|e| bad("--em", e))?;
+        let upem = info.units_per_em;
         if upem == 0 {
             return Err(bad("--em", "the font says 0 units per em"));
         }
@@ -99,15 +122,15 @@ pub fn read_glyph(path: &Path, ch: char, em: bool) -> Result<Vec<Bezier<Rational
     Ok(outline)
 }
 
-/// Reads `CURVE` (with `--glyph CHAR`: a font), as `offset` and `stroke` do.
+/// Reads `CURVE` (with `--glyph ITEM`: a font), as `offset` and `stroke` do.
 pub fn read_curve_input(
     path: &Path,
-    glyph: Option<char>,
+    glyph: Option<&str>,
     em: bool,
 ) -> Result<CurveInput, CliError> {
-    if let Some(ch) = glyph {
+    if let Some(item) = glyph {
         return Ok(CurveInput::Curve {
-            pieces: read_glyph(path, ch, em)?,
+            pieces: read_glyph(path, item, em)?,
             approx: InputApprox::default(),
             y_down: false,
         });

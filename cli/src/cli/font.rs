@@ -17,7 +17,8 @@
 //!   the selection is not proven.
 //! * `--glyphs SPEC`: a comma list of characters (`a`), ranges (`A-Z`),
 //!   code points (`uni0041`, `u1F600`) and names (`@period`, or `period`
-//!   when the item is not one character); default every glyph of the font
+//!   when the item is not one character), read as `offset --glyph` reads its
+//!   one item ([`super::glyph_item`]); default every glyph of the font
 //!   (glyphs without outline, such as the space, are written empty).
 //!   Composites are decomposed.
 //! * `--grid G` (default `1`: integer font units; a positive dyadic rational
@@ -54,6 +55,7 @@
 //! refused by the engine (still written, marked), 2 = bad input.
 
 use super::args::{bad, number};
+use super::glyph_item::Resolver;
 use super::modes::FontOutput;
 use super::CliError;
 use lncert::curve::{Bezier, V2};
@@ -200,32 +202,16 @@ fn parse_grid(text: &str) -> Result<Option<Rational>, CliError> {
     Ok(Some(g))
 }
 
-/// Resolves `--glyphs` to glyph ids, in the order given, without repeats.
+/// Resolves `--glyphs` to glyph ids, in the order given, without repeats
+/// (each item as [`super::glyph_item`] reads it).
 fn select(spec: Option<&str>, info: &FontInfo, src: &Source) -> Result<Vec<u16>, CliError> {
     let Some(spec) = spec else {
         return Ok(info.glyphs.iter().map(|g| g.id).collect());
     };
-    let by_cp = |cp: u32, item: &str| -> Result<u16, CliError> {
-        let ch = char::from_u32(cp)
-            .ok_or_else(|| bad("--glyphs", format!("{item:?}: not a Unicode scalar value")))?;
-        src.id_by_char(ch)?.ok_or_else(|| {
-            bad(
-                "--glyphs",
-                format!("{item:?}: the font has no glyph for U+{cp:04X}"),
-            )
-        })
-    };
-    let by_name = |name: &str, item: &str| -> Result<u16, CliError> {
-        info.glyphs
-            .iter()
-            .find(|g| g.name == name)
-            .map(|g| g.id)
-            .ok_or_else(|| {
-                bad(
-                    "--glyphs",
-                    format!("{item:?}: the font has no glyph named {name:?}"),
-                )
-            })
+    let resolver = Resolver {
+        flag: "--glyphs",
+        info,
+        by_char: |ch| src.id_by_char(ch),
     };
     let mut out: Vec<u16> = Vec::new();
     for item in spec.split(',') {
@@ -235,36 +221,7 @@ fn select(spec: Option<&str>, info: &FontInfo, src: &Source) -> Result<Vec<u16>,
                 "an empty item (two commas, or a comma at an end)",
             ));
         }
-        let chars: Vec<char> = item.chars().collect();
-        let ids: Vec<u16> = if let Some(name) = item.strip_prefix('@').filter(|n| !n.is_empty()) {
-            vec![by_name(name, item)?]
-        } else if chars.len() == 1 {
-            vec![by_cp(u32::from(chars[0]), item)?]
-        } else if chars.len() == 3 && chars[1] == '-' {
-            let (a, b) = (u32::from(chars[0]), u32::from(chars[2]));
-            if a > b {
-                return Err(bad("--glyphs", format!("{item:?}: an empty range")));
-            }
-            if b - a > 0x10000 {
-                return Err(bad(
-                    "--glyphs",
-                    format!("{item:?}: a range of more than 65536 code points"),
-                ));
-            }
-            (a..=b)
-                .filter(|&cp| char::from_u32(cp).is_some())
-                .map(|cp| by_cp(cp, item))
-                .collect::<Result<_, _>>()?
-        } else if let Some(hex) = item
-            .strip_prefix("uni")
-            .or_else(|| item.strip_prefix('u'))
-            .filter(|h| (4..=6).contains(&h.len()) && h.chars().all(|c| c.is_ascii_hexdigit()))
-        {
-            let cp = u32::from_str_radix(hex, 16).map_err(|e| bad("--glyphs", e))?;
-            vec![by_cp(cp, item)?]
-        } else {
-            vec![by_name(item, item)?]
-        };
+        let ids = resolver.ids(item)?;
         for id in ids {
             if !out.contains(&id) {
                 out.push(id);

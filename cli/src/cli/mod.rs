@@ -45,6 +45,7 @@
 //! | [`tangency`] | `lncert tangency` |
 //! | [`offset`], [`offset_svg`] | `lncert offset` and its picture |
 //! | [`curve_input`] | the `CURVE` argument of `offset` and `stroke` (curve files, arcs, circles, `--glyph`) |
+//! | [`glyph_item`] | one glyph of a font by character, code point (`uni0041`) or name (`@A`, `Aacute`): `--glyph` and `font --glyphs` |
 //! | [`svg_out`] | `--out FILE.svg` of `stroke` and `offset`: the results as an SVG document in the input's frame |
 //! | [`stroke_doc`] | `lncert stroke DOC.svg` without `--pen`: each element with its own `stroke-width` |
 //! | [`ufo_input`] | UFO input of `lncert font` (norad; qcurve runs, components decomposed exactly) |
@@ -54,6 +55,7 @@ pub mod audit;
 pub mod convolve;
 pub mod curve_input;
 pub mod font;
+pub mod glyph_item;
 pub mod hausdorff;
 pub mod modes;
 pub mod offset;

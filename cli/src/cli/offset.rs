@@ -14,7 +14,10 @@
 //! rounded `<rect>` are read as cubic pieces within a certified bound: the report
 //! says so (`input: … approximated …`, JSON `"input_approximation": {"elements",
 //! "bound"}`, `null` when the curve is exactly the input), and every result is
-//! about the approximated curve.
+//! about the approximated curve. With `--glyph GLYPH`, `CURVE` is a
+//! TrueType/OpenType font and `GLYPH` one of its glyphs: a character (`A`), a
+//! code point (`uni0041`) or a glyph name (`@A`, `Aacute`)
+//! ([`super::curve_input`]).
 //!
 //! Exit codes: 0 = every segment certified within `T`, 3 = the tolerance was not
 //! reached within the limits (the best segments are still printed, with their
@@ -48,10 +51,11 @@ pub struct OffsetArgs {
     /// The curve file (JSON curve/B-spline/arc/circle or SVG path data), or
     /// with `--glyph` a TrueType/OpenType font.
     pub curve: PathBuf,
-    /// Offset the outline of this character's glyph in the font CURVE (font
-    /// units; every contour, exactly as stored: quadratics or cubics).
-    #[arg(long)]
-    pub glyph: Option<char>,
+    /// Offset the outline of one glyph of the font CURVE (font units; every
+    /// contour, exactly as stored: quadratics or cubics): a character (`A`),
+    /// a code point (`uni0041`, `u1F600`) or a glyph name (`@A`, `Aacute`).
+    #[arg(long, value_name = "GLYPH")]
+    pub glyph: Option<String>,
     /// With `--glyph`: coordinates in em (the outline divided by the font's
     /// units per em, exactly), so that `--grid 1/2048` is one font unit of a
     /// 2048-unit font.
@@ -154,7 +158,7 @@ pub fn run(a: &OffsetArgs) -> Result<i32, CliError> {
     let output = Output::from(a.output);
     let grid = grid(a.grid.as_deref())?;
     check_path_degree(a, method, output)?;
-    let input = super::curve_input::read_curve_input(&a.curve, a.glyph, a.em)?;
+    let input = super::curve_input::read_curve_input(&a.curve, a.glyph.as_deref(), a.em)?;
     if a.trim {
         return run_trim(a, &input, &distance);
     }
@@ -276,7 +280,7 @@ fn check_path_degree(a: &OffsetArgs, method: OffsetMethod, output: Output) -> Re
 fn run_trim(a: &OffsetArgs, input: &CurveInput, distance: &Rational) -> Result<i32, CliError> {
     let sa = super::stroke::StrokeArgs {
         curve: a.curve.clone(),
-        glyph: a.glyph,
+        glyph: a.glyph.clone(),
         em: a.em,
         pen: Some(format!("circle:{}", num_traits::Signed::abs(distance))),
         tol: a.tol.clone(),

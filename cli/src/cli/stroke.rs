@@ -24,7 +24,8 @@
 //!
 //! `CURVE` is read as `lncert offset` reads it ([`super::curve_input`]):
 //! curve files and SVG documents (the approximation of SVG arcs reported,
-//! JSON `"input_approximation"`), `--glyph CHAR [--em]` with a font, and
+//! JSON `"input_approximation"`), `--glyph GLYPH [--em]` with a font (a
+//! character, `uni0041` or a glyph name: [`super::glyph_item`]), and
 //! `{"circle"}`, whose stroke with a circular pen is exact ([`circle_stroke`]).
 //!
 //! JSON `outline.complete` is true only when the outline is decided: every
@@ -55,10 +56,11 @@ pub struct StrokeArgs {
     /// B-spline, SVG path data or document, `{"circle": ...}`), or with
     /// `--glyph` a TrueType/OpenType font.
     pub curve: PathBuf,
-    /// Stroke the outline of this character's glyph in the font CURVE (font
-    /// units; every contour, exactly as stored: quadratics or cubics).
-    #[arg(long)]
-    pub glyph: Option<char>,
+    /// Stroke the outline of one glyph of the font CURVE (font units; every
+    /// contour, exactly as stored: quadratics or cubics): a character (`A`),
+    /// a code point (`uni0041`, `u1F600`) or a glyph name (`@A`, `Aacute`).
+    #[arg(long, value_name = "GLYPH")]
+    pub glyph: Option<String>,
     /// With `--glyph`: coordinates in em (the outline divided by the font's
     /// units per em, exactly).
     #[arg(long, requires = "glyph")]
@@ -205,7 +207,7 @@ pub(crate) fn tol(a: &StrokeArgs) -> Result<Tolerance, CliError> {
 pub fn run(a: &StrokeArgs, pen: &str) -> Result<i32, CliError> {
     let tol = tol(a)?;
     let pen = super::pen::pen_shape(pen, tol.value())?;
-    let input = read_curve_input(&a.curve, a.glyph, a.em)?;
+    let input = read_curve_input(&a.curve, a.glyph.as_deref(), a.em)?;
     run_input(a, &input, pen)
 }
 
