@@ -145,6 +145,46 @@ pub fn hausdorff(
     Ok(hausdorff_pieces(&pa, &pb, cfg, &abs_of))
 }
 
+/// [`hausdorff`] with **each** one-sided distance bounded to the goal
+/// (`rel`, or `tol`), not only the larger one: [`hausdorff`] stops the smaller
+/// direction as soon as it cannot change `d_H`, which leaves it coarse. Here
+/// both searches run on their own (no parametric shortcut); for callers that
+/// report `h(A, B)` and `h(B, A)` separately, such as the stroke referee.
+///
+/// # Examples
+/// ```
+/// use lncert::certify::{hausdorff_each_direction, Config};
+/// use lncert::shape::ShapeDesc;
+/// let a = ShapeDesc::parse("M 0 0 L 4 0").unwrap();
+/// let b = ShapeDesc::parse("M 0 1 L 2 1").unwrap();
+/// let r = hausdorff_each_direction(&a, &b, &Config::default()).unwrap();
+/// // h(A, B) = |(4, 0) − (2, 1)| = √5, h(B, A) = 1: both bounded to 1e-3
+/// assert!(r.a_to_b.lo <= 5f64.sqrt() && 5f64.sqrt() <= r.a_to_b.hi);
+/// assert!(r.b_to_a.lo <= 1.0 && 1.0 <= r.b_to_a.hi && r.b_to_a.hi - r.b_to_a.lo <= 1e-3);
+/// ```
+pub fn hausdorff_each_direction(
+    a: &ShapeDesc,
+    b: &ShapeDesc,
+    cfg: &Config,
+) -> Result<HausdorffBounds, CertifyError> {
+    check_config(cfg)?;
+    let (pa, pb) = (a.pieces()?, b.pieces()?);
+    let abs = if cfg.abs > 0.0 {
+        cfg.abs
+    } else {
+        1e-10 * (1.0 + a.scale().max(b.scale()))
+    };
+    let ab = search::one_sided(&pa, &pb, cfg, abs, (0.0, 0.0));
+    let ba = search::one_sided(&pb, &pa, cfg, abs, (0.0, 0.0));
+    Ok(HausdorffBounds {
+        lo: ab.lo.max(ba.lo),
+        hi: ab.hi.max(ba.hi),
+        a_to_b: ab,
+        b_to_a: ba,
+        parametric: None,
+    })
+}
+
 /// An elliptic arc `center + M·(the unit-circle arc counter-clockwise from the
 /// direction `from` to the direction `to`)` — the directions are those of the
 /// pre-image, of any nonzero length, not the same direction. Seed 001's pen

@@ -114,7 +114,7 @@ pub(super) fn err(field: impl Into<String>, reason: impl Into<String>) -> ShapeE
     }
 }
 
-fn curve_value(
+pub(crate) fn curve_value(
     v: &Value,
     field: &str,
     approx: &mut InputApprox,
@@ -138,17 +138,31 @@ fn curve_value(
     parsed.map_err(|e| err(field, e.to_string()))
 }
 
-fn number(v: Option<&Value>, field: &str) -> Result<Rational, ShapeError> {
+/// A JSON document read with the default limits (duplicate keys, depth,
+/// size refused), errors naming the JSON path.
+pub(crate) fn parse_json_value(text: &str) -> Result<Value, ShapeError> {
+    let doc =
+        crate::json::parse(text, &crate::json::Limits::DEFAULT).map_err(|e| match e.kind {
+            crate::json::ErrorKind::Syntax => err("(json)", format!("malformed JSON: {e}")),
+            _ => err(
+                e.path.clone(),
+                format!("{} (line {}, column {})", e.reason, e.line, e.column),
+            ),
+        })?;
+    Ok(doc.to_value())
+}
+
+pub(crate) fn number(v: Option<&Value>, field: &str) -> Result<Rational, ShapeError> {
     let v = v.ok_or_else(|| err(field, "missing"))?;
     json_coordinate(v, field).map_err(|e| err(field, e.to_string()))
 }
 
-fn point(v: Option<&Value>, field: &str) -> Result<V2<Rational>, ShapeError> {
+pub(crate) fn point(v: Option<&Value>, field: &str) -> Result<V2<Rational>, ShapeError> {
     let v = v.ok_or_else(|| err(field, "missing"))?;
     json_point(v, field).map_err(|e| err(field, e.to_string()))
 }
 
-fn check_keys(
+pub(crate) fn check_keys(
     map: &serde_json::Map<String, Value>,
     field: &str,
     keys: &[&str],
@@ -212,17 +226,7 @@ impl ShapeDesc {
                 parse_svg_path_reported(trimmed).map_err(|e| err("path", e.to_string()))?;
             return Ok((ShapeDesc::curve(pieces)?, approx));
         }
-        let doc =
-            crate::json::parse(trimmed, &crate::json::Limits::DEFAULT).map_err(|e| {
-                match e.kind {
-                    crate::json::ErrorKind::Syntax => err("(json)", format!("malformed JSON: {e}")),
-                    _ => err(
-                        e.path.clone(),
-                        format!("{} (line {}, column {})", e.reason, e.line, e.column),
-                    ),
-                }
-            })?;
-        Self::from_value_reported(&doc.to_value())
+        Self::from_value_reported(&parse_json_value(trimmed)?)
     }
 
     /// [`ShapeDesc::parse`] on a parsed JSON value (SVG path data inside,

@@ -68,7 +68,7 @@ mod svgdoc;
 mod winding;
 
 pub use arc::{parse_arc_input, TravelledArc};
-pub(crate) use desc::checked_offset;
+pub(crate) use desc::{check_keys, checked_offset, curve_value, number, parse_json_value, point};
 pub use desc::{ArcDesc, ShapeDesc, MAX_COORDINATE};
 #[cfg(feature = "font")]
 pub use font::{

@@ -27,6 +27,7 @@ use super::{print_report, CliError, EXIT_OK, EXIT_REFUTED, EXIT_UNDECIDED};
 use lncert::certify::{hausdorff, Certificate, Config, HausdorffBounds, OneSided};
 use lncert::scalar::interval_from_rational;
 use lncert::shape::{InputApprox, ShapeDesc};
+use lncert::stroke::StrokeShape;
 use lncert::Tolerance;
 use serde_json::json;
 use std::path::{Path, PathBuf};
@@ -50,6 +51,11 @@ pub struct HausdorffArgs {
     /// Box budget per direction.
     #[arg(long, default_value_t = 200_000)]
     pub max_boxes: usize,
+    /// With a stroke shape (`{"stroke": …}`): the tolerance of the proven
+    /// outline the bounds go through (default TOL/16, or a thousandth of the
+    /// pen's size without --tol).
+    #[arg(long)]
+    pub stroke_tol: Option<String>,
     /// Print one JSON document.
     #[arg(long)]
     pub json: bool,
@@ -62,12 +68,33 @@ pub fn read_shape_reported(
     path: &std::path::Path,
 ) -> Result<(ShapeDesc, InputApprox), CliError> {
     let text = super::curve_input::read_text_limited(flag, path, MAX_FILE_BYTES)?;
-    ShapeDesc::parse_reported(&text).map_err(|e| bad(flag, format!("{}: {e}", path.display())))
+    parse_shape(flag, path, &text)
+}
+
+fn parse_shape(flag: &str, path: &Path, text: &str) -> Result<(ShapeDesc, InputApprox), CliError> {
+    ShapeDesc::parse_reported(text).map_err(|e| bad(flag, format!("{}: {e}", path.display())))
+}
+
+/// A shape argument: an exact shape, or the exact boundary of a stroke.
+pub(crate) enum Arg {
+    Shape(ShapeDesc, InputApprox),
+    Stroke(StrokeShape, InputApprox),
+}
+
+fn read_arg(flag: &str, path: &Path) -> Result<Arg, CliError> {
+    let text = super::curve_input::read_text_limited(flag, path, MAX_FILE_BYTES)?;
+    if let Some((s, ap)) = StrokeShape::parse_reported(&text)
+        .map_err(|e| bad(flag, format!("{}: {e}", path.display())))?
+    {
+        return Ok(Arg::Stroke(s, ap));
+    }
+    let (s, ap) = parse_shape(flag, path, &text)?;
+    Ok(Arg::Shape(s, ap))
 }
 
 /// `{"elements", "bound", "a", "b"}` of both shapes' approximations (the
 /// bound their sum, rounded up), or `null` when both are exact.
-fn approx_json(a: &InputApprox, b: &InputApprox) -> serde_json::Value {
+pub(crate) fn approx_json(a: &InputApprox, b: &InputApprox) -> serde_json::Value {
     if a.is_empty() && b.is_empty() {
         return serde_json::Value::Null;
     }
@@ -91,8 +118,15 @@ fn one_json(d: &OneSided) -> serde_json::Value {
 /// Runs the command; returns the exit code.
 pub fn run(a: &HausdorffArgs) -> Result<i32, CliError> {
     let (rel_f, tol) = checked_flags(a)?;
-    let (sa, approx_a) = read_shape_reported("A", &a.a)?;
-    let (sb, approx_b) = read_shape_reported("B", &a.b)?;
+    let (sa, approx_a, sb, approx_b) =
+        match (read_arg("A", &a.a)?, read_arg("B", &a.b)?) {
+            (Arg::Shape(sa, pa), Arg::Shape(sb, pb)) => (sa, pa, sb, pb),
+            (Arg::Stroke(..), Arg::Stroke(..)) => return Err(bad(
+                "B",
+                "at most one shape may be a stroke (the other is the outline it is compared with)",
+            )),
+            (x, y) => return super::hausdorff_stroke::run(a, x, y, rel_f, tol),
+        };
     // The search compares f64 bounds with the largest f64 ≤ tol (sound).
     let tol_f = tol.as_ref().map(Tolerance::value);
     let cfg = Config {

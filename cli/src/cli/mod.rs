@@ -57,6 +57,7 @@ pub mod curve_input;
 pub mod font;
 pub mod glyph_item;
 pub mod hausdorff;
+pub mod hausdorff_stroke;
 pub mod modes;
 pub mod offset;
 pub mod offset_grid;

@@ -15,7 +15,7 @@ use super::{Claim, Verdict};
 use lncert::curve::{BSpline, Bezier, V2};
 use lncert::offset::Output;
 use lncert::scalar::{Rational, Scalar};
-use lncert::shape::{ArcDesc, ShapeDesc, ShapeError};
+use lncert::shape::{ShapeDesc, ShapeError};
 use lncert::stroke::{stroke, Orientation, Piece, Stroke, StrokeOptions};
 use rayon::prelude::*;
 use std::time::Instant;
@@ -90,32 +90,10 @@ pub fn lens_radius() -> Rational {
     Rational::new(1.into(), 4.into())
 }
 
-/// The output as one exact shape for the Hausdorff engine: the union of its
-/// Bézier pieces (one curve member) and its arcs.
+/// The output as one exact shape for the Hausdorff engine
+/// ([`Stroke::outline_shape`]).
 pub fn outline_shape(s: &Stroke) -> Result<ShapeDesc, ShapeError> {
-    let mut beziers = Vec::new();
-    let mut members = Vec::new();
-    for p in s.contours.iter().flat_map(|c| c.pieces.iter()) {
-        match p {
-            Piece::Bezier(b) => beziers.push(b.clone()),
-            Piece::Arc(a) => {
-                // ArcDesc travels counter-clockwise: a clockwise arc is the same
-                // point set travelled from its end
-                let (u, v) = (a.from.sub(&a.center), a.to.sub(&a.center));
-                let (from, to) = if a.clockwise { (v, u) } else { (u, v) };
-                members.push(ShapeDesc::arc(ArcDesc {
-                    center: a.center.clone(),
-                    radius: a.radius.clone(),
-                    from,
-                    to,
-                })?);
-            }
-        }
-    }
-    if !beziers.is_empty() {
-        members.insert(0, ShapeDesc::curve(beziers)?);
-    }
-    ShapeDesc::union(members)
+    s.outline_shape()
 }
 
 /// Control points of the output: `degree` per Bézier piece, 2 per arc (its

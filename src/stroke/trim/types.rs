@@ -5,6 +5,7 @@ use crate::curve::{Bezier, V2};
 use crate::offset::conv::Pen;
 use crate::offset::OffsetMethod;
 use crate::scalar::{interval_from_rational, Interval, Rational, Scalar};
+use crate::shape::{ArcDesc, ShapeDesc};
 use crate::stroke::circle::Arc;
 use crate::stroke::ellipse::Form;
 use crate::Tolerance;
@@ -350,5 +351,45 @@ impl Stroke {
     /// Output pieces in all.
     pub fn pieces(&self) -> usize {
         self.contours.iter().map(|c| c.pieces.len()).sum()
+    }
+
+    /// The output as one exact shape for the Hausdorff engine
+    /// ([`crate::certify::hausdorff`]): the union of its Bézier pieces (one
+    /// curve member) and its arcs (each a member; a clockwise arc is the same
+    /// point set travelled counter-clockwise from its end).
+    ///
+    /// # Examples
+    /// ```
+    /// use lncert::stroke::{stroke, StrokeOptions};
+    /// use lncert::{parse_curve, parse_rational};
+    /// # fn main() -> Result<(), lncert::Error> {
+    /// let s = stroke(&parse_curve("M 0 0 L 4 0")?, &StrokeOptions::new(parse_rational("1")?, "1e-2".parse()?))?;
+    /// let shape = s.outline_shape()?;
+    /// assert_eq!(shape.piece_count(), s.pieces());
+    /// # Ok(())
+    /// # }
+    /// ```
+    pub fn outline_shape(&self) -> Result<ShapeDesc, crate::shape::ShapeError> {
+        let mut beziers = Vec::new();
+        let mut members = Vec::new();
+        for p in self.contours.iter().flat_map(|c| c.pieces.iter()) {
+            match p {
+                Piece::Bezier(b) => beziers.push(b.clone()),
+                Piece::Arc(a) => {
+                    let (u, v) = (a.from.sub(&a.center), a.to.sub(&a.center));
+                    let (from, to) = if a.clockwise { (v, u) } else { (u, v) };
+                    members.push(ShapeDesc::arc(ArcDesc {
+                        center: a.center.clone(),
+                        radius: a.radius.clone(),
+                        from,
+                        to,
+                    })?);
+                }
+            }
+        }
+        if !beziers.is_empty() {
+            members.insert(0, ShapeDesc::curve(beziers)?);
+        }
+        ShapeDesc::union(members)
     }
 }
