@@ -362,3 +362,55 @@ fn cli_referee_verdicts_and_errors() {
     assert!(String::from_utf8_lossy(&o.stderr).contains("--certificate"));
     assert!(!cert.exists());
 }
+
+/// Skia's committed outline of the heart icon (`cli/examples/data/`, made by
+/// `skia_stroke_dump.py`): certified within 1e-2 of the exact stroke
+/// boundary, and refuted against a wrong pen.
+#[test]
+fn cli_referees_a_committed_skia_outline() {
+    let data: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/examples/data/skia_strokes.json"
+        ))
+        .unwrap(),
+    )
+    .unwrap();
+    let heart = "M20.84 4.61a5.5 5.5 0 0 0-7.78 0L12 5.67l-1.06-1.06a5.5 5.5 0 0 0-7.78 7.78l1.06 1.06L12 21.23l7.78-7.78 1.06-1.06a5.5 5.5 0 0 0 0-7.78z";
+    let x = common::tmp(
+        "skia-heart.svg",
+        data["outlines"]["icon heart"].as_str().unwrap(),
+    );
+    for (r, code, verdict) in [("1", 0, "certified"), ("0.9", 1, "refuted")] {
+        let st = common::tmp(
+            &format!("heart-{r}.json"),
+            &serde_json::json!({"stroke": {"curve": heart, "pen": {"circle": r}}}).to_string(),
+        );
+        let o = lncert(&[
+            "hausdorff",
+            x.to_str().unwrap(),
+            st.to_str().unwrap(),
+            "--tol",
+            "1e-2",
+            "--json",
+        ]);
+        assert_eq!(
+            o.status.code(),
+            Some(code),
+            "r {r}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        let j = json_of(&o);
+        assert_eq!(j["verdict"], verdict);
+        // the icon's arcs are read as cubics within a certified bound, and
+        // the report says so
+        assert!(
+            j["input_approximation"]["bound"].as_f64().unwrap() < 1e-6,
+            "{j}"
+        );
+        if r == "0.9" {
+            // a pen 0.1 too small: ∂S is 0.1 inside Skia's outline
+            assert!(j["lo"].as_f64().unwrap() > 0.09, "{j}");
+        }
+    }
+}

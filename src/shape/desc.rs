@@ -268,6 +268,12 @@ impl ShapeDesc {
                 ),
             ));
         }
+        if map.contains_key("stroke") {
+            return Err(err(
+                "stroke",
+                "the exact boundary of a stroke is not a shape of certificates: `lncert hausdorff` referees it (lncert::stroke::StrokeShape), `verify --against` cannot take it yet",
+            ));
+        }
         if let Some(u) = map.get("union") {
             check_keys(map, "(top level)", &["union"])?;
             let Value::Array(members) = u else {

@@ -150,6 +150,75 @@ impl StrokeShape {
     }
 }
 
+/// The referee with its default stroke tolerances: [`distance_to_stroke`]
+/// at [`StrokeShape::default_tolerance`] `ε`; when the stroke's claims (a),
+/// (b) are not proven there, again at `4ε` and at `ε/4` (a different
+/// construction often decides); when a claimed `tol` is left undecided by
+/// bounds that straddle it, once more at `ε/8` (a narrower bracket). The
+/// first decided result is returned, else the last one with a proven
+/// stroke, else the last one. The stroke tolerance used is the result's
+/// `stroke.tol`.
+///
+/// # Examples
+/// ```
+/// use lncert::certify::Config;
+/// use lncert::shape::ShapeDesc;
+/// use lncert::stroke::{referee, StrokeShape, StrokeVerdict};
+/// # fn main() -> Result<(), lncert::Error> {
+/// let (s, _) = StrokeShape::parse_reported(
+///     r#"{"stroke": {"curve": "M 0 0 L 4 0", "pen": {"circle": "1/2"}}}"#,
+/// )?.expect("a stroke shape");
+/// let x = ShapeDesc::parse("M 0 -0.5 L 4 -0.5")?; // one side only: the rest of ∂S is not covered
+/// let tol = "1e-2".parse()?;
+/// let d = referee(&x, &s, Some(&tol), &Config::default())?;
+/// assert_eq!(d.verdict(&tol), StrokeVerdict::Over);
+/// assert!(d.to_stroke.1 <= 1e-2 && d.from_stroke.0 > 0.9); // on ∂S, but covers little of it
+/// # Ok(())
+/// # }
+/// ```
+pub fn referee(
+    x: &ShapeDesc,
+    shape: &StrokeShape,
+    tol: Option<&Tolerance>,
+    cfg: &Config,
+) -> Result<StrokeDistance, Error> {
+    let e0 = shape.default_tolerance(tol);
+    let scaled = |num: i64, den: i64| {
+        Tolerance::new(e0.exact() * Rational::new(num.into(), den.into())).ok()
+    };
+    let decided = |d: &StrokeDistance| match tol {
+        Some(t) => d.verdict(t) != StrokeVerdict::Undecided,
+        None => d.outline.is_some(),
+    };
+    let mut best: Option<StrokeDistance> = None;
+    let mut tried = vec![e0.clone()];
+    let mut next = Some(e0.clone());
+    while let Some(e) = next.take() {
+        let d = distance_to_stroke(x, &shape.curve, &shape.options(e), cfg)?;
+        if decided(&d) {
+            return Ok(d);
+        }
+        let proven = d.outline.is_some();
+        let candidates = if proven {
+            // bounds straddle the claim: a narrower bracket
+            vec![scaled(1, 8)]
+        } else {
+            vec![scaled(4, 1), scaled(1, 4)]
+        };
+        if proven || best.as_ref().is_none_or(|b| b.outline.is_none()) {
+            best = Some(d);
+        }
+        next = candidates
+            .into_iter()
+            .flatten()
+            .find(|c| !tried.contains(c));
+        if let Some(c) = &next {
+            tried.push(c.clone());
+        }
+    }
+    Ok(best.expect("at least one run"))
+}
+
 fn pen_value(v: Option<&Value>) -> Result<PenShape, ShapeError> {
     let v = v.ok_or_else(|| err("stroke.pen", "missing"))?;
     let Value::Object(m) = v else {
@@ -310,7 +379,15 @@ pub fn distance_to_stroke(
                 .into(),
         });
     }
-    let s = stroke(curve, opts)?;
+    distance_through(x, stroke(curve, opts)?, cfg)
+}
+
+/// [`distance_to_stroke`] through a stroke already made (round caps, claims
+/// (a), (b) as [`stroke`] proves them): to referee several outlines of one
+/// stroke with one construction. A stroke with butt caps, or with (a) or (b)
+/// unproven, gives `[0, ∞]`.
+pub fn distance_through(x: &ShapeDesc, s: Stroke, cfg: &Config) -> Result<StrokeDistance, Error> {
+    // (butt caps: (a) and (b) are not claimed, so not proven)
     if !(s.a.proven && s.b.proven) {
         return Ok(StrokeDistance {
             lo: 0.0,

@@ -2,7 +2,9 @@
 //! bounds on `d_H(OUTLINE, ∂S)` where `STROKE.json` names the exact stroke
 //! boundary `{"stroke": {"curve": CURVE, "pen": {"circle": R} | {"ellipse": M}}}`
 //! — the referee for any stroker's output ([`lncert::stroke::distance_to_stroke`]:
-//! lncert's proven outline `L` at tolerance `E` and the triangle inequality).
+//! lncert's proven outline `L` at tolerance `E` and the triangle inequality;
+//! without `--stroke-tol`, [`lncert::stroke::referee`]'s default `E` and its
+//! fallbacks).
 //! Either argument may be the stroke. No certificate is written: `∂S` ends at
 //! irrational crossings, which the certificate language cannot state yet.
 
@@ -11,7 +13,9 @@ use super::hausdorff::{approx_json, Arg, HausdorffArgs};
 use super::{print_report, CliError, EXIT_OK, EXIT_REFUTED, EXIT_UNDECIDED};
 use lncert::certify::Config;
 use lncert::shape::{InputApprox, ShapeDesc};
-use lncert::stroke::{distance_to_stroke, PenShape, StrokeDistance, StrokeShape, StrokeVerdict};
+use lncert::stroke::{
+    distance_to_stroke, referee, PenShape, StrokeDistance, StrokeShape, StrokeVerdict,
+};
 use lncert::Tolerance;
 use serde_json::json;
 
@@ -35,24 +39,25 @@ pub(crate) fn run(
         (Arg::Shape(o, po), Arg::Stroke(s, ps)) => (false, o, po, s, ps),
         _ => unreachable!("the caller passes exactly one stroke"),
     };
-    let stroke_tol = match &a.stroke_tol {
-        Some(t) => {
-            Tolerance::new(number("--stroke-tol", t)?).map_err(|e| bad("--stroke-tol", e.reason))?
-        }
-        None => st.default_tolerance(tol.as_ref()),
-    };
     let cfg = Config {
         rel: rel_f,
         max_boxes: a.max_boxes,
         ..Config::default()
     };
     let start = std::time::Instant::now();
-    let d = distance_to_stroke(&shape, &st.curve, &st.options(stroke_tol.clone()), &cfg).map_err(
-        |e| CliError {
-            field: format!("{}.stroke.{}", if stroke_is_a { "A" } else { "B" }, e.field),
-            reason: e.reason,
-        },
-    )?;
+    let d = match &a.stroke_tol {
+        Some(t) => {
+            let e = Tolerance::new(number("--stroke-tol", t)?)
+                .map_err(|e| bad("--stroke-tol", e.reason))?;
+            distance_to_stroke(&shape, &st.curve, &st.options(e), &cfg)
+        }
+        None => referee(&shape, &st, tol.as_ref(), &cfg),
+    }
+    .map_err(|e| CliError {
+        field: format!("{}.stroke.{}", if stroke_is_a { "A" } else { "B" }, e.field),
+        reason: e.reason,
+    })?;
+    let stroke_tol = d.stroke.tol.clone();
     let verdict = tol.as_ref().map(|t| match d.verdict(t) {
         StrokeVerdict::Within => "certified",
         StrokeVerdict::Over => "refuted",
