@@ -174,3 +174,46 @@ fn closed_lens_inner_offset_loops_are_cut() {
     }
     assert!(boundary > 100, "most of the inner offset is boundary");
 }
+
+/// The test cubic at r 0.4, TOL 1e-1: the inner offset leaves the start cap
+/// in a swallowtail, and the coarse sides keep a loop 10⁻¹³ across there, a
+/// closed contour of its own once the pieces around it are dropped as a
+/// pinched loop. It is dropped as an isolated loop (certified reach, added
+/// to (b)), and the outline is one closed contour with all claims proven;
+/// every sampled output point is r ± TOL from the curve (brute force).
+#[test]
+fn an_isolated_loop_beside_a_cap_is_dropped() {
+    let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
+    let x = vec![Bezier::new(vec![
+        lncert::curve::V2::new(q(-95, 100), q(7, 10)),
+        lncert::curve::V2::new(q(-3, 10), q(1, 2)),
+        lncert::curve::V2::new(q(3, 10), q(-5, 2)),
+        lncert::curve::V2::new(q(9, 10), q(-1, 5)),
+    ])];
+    let (r, tol) = (q(2, 5), 1e-1);
+    let s = stroke(
+        &x,
+        &StrokeOptions::new(r, lncert::Tolerance::from_f64(tol).unwrap()),
+    )
+    .unwrap();
+    assert!(s.proven(), "{:?} {:?} {:?} {:?}", s.a, s.b, s.c, s.notes);
+    assert!(s.complete);
+    assert_eq!(s.contours.len(), 1, "{:?}", s.notes);
+    let c = &s.contours[0];
+    assert!(c.closed && c.orientation != Orientation::Undecided);
+    let curve = samples(&x, 0.0, 20000);
+    for p in c.pieces.iter().flat_map(|p| p.sample(60)) {
+        let d = dist(&curve, p);
+        assert!(
+            (d - 0.4).abs() <= tol + 1e-6,
+            "output point {p:?} is {d} from the curve"
+        );
+    }
+    // the dropped loop's reach went into (b), which stays within TOL
+    assert!(s.b.bound <= tol, "{:?}", s.b);
+    assert!(
+        s.notes.iter().any(|n| n.contains("isolated loops dropped")),
+        "{:?}",
+        s.notes
+    );
+}

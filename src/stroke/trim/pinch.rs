@@ -16,6 +16,8 @@ use crate::scalar::{interval_from_rational, rational_from_f64, Interval, Rationa
 ///   pieces at `X` outside the chain ([`reach_hi`]).
 /// - *Spurs*: a piece with a dangling end (no live piece continues it), within
 ///   its cap of its other end `Y` or of the live pieces at `Y`.
+/// - *Isolated loops* ([`isolated_loops`]): a small closed chain that touches
+///   no other piece, within its caps of the other live pieces.
 ///
 /// `caps[k]` is how far piece `k` may be from the output for claim (b) to
 /// stay within tol. Every dropped group is re-checked against the final live
@@ -37,7 +39,8 @@ pub(super) fn pinched_loops(pieces: &[&Piece], caps: &[f64]) -> Vec<(usize, f64)
             .map(|j| pieces[j])
             .collect()
     };
-    let mut groups: Vec<(V2<Rational>, Vec<usize>)> = Vec::new();
+    // a group: its point X (None for an isolated loop) and its pieces
+    let mut groups: Vec<(Option<V2<Rational>>, Vec<usize>)> = Vec::new();
     for s in 0..n {
         if dropped[s] {
             continue;
@@ -55,7 +58,7 @@ pub(super) fn pinched_loops(pieces: &[&Piece], caps: &[f64]) -> Vec<(usize, f64)
         let mut cur = s;
         let closed = loop {
             let refs = live_at(&x, &chain, &dropped);
-            if reach_hi(pieces[cur], &refs, &x, caps[cur]).is_none() {
+            if reach_hi(pieces[cur], &refs, Some(&x), caps[cur]).is_none() {
                 break false;
             }
             let end = pieces[cur].end();
@@ -76,7 +79,7 @@ pub(super) fn pinched_loops(pieces: &[&Piece], caps: &[f64]) -> Vec<(usize, f64)
             for &k in &chain {
                 dropped[k] = true;
             }
-            groups.push((x, chain));
+            groups.push((Some(x), chain));
         }
     }
     // spurs
@@ -110,9 +113,9 @@ pub(super) fn pinched_loops(pieces: &[&Piece], caps: &[f64]) -> Vec<(usize, f64)
             } else {
                 continue;
             };
-            if reach_hi(pieces[k], &live_at(&y, &[k], &dropped), &y, caps[k]).is_some() {
+            if reach_hi(pieces[k], &live_at(&y, &[k], &dropped), Some(&y), caps[k]).is_some() {
                 dropped[k] = true;
-                groups.push((y, vec![k]));
+                groups.push((Some(y), vec![k]));
                 changed = true;
             }
         }
@@ -121,21 +124,58 @@ pub(super) fn pinched_loops(pieces: &[&Piece], caps: &[f64]) -> Vec<(usize, f64)
         }
     }
     // re-check against the final live pieces; a group's point must still end
-    // a live piece (the argument of (b) needs X in the output)
+    // a live piece (the argument of (b) needs X in the output). Isolated
+    // loops are looked for after each re-check (a pinched loop it restored
+    // may be one), each piece tried at most once, so this ends.
     let mut reach = vec![None; n];
+    let mut tried = vec![false; n];
+    loop {
+        recheck(pieces, caps, &groups, &mut dropped, &mut reach);
+        if !isolated_loops(pieces, caps, &mut dropped, &mut groups, &mut tried) {
+            break;
+        }
+    }
+    (0..n)
+        .filter(|&k| dropped[k])
+        .filter_map(|k| reach[k].map(|r| (k, r)))
+        .collect()
+}
+
+/// Re-checks every dropped group against the live pieces (those at its
+/// point `X`, or near it for an isolated loop) and restores a group whose
+/// reach is no longer proven; restoring only adds pieces, so this repeats
+/// until nothing changes. `reach[k]` is set for every piece still dropped.
+fn recheck(
+    pieces: &[&Piece],
+    caps: &[f64],
+    groups: &[(Option<V2<Rational>>, Vec<usize>)],
+    dropped: &mut [bool],
+    reach: &mut [Option<f64>],
+) {
+    let n = pieces.len();
     loop {
         let mut changed = false;
-        for (x, chain) in &groups {
+        for (x, chain) in groups {
             if chain.iter().all(|&k| !dropped[k]) {
                 continue;
             }
-            let refs = live_at(x, chain, &dropped);
+            let refs: Vec<&Piece> = match x {
+                Some(x) => (0..n)
+                    .filter(|&j| {
+                        !chain.contains(&j)
+                            && !dropped[j]
+                            && (pieces[j].start() == x || pieces[j].end() == x)
+                    })
+                    .map(|j| pieces[j])
+                    .collect(),
+                None => near_live(pieces, chain, caps, dropped),
+            };
             let reaches: Option<Vec<f64>> = if refs.is_empty() {
                 None
             } else {
                 chain
                     .iter()
-                    .map(|&k| reach_hi(pieces[k], &refs, x, caps[k]))
+                    .map(|&k| reach_hi(pieces[k], &refs, x.as_ref(), caps[k]))
                     .collect()
             };
             match reaches {
@@ -157,22 +197,165 @@ pub(super) fn pinched_loops(pieces: &[&Piece], caps: &[f64]) -> Vec<(usize, f64)
             break;
         }
     }
-    (0..n)
-        .filter(|&k| dropped[k])
-        .filter_map(|k| reach[k].map(|r| (k, r)))
+}
+
+/// *Isolated loops*: a closed chain of live pieces (each continued by exactly
+/// one live piece) that no other live piece touches, whose outward float box
+/// is at most its smallest cap across, and every piece of which is within its
+/// cap of the other live pieces ([`reach_hi`] without a point `X`). Such a
+/// chain is a small closed contour of its own (e.g. a swallowtail loop of an
+/// offset kept within tolerance beside a cap); dropping it moves the boundary
+/// points it stood for by at most its reach, which (b) adds, as for pinched
+/// loops. Found chains are marked dropped and pushed with point `None`;
+/// `tried` marks every chain measured (true: one was dropped).
+fn isolated_loops(
+    pieces: &[&Piece],
+    caps: &[f64],
+    dropped: &mut [bool],
+    groups: &mut Vec<(Option<V2<Rational>>, Vec<usize>)>,
+    tried: &mut [bool],
+) -> bool {
+    let n = pieces.len();
+    let mut seen = vec![false; n];
+    let mut found = false;
+    for s in 0..n {
+        if dropped[s] || seen[s] || tried[s] {
+            continue;
+        }
+        let x = pieces[s].start();
+        let mut chain = vec![s];
+        let mut cur = s;
+        let closed = loop {
+            let end = pieces[cur].end();
+            if end == x {
+                break true;
+            }
+            let mut next =
+                (0..n).filter(|&k| !dropped[k] && !chain.contains(&k) && pieces[k].start() == end);
+            match (next.next(), next.next()) {
+                (Some(k), None) if chain.len() < 64 => {
+                    chain.push(k);
+                    cur = k;
+                }
+                _ => break false,
+            }
+        };
+        for &k in &chain {
+            seen[k] = true;
+        }
+        if !closed {
+            continue;
+        }
+        // no live piece outside the chain touches its points (a dropped one
+        // restored later leaves an open end, which claim (c) reports)
+        let touched = (0..n).any(|j| {
+            !dropped[j]
+                && !chain.contains(&j)
+                && chain.iter().any(|&k| {
+                    let v = pieces[k].start();
+                    pieces[j].start() == v || pieces[j].end() == v
+                })
+        });
+        let cap = chain.iter().map(|&k| caps[k]).fold(f64::INFINITY, f64::min);
+        let small =
+            chain_box(pieces, &chain).is_some_and(|b| (b[2] - b[0]).max(b[3] - b[1]) <= cap);
+        if touched || !small {
+            continue;
+        }
+        for &k in &chain {
+            tried[k] = true;
+        }
+        let refs = near_live(pieces, &chain, caps, dropped);
+        if refs.is_empty() {
+            continue;
+        }
+        if chain
+            .iter()
+            .all(|&k| reach_hi(pieces[k], &refs, None, caps[k]).is_some())
+        {
+            for &k in &chain {
+                dropped[k] = true;
+            }
+            // a group restored earlier that shares a piece (restored groups
+            // are wholly live) is replaced by this one
+            groups.retain(|(_, c)| !c.iter().any(|k| chain.contains(k)));
+            groups.push((None, chain));
+            found = true;
+        }
+    }
+    found
+}
+
+/// The outward float box `[x0, y0, x1, y1]` of the pieces' hulls.
+fn chain_box(pieces: &[&Piece], chain: &[usize]) -> Option<[f64; 4]> {
+    let mut b = [
+        f64::INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NEG_INFINITY,
+    ];
+    for &k in chain {
+        for part in Part::initial(pieces[k])? {
+            for p in part.hull()? {
+                if p.x.is_empty() || p.y.is_empty() {
+                    return None;
+                }
+                b = [
+                    b[0].min(p.x.inf()),
+                    b[1].min(p.y.inf()),
+                    b[2].max(p.x.sup()),
+                    b[3].max(p.y.sup()),
+                ];
+            }
+        }
+    }
+    b.iter().all(|v| v.is_finite()).then_some(b)
+}
+
+/// The live pieces outside `chain` whose box comes within the chain's largest
+/// cap of the chain's box (the others cannot be within a cap of it; leaving
+/// them out only costs reach, never soundness: the reach is proven against
+/// the pieces given).
+fn near_live<'a>(
+    pieces: &[&'a Piece],
+    chain: &[usize],
+    caps: &[f64],
+    dropped: &[bool],
+) -> Vec<&'a Piece> {
+    let Some(cb) = chain_box(pieces, chain) else {
+        return Vec::new();
+    };
+    let cap = chain.iter().map(|&k| caps[k]).fold(0.0, f64::max);
+    (0..pieces.len())
+        .filter(|&j| !dropped[j] && !chain.contains(&j))
+        .filter(|&j| {
+            chain_box(pieces, &[j]).is_some_and(|b| {
+                b[0] <= cb[2] + cap
+                    && cb[0] <= b[2] + cap
+                    && b[1] <= cb[3] + cap
+                    && cb[1] <= b[3] + cap
+            })
+        })
+        .map(|j| pieces[j])
         .collect()
 }
 
-/// A certified upper bound of `sup_{p ∈ piece} dist(p, refs ∪ {y})` if it is
+/// A certified upper bound of `sup_{p ∈ piece} dist(p, refs ∪ {y})` (`y`
+/// optional) if it is
 /// at most `cap`: the piece is halved (interval Bézier halves, exact arc
 /// midpoints) until each part's hull lies within `cap` of one point proven on
 /// a reference piece (a point of the exact piece enclosed in intervals, the
 /// float nearest point only choosing where) or of `y`.
-pub(super) fn reach_hi(piece: &Piece, refs: &[&Piece], y: &V2<Rational>, cap: f64) -> Option<f64> {
+pub(super) fn reach_hi(
+    piece: &Piece,
+    refs: &[&Piece],
+    y: Option<&V2<Rational>>,
+    cap: f64,
+) -> Option<f64> {
     if cap.is_nan() || cap <= 0.0 {
         return None;
     }
-    let yi = iv_point(y);
+    let yi = y.map(iv_point);
     let mut todo: Vec<(Part, u32)> = Part::initial(piece)?.into_iter().map(|p| (p, 0)).collect();
     let mut worst: f64 = 0.0;
     let mut budget = 256usize;
@@ -186,7 +369,7 @@ pub(super) fn reach_hi(piece: &Piece, refs: &[&Piece], y: &V2<Rational>, cap: f6
                 .fold((0.0, 0.0), |(x, y), p| (x + p.x.mid(), y + p.y.mid()));
             (sx / k, sy / k)
         };
-        let mut best = far(&yi);
+        let mut best = yi.as_ref().map_or(f64::INFINITY, far);
         for r in refs {
             if let Some(q) = nearest_on(r, c) {
                 best = best.min(far(&q));

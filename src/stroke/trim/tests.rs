@@ -54,7 +54,7 @@ fn the_certified_reach_is_never_below_the_sampled_distance() {
             .map(|&p| sampled_dist(p, &refp).min((p.0 - y.x.approx()).hypot(p.1 - y.y.approx())))
             .fold(0.0, f64::max);
         for cap in [0.05, 0.2, 1.0] {
-            match reach_hi(&spur, &[&refp], &y, cap) {
+            match reach_hi(&spur, &[&refp], Some(&y), cap) {
                 Some(reach) => {
                     decided += 1;
                     assert!(reach <= cap, "{reach} above the cap {cap}");
@@ -136,4 +136,56 @@ fn interval_areas_enclose_the_exact_ones() {
             assert!(iv.wid() <= 1e-9 * (1.0 + exact.mag()), "{iv:?}");
         }
     }
+}
+
+#[test]
+fn a_small_isolated_loop_is_dropped_a_large_or_far_one_is_kept() {
+    let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
+    let p = |x: i64, y: i64| V2::new(q(x, 1), q(y, 1));
+    let seg = |a: V2<Rational>, b: V2<Rational>| Piece::Bezier(Bezier::new(vec![a, b]));
+    // a closed loop (a cubic whose ends coincide) of size `s`, at (x0, y0)
+    let lp = |x0: Rational, y0: Rational, s: Rational| {
+        let v = |dx: i64, dy: i64| V2::new(&x0 + &s * q(dx, 1), &y0 + &s * q(dy, 1));
+        Piece::Bezier(Bezier::new(vec![v(0, 0), v(1, 1), v(-1, 1), v(0, 0)]))
+    };
+    let square = [
+        seg(p(0, 0), p(10, 0)),
+        seg(p(10, 0), p(10, 10)),
+        seg(p(10, 10), p(0, 10)),
+        seg(p(0, 10), p(0, 0)),
+    ];
+    let run = |extra: Vec<Piece>, cap: f64| {
+        let all: Vec<Piece> = square.iter().cloned().chain(extra).collect();
+        let refs: Vec<&Piece> = all.iter().collect();
+        pinched_loops(&refs, &vec![cap; all.len()])
+    };
+    // 1/100 across, 1/20 above the bottom edge: within 0.06 of it
+    let near = lp(q(5, 1), q(1, 20), q(1, 100));
+    let dropped = run(vec![near.clone()], 0.5);
+    assert_eq!(dropped.len(), 1, "{dropped:?}");
+    let (k, reach) = dropped[0];
+    assert_eq!(k, 4);
+    // its farthest point is 0.05 + 3/4 · 0.01 above the edge; the reach is
+    // not below the sampled distance to the square
+    assert!((0.0575 - 1e-9..0.5).contains(&reach), "{reach}");
+    let sampled = near
+        .sample(400)
+        .iter()
+        .map(|&p| {
+            square
+                .iter()
+                .map(|e| sampled_dist(p, e))
+                .fold(f64::INFINITY, f64::min)
+        })
+        .fold(0.0, f64::max);
+    assert!(
+        reach >= sampled - 1e-9,
+        "{reach} below the sampled {sampled}"
+    );
+    // the cap below that distance: kept
+    assert!(run(vec![near], 0.05).is_empty());
+    // the same loop 3 units inside: farther than the cap from everything
+    assert!(run(vec![lp(q(5, 1), q(3, 1), q(1, 100))], 0.5).is_empty());
+    // a loop larger than its cap across is not a candidate
+    assert!(run(vec![lp(q(5, 1), q(1, 20), q(1, 1))], 0.5).is_empty());
 }
