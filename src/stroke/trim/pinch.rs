@@ -18,6 +18,8 @@ use crate::scalar::{interval_from_rational, rational_from_f64, Interval, Rationa
 ///   its cap of its other end `Y` or of the live pieces at `Y`.
 /// - *Isolated loops* ([`isolated_loops`]): a small closed chain that touches
 ///   no other piece, within its caps of the other live pieces.
+/// - *Surplus pieces* ([`surplus_pieces`]): a second path between two points,
+///   within its cap of the other live pieces.
 ///
 /// `caps[k]` is how far piece `k` may be from the output for claim (b) to
 /// stay within tol. Every dropped group is re-checked against the final live
@@ -125,13 +127,16 @@ pub(super) fn pinched_loops(pieces: &[&Piece], caps: &[f64]) -> Vec<(usize, f64)
     }
     // re-check against the final live pieces; a group's point must still end
     // a live piece (the argument of (b) needs X in the output). Isolated
-    // loops are looked for after each re-check (a pinched loop it restored
-    // may be one), each piece tried at most once, so this ends.
+    // loops and surplus pieces are looked for after each re-check (a pinched
+    // loop it restored may be one), each piece tried at most once, so this
+    // ends.
     let mut reach = vec![None; n];
     let mut tried = vec![false; n];
     loop {
         recheck(pieces, caps, &groups, &mut dropped, &mut reach);
-        if !isolated_loops(pieces, caps, &mut dropped, &mut groups, &mut tried) {
+        let isolated = isolated_loops(pieces, caps, &mut dropped, &mut groups, &mut tried);
+        let surplus = surplus_pieces(pieces, caps, &mut dropped, &mut groups, &mut tried);
+        if !isolated && !surplus {
             break;
         }
     }
@@ -286,6 +291,59 @@ fn isolated_loops(
     found
 }
 
+/// *Surplus pieces*: a live piece from `A` to `B ≠ A` where more live pieces
+/// start than end at `A` and more end than start at `B` — a second path from
+/// `A` to `B` beside another (a thin digon the coarse sides leave where an
+/// offset runs along a cap) — within its cap of the other live pieces near it
+/// ([`reach_hi`] without a point). Dropping it balances both points; the
+/// argument for (b) is that of the isolated loops. Pushed with point `None`;
+/// each piece is tried at most once.
+fn surplus_pieces(
+    pieces: &[&Piece],
+    caps: &[f64],
+    dropped: &mut [bool],
+    groups: &mut Vec<(Option<V2<Rational>>, Vec<usize>)>,
+    tried: &mut [bool],
+) -> bool {
+    let n = pieces.len();
+    let mut found = false;
+    for k in 0..n {
+        if dropped[k] || tried[k] {
+            continue;
+        }
+        let (a, b) = (pieces[k].start(), pieces[k].end());
+        if a == b {
+            continue;
+        }
+        let count = |x: &V2<Rational>, starts: bool, dropped: &[bool]| {
+            (0..n)
+                .filter(|&j| {
+                    !dropped[j]
+                        && if starts {
+                            pieces[j].start() == x
+                        } else {
+                            pieces[j].end() == x
+                        }
+                })
+                .count()
+        };
+        if count(a, true, dropped) <= count(a, false, dropped)
+            || count(b, false, dropped) <= count(b, true, dropped)
+        {
+            continue;
+        }
+        tried[k] = true;
+        let refs = near_live(pieces, &[k], caps, dropped);
+        if !refs.is_empty() && reach_hi(pieces[k], &refs, None, caps[k]).is_some() {
+            dropped[k] = true;
+            groups.retain(|(_, c)| !c.contains(&k));
+            groups.push((None, vec![k]));
+            found = true;
+        }
+    }
+    found
+}
+
 /// The outward float box `[x0, y0, x1, y1]` of the pieces' hulls.
 fn chain_box(pieces: &[&Piece], chain: &[usize]) -> Option<[f64; 4]> {
     let mut b = [
@@ -391,8 +449,9 @@ pub(super) fn reach_hi(
 }
 
 /// A point of the exact piece (enclosed in intervals) near the float point
-/// `c`: the float nearest point chooses a dyadic parameter (Bézier) or one of
-/// the exact points of the arc's halvings.
+/// `c`: the float nearest point chooses a dyadic parameter (Bézier) or, on an
+/// arc, an exact rational point of the circle in the float nearest direction
+/// when it is proven in the range (else an end or a halving point).
 fn nearest_on(piece: &Piece, c: (f64, f64)) -> Option<V2<Interval>> {
     let d2 = |x: f64, y: f64| (x - c.0) * (x - c.0) + (y - c.1) * (y - c.1);
     match piece {
@@ -430,9 +489,19 @@ fn nearest_on(piece: &Piece, c: (f64, f64)) -> Option<V2<Interval>> {
         }
         Piece::Arc(a) => {
             let mut pts = vec![a.from.clone(), a.to.clone()];
+            // the float nearest direction from the centre, snapped exactly
+            // onto the circle, when it is proven in the arc's range
+            let cf = approx_dir(&a.center);
+            if let Some(m) =
+                crate::stroke::circle::snap(&a.center, &a.radius, (c.0 - cf.0, c.1 - cf.1))
+            {
+                if a.contains_dir(&m.sub(&a.center)) == Some(true) {
+                    pts.push(m);
+                }
+            }
             let mut todo = vec![(a.clone(), 0)];
             while let Some((arc, depth)) = todo.pop() {
-                if depth >= 4 {
+                if depth >= 2 {
                     continue;
                 }
                 let Some(m) = arc.midpoint() else { continue };

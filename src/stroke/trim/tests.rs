@@ -189,3 +189,41 @@ fn a_small_isolated_loop_is_dropped_a_large_or_far_one_is_kept() {
     // a loop larger than its cap across is not a candidate
     assert!(run(vec![lp(q(5, 1), q(1, 20), q(1, 1))], 0.5).is_empty());
 }
+
+#[test]
+fn a_second_path_near_the_first_is_dropped_a_distant_one_is_kept() {
+    let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
+    let p = |x: i64, y: i64| V2::new(q(x, 1), q(y, 1));
+    let seg = |a: V2<Rational>, b: V2<Rational>| Piece::Bezier(Bezier::new(vec![a, b]));
+    let square = [
+        seg(p(0, 0), p(10, 0)),
+        seg(p(10, 0), p(10, 10)),
+        seg(p(10, 10), p(0, 10)),
+        seg(p(0, 10), p(0, 0)),
+    ];
+    // a second path from (0, 0) to (10, 0): a quadratic bulging by h/2
+    let path = |h: Rational| {
+        Piece::Bezier(Bezier::new(vec![p(0, 0), V2::new(q(5, 1), h), p(10, 0)]))
+    };
+    let run = |extra: &Piece, cap: f64| {
+        let all: Vec<Piece> = square.iter().cloned().chain([extra.clone()]).collect();
+        let refs: Vec<&Piece> = all.iter().collect();
+        pinched_loops(&refs, &vec![cap; all.len()])
+    };
+    let near = path(q(1, 50));
+    let dropped = run(&near, 0.5);
+    // one of the two paths goes, with a reach not below the sampled gap
+    assert_eq!(dropped.len(), 1, "{dropped:?}");
+    let (k, reach) = dropped[0];
+    assert!(k == 0 || k == 4, "{dropped:?}");
+    let sampled = near
+        .sample(400)
+        .iter()
+        .map(|&v| sampled_dist(v, &square[0]))
+        .fold(0.0, f64::max);
+    assert!((sampled - 1e-9..=0.5).contains(&reach), "{reach} vs {sampled}");
+    assert!(sampled > 0.0099, "{sampled}");
+    // a cap below the gap, or a path 2 units away: both stay
+    assert!(run(&near, 0.005).is_empty());
+    assert!(run(&path(q(4, 1)), 0.5).is_empty());
+}
