@@ -205,11 +205,21 @@ fn small_structures_beside_caps_are_dropped() {
         opts.output = lncert::offset::Output::Cubic;
         let s = stroke(&x, &opts).unwrap();
         let case = format!("{name} r {rf} TOL {tol}");
-        assert!(s.proven(), "{case}: {:?} {:?} {:?} {:?}", s.a, s.b, s.c, s.notes);
+        assert!(
+            s.proven(),
+            "{case}: {:?} {:?} {:?} {:?}",
+            s.a,
+            s.b,
+            s.c,
+            s.notes
+        );
         assert!(s.complete, "{case}");
         assert_eq!(s.contours.len(), 1, "{case}: {:?}", s.notes);
         let c = &s.contours[0];
-        assert!(c.closed && c.orientation != Orientation::Undecided, "{case}");
+        assert!(
+            c.closed && c.orientation != Orientation::Undecided,
+            "{case}"
+        );
         let curve = samples(&x, 0.0, 4000);
         for p in c.pieces.iter().flat_map(|p| p.sample(60)) {
             let d = dist(&curve, p);

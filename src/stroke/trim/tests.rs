@@ -202,9 +202,8 @@ fn a_second_path_near_the_first_is_dropped_a_distant_one_is_kept() {
         seg(p(0, 10), p(0, 0)),
     ];
     // a second path from (0, 0) to (10, 0): a quadratic bulging by h/2
-    let path = |h: Rational| {
-        Piece::Bezier(Bezier::new(vec![p(0, 0), V2::new(q(5, 1), h), p(10, 0)]))
-    };
+    let path =
+        |h: Rational| Piece::Bezier(Bezier::new(vec![p(0, 0), V2::new(q(5, 1), h), p(10, 0)]));
     let run = |extra: &Piece, cap: f64| {
         let all: Vec<Piece> = square.iter().cloned().chain([extra.clone()]).collect();
         let refs: Vec<&Piece> = all.iter().collect();
@@ -221,7 +220,10 @@ fn a_second_path_near_the_first_is_dropped_a_distant_one_is_kept() {
         .iter()
         .map(|&v| sampled_dist(v, &square[0]))
         .fold(0.0, f64::max);
-    assert!((sampled - 1e-9..=0.5).contains(&reach), "{reach} vs {sampled}");
+    assert!(
+        (sampled - 1e-9..=0.5).contains(&reach),
+        "{reach} vs {sampled}"
+    );
     assert!(sampled > 0.0099, "{sampled}");
     // a cap below the gap, or a path 2 units away: both stay
     assert!(run(&near, 0.005).is_empty());
