@@ -344,7 +344,9 @@ fn surplus_pieces(
     found
 }
 
-/// The outward float box `[x0, y0, x1, y1]` of the pieces' hulls.
+/// An outward float box `[x0, y0, x1, y1]` of the pieces: a Bézier's control
+/// points (enclosed), an arc's whole circle. Only a filter: a box too large
+/// keeps a chain from being a candidate or adds a reference, never more.
 fn chain_box(pieces: &[&Piece], chain: &[usize]) -> Option<[f64; 4]> {
     let mut b = [
         f64::INFINITY,
@@ -352,18 +354,21 @@ fn chain_box(pieces: &[&Piece], chain: &[usize]) -> Option<[f64; 4]> {
         f64::NEG_INFINITY,
         f64::NEG_INFINITY,
     ];
+    let mut add = |p: V2<Interval>| {
+        b = [
+            b[0].min(p.x.inf()),
+            b[1].min(p.y.inf()),
+            b[2].max(p.x.sup()),
+            b[3].max(p.y.sup()),
+        ];
+    };
     for &k in chain {
-        for part in Part::initial(pieces[k])? {
-            for p in part.hull()? {
-                if p.x.is_empty() || p.y.is_empty() {
-                    return None;
-                }
-                b = [
-                    b[0].min(p.x.inf()),
-                    b[1].min(p.y.inf()),
-                    b[2].max(p.x.sup()),
-                    b[3].max(p.y.sup()),
-                ];
+        match pieces[k] {
+            Piece::Bezier(z) => z.points().iter().for_each(|p| add(iv_point(p))),
+            Piece::Arc(a) => {
+                let (c, r) = (iv_point(&a.center), interval_from_rational(&a.radius));
+                add(V2::new(c.x - r, c.y - r));
+                add(V2::new(c.x + r, c.y + r));
             }
         }
     }
