@@ -424,3 +424,55 @@ fn cli_offset_out_reads_back() {
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("--out"));
 }
+
+/// `lncert convolve CURVE --out out.svg`: one line per side, named and marked
+/// proven, in the input's frame; each read back within the pen's reach of
+/// the curve; `--trim --out` writes the outline; native G2 segments (degree
+/// ≥ 4) are refused before any work, naming --out.
+#[test]
+fn cli_convolve_out_reads_back() {
+    let input = tmp(
+        "convolve-in.svg",
+        r#"<svg viewBox="0 0 10 10"><path d="M 1 1 C 2 3 4 3 5 1"/></svg>"#,
+    );
+    let args = [
+        "convolve",
+        input.to_str().unwrap(),
+        "--ellipse",
+        "0.3,0.1",
+        "--tol",
+        "1e-3",
+    ];
+    let doc = out_document(
+        &[&args[..], &["--output", "cubic"]].concat(),
+        "convolve-out.svg",
+    );
+    let (vb, paths) = paths_of(&doc);
+    assert_eq!(vb.as_deref(), Some("0 0 10 10"));
+    let sides: Vec<_> = paths.iter().map(|p| attr(p, "data-lncert-side")).collect();
+    assert_eq!(sides, [Some("plus"), Some("minus")]);
+    assert!(paths
+        .iter()
+        .all(|p| attr(p, "data-lncert-proven") == Some("true")));
+    // the curve's box is [1, 5] × [1, 2.5]: both sides within 0.3 + tol of it
+    let b = bounds_of(&parse_svg_document(&doc).unwrap());
+    let reach = 0.3 + 1e-3;
+    assert!(
+        b[0] >= 1.0 - reach && b[2] <= 5.0 + reach && b[1] >= 1.0 - reach && b[3] <= 2.5 + reach,
+        "{b:?}"
+    );
+    assert!(b[0] < 1.0 && b[2] > 5.0, "{b:?}");
+    // --trim: the outline, one path
+    let doc = out_document(
+        &[&args[..], &["--output", "cubic", "--trim"]].concat(),
+        "convolve-trim-out.svg",
+    );
+    let (_, paths) = paths_of(&doc);
+    assert_eq!(paths.len(), 1);
+    assert_eq!(attr(&paths[0], "data-lncert-proven"), Some("true"));
+    // native G2 pieces: refused, exit 2, naming --out
+    let g2 = tmp("convolve-g2.svg", "");
+    let o = lncert(&[&args[..], &["--out", g2.to_str().unwrap(), "--json"]].concat());
+    assert_eq!(o.status.code(), Some(2));
+    assert_eq!(common::json_of(&o)["error"]["field"], "--out");
+}

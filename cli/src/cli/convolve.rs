@@ -105,6 +105,13 @@ pub struct ConvolveArgs {
     /// not used, `--svg` draws the outline.
     #[arg(long, conflicts_with_all = ["certificate", "grid"])]
     pub trim: bool,
+    /// Write the result as an SVG document (`.svg`): one path per side
+    /// (`data-lncert-side`, `data-lncert-proven`), or with `--trim` the
+    /// outline, in the input's frame (an SVG input's `viewBox`, y down as
+    /// read; JSON curves drawn upright). SVG stores degree ≤ 3: use
+    /// `--output cubic`/`quadratic` or `--method ln-pair`.
+    #[arg(long, value_name = "FILE.svg")]
+    pub out: Option<PathBuf>,
     /// One JSON document on stdout.
     #[arg(long)]
     pub json: bool,
@@ -154,6 +161,15 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
         }
     }
     let output = lncert::offset::Output::from(a.output);
+    if let Some(p) = &a.out {
+        super::svg_out::check(p)?;
+        if !a.trim && a.method == Method::G2 && output == lncert::offset::Output::Native {
+            return Err(bad(
+                "--out",
+                "G2 segments have degree n + 3 ≥ 4, which SVG cannot store: use --output cubic, --output quadratic or --method ln-pair (cubic)",
+            ));
+        }
+    }
     let grid = super::args::grid(a.grid.as_deref())?;
     let tolerance = super::args::tolerance(&a.tol)?;
     let tol = tolerance.value();
@@ -184,6 +200,22 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
         tol,
         proven: opts.certify,
     };
+    if let Some(path) = &a.out {
+        let y_down = !text.trim_start().starts_with('{');
+        let frame = super::svg_out::frame(&a.curve, false, y_down)?;
+        let shapes = results
+            .iter()
+            .map(|(name, r, _)| {
+                let shape = lncert::write::SvgShape::offset(r).map_err(|e| bad("--out", e))?;
+                let shape = shape.with("data-lncert-side", *name);
+                Ok(super::svg_out::proven(
+                    shape,
+                    opts.certify && judge.within(r),
+                ))
+            })
+            .collect::<Result<Vec<_>, CliError>>()?;
+        super::svg_out::write(path, &shapes, &frame)?;
+    }
     let within_all = results
         .iter()
         .all(|(_, r, _)| judge.within(r) || !opts.certify && r.reached());
@@ -220,7 +252,7 @@ fn run_trim(a: &ConvolveArgs, curve: &[Bezier<Rational>], pen: Pen) -> Result<i3
         method: a.method,
         svg: a.svg.clone(),
         path_out: None,
-        out: None,
+        out: a.out.clone(),
         json: a.json,
     };
     super::stroke::run_with(&sa, curve, lncert::stroke::PenShape::Ellipse(pen))
