@@ -593,6 +593,21 @@ fn end_roots_only(
         let m = h.len() - 1;
         h = (0..m).map(|j| h[j] * iv(m) / iv(m - j)).collect();
     }
+    end_hits(b, c, arc, (h, bi, ci), (at0, at1))
+}
+
+/// The end roots as hits, once the rest `h` of `g` (the end roots of
+/// multiplicities `at0`, `at1` divided out; interval Bernstein coefficients)
+/// is proven to have no root in the arc's range: each end root whose point is
+/// in the range (`multiple` when its multiplicity is above 1). `None` when
+/// that is not decided.
+fn end_hits(
+    b: &Bezier<Rational>,
+    c: &V2<Rational>,
+    arc: &Arc,
+    (h, bi, ci): (Vec<Interval>, &Bezier<Interval>, &V2<Interval>),
+    (at0, at1): (usize, usize),
+) -> Option<Vec<ArcHit>> {
     if !no_hit(h, bi, ci, arc, (0.0, 1.0), 14) {
         return None;
     }
@@ -644,34 +659,8 @@ fn end_roots_exact(
     }
     let bi = b.map(interval_from_rational);
     let ci = c.map(interval_from_rational);
-    if !no_hit(
-        g.iter().map(interval_from_rational).collect(),
-        &bi,
-        &ci,
-        arc,
-        (0.0, 1.0),
-        14,
-    ) {
-        return None;
-    }
-    let mut hits = Vec::new();
-    for (k, t) in [
-        (at0, <Rational as Zero>::zero()),
-        (at1, <Rational as One>::one()),
-    ] {
-        if k == 0 {
-            continue;
-        }
-        match arc.contains_dir(&b.eval(&t).sub(c)) {
-            Some(true) => hits.push(ArcHit {
-                t: (t.clone(), t),
-                multiple: k > 1,
-            }),
-            Some(false) => {}
-            None => return None,
-        }
-    }
-    Some(hits)
+    let h = g.iter().map(interval_from_rational).collect();
+    end_hits(b, c, arc, (h, &bi, &ci), (at0, at1))
 }
 
 /// Every Bernstein coefficient of every part of a subdivision has one strict

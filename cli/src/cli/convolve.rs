@@ -164,10 +164,7 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
     if let Some(p) = &a.out {
         super::svg_out::check(p)?;
         if !a.trim && a.method == Method::G2 && output == lncert::offset::Output::Native {
-            return Err(bad(
-                "--out",
-                "G2 segments have degree n + 3 ≥ 4, which SVG cannot store: use --output cubic, --output quadratic or --method ln-pair (cubic)",
-            ));
+            return Err(super::svg_out::native_g2_refused("--out"));
         }
     }
     let grid = super::args::grid(a.grid.as_deref())?;
@@ -201,7 +198,7 @@ pub fn run(a: &ConvolveArgs) -> Result<i32, CliError> {
         proven: opts.certify,
     };
     if let Some(path) = &a.out {
-        let y_down = !text.trim_start().starts_with('{');
+        let y_down = super::curve_input::y_down(&text);
         let frame = super::svg_out::frame(&a.curve, false, y_down)?;
         let shapes = results
             .iter()

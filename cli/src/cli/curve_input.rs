@@ -153,7 +153,7 @@ pub fn read_curve_input(
         });
     }
     let (pieces, approx) = parse_curve_reported(&text).map_err(|e| bad("CURVE", e))?;
-    let y_down = !text.trim_start().starts_with('{');
+    let y_down = y_down(&text);
     Ok(CurveInput::Curve {
         pieces,
         approx,
@@ -167,6 +167,12 @@ pub fn input_line(label: &str, approx: &InputApprox) -> Option<String> {
     approx
         .summary()
         .map(|s| format!("{label}: {s}; the results are about the approximated curve\n"))
+}
+
+/// Whether a curve file's coordinates are SVG's (y down): SVG path data or a
+/// document, not a JSON curve.
+pub fn y_down(text: &str) -> bool {
+    !text.trim_start().starts_with('{')
 }
 
 #[cfg(test)]

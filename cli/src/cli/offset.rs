@@ -267,10 +267,7 @@ fn check_path_degree(a: &OffsetArgs, method: OffsetMethod, output: Output) -> Re
         .find(|(_, p)| p.is_some())
         .map(|(flag, _)| flag);
     if let (Some(flag), OffsetMethod::G2, Output::Native) = (path_flag, method, output) {
-        return Err(bad(
-            flag,
-            "G2 segments have degree n + 3 ≥ 4, which SVG path data cannot store: use --output cubic, --method ln-pair (cubic), or --curve-out",
-        ));
+        return Err(super::svg_out::native_g2_refused(flag));
     }
     Ok(())
 }

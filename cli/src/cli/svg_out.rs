@@ -55,3 +55,12 @@ pub fn write(path: &Path, shapes: &[SvgShape], frame: &SvgOptions) -> Result<(),
 pub fn proven(shape: SvgShape, proven: bool) -> SvgShape {
     shape.with("data-lncert-proven", if proven { "true" } else { "false" })
 }
+
+/// The refusal of `flag` (`--out`, `--path-out`) for native G² segments:
+/// SVG path data has no command above degree 3.
+pub fn native_g2_refused(flag: &str) -> CliError {
+    bad(
+        flag,
+        "G2 segments have degree n + 3 ≥ 4, which SVG path data cannot store: use --output cubic, --method ln-pair (cubic), or --curve-out",
+    )
+}

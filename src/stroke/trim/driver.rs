@@ -469,11 +469,12 @@ fn bridge_connectors(
     out
 }
 
-/// Pinched loops, spurs and isolated loops: kept pieces that close a loop at
-/// an exact point X of the output, or dangle from one, each within a
-/// certified reach of the pieces that stay at X, and small closed chains
-/// touching nothing, within a certified reach of the pieces near them, are
-/// dropped (a boundary point near them is within
+/// Pinched loops, spurs, isolated loops and surplus pieces: kept pieces that
+/// close a loop at an exact point X of the output, or dangle from one, each
+/// within a certified reach of the pieces that stay at X, and small closed
+/// chains touching nothing or second paths between two points, within a
+/// certified reach of the pieces near them, are dropped (a boundary point
+/// near them is within
 /// `e + δ + reach` of the output).
 fn drop_pinched(
     run: &Run,
@@ -524,7 +525,7 @@ fn drop_pinched(
         add_note(
             notes,
             format!(
-                "{} kept pieces forming pinched loops, spurs or isolated loops dropped (each within a certified reach of the pieces that stay, added to (b))",
+                "{} kept pieces forming pinched loops, spurs, isolated loops or surplus paths dropped (each within a certified reach of the pieces that stay, added to (b))",
                 dropped.len()
             ),
         );

@@ -7,6 +7,35 @@ use super::types::Piece;
 use crate::curve::V2;
 use crate::scalar::{interval_from_rational, rational_from_f64, Interval, Rational, Scalar};
 
+/// A dropped group: its point `X` (`None` for an isolated loop or a surplus
+/// piece, measured against the live pieces near it) and its pieces.
+type Group = (Option<V2<Rational>>, Vec<usize>);
+
+/// The live pieces outside `chain` that start or end at `x`.
+fn live_at<'a>(
+    pieces: &[&'a Piece],
+    x: &V2<Rational>,
+    chain: &[usize],
+    dropped: &[bool],
+) -> Vec<&'a Piece> {
+    (0..pieces.len())
+        .filter(|&j| {
+            !chain.contains(&j) && !dropped[j] && (pieces[j].start() == x || pieces[j].end() == x)
+        })
+        .map(|j| pieces[j])
+        .collect()
+}
+
+/// Marks `chain` dropped as a group without a point; a group restored earlier
+/// that shares a piece (restored groups are wholly live) is replaced by it.
+fn drop_group(chain: Vec<usize>, dropped: &mut [bool], groups: &mut Vec<Group>) {
+    for &k in &chain {
+        dropped[k] = true;
+    }
+    groups.retain(|(_, c)| !c.iter().any(|k| chain.contains(k)));
+    groups.push((None, chain));
+}
+
 /// Pieces to drop from the output, each with its certified *reach*: an upper
 /// bound of the distance from any of its points to the pieces that stay.
 ///
@@ -30,19 +59,9 @@ use crate::scalar::{interval_from_rational, rational_from_f64, Interval, Rationa
 pub(super) fn pinched_loops(pieces: &[&Piece], caps: &[f64]) -> Vec<(usize, f64)> {
     let n = pieces.len();
     let mut dropped = vec![false; n];
-    // the live pieces at `x` outside `chain`
-    let live_at = |x: &V2<Rational>, chain: &[usize], dropped: &[bool]| -> Vec<&Piece> {
-        (0..n)
-            .filter(|&j| {
-                !chain.contains(&j)
-                    && !dropped[j]
-                    && (pieces[j].start() == x || pieces[j].end() == x)
-            })
-            .map(|j| pieces[j])
-            .collect()
-    };
-    // a group: its point X (None for an isolated loop) and its pieces
-    let mut groups: Vec<(Option<V2<Rational>>, Vec<usize>)> = Vec::new();
+    let live_at =
+        |x: &V2<Rational>, chain: &[usize], dropped: &[bool]| live_at(pieces, x, chain, dropped);
+    let mut groups: Vec<Group> = Vec::new();
     for s in 0..n {
         if dropped[s] {
             continue;
@@ -153,26 +172,18 @@ pub(super) fn pinched_loops(pieces: &[&Piece], caps: &[f64]) -> Vec<(usize, f64)
 fn recheck(
     pieces: &[&Piece],
     caps: &[f64],
-    groups: &[(Option<V2<Rational>>, Vec<usize>)],
+    groups: &[Group],
     dropped: &mut [bool],
     reach: &mut [Option<f64>],
 ) {
-    let n = pieces.len();
     loop {
         let mut changed = false;
         for (x, chain) in groups {
             if chain.iter().all(|&k| !dropped[k]) {
                 continue;
             }
-            let refs: Vec<&Piece> = match x {
-                Some(x) => (0..n)
-                    .filter(|&j| {
-                        !chain.contains(&j)
-                            && !dropped[j]
-                            && (pieces[j].start() == x || pieces[j].end() == x)
-                    })
-                    .map(|j| pieces[j])
-                    .collect(),
+            let refs = match x {
+                Some(x) => live_at(pieces, x, chain, dropped),
                 None => near_live(pieces, chain, caps, dropped),
             };
             let reaches: Option<Vec<f64>> = if refs.is_empty() {
@@ -217,7 +228,7 @@ fn isolated_loops(
     pieces: &[&Piece],
     caps: &[f64],
     dropped: &mut [bool],
-    groups: &mut Vec<(Option<V2<Rational>>, Vec<usize>)>,
+    groups: &mut Vec<Group>,
     tried: &mut [bool],
 ) -> bool {
     let n = pieces.len();
@@ -278,13 +289,7 @@ fn isolated_loops(
             .iter()
             .all(|&k| reach_hi(pieces[k], &refs, None, caps[k]).is_some())
         {
-            for &k in &chain {
-                dropped[k] = true;
-            }
-            // a group restored earlier that shares a piece (restored groups
-            // are wholly live) is replaced by this one
-            groups.retain(|(_, c)| !c.iter().any(|k| chain.contains(k)));
-            groups.push((None, chain));
+            drop_group(chain, dropped, groups);
             found = true;
         }
     }
@@ -302,7 +307,7 @@ fn surplus_pieces(
     pieces: &[&Piece],
     caps: &[f64],
     dropped: &mut [bool],
-    groups: &mut Vec<(Option<V2<Rational>>, Vec<usize>)>,
+    groups: &mut Vec<Group>,
     tried: &mut [bool],
 ) -> bool {
     let n = pieces.len();
@@ -335,9 +340,7 @@ fn surplus_pieces(
         tried[k] = true;
         let refs = near_live(pieces, &[k], caps, dropped);
         if !refs.is_empty() && reach_hi(pieces[k], &refs, None, caps[k]).is_some() {
-            dropped[k] = true;
-            groups.retain(|(_, c)| !c.contains(&k));
-            groups.push((None, vec![k]));
+            drop_group(vec![k], dropped, groups);
             found = true;
         }
     }
