@@ -28,6 +28,7 @@
 
 mod eval;
 mod read;
+pub mod stroke;
 
 use super::cert::{CLAIM, FORMAT, VERSION, VERSION_2};
 use crate::json::{parse, Json, Limits};
@@ -174,8 +175,14 @@ pub(crate) fn verify_json(doc: &Json) -> Result<Valid, Invalid> {
 fn check_document(doc: &Json) -> Result<Valid, Invalid> {
     // the format and version first: another format's keys are not errors of this one
     if let Some(format) = doc.get("format") {
+        if format.as_str() == Some(stroke::FORMAT) {
+            return stroke::check(doc);
+        }
         if format.as_str() != Some(FORMAT) {
-            return Err(inv("format", format!("expected \"{FORMAT}\"")));
+            return Err(inv(
+                "format",
+                format!("expected \"{FORMAT}\" or \"{}\"", stroke::FORMAT),
+            ));
         }
     }
     let version = match doc.get("version") {

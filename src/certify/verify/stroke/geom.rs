@@ -1,0 +1,467 @@
+//! The stroke verifier's own interval geometry: Béziers with their first two
+//! hodographs, the exact offsets and the cone arcs of `∂(x ⊕ disk r)` with
+//! their derivatives, and the four box tests of the certificate (near a
+//! Bézier, near an arc, strictly inside `S`, and a part of the outline between
+//! a point of `S` and a point outside `S`). Every test is a mean-value
+//! enclosure over inari intervals (outward rounding); nothing is shared with
+//! the stroke engine. The writer ([`crate::stroke::certificate`]) calls the same
+//! tests to choose its boxes, so what it writes is what this code accepts.
+
+use crate::scalar::{interval_from_rational, Interval, Rational};
+
+/// A point or vector of intervals.
+pub(crate) type P = [Interval; 2];
+
+pub(crate) fn ic(x: f64) -> Interval {
+    Interval::try_from((x, x)).expect("finite constant")
+}
+
+pub(crate) fn iq(r: &Rational) -> Interval {
+    interval_from_rational(r)
+}
+
+pub(crate) fn ip(p: &[Rational; 2]) -> P {
+    [iq(&p[0]), iq(&p[1])]
+}
+
+fn sub(a: P, b: P) -> P {
+    [a[0] - b[0], a[1] - b[1]]
+}
+fn add(a: P, b: P) -> P {
+    [a[0] + b[0], a[1] + b[1]]
+}
+fn scale(a: P, k: Interval) -> P {
+    [a[0] * k, a[1] * k]
+}
+fn dot(a: P, b: P) -> Interval {
+    a[0] * b[0] + a[1] * b[1]
+}
+/// The left normal `J v = (−v.y, v.x)`.
+fn perp(v: P) -> P {
+    [-v[1], v[0]]
+}
+
+/// Hull of two intervals.
+fn hull(a: Interval, b: Interval) -> Interval {
+    a.convex_hull(b)
+}
+
+/// `true` when every number of the enclosure is finite (not empty, no NaN).
+fn finite(x: Interval) -> bool {
+    !x.is_empty() && x.inf().is_finite() && x.sup().is_finite()
+}
+
+/// A Bézier with interval control points and its first and second hodographs.
+#[derive(Clone, Debug)]
+pub(crate) struct Bez {
+    pub(crate) pts: Vec<P>,
+    d: Vec<P>,
+    dd: Vec<P>,
+}
+
+fn hodograph(p: &[P]) -> Vec<P> {
+    let n = ic((p.len().max(1) - 1) as f64);
+    p.windows(2).map(|w| scale(sub(w[1], w[0]), n)).collect()
+}
+
+/// de Casteljau at an interval parameter (a valid enclosure of `B(t)` for
+/// every `t` in it); the zero vector for an empty list (a constant's hodograph).
+fn casteljau(p: &[P], t: Interval) -> P {
+    if p.is_empty() {
+        return [ic(0.0), ic(0.0)];
+    }
+    let mut b = p.to_vec();
+    let u = ic(1.0) - t;
+    for k in (1..b.len()).rev() {
+        for i in 0..k {
+            b[i] = add(scale(b[i], u), scale(b[i + 1], t));
+        }
+    }
+    b[0]
+}
+
+impl Bez {
+    pub(crate) fn new(pts: Vec<P>) -> Bez {
+        let d = hodograph(&pts);
+        let dd = hodograph(&d);
+        Bez { pts, d, dd }
+    }
+    pub(crate) fn at(&self, t: Interval) -> P {
+        casteljau(&self.pts, t)
+    }
+    pub(crate) fn d_at(&self, t: Interval) -> P {
+        casteljau(&self.d, t)
+    }
+    /// The control points of the restriction to `[a, b]` (blossom values
+    /// `B(a, …, a, b, …, b)`), each enclosed.
+    pub(crate) fn restrict(&self, a: Interval, b: Interval) -> Vec<P> {
+        let n = self.pts.len() - 1;
+        (0..=n)
+            .map(|k| {
+                let mut q = self.pts.clone();
+                for level in 0..n {
+                    let t = if level < n - k { a } else { b };
+                    let u = ic(1.0) - t;
+                    for i in 0..(n - level) {
+                        q[i] = add(scale(q[i], u), scale(q[i + 1], t));
+                    }
+                }
+                q[0]
+            })
+            .collect()
+    }
+}
+
+/// A curve of `∂S`'s cover: its value at a point parameter and its
+/// derivative over an interval, each enclosed (`None`: undefined there).
+pub(crate) trait Path: Sync {
+    fn val(&self, t: Interval) -> Option<P>;
+    fn der(&self, t: Interval) -> Option<P>;
+}
+
+/// The exact offset `x(t) + σ r J x′(t)/|x′(t)|` of one input piece.
+pub(crate) struct Side<'a> {
+    pub(crate) b: &'a Bez,
+    /// `+1` left (`J x′`), `−1` right.
+    pub(crate) sigma: f64,
+    pub(crate) r: Interval,
+}
+
+impl Path for Side<'_> {
+    fn val(&self, t: Interval) -> Option<P> {
+        let x = self.b.at(t);
+        let d = self.b.d_at(t);
+        let n2 = dot(d, d);
+        if !finite(n2) || n2.inf() <= 0.0 {
+            return None;
+        }
+        let k = self.r * ic(self.sigma) / n2.sqrt();
+        let e = add(x, scale(perp(d), k));
+        (finite(e[0]) && finite(e[1])).then_some(e)
+    }
+    fn der(&self, t: Interval) -> Option<P> {
+        let d = self.b.d_at(t);
+        let dd = casteljau(&self.b.dd, t);
+        let n2 = dot(d, d);
+        if !finite(n2) || n2.inf() <= 0.0 {
+            return None;
+        }
+        let len = n2.sqrt();
+        // (x′/|x′|)′ = x″/|x′| − x′ (x′·x″)/|x′|³
+        let nd = sub(scale(dd, ic(1.0) / len), scale(d, dot(d, dd) / (n2 * len)));
+        let e = add(d, scale(perp(nd), self.r * ic(self.sigma)));
+        (finite(e[0]) && finite(e[1])).then_some(e)
+    }
+}
+
+/// The arc `c + r d(λ)/|d(λ)|`, `d(λ) = (1 − λ) a + λ b`, `λ ∈ [0, 1]`: half
+/// of a cap or join cone (`a`, `b` exact rational directions less than `π`
+/// apart, so `d` never vanishes).
+pub(crate) struct ConeArc {
+    pub(crate) c: P,
+    pub(crate) r: Interval,
+    pub(crate) a: P,
+    pub(crate) b: P,
+}
+
+impl Path for ConeArc {
+    fn val(&self, t: Interval) -> Option<P> {
+        let d = add(self.a, scale(sub(self.b, self.a), t));
+        let n2 = dot(d, d);
+        if !finite(n2) || n2.inf() <= 0.0 {
+            return None;
+        }
+        let p = add(self.c, scale(d, self.r / n2.sqrt()));
+        (finite(p[0]) && finite(p[1])).then_some(p)
+    }
+    fn der(&self, t: Interval) -> Option<P> {
+        let d = add(self.a, scale(sub(self.b, self.a), t));
+        let dd = sub(self.b, self.a);
+        let n2 = dot(d, d);
+        if !finite(n2) || n2.inf() <= 0.0 {
+            return None;
+        }
+        let len = n2.sqrt();
+        let v = sub(scale(dd, ic(1.0) / len), scale(d, dot(d, dd) / (n2 * len)));
+        let p = scale(v, self.r);
+        (finite(p[0]) && finite(p[1])).then_some(p)
+    }
+}
+
+/// A parameter box `[t0, t1]` of a family, enclosed: the box, its midpoint
+/// (a point interval when the ends are floats) and `I − m`.
+pub(crate) struct BoxT {
+    pub(crate) all: Interval,
+    pub(crate) mid: Interval,
+    pub(crate) off: Interval,
+}
+
+impl BoxT {
+    pub(crate) fn new(t0: &Rational, t1: &Rational) -> BoxT {
+        let m = (t0 + t1) / Rational::from_integer(2.into());
+        let all = hull(iq(t0), iq(t1));
+        let mid = iq(&m);
+        BoxT {
+            all,
+            mid,
+            off: all - mid,
+        }
+    }
+}
+
+/// The mean-value enclosure of `path` over the box: `val(m) + der(I)(I − m)`,
+/// with `val(m)` and `der(I)`.
+fn mean_value(path: &dyn Path, bx: &BoxT) -> Option<(P, P, P)> {
+    let v = path.val(bx.mid)?;
+    let d = path.der(bx.all)?;
+    Some((add(v, scale(d, bx.off)), v, d))
+}
+
+fn bad(s: &str) -> String {
+    format!("{s} is undefined or not finite on the box (a singular input piece?)")
+}
+
+/// `sup |path(t) − L(s + k (t − m))|` over the box, for a Bézier `L`; an
+/// error when the foot map leaves `[0, 1]` or the bound exceeds `tol2` (the
+/// square of the tolerance, enclosed).
+pub(crate) fn near_bezier(
+    path: &dyn Path,
+    bx: &BoxT,
+    l: &Bez,
+    s: &Rational,
+    k: &Rational,
+    tol2: Interval,
+) -> Result<f64, String> {
+    let (si, ki) = (iq(s), iq(k));
+    let tau = si + ki * bx.off;
+    if !(tau.inf() >= 0.0 && tau.sup() <= 1.0) {
+        return Err(format!(
+            "the foot map s + k (t − m) reaches [{:e}, {:e}], outside [0, 1]",
+            tau.inf(),
+            tau.sup()
+        ));
+    }
+    let v = path.val(bx.mid).ok_or_else(|| bad("the boundary point"))?;
+    let d = path
+        .der(bx.all)
+        .ok_or_else(|| bad("the boundary tangent"))?;
+    let gm = sub(v, l.at(si));
+    let gd = sub(d, scale(l.d_at(tau), ki));
+    let g = add(gm, scale(gd, bx.off));
+    let n2 = g[0].sqr() + g[1].sqr();
+    if !finite(n2) || n2.sup() > tol2.inf() {
+        return Err(format!(
+            "distance to the outline piece up to {:e}, above the tolerance",
+            n2.sup().sqrt()
+        ));
+    }
+    Ok(sqrt_up(n2.sup()))
+}
+
+/// An exact arc of the outline, counter-clockwise from `u` to `v` (radius
+/// vectors; `u = v`: the whole circle).
+pub(crate) struct ArcT {
+    pub(crate) c: P,
+    pub(crate) rho: Interval,
+    pub(crate) u: P,
+    pub(crate) v: P,
+    /// `cross(u, v)` exactly: its sign, and whether `u = v`.
+    pub(crate) sign: i8,
+    pub(crate) full: bool,
+}
+
+impl ArcT {
+    /// Every direction of the box `w` lies in the arc's angular range (proven).
+    fn contains(&self, w: P) -> bool {
+        if self.full {
+            return true;
+        }
+        let cr = |a: P, b: P| a[0] * b[1] - a[1] * b[0];
+        let (cu, cv) = (cr(self.u, w), cr(w, self.v));
+        match self.sign {
+            1 => cu.inf() >= 0.0 && cv.inf() >= 0.0,
+            -1 => cu.inf() >= 0.0 || cv.inf() >= 0.0,
+            // a half circle: `u = −v`
+            _ => cu.inf() >= 0.0,
+        }
+    }
+}
+
+/// `sup dist(path(t), arc)` over the box: the direction from the centre is
+/// proven inside the arc's range, and `||p − c| − ρ| = |q|/(|p − c| + ρ)`
+/// with `q = |p − c|² − ρ²` enclosed by its mean value form.
+pub(crate) fn near_arc(path: &dyn Path, bx: &BoxT, a: &ArcT, tol: Interval) -> Result<f64, String> {
+    let (all, v, d) = mean_value(path, bx).ok_or_else(|| bad("the boundary point"))?;
+    let w = sub(all, a.c);
+    if !a.contains(w) {
+        return Err("the boundary points' directions are not proven inside the arc's range".into());
+    }
+    let wm = sub(v, a.c);
+    let q = dot(wm, wm) - a.rho.sqr() + ic(2.0) * dot(w, d) * bx.off;
+    let num = ic(q.inf().abs().max(q.sup().abs()));
+    let lo = (a.rho.sqr() + q).inf().max(0.0);
+    let den = a.rho + ic(lo).sqrt();
+    let b = num / den;
+    if !finite(b) || b.sup() > tol.inf() {
+        return Err(format!(
+            "distance to the outline arc up to {:e}, above the tolerance",
+            b.sup()
+        ));
+    }
+    Ok(b.sup())
+}
+
+/// `|path(t) − y|² < r²` on the whole box: every boundary point of the box is
+/// strictly inside `S` (within less than `r` of the input point `y`).
+pub(crate) fn inside(path: &dyn Path, bx: &BoxT, y: P, r2: Interval) -> Result<(), String> {
+    let (all, v, d) = mean_value(path, bx).ok_or_else(|| bad("the boundary point"))?;
+    let wm = sub(v, y);
+    let q = dot(wm, wm) + ic(2.0) * dot(sub(all, y), d) * bx.off;
+    if finite(q) && q.sup() < r2.inf() {
+        Ok(())
+    } else {
+        Err(format!(
+            "distance² to the input point up to {:e}, not proven below r² {:e}",
+            q.sup(),
+            r2.inf()
+        ))
+    }
+}
+
+/// `|p − x(u)|² > r²` for every `u ∈ [0, 1]` and every input piece: `p` is
+/// outside `S`. Bernstein coefficients of `|x − p|² − r²`, subdivided (depth
+/// ≤ 24, at most 4 096 leaves per piece) until all are positive.
+pub(crate) fn outside(p: P, input: &[Bez], r2: Interval) -> Result<(), String> {
+    // (called with r2 = (r + μ)² for a disk of radius μ about p)
+    for (j, b) in input.iter().enumerate() {
+        // the control polygon's box: farther than r from p ⇒ the piece is
+        let (mut lo, mut hi) = (b.pts[0], b.pts[0]);
+        for q in &b.pts {
+            for i in 0..2 {
+                lo[i] = ic(lo[i].inf().min(q[i].inf()));
+                hi[i] = ic(hi[i].sup().max(q[i].sup()));
+            }
+        }
+        let gap = |i: usize| {
+            let below = lo[i] - p[i];
+            let above = p[i] - hi[i];
+            let g = below.inf().max(above.inf()).max(0.0);
+            ic(g).sqr()
+        };
+        if (gap(0) + gap(1)).inf() > r2.sup() {
+            continue;
+        }
+        let xs: Vec<Interval> = b.pts.iter().map(|q| q[0] - p[0]).collect();
+        let ys: Vec<Interval> = b.pts.iter().map(|q| q[1] - p[1]).collect();
+        let g: Vec<Interval> = bprod(&xs, &xs)
+            .iter()
+            .zip(bprod(&ys, &ys))
+            .map(|(a, c)| *a + c - r2)
+            .collect();
+        positive(g, j)?;
+    }
+    Ok(())
+}
+
+fn positive(g: Vec<Interval>, j: usize) -> Result<(), String> {
+    let mut stack = vec![(g, 0u32)];
+    let mut leaves = 0usize;
+    while let Some((g, depth)) = stack.pop() {
+        if g.iter().all(|c| finite(*c) && c.inf() > 0.0) {
+            continue;
+        }
+        let (first, last) = (g[0], g[g.len() - 1]);
+        if first.sup() <= 0.0 || last.sup() <= 0.0 {
+            return Err(format!("the point is within r of input piece {j}"));
+        }
+        leaves += 1;
+        if depth >= 24 || leaves > 4096 {
+            return Err(format!(
+                "the point is not proven farther than r from input piece {j}"
+            ));
+        }
+        let (a, b) = halves(&g);
+        stack.push((a, depth + 1));
+        stack.push((b, depth + 1));
+    }
+    Ok(())
+}
+
+/// Bernstein coefficients of a product (degrees add).
+fn bprod(a: &[Interval], b: &[Interval]) -> Vec<Interval> {
+    let (m, n) = (a.len() - 1, b.len() - 1);
+    // binomials enclosed (beyond 2⁵³ they are not floats)
+    let binom = |n: usize| -> Vec<Interval> {
+        let mut c = vec![ic(1.0); n + 1];
+        for k in 1..n {
+            c[k] = c[k - 1] * ic((n + 1 - k) as f64) / ic(k as f64);
+        }
+        c
+    };
+    let (bm, bn, bmn) = (binom(m), binom(n), binom(m + n));
+    let mut out = vec![ic(0.0); m + n + 1];
+    for i in 0..=m {
+        for j in 0..=n {
+            out[i + j] += bm[i] * bn[j] * a[i] * b[j];
+        }
+    }
+    for (k, o) in out.iter_mut().enumerate() {
+        *o = *o / bmn[k];
+    }
+    out
+}
+
+/// The Bernstein coefficients of the two halves `[0, ½]`, `[½, 1]`.
+fn halves(g: &[Interval]) -> (Vec<Interval>, Vec<Interval>) {
+    let mut w = g.to_vec();
+    let n = w.len();
+    let mut left = Vec::with_capacity(n);
+    let mut right = Vec::with_capacity(n);
+    let half = ic(0.5);
+    for k in 0..n {
+        left.push(w[0]);
+        right.push(w[n - 1 - k]);
+        for i in 0..(n - 1 - k) {
+            w[i] = (w[i] + w[i + 1]) * half;
+        }
+    }
+    right.reverse();
+    (left, right)
+}
+
+/// The points whose convex hull holds one part of the outline.
+pub(crate) type Hull = Vec<P>;
+
+/// The hull of a counter-clockwise minor sub-arc between the radius
+/// directions `d0`, `d1` (exact, `cross > 0`, `dot > 0` checked by the
+/// caller): its ends and the meeting point of its end tangents.
+pub(crate) fn arc_hull(c: P, rho: Interval, d0: P, d1: P) -> Option<Hull> {
+    let u0 = scale(d0, ic(1.0) / dot(d0, d0).sqrt());
+    let u1 = scale(d1, ic(1.0) / dot(d1, d1).sqrt());
+    let apex = add(c, scale(add(u0, u1), rho / (ic(1.0) + dot(u0, u1))));
+    let h = vec![add(c, scale(u0, rho)), apex, add(c, scale(u1, rho))];
+    h.iter().all(|q| finite(q[0]) && finite(q[1])).then_some(h)
+}
+
+/// `max(|q − y| − r, |q − w| − μ, 0)` over the hull points `q`, enclosed
+/// (its sup). The closed disk `B(y, r)` lies in `S` (`y` on the curve) and
+/// the closed disk `B(w, μ)` outside it (checked by the caller), so the
+/// segment between their points nearest to `q` meets `∂S`, within that
+/// distance of `q`; both terms are convex in `q`, so their maximum over the
+/// part is at a hull point.
+pub(crate) fn part_bound(hull: &Hull, y: P, r: Interval, w: P, mu: Interval) -> f64 {
+    let mut m = 0.0f64;
+    for q in hull {
+        for (z, rad) in [(y, r), (w, mu)] {
+            let e = sub(*q, z);
+            let d = (e[0].sqr() + e[1].sqr()).sqrt() - rad;
+            m = m.max(if finite(d) { d.sup() } else { f64::INFINITY });
+        }
+    }
+    m
+}
+
+/// `√x` rounded up (for reporting a bound from its square's sup).
+pub(crate) fn sqrt_up(x: f64) -> f64 {
+    x.sqrt().next_up()
+}

@@ -1,0 +1,875 @@
+//! The stroke certificate (format `lncert-stroke-certificate`, version 1) and
+//! its independent checker: **an outline `L` lies within `tol` of the exact
+//! boundary `∂S` of the stroke `S = x ⊕ disk(r)`, in Hausdorff distance, and
+//! its contours are closed.** The argument is in `proofs/stroke-certificate.md`.
+//!
+//! ```text
+//! {
+//!   "format": "lncert-stroke-certificate", "version": 1,
+//!   "claim": "hausdorff(outline, boundary(curve + disk(radius))) <= tol",
+//!   "tol": Q, "radius": Q,                     exact, > 0
+//!   "curve": [[[Q, Q], ...], ...],             the input x: Bézier pieces (degree ≥ 1)
+//!   "outline": [[PIECE, ...], ...],            closed contours, consecutive pieces sharing
+//!                                              exact end points
+//!   "cover": [[[PART, ...], ...], ...],        per contour, per piece: its parts in order
+//!   "boundary": [{"of": NAME, "boxes": [BOX, ...]}, ...]
+//! }
+//! PIECE = {"bezier": [[Q, Q], ...]}
+//!       | {"arc": {"center": [Q, Q], "radius": Q, "from": [Q, Q], "to": [Q, Q], "clockwise": BOOL}}
+//! PART  = {"s": [Q, Q], "o": IN, "w": OUT}             (a Bézier's parameter range)
+//!       | {"dirs": [[Q, Q], [Q, Q]], "o": IN, "w": OUT}  (an arc's radius directions)
+//! IN    = {"piece": j, "u": Q}                          the disk B(x_j(u), r) ⊆ S
+//! OUT   = {"at": [Q, Q], "mu": Q}                       the disk B(at, mu) outside S
+//! BOX   = {"t": [Q, Q], "near": {"contour": c, "piece": i, "s": Q, "k": Q}}   (a Bézier)
+//!       | {"t": [Q, Q], "near": {"contour": c, "piece": i}}                   (an arc)
+//!       | {"t": [Q, Q], "inside": {"piece": j, "u": Q}}
+//! ```
+//!
+//! **(a) every point of `L` is within `tol` of `∂S`.** Each part of a piece
+//! (a parameter range, or a counter-clockwise sub-arc of less than `π/2`)
+//! carries a disk in `S` (`B(y, r)`, `y = x_j(u)` a point of the curve) and a
+//! disk outside `S` (`B(w, μ)`: `|w − x(u)|² − (r + μ)² > 0` on every input
+//! piece, Bernstein signs). For a point `q`, the segment between the two
+//! disks' points nearest to `q` meets `∂S`, so `q` is within
+//! `max(|q − y| − r, |q − w| − μ, 0)` of `∂S`; that maximum over the part's
+//! hull (the restricted control points, or the sub-arc's tangent triangle)
+//! must be `≤ tol`. Both distances grow only quadratically along `∂S` away
+//! from where the disks touch it, so a part may be about `√(tol·r)` long.
+//! The parts chain over each piece exactly (rational comparisons).
+//!
+//! **(b) every point of `∂S` is within `tol` of `L`.** `∂S` lies in the exact
+//! offsets `x_j ± r N` of the input pieces and the arcs of radius `r` about
+//! the input's vertices in their normal cones (caps at open ends, joins at
+//! corners) — the verifier derives this list (`NAME`s `piece j left|right`,
+//! `start j a|b`, `end j a|b`) from `curve` alone. Each is covered over its
+//! parameter `[0, 1]` by boxes that are either within `tol` of one outline
+//! piece (a linear foot map into a Bézier, or directions inside an arc's range)
+//! or **strictly inside** `S` (within less than `r` of an input point: not on
+//! `∂S`). Crossings of the raw boundary need no exact parameter: near one the
+//! boxes on the removed branch are still near the outline, then inside.
+//!
+//! Every number is a canonical exact rational; unknown or duplicate keys are
+//! refused; every failure names its field.
+
+pub(crate) mod geom;
+
+use super::read::{canonical_index, canonical_rational, exact_object, join};
+use super::{inv, Invalid, Valid};
+use crate::json::Json;
+use crate::scalar::Rational;
+use crate::shape::io::{MAX_CONTROL_POINTS, MAX_SEGMENTS};
+use geom::{
+    arc_hull, inside, ip, iq, near_arc, near_bezier, outside, part_bound, ArcT, Bez, BoxT, ConeArc,
+    Path, Side, P,
+};
+use num_traits::{Signed, Zero};
+use rayon::prelude::*;
+
+/// Format name in the `format` field.
+pub const FORMAT: &str = "lncert-stroke-certificate";
+/// Current format version.
+pub const VERSION: u64 = 1;
+/// The claim of this format.
+pub const CLAIM: &str = "hausdorff(outline, boundary(curve + disk(radius))) <= tol";
+/// The top-level keys, in the order the writer writes them.
+pub const KEYS: [&str; 9] = [
+    "format", "version", "claim", "tol", "radius", "curve", "outline", "cover", "boundary",
+];
+
+/// An exact point.
+pub(crate) type Q2 = [Rational; 2];
+
+fn cross(a: &Q2, b: &Q2) -> Rational {
+    &a[0] * &b[1] - &a[1] * &b[0]
+}
+fn dotq(a: &Q2, b: &Q2) -> Rational {
+    &a[0] * &b[0] + &a[1] * &b[1]
+}
+fn subq(a: &Q2, b: &Q2) -> Q2 {
+    [&a[0] - &b[0], &a[1] - &b[1]]
+}
+
+/// One family of the cover of `∂S`: its name and its curve.
+pub(crate) struct Family {
+    pub(crate) name: String,
+    pub(crate) path: Box<dyn Path + Send>,
+}
+
+/// The input curve read exactly, with interval pieces.
+pub(crate) struct Input {
+    pub(crate) exact: Vec<Vec<Q2>>,
+    pub(crate) iv: Vec<Bez>,
+    pub(crate) r: Rational,
+}
+
+impl Input {
+    /// Checks the pieces (degree ≥ 1, nonzero end tangents, finite) and
+    /// encloses them.
+    pub(crate) fn new(exact: Vec<Vec<Q2>>, r: Rational, at: &str) -> Result<Input, Invalid> {
+        if exact.is_empty() {
+            return Err(inv(at, "no pieces"));
+        }
+        if !r.is_positive() {
+            return Err(inv("radius", "must be > 0"));
+        }
+        for (j, p) in exact.iter().enumerate() {
+            let n = p.len();
+            if n < 2 {
+                return Err(inv(
+                    format!("{at}[{j}]"),
+                    "a piece needs at least 2 control points",
+                ));
+            }
+            if p[0] == p[1] || p[n - 1] == p[n - 2] {
+                return Err(inv(
+                    format!("{at}[{j}]"),
+                    "a zero end tangent (a repeated end control point): the boundary of the stroke is only derived for pieces with nonzero end tangents",
+                ));
+            }
+        }
+        let iv = exact
+            .iter()
+            .map(|p| Bez::new(p.iter().map(ip).collect()))
+            .collect();
+        Ok(Input { exact, iv, r })
+    }
+
+    /// The connected components (pieces joined end to start): `(first, end,
+    /// closed)` — the same rule as the stroke's input.
+    fn components(&self) -> Vec<(usize, usize, bool)> {
+        let c = &self.exact;
+        let mut out: Vec<(usize, usize, bool)> = Vec::new();
+        for i in 0..c.len() {
+            let joined = i > 0 && c[i - 1].last() == c[i].first();
+            match out.last_mut() {
+                Some(k) if joined => k.1 = i + 1,
+                _ => out.push((i, i + 1, false)),
+            }
+        }
+        for k in &mut out {
+            let part = &c[k.0..k.1];
+            let closed = part.len() > 1 || part[0].len() > 2;
+            k.2 = closed && part.last().and_then(|b| b.last()) == part[0].first();
+        }
+        out
+    }
+
+    /// The families whose union holds `∂S`, in the certificate's order: both
+    /// offsets of every piece, then per component its start cap (open) and the
+    /// cone at the end of each piece (a join, the closing join, or the end
+    /// cap), each cone as two halves `a`, `b` (none at a G¹ joint).
+    pub(crate) fn families(&self) -> Vec<Family> {
+        let r = iq(&self.r);
+        let mut out: Vec<Family> = Vec::new();
+        for (j, b) in self.iv.iter().enumerate() {
+            for (side, sigma) in [("left", 1.0), ("right", -1.0)] {
+                out.push(Family {
+                    name: format!("piece {j} {side}"),
+                    path: Box::new(OwnedSide {
+                        b: b.clone(),
+                        sigma,
+                        r,
+                    }),
+                });
+            }
+        }
+        let tin = |j: usize| {
+            let p = &self.exact[j];
+            subq(&p[p.len() - 1], &p[p.len() - 2])
+        };
+        let tout = |j: usize| subq(&self.exact[j][1], &self.exact[j][0]);
+        for (first, end, closed) in self.components() {
+            let mut cones: Vec<(String, Q2, Option<[Q2; 3]>)> = Vec::new();
+            if !closed {
+                let t = tout(first);
+                let t = [-&t[0], -&t[1]];
+                cones.push((
+                    format!("start {first}"),
+                    self.exact[first][0].clone(),
+                    Some(half_plane(&t)),
+                ));
+            }
+            for j in first..end {
+                let next = if j + 1 < end {
+                    Some(j + 1)
+                } else if closed {
+                    Some(first)
+                } else {
+                    None
+                };
+                let y = self.exact[j].last().expect("≥ 2 points").clone();
+                let rays = match next {
+                    None => Some(half_plane(&tin(j))),
+                    Some(k) => joint(&tin(j), &tout(k)),
+                };
+                cones.push((format!("end {j}"), y, rays));
+            }
+            for (name, y, rays) in cones {
+                let Some([a, m, b]) = rays else { continue };
+                for (half, (u, v)) in [("a", (&a, &m)), ("b", (&m, &b))] {
+                    out.push(Family {
+                        name: format!("{name} {half}"),
+                        path: Box::new(ConeArc {
+                            c: ip(&y),
+                            r,
+                            a: ip(u),
+                            b: ip(v),
+                        }),
+                    });
+                }
+            }
+        }
+        out
+    }
+}
+
+/// The half plane `{u : u·t ≥ 0}` as the rays `−J t`, `t`, `J t`.
+fn half_plane(t: &Q2) -> [Q2; 3] {
+    [[t[1].clone(), -&t[0]], t.clone(), [-&t[1], t[0].clone()]]
+}
+
+/// The normal cone `{u : u·t_in ≥ 0, u·t_out ≤ 0}` at a joint as three rays
+/// (its two edges and a direction between them), or `None` at a G¹ joint
+/// (the cone is the normal line: the two offsets' end points).
+fn joint(t_in: &Q2, t_out: &Q2) -> Option<[Q2; 3]> {
+    let cr = cross(t_in, t_out);
+    if cr.is_zero() {
+        return if dotq(t_in, t_out).is_positive() {
+            None
+        } else {
+            Some(half_plane(t_in))
+        };
+    }
+    // a = −s J t_in, b = −s J t_out with s the sign of the turn
+    let s = if cr.is_positive() {
+        Rational::from_integer(1.into())
+    } else {
+        Rational::from_integer((-1).into())
+    };
+    let a = [&t_in[1] * &s, -&t_in[0] * &s];
+    let b = [&t_out[1] * &s, -&t_out[0] * &s];
+    let m = [&a[0] + &b[0], &a[1] + &b[1]];
+    Some([a, m, b])
+}
+
+/// [`Side`] owning its piece (families outlive the borrow).
+struct OwnedSide {
+    b: Bez,
+    sigma: f64,
+    r: crate::scalar::Interval,
+}
+impl Path for OwnedSide {
+    fn val(&self, t: crate::scalar::Interval) -> Option<P> {
+        Side {
+            b: &self.b,
+            sigma: self.sigma,
+            r: self.r,
+        }
+        .val(t)
+    }
+    fn der(&self, t: crate::scalar::Interval) -> Option<P> {
+        Side {
+            b: &self.b,
+            sigma: self.sigma,
+            r: self.r,
+        }
+        .der(t)
+    }
+}
+
+/// One outline piece, exact and enclosed.
+pub(crate) enum OPiece {
+    Bezier {
+        exact: Vec<Q2>,
+        iv: Bez,
+    },
+    Arc {
+        start: Q2,
+        end: Q2,
+        ccw_u: Q2,
+        ccw_v: Q2,
+        t: ArcT,
+    },
+}
+
+impl OPiece {
+    fn start(&self) -> &Q2 {
+        match self {
+            OPiece::Bezier { exact, .. } => &exact[0],
+            OPiece::Arc { start, .. } => start,
+        }
+    }
+    fn end(&self) -> &Q2 {
+        match self {
+            OPiece::Bezier { exact, .. } => exact.last().expect("≥ 2 points"),
+            OPiece::Arc { end, .. } => end,
+        }
+    }
+    /// An exact arc: centre `c`, radius `rho > 0`, ends exactly on the circle.
+    pub(crate) fn arc(
+        c: Q2,
+        rho: Rational,
+        from: Q2,
+        to: Q2,
+        clockwise: bool,
+    ) -> Result<OPiece, String> {
+        if !rho.is_positive() {
+            return Err("radius: must be > 0".into());
+        }
+        let (u, v) = (subq(&from, &c), subq(&to, &c));
+        let r2 = &rho * &rho;
+        if dotq(&u, &u) != r2 || dotq(&v, &v) != r2 {
+            return Err("an end point is not exactly on the circle".into());
+        }
+        let (cu, cv) = if clockwise { (v, u) } else { (u, v) };
+        let cr = cross(&cu, &cv);
+        let t = ArcT {
+            c: ip(&c),
+            rho: iq(&rho),
+            u: ip(&cu),
+            v: ip(&cv),
+            sign: if cr.is_positive() {
+                1
+            } else if cr.is_negative() {
+                -1
+            } else {
+                0
+            },
+            full: cu == cv,
+        };
+        Ok(OPiece::Arc {
+            start: from,
+            end: to,
+            ccw_u: cu,
+            ccw_v: cv,
+            t,
+        })
+    }
+    pub(crate) fn bezier(exact: Vec<Q2>) -> OPiece {
+        let iv = Bez::new(exact.iter().map(ip).collect());
+        OPiece::Bezier { exact, iv }
+    }
+}
+
+fn arr<'j>(v: &'j Json, at: &str, what: &str) -> Result<&'j [Json], Invalid> {
+    v.as_array().ok_or_else(|| {
+        inv(
+            at,
+            format!("expected a list of {what}, found {}", v.describe()),
+        )
+    })
+}
+
+fn point(v: &Json, at: &str) -> Result<Q2, Invalid> {
+    let a = arr(v, at, "2 coordinates")?;
+    if a.len() != 2 {
+        return Err(inv(at, "expected a point [x, y]"));
+    }
+    Ok([
+        canonical_rational(&a[0], &format!("{at}[0]"))?,
+        canonical_rational(&a[1], &format!("{at}[1]"))?,
+    ])
+}
+
+fn points(v: &Json, at: &str) -> Result<Vec<Q2>, Invalid> {
+    let a = arr(v, at, "control points")?;
+    if a.len() < 2 || a.len() > MAX_CONTROL_POINTS {
+        return Err(inv(
+            at,
+            format!(
+                "a Bézier has 2 to {MAX_CONTROL_POINTS} control points, found {}",
+                a.len()
+            ),
+        ));
+    }
+    a.iter()
+        .enumerate()
+        .map(|(i, p)| point(p, &format!("{at}[{i}]")))
+        .collect()
+}
+
+fn read_piece(v: &Json, at: &str) -> Result<OPiece, Invalid> {
+    if let Some(b) = v.get("bezier") {
+        let [_] = exact_object(v, at, ["bezier"])?;
+        return Ok(OPiece::bezier(points(b, &join(at, "bezier"))?));
+    }
+    let [a] = exact_object(v, at, ["arc"])?;
+    let at = join(at, "arc");
+    let [c, rho, from, to, cw] =
+        exact_object(a, &at, ["center", "radius", "from", "to", "clockwise"])?;
+    let cw = match cw {
+        Json::Bool(b) => *b,
+        o => {
+            return Err(inv(
+                join(&at, "clockwise"),
+                format!("expected true or false, found {}", o.describe()),
+            ))
+        }
+    };
+    OPiece::arc(
+        point(c, &join(&at, "center"))?,
+        canonical_rational(rho, &join(&at, "radius"))?,
+        point(from, &join(&at, "from"))?,
+        point(to, &join(&at, "to"))?,
+        cw,
+    )
+    .map_err(|e| inv(at, e))
+}
+
+/// The outline's contours, each closed by exact shared end points.
+pub(crate) fn read_outline(v: &Json) -> Result<Vec<Vec<OPiece>>, Invalid> {
+    let cs = arr(v, "outline", "contours")?;
+    if cs.is_empty() {
+        return Err(inv("outline", "no contours"));
+    }
+    let mut total = 0usize;
+    let mut out = Vec::new();
+    for (ci, c) in cs.iter().enumerate() {
+        let at = format!("outline[{ci}]");
+        let ps = arr(c, &at, "pieces")?;
+        total += ps.len();
+        if ps.is_empty() || total > MAX_SEGMENTS {
+            return Err(inv(at, format!("a contour has 1 to {MAX_SEGMENTS} pieces")));
+        }
+        let pieces: Vec<OPiece> = ps
+            .iter()
+            .enumerate()
+            .map(|(i, p)| read_piece(p, &format!("{at}[{i}]")))
+            .collect::<Result<_, _>>()?;
+        check_closed(&pieces).map_err(|i| {
+            inv(
+                format!("{at}[{i}]"),
+                "does not start exactly where the previous piece ends: the contour is not closed",
+            )
+        })?;
+        out.push(pieces);
+    }
+    Ok(out)
+}
+
+pub(crate) fn check_closed(pieces: &[OPiece]) -> Result<(), usize> {
+    let n = pieces.len();
+    for i in 0..n {
+        if pieces[(i + n - 1) % n].end() != pieces[i].start() {
+            return Err(i);
+        }
+    }
+    Ok(())
+}
+
+/// The verifier's count of what it checked: `(max bound, boxes)`.
+type Tally = (f64, usize);
+
+/// A part of the cover checked: the disk `B(x_j(u), r)` in `S`, the disk
+/// `B(w, μ)` outside `S`, and the bound over the hull `≤ tol`. Returns the
+/// bound (sup).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn check_part(
+    input: &Input,
+    hull: &geom::Hull,
+    o_piece: usize,
+    o_u: &Rational,
+    w: &Q2,
+    mu: &Rational,
+    tol: crate::scalar::Interval,
+) -> Result<f64, String> {
+    let bez = input
+        .iv
+        .get(o_piece)
+        .ok_or_else(|| format!("o.piece {o_piece}: the curve has {} pieces", input.iv.len()))?;
+    if o_u.is_negative() || o_u > &Rational::from_integer(1.into()) {
+        return Err("o.u: outside [0, 1]".into());
+    }
+    if mu.is_negative() {
+        return Err("w.mu: negative".into());
+    }
+    let y = bez.at(iq(o_u));
+    let (r, mu_i) = (iq(&input.r), iq(mu));
+    let wi = ip(w);
+    outside(wi, &input.iv, (r + mu_i).sqr()).map_err(|e| format!("w: {e}"))?;
+    let b = part_bound(hull, y, r, wi, mu_i);
+    if b > tol.inf() {
+        return Err(format!(
+            "the part is only proven within {b:e} of the boundary, above the tolerance"
+        ));
+    }
+    Ok(b)
+}
+
+fn read_witness(v: &Json, at: &str) -> Result<(usize, Rational), Invalid> {
+    let [p, u] = exact_object(v, at, ["piece", "u"])?;
+    Ok((
+        canonical_index(p, &join(at, "piece"))?,
+        canonical_rational(u, &join(at, "u"))?,
+    ))
+}
+
+fn read_outside(v: &Json, at: &str) -> Result<(Q2, Rational), Invalid> {
+    let [a, m] = exact_object(v, at, ["at", "mu"])?;
+    Ok((
+        point(a, &join(at, "at"))?,
+        canonical_rational(m, &join(at, "mu"))?,
+    ))
+}
+
+/// Claim (a): the parts of one piece chain over it; each is checked.
+fn check_cover_piece(
+    v: &Json,
+    at: &str,
+    piece: &OPiece,
+    input: &Input,
+    tol: crate::scalar::Interval,
+) -> Result<Tally, Invalid> {
+    let parts = arr(v, at, "parts")?;
+    if parts.is_empty() {
+        return Err(inv(at, "no parts: the piece is not covered"));
+    }
+    let zero = Rational::zero();
+    let one = Rational::from_integer(1.into());
+    let mut max = 0.0f64;
+    let mut prev: Option<Q2> = None;
+    let mut prev_s: Rational = zero.clone();
+    for (k, p) in parts.iter().enumerate() {
+        let atk = format!("{at}[{k}]");
+        let (hull, o, w) = match piece {
+            OPiece::Bezier { iv, .. } => {
+                let [s, o, w] = exact_object(p, &atk, ["s", "o", "w"])?;
+                let sa = arr(s, &join(&atk, "s"), "2 parameters")?;
+                if sa.len() != 2 {
+                    return Err(inv(join(&atk, "s"), "expected [s0, s1]"));
+                }
+                let s0 = canonical_rational(&sa[0], &format!("{atk}.s[0]"))?;
+                let s1 = canonical_rational(&sa[1], &format!("{atk}.s[1]"))?;
+                if s0 != prev_s {
+                    return Err(inv(
+                        format!("{atk}.s[0]"),
+                        format!("expected {prev_s}: the parts must cover [0, 1] in order"),
+                    ));
+                }
+                if s1 <= s0 || s1 > one {
+                    return Err(inv(format!("{atk}.s[1]"), "expected s0 < s1 ≤ 1"));
+                }
+                prev_s = s1.clone();
+                (iv.restrict(iq(&s0), iq(&s1)), o, w)
+            }
+            OPiece::Arc {
+                ccw_u, ccw_v, t, ..
+            } => {
+                let [d, o, w] = exact_object(p, &atk, ["dirs", "o", "w"])?;
+                let da = arr(d, &join(&atk, "dirs"), "2 directions")?;
+                if da.len() != 2 {
+                    return Err(inv(join(&atk, "dirs"), "expected [d0, d1]"));
+                }
+                let d0 = point(&da[0], &format!("{atk}.dirs[0]"))?;
+                let d1 = point(&da[1], &format!("{atk}.dirs[1]"))?;
+                let start_ok = match &prev {
+                    None => cross(&d0, ccw_u).is_zero() && dotq(&d0, ccw_u).is_positive(),
+                    Some(q) => *q == d0,
+                };
+                if !start_ok {
+                    return Err(inv(
+                        format!("{atk}.dirs[0]"),
+                        "must continue the previous part exactly (the first: along the arc's counter-clockwise start)",
+                    ));
+                }
+                if !(cross(&d0, &d1).is_positive() && dotq(&d0, &d1).is_positive()) {
+                    return Err(inv(
+                        join(&atk, "dirs"),
+                        "a part turns counter-clockwise by less than π/2",
+                    ));
+                }
+                prev = Some(d1.clone());
+                let h = arc_hull(t.c, t.rho, ip(&d0), ip(&d1))
+                    .ok_or_else(|| inv(join(&atk, "dirs"), "hull not finite"))?;
+                let _ = ccw_v;
+                (h, o, w)
+            }
+        };
+        let (oj, ou) = read_witness(o, &join(&atk, "o"))?;
+        let (w, mu) = read_outside(w, &join(&atk, "w"))?;
+        let b = check_part(input, &hull, oj, &ou, &w, &mu, tol).map_err(|e| inv(&atk, e))?;
+        max = max.max(b);
+    }
+    let end_ok = match piece {
+        OPiece::Bezier { .. } => prev_s == one,
+        OPiece::Arc { ccw_v, .. } => prev
+            .as_ref()
+            .is_some_and(|d| cross(d, ccw_v).is_zero() && dotq(d, ccw_v).is_positive()),
+    };
+    if !end_ok {
+        return Err(inv(at, "the parts stop before the end of the piece"));
+    }
+    Ok((max, parts.len()))
+}
+
+/// One box of the cover of `∂S`.
+pub(crate) enum BBox {
+    NearBezier {
+        contour: usize,
+        piece: usize,
+        s: Rational,
+        k: Rational,
+    },
+    NearArc {
+        contour: usize,
+        piece: usize,
+    },
+    Inside {
+        piece: usize,
+        u: Rational,
+    },
+}
+
+/// Checks one box of a family; its bound (0 for a box inside `S`).
+pub(crate) fn check_bbox(
+    path: &dyn Path,
+    bx: &BoxT,
+    what: &BBox,
+    outline: &[Vec<OPiece>],
+    input: &Input,
+    tol: crate::scalar::Interval,
+) -> Result<f64, String> {
+    let get = |c: usize, i: usize| {
+        outline
+            .get(c)
+            .and_then(|ps| ps.get(i))
+            .ok_or_else(|| format!("near: no outline piece {i} in contour {c}"))
+    };
+    match what {
+        BBox::NearBezier {
+            contour,
+            piece,
+            s,
+            k,
+        } => match get(*contour, *piece)? {
+            OPiece::Bezier { iv, .. } => near_bezier(path, bx, iv, s, k, tol.sqr()),
+            OPiece::Arc { .. } => Err("near: the piece is an arc (no s, k)".into()),
+        },
+        BBox::NearArc { contour, piece } => match get(*contour, *piece)? {
+            OPiece::Arc { t, .. } => near_arc(path, bx, t, tol),
+            OPiece::Bezier { .. } => Err("near: the piece is a Bézier (s and k needed)".into()),
+        },
+        BBox::Inside { piece, u } => {
+            let b = input.iv.get(*piece).ok_or_else(|| {
+                format!(
+                    "inside.piece {piece}: the curve has {} pieces",
+                    input.iv.len()
+                )
+            })?;
+            if u.is_negative() || u > &Rational::from_integer(1.into()) {
+                return Err("inside.u: outside [0, 1]".into());
+            }
+            inside(path, bx, b.at(iq(u)), iq(&input.r).sqr()).map(|()| 0.0)
+        }
+    }
+}
+
+fn read_bbox(v: &Json, at: &str) -> Result<(Rational, Rational, BBox), Invalid> {
+    let (t, what) = if v.get("near").is_some() {
+        let [t, n] = exact_object(v, at, ["t", "near"])?;
+        let atn = join(at, "near");
+        let b = if n.get("s").is_some() {
+            let [c, p, s, k] = exact_object(n, &atn, ["contour", "piece", "s", "k"])?;
+            BBox::NearBezier {
+                contour: canonical_index(c, &join(&atn, "contour"))?,
+                piece: canonical_index(p, &join(&atn, "piece"))?,
+                s: canonical_rational(s, &join(&atn, "s"))?,
+                k: canonical_rational(k, &join(&atn, "k"))?,
+            }
+        } else {
+            let [c, p] = exact_object(n, &atn, ["contour", "piece"])?;
+            BBox::NearArc {
+                contour: canonical_index(c, &join(&atn, "contour"))?,
+                piece: canonical_index(p, &join(&atn, "piece"))?,
+            }
+        };
+        (t, b)
+    } else {
+        let [t, i] = exact_object(v, at, ["t", "inside"])?;
+        let ati = join(at, "inside");
+        let [p, u] = exact_object(i, &ati, ["piece", "u"])?;
+        (
+            t,
+            BBox::Inside {
+                piece: canonical_index(p, &join(&ati, "piece"))?,
+                u: canonical_rational(u, &join(&ati, "u"))?,
+            },
+        )
+    };
+    let ta = arr(t, &join(at, "t"), "2 parameters")?;
+    if ta.len() != 2 {
+        return Err(inv(join(at, "t"), "expected [t0, t1]"));
+    }
+    Ok((
+        canonical_rational(&ta[0], &format!("{at}.t[0]"))?,
+        canonical_rational(&ta[1], &format!("{at}.t[1]"))?,
+        what,
+    ))
+}
+
+fn check_family(
+    v: &Json,
+    at: &str,
+    fam: &Family,
+    outline: &[Vec<OPiece>],
+    input: &Input,
+    tol: crate::scalar::Interval,
+) -> Result<Tally, Invalid> {
+    let [of, boxes] = exact_object(v, at, ["of", "boxes"])?;
+    if of.as_str() != Some(fam.name.as_str()) {
+        return Err(inv(
+            join(at, "of"),
+            format!(
+                "expected \"{}\" (the boundary families come in the order the curve gives them)",
+                fam.name
+            ),
+        ));
+    }
+    let boxes = arr(boxes, &join(at, "boxes"), "boxes")?;
+    let one = Rational::from_integer(1.into());
+    let mut cursor = Rational::zero();
+    let mut max = 0.0f64;
+    for (k, b) in boxes.iter().enumerate() {
+        let atk = format!("{at}.boxes[{k}]");
+        let (t0, t1, what) = read_bbox(b, &atk)?;
+        if t0 != cursor {
+            return Err(inv(
+                format!("{atk}.t[0]"),
+                format!("expected {cursor}: the boxes must cover [0, 1] in order"),
+            ));
+        }
+        if t1 <= t0 || t1 > one {
+            return Err(inv(format!("{atk}.t[1]"), "expected t0 < t1 ≤ 1"));
+        }
+        let bx = BoxT::new(&t0, &t1);
+        let bound =
+            check_bbox(&*fam.path, &bx, &what, outline, input, tol).map_err(|e| inv(&atk, e))?;
+        max = max.max(bound);
+        cursor = t1;
+    }
+    if cursor != one {
+        return Err(inv(
+            join(at, "boxes"),
+            format!("the boxes stop at {cursor}: [0, 1] is not covered"),
+        ));
+    }
+    Ok((max, boxes.len()))
+}
+
+/// Checks a stroke certificate (the format and version already read).
+pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
+    let [_f, version, claim, tol, radius, curve, outline, cover, boundary] =
+        exact_object(doc, "", KEYS)?;
+    if !matches!(version, Json::Number(v) if **v == *VERSION.to_string()) {
+        return Err(inv(
+            "version",
+            format!("this verifier reads version {VERSION} of {FORMAT}"),
+        ));
+    }
+    if claim.as_str() != Some(CLAIM) {
+        return Err(inv(
+            "claim",
+            format!("expected \"{CLAIM}\", the one claim of this format"),
+        ));
+    }
+    let tol_q = canonical_rational(tol, "tol")?;
+    if !tol_q.is_positive() {
+        return Err(inv("tol", "must be > 0"));
+    }
+    let tol_i = iq(&tol_q);
+    let r = canonical_rational(radius, "radius")?;
+    let pieces = arr(curve, "curve", "Bézier pieces")?;
+    if pieces.len() > MAX_SEGMENTS {
+        return Err(inv("curve", format!("more than {MAX_SEGMENTS} pieces")));
+    }
+    let exact: Vec<Vec<Q2>> = pieces
+        .iter()
+        .enumerate()
+        .map(|(j, p)| points(p, &format!("curve[{j}]")))
+        .collect::<Result<_, _>>()?;
+    let input = Input::new(exact, r, "curve")?;
+    let outline = read_outline(outline)?;
+    // (a): every piece's parts
+    let cov = arr(cover, "cover", "contours")?;
+    if cov.len() != outline.len() {
+        return Err(inv(
+            "cover",
+            format!("expected {} contours, as the outline", outline.len()),
+        ));
+    }
+    let mut jobs = Vec::new();
+    for (ci, (c, ps)) in cov.iter().zip(&outline).enumerate() {
+        let at = format!("cover[{ci}]");
+        let per = arr(c, &at, "pieces")?;
+        if per.len() != ps.len() {
+            return Err(inv(
+                at,
+                format!("expected {} pieces, as the outline's contour", ps.len()),
+            ));
+        }
+        for (i, (v, p)) in per.iter().zip(ps).enumerate() {
+            jobs.push((format!("cover[{ci}][{i}]"), v, p));
+        }
+    }
+    let a: Vec<Result<Tally, Invalid>> = jobs
+        .par_iter()
+        .map(|(at, v, p)| check_cover_piece(v, at, p, &input, tol_i))
+        .collect();
+    let (mut max, mut count) = (0.0f64, 0usize);
+    for t in a {
+        let (m, n) = t?;
+        max = max.max(m);
+        count += n;
+    }
+    // (b): every family of ∂S's cover
+    let fams = input.families();
+    let bd = arr(boundary, "boundary", "families")?;
+    if bd.len() != fams.len() {
+        return Err(inv(
+            "boundary",
+            format!(
+                "expected {} families (both offsets of each of the {} pieces, and the cap and join arcs), found {}",
+                fams.len(),
+                input.iv.len(),
+                bd.len()
+            ),
+        ));
+    }
+    let b: Vec<Result<Tally, Invalid>> = bd
+        .par_iter()
+        .zip(fams.par_iter())
+        .enumerate()
+        .map(|(k, (v, f))| check_family(v, &format!("boundary[{k}]"), f, &outline, &input, tol_i))
+        .collect();
+    for t in b {
+        let (m, n) = t?;
+        max = max.max(m);
+        count += n;
+    }
+    let n_pieces: usize = outline.iter().map(|c| c.len()).sum();
+    let arcs = outline
+        .iter()
+        .flatten()
+        .filter(|p| matches!(p, OPiece::Arc { .. }))
+        .count();
+    let comps = input.components();
+    Ok(Valid {
+        tol: tol_q,
+        a: format!(
+            "an outline of {} closed contour(s), {} pieces ({} Bézier, {} exact arcs)",
+            outline.len(),
+            n_pieces,
+            n_pieces - arcs,
+            arcs
+        ),
+        b: format!(
+            "∂(x ⊕ disk(r)), r = {}, x = {} Bézier piece(s) in {} component(s) ({} closed)",
+            input.r,
+            input.iv.len(),
+            comps.len(),
+            comps.iter().filter(|c| c.2).count()
+        ),
+        max_bound: max,
+        boxes: count,
+    })
+}

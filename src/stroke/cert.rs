@@ -1,0 +1,689 @@
+//! The writer of stroke certificates ([`certificate`]): the cover of a proven
+//! outline by parts between a point of `S` and a point outside `S` (claim
+//! (a)), and the cover of the exact boundary's families by boxes near the
+//! outline or strictly inside `S` (claim (b)). The boxes are chosen with float
+//! nearest points and accepted by the verifier's own tests
+//! ([`crate::certify::verify::stroke`]), bisected where a test fails; the
+//! format and the argument are in that module and in
+//! `proofs/stroke-certificate.md`.
+
+use super::{Piece, Stroke};
+use crate::certify::verify::stroke::geom::{arc_hull, ip, iq, BoxT, Path};
+use crate::certify::verify::stroke::{
+    check_bbox, check_part, BBox, Input, OPiece, CLAIM, FORMAT, Q2, VERSION,
+};
+use crate::curve::Bezier;
+use crate::scalar::{rational_from_f64, rational_to_string, Interval, Rational, Scalar};
+use crate::Error;
+use glam::DVec2;
+use rayon::prelude::*;
+use serde_json::{json, Value};
+
+fn err(reason: impl Into<String>) -> Error {
+    Error {
+        field: "certificate".into(),
+        reason: reason.into(),
+    }
+}
+
+fn q(x: f64) -> Result<Rational, Error> {
+    rational_from_f64(x).ok_or_else(|| err("a non-finite number"))
+}
+fn qs(r: &Rational) -> Value {
+    Value::String(rational_to_string(r))
+}
+fn pt(p: &Q2) -> Value {
+    json!([qs(&p[0]), qs(&p[1])])
+}
+fn ptf(p: DVec2) -> Result<(Q2, Value), Error> {
+    let e = [q(p.x)?, q(p.y)?];
+    let v = pt(&e);
+    Ok((e, v))
+}
+fn mid(x: Interval) -> f64 {
+    0.5 * (x.inf() + x.sup())
+}
+fn point_iv(t: f64) -> Interval {
+    Interval::try_from((t, t)).expect("finite parameter")
+}
+
+/// Float Bézier evaluation.
+fn bez_at(p: &[DVec2], t: f64) -> DVec2 {
+    let mut b = p.to_vec();
+    for k in (1..b.len()).rev() {
+        for i in 0..k {
+            b[i] = b[i] * (1.0 - t) + b[i + 1] * t;
+        }
+    }
+    b[0]
+}
+fn hodo(p: &[DVec2]) -> Vec<DVec2> {
+    let n = (p.len() - 1) as f64;
+    p.windows(2).map(|w| (w[1] - w[0]) * n).collect()
+}
+
+/// A float model of a Bézier for nearest-point queries.
+struct FBez {
+    p: Vec<DVec2>,
+    d: Vec<DVec2>,
+    dd: Vec<DVec2>,
+    lo: DVec2,
+    hi: DVec2,
+}
+
+impl FBez {
+    fn new(p: Vec<DVec2>) -> FBez {
+        let d = hodo(&p);
+        let dd = if d.len() > 1 {
+            hodo(&d)
+        } else {
+            vec![DVec2::ZERO]
+        };
+        let lo = p.iter().fold(p[0], |a, b| a.min(*b));
+        let hi = p.iter().fold(p[0], |a, b| a.max(*b));
+        FBez { p, d, dd, lo, hi }
+    }
+    fn box_dist(&self, q: DVec2) -> f64 {
+        let c = q.clamp(self.lo, self.hi);
+        (q - c).length()
+    }
+    /// The nearest point: `(u, distance)`.
+    fn nearest(&self, q: DVec2) -> (f64, f64) {
+        let n = 8 * self.p.len();
+        let mut best = (0.0, f64::INFINITY);
+        for k in 0..=n {
+            let u = k as f64 / n as f64;
+            let d = (bez_at(&self.p, u) - q).length();
+            if d < best.1 {
+                best = (u, d);
+            }
+        }
+        let mut u = best.0;
+        for _ in 0..12 {
+            let x = bez_at(&self.p, u) - q;
+            let d1 = bez_at(&self.d, u);
+            let d2 = bez_at(&self.dd, u);
+            let g = x.dot(d1);
+            let h = d1.length_squared() + x.dot(d2);
+            if h <= 0.0 {
+                break;
+            }
+            let nu = (u - g / h).clamp(0.0, 1.0);
+            if (nu - u).abs() < 1e-16 {
+                u = nu;
+                break;
+            }
+            u = nu;
+        }
+        let d = (bez_at(&self.p, u) - q).length();
+        if d < best.1 {
+            (u, d)
+        } else {
+            best
+        }
+    }
+}
+
+/// The nearest input point of all pieces: `(piece, u, distance)`.
+fn nearest_input(input: &[FBez], p: DVec2) -> (usize, f64, f64) {
+    let mut best = (0, 0.0, f64::INFINITY);
+    for (j, b) in input.iter().enumerate() {
+        if b.box_dist(p) >= best.2 {
+            continue;
+        }
+        let (u, d) = b.nearest(p);
+        if d < best.2 {
+            best = (j, u, d);
+        }
+    }
+    best
+}
+
+/// A float outline piece.
+enum FPiece {
+    Bez(FBez),
+    /// centre, radius, start angle, counter-clockwise sweep
+    Arc(DVec2, f64, f64, f64),
+}
+
+impl FPiece {
+    /// `(parameter or 0, distance)`.
+    fn nearest(&self, p: DVec2) -> (f64, f64) {
+        match self {
+            FPiece::Bez(b) => b.nearest(p),
+            FPiece::Arc(c, r, a0, sw) => {
+                let v = p - *c;
+                let a = (v.y.atan2(v.x) - a0).rem_euclid(std::f64::consts::TAU);
+                if a <= *sw {
+                    (0.0, (v.length() - r).abs())
+                } else {
+                    let e0 = *c + DVec2::new(a0.cos(), a0.sin()) * *r;
+                    let e1 = *c + DVec2::new((a0 + sw).cos(), (a0 + sw).sin()) * *r;
+                    (0.0, (p - e0).length().min((p - e1).length()))
+                }
+            }
+        }
+    }
+    fn box_dist(&self, p: DVec2) -> f64 {
+        match self {
+            FPiece::Bez(b) => b.box_dist(p),
+            FPiece::Arc(c, r, ..) => ((p - *c).length() - r).max(0.0),
+        }
+    }
+}
+
+fn v2(p: &Q2) -> DVec2 {
+    DVec2::new(p[0].approx(), p[1].approx())
+}
+
+struct Ctx<'a> {
+    input: Input,
+    fin: Vec<FBez>,
+    outline: Vec<Vec<OPiece>>,
+    fout: Vec<(usize, usize, FPiece)>,
+    r: f64,
+    tol: f64,
+    tol_i: Interval,
+    _s: &'a Stroke,
+}
+
+impl Ctx<'_> {
+    /// A first guess of a part's length: the disks' gaps to `∂S` grow like
+    /// `(ℓ/2)²/(2r)` over a part of length `ℓ`, so parts of about `2√(tol·r)`
+    /// fit within `tol` (longer ones are bisected).
+    fn part_len(&self) -> f64 {
+        2.0 * (self.tol * self.r).sqrt().max(self.tol)
+    }
+
+    /// The outline pieces within `lim` of `p`, nearest first (at most 3):
+    /// `(contour, piece, parameter, distance)`.
+    fn near_outline(&self, p: DVec2, lim: f64) -> Vec<(usize, usize, f64, f64)> {
+        let mut all: Vec<(usize, usize, f64, f64)> = Vec::new();
+        for (c, i, f) in &self.fout {
+            if f.box_dist(p) >= lim {
+                continue;
+            }
+            let (s, d) = f.nearest(p);
+            if d < lim {
+                all.push((*c, *i, s, d));
+            }
+        }
+        all.sort_by(|a, b| a.3.total_cmp(&b.3));
+        all.truncate(3);
+        all
+    }
+
+    /// Candidate disks for a part whose middle is `m`: the input point `y`
+    /// nearest to `m` (the disk `B(y, r)`), and disks `B(w, μ)` outside `S`
+    /// along the normal through `m`, largest first; then points (`μ = 0`)
+    /// around `m` for a corner of `∂S`.
+    fn witnesses(&self, m: DVec2) -> Vec<((usize, f64), DVec2, f64)> {
+        let (j, u, d) = nearest_input(&self.fin, m);
+        let y = bez_at(&self.fin[j].p, u);
+        if d <= 0.0 {
+            return vec![];
+        }
+        let n = (m - y) / d;
+        let gap = self.tol / 64.0;
+        let mut ws = Vec::new();
+        for mu in [
+            self.r,
+            self.r / 4.0,
+            self.r / 16.0,
+            4.0 * self.tol,
+            self.tol / 4.0,
+        ] {
+            let w = y + n * (self.r + mu + gap);
+            if nearest_input(&self.fin, w).2 > self.r + mu + 0.5 * gap {
+                ws.push((w, mu));
+            }
+        }
+        for rho in [self.tol / 16.0, self.tol / 4.0] {
+            for k in 0..16 {
+                let a = k as f64 * std::f64::consts::TAU / 16.0;
+                let w = m + DVec2::new(a.cos(), a.sin()) * rho;
+                if nearest_input(&self.fin, w).2 > self.r + 0.25 * gap {
+                    ws.push((w, 0.0));
+                }
+            }
+        }
+        ws.into_iter().map(|(w, mu)| ((j, u), w, mu)).collect()
+    }
+
+    /// One part (hull given): tries the disks; the JSON part on success.
+    fn try_part(
+        &self,
+        hull: &crate::certify::verify::stroke::geom::Hull,
+        m: DVec2,
+        key: (&str, Value),
+    ) -> Result<Option<Value>, Error> {
+        for ((j, u), w, mu) in self.witnesses(m).into_iter().take(12) {
+            let uq = q(u)?;
+            let (wq, wv) = ptf(w)?;
+            let muq = q(mu)?;
+            if check_part(&self.input, hull, j, &uq, &wq, &muq, self.tol_i).is_ok() {
+                let mut v = json!({
+                    "o": {"piece": j, "u": qs(&uq)},
+                    "w": {"at": wv, "mu": qs(&muq)},
+                });
+                v.as_object_mut()
+                    .expect("object")
+                    .insert(key.0.into(), key.1);
+                return Ok(Some(v));
+            }
+        }
+        Ok(None)
+    }
+
+    fn cover_bezier(
+        &self,
+        iv: &crate::certify::verify::stroke::geom::Bez,
+        f: &FBez,
+    ) -> Result<Vec<Value>, Error> {
+        let len: f64 = f.p.windows(2).map(|w| (w[1] - w[0]).length()).sum();
+        let n0 = ((len / self.part_len()).ceil().max(1.0) as u64)
+            .next_power_of_two()
+            .min(1 << 20);
+        let mut out = Vec::new();
+        let mut stack: Vec<(f64, f64, u32)> = (0..n0)
+            .rev()
+            .map(|k| (k as f64 / n0 as f64, (k + 1) as f64 / n0 as f64, 0))
+            .collect();
+        while let Some((s0, s1, depth)) = stack.pop() {
+            let hull = iv.restrict(point_iv(s0), point_iv(s1));
+            let m = bez_at(&f.p, 0.5 * (s0 + s1));
+            let s = json!([qs(&q(s0)?), qs(&q(s1)?)]);
+            match self.try_part(&hull, m, ("s", s))? {
+                Some(v) => out.push(v),
+                None if depth < 24 => {
+                    let sm = 0.5 * (s0 + s1);
+                    stack.push((sm, s1, depth + 1));
+                    stack.push((s0, sm, depth + 1));
+                }
+                None => {
+                    return Err(err(format!(
+                        "no witnesses for the outline part [{s0}, {s1}] near ({}, {})",
+                        m.x, m.y
+                    )))
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    fn cover_arc(
+        &self,
+        u: &Q2,
+        v: &Q2,
+        c: DVec2,
+        rho: f64,
+        t: &crate::certify::verify::stroke::geom::P,
+        rho_i: Interval,
+        full: bool,
+    ) -> Result<Vec<Value>, Error> {
+        let a0 = v2(u).y.atan2(v2(u).x);
+        let a1 = v2(v).y.atan2(v2(v).x);
+        let mut sweep = (a1 - a0).rem_euclid(std::f64::consts::TAU);
+        if full || sweep == 0.0 {
+            sweep = std::f64::consts::TAU;
+        }
+        let n0 = ((sweep / (std::f64::consts::PI / 4.0)).ceil())
+            .max((sweep * rho / self.part_len()).ceil())
+            .max(1.0) as u64;
+        let n0 = n0.next_power_of_two().min(1 << 20);
+        // directions: the exact ends, floats between
+        let dir = |k: u64, n: u64| -> Result<Q2, Error> {
+            if k == 0 {
+                return Ok(u.clone());
+            }
+            if k == n {
+                return Ok(v.clone());
+            }
+            let a = a0 + sweep * k as f64 / n as f64;
+            Ok([q(a.cos())?, q(a.sin())?])
+        };
+        let mut out = Vec::new();
+        let mut stack: Vec<(Q2, Q2, f64, f64, u32)> = Vec::new();
+        for k in (0..n0).rev() {
+            let (s0, s1) = (k as f64 / n0 as f64, (k + 1) as f64 / n0 as f64);
+            stack.push((dir(k, n0)?, dir(k + 1, n0)?, s0, s1, 0));
+        }
+        while let Some((d0, d1, s0, s1, depth)) = stack.pop() {
+            let hull = arc_hull(*t, rho_i, ip(&d0), ip(&d1))
+                .ok_or_else(|| err("an arc part's hull is not finite"))?;
+            let am = a0 + sweep * 0.5 * (s0 + s1);
+            let m = c + DVec2::new(am.cos(), am.sin()) * rho;
+            let dv = json!([pt(&d0), pt(&d1)]);
+            match self.try_part(&hull, m, ("dirs", dv))? {
+                Some(v) => out.push(v),
+                None if depth < 24 => {
+                    let sm = 0.5 * (s0 + s1);
+                    let a = a0 + sweep * sm;
+                    let dm = [q(a.cos())?, q(a.sin())?];
+                    stack.push((dm.clone(), d1, sm, s1, depth + 1));
+                    stack.push((d0, dm, s0, sm, depth + 1));
+                }
+                None => {
+                    return Err(err(format!(
+                        "no witnesses for an arc part near ({}, {})",
+                        m.x, m.y
+                    )))
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    /// The boxes of one family of `∂S`.
+    fn family_boxes(&self, path: &dyn Path) -> Result<Vec<Value>, Error> {
+        let fval = |t: f64| {
+            path.val(point_iv(t))
+                .map(|p| DVec2::new(mid(p[0]), mid(p[1])))
+        };
+        // initial boxes: about tol·64 long, at least 4, a power of two
+        let mut len = 0.0;
+        let mut prev =
+            fval(0.0).ok_or_else(|| err("the boundary is undefined (a singular input piece?)"))?;
+        for k in 1..=32 {
+            let p = fval(k as f64 / 32.0)
+                .ok_or_else(|| err("the boundary is undefined (a singular input piece?)"))?;
+            len += (p - prev).length();
+            prev = p;
+        }
+        let n0 = ((len / (256.0 * self.tol)).ceil().max(2.0) as u64)
+            .next_power_of_two()
+            .min(1 << 16);
+        let mut out = Vec::new();
+        let mut stack: Vec<(f64, f64, u32)> = (0..n0)
+            .rev()
+            .map(|k| (k as f64 / n0 as f64, (k + 1) as f64 / n0 as f64, 0))
+            .collect();
+        while let Some((t0, t1, depth)) = stack.pop() {
+            let (q0, q1) = (q(t0)?, q(t1)?);
+            let bx = BoxT::new(&q0, &q1);
+            let tv = json!([qs(&q0), qs(&q1)]);
+            match self.one_box(path, &bx, 0.5 * (t0 + t1), fval(0.5 * (t0 + t1)))? {
+                Some(mut v) => {
+                    v.as_object_mut().expect("object").insert("t".into(), tv);
+                    out.push(v);
+                }
+                None if depth < 44 => {
+                    let tm = 0.5 * (t0 + t1);
+                    stack.push((tm, t1, depth + 1));
+                    stack.push((t0, tm, depth + 1));
+                }
+                None => {
+                    return Err(err(format!(
+                        "the boundary near parameter {t0} is neither proven near the outline nor inside the stroke"
+                    )))
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    fn one_box(
+        &self,
+        path: &dyn Path,
+        bx: &BoxT,
+        tm: f64,
+        p: Option<DVec2>,
+    ) -> Result<Option<Value>, Error> {
+        let Some(p) = p else { return Ok(None) };
+        let mut tries: Vec<(BBox, Value)> = Vec::new();
+        let near = self.near_outline(p, self.tol);
+        let (j, u, d_in) = nearest_input(&self.fin, p);
+        let inside_first =
+            d_in < self.r * (1.0 - 1e-12) && near.first().is_none_or(|n| n.3 > 0.5 * self.tol);
+        let mut inside_try = Vec::new();
+        if d_in < self.r {
+            let uq = q(u)?;
+            inside_try.push((
+                BBox::Inside {
+                    piece: j,
+                    u: uq.clone(),
+                },
+                json!({"inside": {"piece": j, "u": qs(&uq)}}),
+            ));
+        }
+        let mut near_try = Vec::new();
+        for (c, i, s, _) in near {
+            {
+                match &self.outline[c][i] {
+                    OPiece::Bezier { .. } => {
+                        let FPiece::Bez(f) = &self
+                            .fout
+                            .iter()
+                            .find(|x| x.0 == c && x.1 == i)
+                            .expect("piece")
+                            .2
+                        else {
+                            unreachable!()
+                        };
+                        let dp = path
+                            .der(point_iv(tm))
+                            .map(|v| DVec2::new(mid(v[0]), mid(v[1])))
+                            .unwrap_or(DVec2::ZERO);
+                        let dl = bez_at(&f.d, s);
+                        let k = if dl.length_squared() > 0.0 {
+                            dp.dot(dl) / dl.length_squared()
+                        } else {
+                            0.0
+                        };
+                        // the foot map must stay in [0, 1] over the box
+                        let reach = k.abs() * 0.5 * (bx.all.sup() - bx.all.inf());
+                        let s = if reach < 0.5 {
+                            s.clamp(reach, 1.0 - reach)
+                        } else {
+                            s
+                        };
+                        let (sq, kq) = (q(s)?, q(k)?);
+                        near_try.push((
+                            BBox::NearBezier {
+                                contour: c,
+                                piece: i,
+                                s: sq.clone(),
+                                k: kq.clone(),
+                            },
+                            json!({"near": {"contour": c, "piece": i, "s": qs(&sq), "k": qs(&kq)}}),
+                        ));
+                    }
+                    OPiece::Arc { .. } => near_try.push((
+                        BBox::NearArc {
+                            contour: c,
+                            piece: i,
+                        },
+                        json!({"near": {"contour": c, "piece": i}}),
+                    )),
+                }
+            }
+        }
+        if inside_first {
+            tries.extend(inside_try);
+            tries.extend(near_try);
+        } else {
+            tries.extend(near_try);
+            tries.extend(inside_try);
+        }
+        for (what, v) in tries {
+            if check_bbox(path, bx, &what, &self.outline, &self.input, self.tol_i).is_ok() {
+                return Ok(Some(v));
+            }
+        }
+        Ok(None)
+    }
+}
+
+/// The stroke certificate of a proven stroke outline `s` of `curve` with the
+/// circular pen of radius `radius`, at the stroke's tolerance: a JSON
+/// document that [`crate::certify::verify::verify`] checks on its own.
+///
+/// Errors (field `certificate`): an elliptical pen or butt caps (the format
+/// states `∂(x ⊕ disk r)`), claims (a) or (c) not proven, an arc with equal
+/// ends, or a part or box the tests cannot decide within their depth.
+///
+/// # Examples
+/// ```
+/// use lncert::stroke::{certificate, stroke, StrokeOptions};
+/// use lncert::{parse_curve, parse_rational};
+/// # fn main() -> Result<(), lncert::Error> {
+/// let x = parse_curve("M 0 0 L 4 0")?;
+/// let r = parse_rational("1")?;
+/// let s = stroke(&x, &StrokeOptions::new(r.clone(), "1e-2".parse()?))?;
+/// let cert = certificate(&x, &s, &r)?;
+/// let valid = lncert::certify::verify::verify(&cert.to_string()).unwrap();
+/// assert!(valid.max_bound <= 1e-2);
+/// # Ok(())
+/// # }
+/// ```
+pub fn certificate(
+    curve: &[Bezier<Rational>],
+    s: &Stroke,
+    radius: &Rational,
+) -> Result<Value, Error> {
+    if s.pen.is_some() {
+        return Err(err(
+            "an elliptical pen: the certificate states the stroke of a disk",
+        ));
+    }
+    if !(s.a.proven && s.b.proven && s.c.proven) {
+        return Err(err(
+            "the stroke is not proven: no certificate is written for an unproven outline",
+        ));
+    }
+    let exact: Vec<Vec<Q2>> = curve
+        .iter()
+        .map(|b| {
+            b.points()
+                .iter()
+                .map(|p| [p.x.clone(), p.y.clone()])
+                .collect()
+        })
+        .collect();
+    let input =
+        Input::new(exact.clone(), radius.clone(), "curve").map_err(|e| err(e.to_string()))?;
+    let fin: Vec<FBez> = exact
+        .iter()
+        .map(|p| FBez::new(p.iter().map(v2).collect()))
+        .collect();
+    let mut outline = Vec::new();
+    let mut fout = Vec::new();
+    let mut outline_json = Vec::new();
+    for (ci, c) in s.contours.iter().enumerate() {
+        let mut ps = Vec::new();
+        let mut js = Vec::new();
+        for (i, p) in c.pieces.iter().enumerate() {
+            match p {
+                Piece::Bezier(b) => {
+                    let e: Vec<Q2> = b
+                        .points()
+                        .iter()
+                        .map(|p| [p.x.clone(), p.y.clone()])
+                        .collect();
+                    js.push(json!({"bezier": e.iter().map(pt).collect::<Vec<_>>()}));
+                    fout.push((ci, i, FPiece::Bez(FBez::new(e.iter().map(v2).collect()))));
+                    ps.push(OPiece::bezier(e));
+                }
+                Piece::Arc(a) => {
+                    if a.from == a.to {
+                        return Err(err("an outline arc with equal ends"));
+                    }
+                    let cq = [a.center.x.clone(), a.center.y.clone()];
+                    let from = [a.from.x.clone(), a.from.y.clone()];
+                    let to = [a.to.x.clone(), a.to.y.clone()];
+                    js.push(json!({"arc": {"center": pt(&cq), "radius": qs(&a.radius), "from": pt(&from), "to": pt(&to), "clockwise": a.clockwise}}));
+                    let op = OPiece::arc(cq.clone(), a.radius.clone(), from, to, a.clockwise)
+                        .map_err(err)?;
+                    let OPiece::Arc { ccw_u, ccw_v, .. } = &op else {
+                        unreachable!()
+                    };
+                    let a0 = v2(ccw_u).y.atan2(v2(ccw_u).x);
+                    let a1 = v2(ccw_v).y.atan2(v2(ccw_v).x);
+                    let sw = (a1 - a0).rem_euclid(std::f64::consts::TAU);
+                    fout.push((ci, i, FPiece::Arc(v2(&cq), a.radius.approx(), a0, sw)));
+                    ps.push(op);
+                }
+            }
+        }
+        outline.push(ps);
+        outline_json.push(Value::Array(js));
+    }
+    let tol_q = s.tol.exact().clone();
+    let ctx = Ctx {
+        input,
+        fin,
+        outline,
+        fout,
+        r: radius.approx(),
+        tol: s.tol.value(),
+        tol_i: iq(&tol_q),
+        _s: s,
+    };
+    // (a)
+    let jobs: Vec<(usize, usize)> = ctx
+        .outline
+        .iter()
+        .enumerate()
+        .flat_map(|(c, ps)| (0..ps.len()).map(move |i| (c, i)))
+        .collect();
+    let covers: Vec<Result<Vec<Value>, Error>> = jobs
+        .par_iter()
+        .map(|&(c, i)| match &ctx.outline[c][i] {
+            OPiece::Bezier { iv, .. } => {
+                let f = match &ctx
+                    .fout
+                    .iter()
+                    .find(|x| x.0 == c && x.1 == i)
+                    .expect("piece")
+                    .2
+                {
+                    FPiece::Bez(f) => f,
+                    FPiece::Arc(..) => unreachable!(),
+                };
+                ctx.cover_bezier(iv, f)
+            }
+            OPiece::Arc {
+                ccw_u, ccw_v, t, ..
+            } => {
+                let (cc, rho) = match &ctx
+                    .fout
+                    .iter()
+                    .find(|x| x.0 == c && x.1 == i)
+                    .expect("piece")
+                    .2
+                {
+                    FPiece::Arc(cc, rho, ..) => (*cc, *rho),
+                    FPiece::Bez(_) => unreachable!(),
+                };
+                ctx.cover_arc(ccw_u, ccw_v, cc, rho, &t.c, t.rho, t.full)
+            }
+        })
+        .collect();
+    let mut cover: Vec<Vec<Value>> = ctx.outline.iter().map(|_| Vec::new()).collect();
+    for ((c, _), v) in jobs.iter().zip(covers) {
+        cover[*c].push(Value::Array(v?));
+    }
+    // (b)
+    let fams = ctx.input.families();
+    let boundary: Vec<Result<Value, Error>> = fams
+        .par_iter()
+        .map(|f| {
+            let boxes = ctx
+                .family_boxes(&*f.path)
+                .map_err(|e| err(format!("{}: {}", f.name, e.reason)))?;
+            Ok(json!({"of": f.name, "boxes": boxes}))
+        })
+        .collect();
+    let boundary: Vec<Value> = boundary.into_iter().collect::<Result<_, _>>()?;
+    Ok(json!({
+        "format": FORMAT,
+        "version": VERSION,
+        "claim": CLAIM,
+        "tol": qs(&tol_q),
+        "radius": qs(radius),
+        "curve": exact.iter().map(|p| p.iter().map(pt).collect::<Vec<_>>()).collect::<Vec<_>>(),
+        "outline": outline_json,
+        "cover": cover,
+        "boundary": boundary,
+    }))
+}
