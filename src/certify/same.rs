@@ -173,6 +173,20 @@ pub fn verify_against(text: &str, a: &ShapeDesc, b: &ShapeDesc) -> Result<Valid,
         reason: format!("{} (line {}, column {})", e.reason, e.line, e.column),
     })?;
     let valid = verify_json(&doc)?;
+    if doc.get("format").and_then(|f| f.as_str()) == Some(super::verify::stroke::FORMAT) {
+        // a stroke certificate: A is its outline, B its curve
+        let (outline, curve) = super::verify::stroke::shapes(&doc)?;
+        for (key, theirs, mine) in [("outline", outline, a), ("curve", curve, b)] {
+            theirs.same_as(mine).map_err(|why| Invalid {
+                at: key.into(),
+                reason: format!(
+                    "the certificate is about another {key} than --against {}: {why}",
+                    if key == "outline" { "A" } else { "B" }
+                ),
+            })?;
+        }
+        return Ok(valid);
+    }
     for (key, mine) in [("a", a), ("b", b)] {
         // a valid certificate has both keys, in the canonical form
         let value = doc

@@ -311,16 +311,16 @@ impl Ctx<'_> {
         Ok(out)
     }
 
+    /// The parts of an arc, counter-clockwise from `u` to `v` (radius
+    /// vectors); `c`, `rho`: its float centre and radius; `t`: its enclosure.
     fn cover_arc(
         &self,
-        u: &Q2,
-        v: &Q2,
+        (u, v): (&Q2, &Q2),
         c: DVec2,
         rho: f64,
-        t: &crate::certify::verify::stroke::geom::P,
-        rho_i: Interval,
-        full: bool,
+        t: &crate::certify::verify::stroke::geom::ArcT,
     ) -> Result<Vec<Value>, Error> {
+        let (rho_i, full) = (t.rho, t.full);
         let a0 = v2(u).y.atan2(v2(u).x);
         let a1 = v2(v).y.atan2(v2(v).x);
         let mut sweep = (a1 - a0).rem_euclid(std::f64::consts::TAU);
@@ -349,7 +349,7 @@ impl Ctx<'_> {
             stack.push((dir(k, n0)?, dir(k + 1, n0)?, s0, s1, 0));
         }
         while let Some((d0, d1, s0, s1, depth)) = stack.pop() {
-            let hull = arc_hull(*t, rho_i, ip(&d0), ip(&d1))
+            let hull = arc_hull(t.c, rho_i, ip(&d0), ip(&d1))
                 .ok_or_else(|| err("an arc part's hull is not finite"))?;
             let am = a0 + sweep * 0.5 * (s0 + s1);
             let m = c + DVec2::new(am.cos(), am.sin()) * rho;
@@ -655,7 +655,7 @@ pub fn certificate(
                     FPiece::Arc(cc, rho, ..) => (*cc, *rho),
                     FPiece::Bez(_) => unreachable!(),
                 };
-                ctx.cover_arc(ccw_u, ccw_v, cc, rho, &t.c, t.rho, t.full)
+                ctx.cover_arc((ccw_u, ccw_v), cc, rho, t)
             }
         })
         .collect();

@@ -250,6 +250,7 @@ fn run_trim(a: &ConvolveArgs, curve: &[Bezier<Rational>], pen: Pen) -> Result<i3
         svg: a.svg.clone(),
         path_out: None,
         out: a.out.clone(),
+        certificate: None,
         json: a.json,
     };
     super::stroke::run_with(&sa, curve, lncert::stroke::PenShape::Ellipse(pen))

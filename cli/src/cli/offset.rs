@@ -141,7 +141,7 @@ pub struct OffsetArgs {
     /// sides trimmed at their crossings, loops removed, round caps on an open
     /// curve), as `lncert stroke --pen circle:|R|` computes it; `--svg` and
     /// `--path-out` write the outline.
-    #[arg(long, conflicts_with_all = ["certificate", "grid", "curve_out", "exact_out"])]
+    #[arg(long, conflicts_with_all = ["grid", "curve_out", "exact_out"])]
     pub trim: bool,
     /// Print one JSON document.
     #[arg(long)]
@@ -287,6 +287,7 @@ fn run_trim(a: &OffsetArgs, input: &CurveInput, distance: &Rational) -> Result<i
         svg: a.svg.clone(),
         path_out: a.path_out.clone(),
         out: a.out.clone(),
+        certificate: a.certificate.clone(),
         json: a.json,
     };
     let r = num_traits::Signed::abs(distance);

@@ -100,6 +100,12 @@ pub struct StrokeArgs {
     /// SVG document without `--pen`: one `<path>` per stroked element.
     #[arg(long, value_name = "FILE.svg")]
     pub out: Option<PathBuf>,
+    /// Write a stroke certificate (FILE.json) of the proven outline: that it
+    /// lies within TOL of the exact boundary of `x ⊕ disk(R)` in Hausdorff
+    /// distance, re-checked by `lncert verify FILE.json` on its own. Circular
+    /// pens and round caps; not written for an outline that is not proven.
+    #[arg(long, value_name = "FILE.json")]
+    pub certificate: Option<PathBuf>,
     /// One JSON document on stdout.
     #[arg(long)]
     pub json: bool,
@@ -228,6 +234,12 @@ pub fn run_input(a: &StrokeArgs, input: &CurveInput, pen: PenShape) -> Result<i3
             y_down,
         } => run_curve(a, pieces, approx, &opts, *y_down),
         CurveInput::Circle { center, radius, .. } => {
+            if a.certificate.is_some() {
+                return Err(bad(
+                    "--certificate",
+                    "a {\"circle\"} input is stroked exactly (concentric circles) and has no Bézier curve for a certificate to state; give the circle as an SVG <circle> for a certified stroke",
+                ));
+            }
             let Some(r) = circle_pen else {
                 return Err(bad(
                     "CURVE",
@@ -274,6 +286,21 @@ pub(crate) fn options(a: &StrokeArgs, pen: PenShape) -> Result<StrokeOptions, Cl
     if let Some(p) = &a.out {
         super::svg_out::check(p)?;
     }
+    if let Some(p) = &a.certificate {
+        super::args::output_file("--certificate", p)?;
+        if matches!(pen, PenShape::Ellipse(_)) {
+            return Err(bad(
+                "--certificate",
+                "stroke certificates state the stroke of a disk: use --pen circle:R",
+            ));
+        }
+        if matches!(a.cap, Cap::Butt) {
+            return Err(bad(
+                "--certificate",
+                "stroke certificates state x ⊕ disk(R), whose ends are round: use --cap round",
+            ));
+        }
+    }
     let mut opts = StrokeOptions::with_pen(pen, tol);
     opts.cap = a.cap.into();
     opts.method = a.method.into();
@@ -296,7 +323,54 @@ fn run_curve(
 ) -> Result<i32, CliError> {
     let t0 = std::time::Instant::now();
     let s = stroke(curve, opts).map_err(stroke_err)?;
-    report(a, &s, curve, approx, t0.elapsed().as_secs_f64(), y_down)
+    let secs = t0.elapsed().as_secs_f64();
+    let code = report(a, &s, curve, approx, secs, y_down)?;
+    match &a.certificate {
+        Some(p) => write_certificate(p, curve, &s, &opts.radius, code),
+        None => Ok(code),
+    }
+}
+
+/// `--certificate FILE`: the stroke certificate of a proven outline, written
+/// and announced on stderr; an unproven outline gets none (exit code kept),
+/// and a proven one whose certificate cannot be built exits 3.
+fn write_certificate(
+    path: &std::path::Path,
+    curve: &[lncert::curve::Bezier<Rational>],
+    s: &Stroke,
+    radius: &Rational,
+    code: i32,
+) -> Result<i32, CliError> {
+    if code != super::EXIT_OK {
+        eprintln!(
+            "lncert: --certificate {}: not written (the outline is not proven)",
+            path.display()
+        );
+        return Ok(code);
+    }
+    let t0 = std::time::Instant::now();
+    match lncert::stroke::certificate(curve, s, radius) {
+        Ok(doc) => {
+            let text = doc.to_string();
+            std::fs::write(path, &text).map_err(|e| bad("--certificate", e))?;
+            eprintln!(
+                "lncert: stroke certificate written to {} ({} kB in {:.3} s); check it with: lncert verify {}",
+                path.display(),
+                text.len().div_ceil(1000),
+                t0.elapsed().as_secs_f64(),
+                path.display()
+            );
+            Ok(code)
+        }
+        Err(e) => {
+            eprintln!(
+                "lncert: --certificate {}: not written: {}",
+                path.display(),
+                e.reason
+            );
+            Ok(super::EXIT_UNDECIDED)
+        }
+    }
 }
 
 /// A stroke engine error, naming the flag.

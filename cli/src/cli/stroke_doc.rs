@@ -57,6 +57,12 @@ fn stroked(elements: &[SvgElement]) -> Result<Vec<(&SvgElement, Rational)>, CliE
 
 /// Runs the per-element stroke of an SVG document.
 pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
+    if a.certificate.is_some() {
+        return Err(bad(
+            "--certificate",
+            "a certificate states the stroke of one curve with one pen: give --pen circle:R (the document's elements are then stroked together)",
+        ));
+    }
     let (text, elements) = read_document(a)?;
     let jobs = stroked(&elements)?;
     let (strokes, secs) = stroke_all(a, &jobs)?;

@@ -17,6 +17,9 @@ pub fn check_accepted(text: &str, tol: &Rational) {
     static LOWER: Mutex<BTreeMap<String, (Rational, String)>> = Mutex::new(BTreeMap::new());
     let doc: Value = serde_json::from_str(text)
         .unwrap_or_else(|e| panic!("verify accepted a text serde_json cannot read: {e}"));
+    if doc["format"] == "lncert-stroke-certificate" {
+        return check_stroke(&doc, tol);
+    }
     let key = format!("{}\n{}", doc["a"], doc["b"]);
     let known = LOWER.lock().unwrap().get(&key).cloned();
     let (lo, what) = match known {
@@ -56,4 +59,75 @@ pub fn check_accepted(text: &str, tol: &Rational) {
         &lo <= tol,
         "SOUNDNESS: verify accepted d_H <= {tol}, but the certified lower bound is {lo} ({what})\ncertificate: {text}",
     );
+}
+
+fn num(v: &Value) -> f64 {
+    let r = lncert::parse_rational(v.as_str().expect("a rational string")).expect("canonical");
+    lncert::scalar::Scalar::approx(&r)
+}
+
+fn bez(p: &[(f64, f64)], t: f64) -> (f64, f64) {
+    let mut b = p.to_vec();
+    for k in (1..b.len()).rev() {
+        for i in 0..k {
+            b[i] = (b[i].0 * (1.0 - t) + b[i + 1].0 * t, b[i].1 * (1.0 - t) + b[i + 1].1 * t);
+        }
+    }
+    b[0]
+}
+
+fn pts(v: &Value) -> Vec<(f64, f64)> {
+    v.as_array()
+        .expect("points")
+        .iter()
+        .map(|p| (num(&p[0]), num(&p[1])))
+        .collect()
+}
+
+/// An accepted stroke certificate: every sampled outline point `q` must have
+/// `|dist(q, x) − r| ≤ tol` (a point within `tol` of `∂S`, where the distance
+/// to the curve is `r`, has it; `dist` is 1-Lipschitz). The distance is taken
+/// to a dense polyline of the curve, within its sampling gap.
+fn check_stroke(doc: &Value, tol: &Rational) {
+    let tol = lncert::scalar::Scalar::approx(tol);
+    let r = num(&doc["radius"]);
+    let mut curve = Vec::new();
+    let mut gap = 0.0f64;
+    for p in doc["curve"].as_array().expect("curve") {
+        let p = pts(p);
+        let mut prev = bez(&p, 0.0);
+        for k in 0..=400 {
+            let q = bez(&p, k as f64 / 400.0);
+            gap = gap.max(((q.0 - prev.0).powi(2) + (q.1 - prev.1).powi(2)).sqrt());
+            prev = q;
+            curve.push(q);
+        }
+    }
+    let scale = curve.iter().fold(r, |m, q| m.max(q.0.abs()).max(q.1.abs()));
+    let slack = gap + 1e-9 * scale;
+    for c in doc["outline"].as_array().expect("outline") {
+        for piece in c.as_array().expect("contour").iter().take(64) {
+            let samples: Vec<(f64, f64)> = if let Some(b) = piece.get("bezier") {
+                let p = pts(b);
+                (0..=16).map(|k| bez(&p, k as f64 / 16.0)).collect()
+            } else {
+                let a = &piece["arc"];
+                let c = (num(&a["center"][0]), num(&a["center"][1]));
+                let f = pts(&Value::Array(vec![a["from"].clone(), a["to"].clone()]));
+                f.into_iter().chain(std::iter::once(c)).take(2).collect()
+            };
+            for q in samples {
+                let d = curve
+                    .iter()
+                    .map(|p| ((p.0 - q.0).powi(2) + (p.1 - q.1).powi(2)).sqrt())
+                    .fold(f64::INFINITY, f64::min);
+                assert!(
+                    d >= r - tol - 1e-9 * scale && d <= r + tol + slack,
+                    "SOUNDNESS: verify accepted a stroke certificate whose outline point ({}, {}) is at distance {d} from the curve, not within tol {tol} of r {r}",
+                    q.0,
+                    q.1
+                );
+            }
+        }
+    }
 }

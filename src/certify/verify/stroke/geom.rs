@@ -406,7 +406,7 @@ fn bprod(a: &[Interval], b: &[Interval]) -> Vec<Interval> {
         }
     }
     for (k, o) in out.iter_mut().enumerate() {
-        *o = *o / bmn[k];
+        *o /= bmn[k];
     }
     out
 }

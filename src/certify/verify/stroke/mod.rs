@@ -278,6 +278,7 @@ impl Path for OwnedSide {
 }
 
 /// One outline piece, exact and enclosed.
+#[allow(clippy::large_enum_variant)]
 pub(crate) enum OPiece {
     Bezier {
         exact: Vec<Q2>,
@@ -754,6 +755,72 @@ fn check_family(
         ));
     }
     Ok((max, boxes.len()))
+}
+
+/// The two shapes a valid stroke certificate speaks about, for `verify
+/// --against OUTLINE CURVE`: its outline (Bézier pieces and exact arcs, as one
+/// union) and its curve. Call it on a document [`check`] accepted.
+pub(crate) fn shapes(
+    doc: &Json,
+) -> Result<(crate::shape::ShapeDesc, crate::shape::ShapeDesc), Invalid> {
+    use crate::curve::{Bezier, V2};
+    use crate::shape::{ArcDesc, ShapeDesc};
+    fn shape_err(at: &str) -> impl Fn(crate::shape::ShapeError) -> Invalid + '_ {
+        move |e| inv(at, e.to_string())
+    }
+    let bez = |pts: Vec<Q2>| Bezier::new(pts.into_iter().map(|[x, y]| V2::new(x, y)).collect());
+    let outline = doc
+        .get("outline")
+        .ok_or_else(|| inv("outline", "missing"))?;
+    let mut beziers = Vec::new();
+    let mut members = Vec::new();
+    for (ci, c) in arr(outline, "outline", "contours")?.iter().enumerate() {
+        for (i, p) in arr(c, "outline", "pieces")?.iter().enumerate() {
+            let at = format!("outline[{ci}][{i}]");
+            match read_piece(p, &at)? {
+                OPiece::Bezier { exact, .. } => beziers.push(bez(exact)),
+                OPiece::Arc {
+                    start,
+                    ccw_u,
+                    ccw_v,
+                    ..
+                } => {
+                    let a = p.get("arc").ok_or_else(|| inv(&at, "missing arc"))?;
+                    let c = point(
+                        a.get("center").ok_or_else(|| inv(&at, "missing center"))?,
+                        &at,
+                    )?;
+                    let rho = canonical_rational(
+                        a.get("radius").ok_or_else(|| inv(&at, "missing radius"))?,
+                        &at,
+                    )?;
+                    let _ = start;
+                    let v = |q: Q2| V2::new(q[0].clone(), q[1].clone());
+                    members.push(
+                        ShapeDesc::arc(ArcDesc {
+                            center: v(c),
+                            radius: rho,
+                            from: v(ccw_u),
+                            to: v(ccw_v),
+                        })
+                        .map_err(shape_err(&at))?,
+                    );
+                }
+            }
+        }
+    }
+    if !beziers.is_empty() {
+        members.insert(0, ShapeDesc::curve(beziers).map_err(shape_err("outline"))?);
+    }
+    let outline = ShapeDesc::union(members).map_err(shape_err("outline"))?;
+    let curve = doc.get("curve").ok_or_else(|| inv("curve", "missing"))?;
+    let pieces: Vec<Bezier<Rational>> = arr(curve, "curve", "Bézier pieces")?
+        .iter()
+        .enumerate()
+        .map(|(j, p)| points(p, &format!("curve[{j}]")).map(bez))
+        .collect::<Result<_, _>>()?;
+    let curve = ShapeDesc::curve(pieces).map_err(shape_err("curve"))?;
+    Ok((outline, curve))
 }
 
 /// Checks a stroke certificate (the format and version already read).

@@ -1,0 +1,113 @@
+//! Stroke certificates, timed in one run: for each icon element of
+//! `icon_strokes` (circular pen of radius 1, round caps and joins, cubic
+//! output, TOL 1e-2) and for the test cubic (pen radius 0.4, native output,
+//! TOL 1e-2 and 1e-3), the proven stroke, the certificate's writing
+//! (`lncert::stroke::certificate`) and its check by the independent verifier
+//! (`lncert::certify::verify::verify` on the JSON text), with the ratio
+//! verify / stroke, the document's size, its parts (claim (a)) and boxes
+//! (claim (b)), and the largest bound the verifier recomputed.
+//!
+//! ```sh
+//! cargo run --release -p lncert-cli --example stroke_certificates [NAME]
+//! ```
+
+use lncert::curve::Bezier;
+use lncert::offset::Output;
+use lncert::scalar::Rational;
+use lncert::stroke::{certificate, stroke, StrokeOptions};
+use std::time::Instant;
+
+/// The icon elements (viewBox 0 0 24 24), as in `icon_strokes`.
+const ICONS: [(&str, &str); 8] = [
+    ("circle", r#"<circle cx="12" cy="12" r="3"/>"#),
+    (
+        "rect rx",
+        r#"<rect x="3" y="3" width="18" height="18" rx="1.5"/>"#,
+    ),
+    ("ellipse", r#"<ellipse cx="12" cy="12" rx="8" ry="4"/>"#),
+    (
+        "arc path",
+        r#"<path d="M12 2a10 10 0 1 0 10 10h-4a6 6 0 1 1-6-6z"/>"#,
+    ),
+    (
+        "heart",
+        r#"<path d="M20.84 4.61a5.5 5.5 0 0 0-7.78 0L12 5.67l-1.06-1.06a5.5 5.5 0 0 0-7.78 7.78l1.06 1.06L12 21.23l7.78-7.78 1.06-1.06a5.5 5.5 0 0 0 0-7.78z"/>"#,
+    ),
+    ("polyline", r#"<polyline points="4 17 10 11 4 5"/>"#),
+    ("corners", r#"<path d="M20 6 9 17l-5-5"/>"#),
+    (
+        "relative curves",
+        r#"<path d="M3 12c3-6 6-6 9 0s6 6 9 0"/>"#,
+    ),
+];
+
+fn row(name: &str, curve: &[Bezier<Rational>], r: &Rational, tol: f64, output: Output) {
+    let mut o = StrokeOptions::new(r.clone(), lncert::Tolerance::from_f64(tol).expect("tol"));
+    o.output = output;
+    let t0 = Instant::now();
+    let s = match stroke(curve, &o) {
+        Ok(s) => s,
+        Err(e) => return println!("| {name} | {tol:e} | stroke error: {e} |"),
+    };
+    let ts = t0.elapsed().as_secs_f64();
+    if !s.proven() {
+        return println!("| {name} | {tol:e} | {ts:.3} s | not proven: no certificate |");
+    }
+    let t1 = Instant::now();
+    let c = match certificate(curve, &s, r) {
+        Ok(c) => c,
+        Err(e) => return println!("| {name} | {tol:e} | {ts:.3} s | not written: {e} |"),
+    };
+    let tw = t1.elapsed().as_secs_f64();
+    let count = |v: &serde_json::Value| v.as_array().map_or(0, Vec::len);
+    let parts: usize = c["cover"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .flat_map(|x| x.as_array().into_iter().flatten())
+        .map(count)
+        .sum();
+    let boxes: usize = c["boundary"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .map(|f| count(&f["boxes"]))
+        .sum();
+    let text = c.to_string();
+    let t2 = Instant::now();
+    let v = lncert::certify::verify::verify(&text);
+    let tv = t2.elapsed().as_secs_f64();
+    match v {
+        Ok(v) => println!(
+            "| {name} | {tol:e} | {ts:.3} s | {tw:.3} s | {tv:.3} s | {:.2} | {} kB | {parts} + {boxes} | {:.3e} |",
+            tv / ts,
+            text.len().div_ceil(1000),
+            v.max_bound
+        ),
+        Err(e) => println!("| {name} | {tol:e} | {ts:.3} s | {tw:.3} s | REFUSED: {e} |"),
+    }
+}
+
+fn main() {
+    let only = std::env::args().nth(1);
+    println!("| input | TOL | stroke | write | verify | verify/stroke | size | parts + boxes | largest bound |");
+    println!("|---|---|---|---|---|---|---|---|---|");
+    let one = Rational::from_integer(1.into());
+    for (name, el) in ICONS {
+        if only.as_deref().is_some_and(|o| o != name) {
+            continue;
+        }
+        let doc = format!(
+            r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 24 24" fill="none" stroke="currentColor" stroke-width="2">{el}</svg>"#
+        );
+        let curve = lncert::shape::parse_svg_document(&doc).expect("icon");
+        row(name, &curve, &one, 1e-2, Output::Cubic);
+    }
+    if only.as_deref().is_none_or(|o| o == "cubic") {
+        let curve = lncert::parse_curve("M -0.95 0.7 C -0.3 0.5 0.3 -2.5 0.9 -0.2").expect("cubic");
+        let r = lncert::parse_rational("2/5").expect("radius");
+        for tol in [1e-2, 1e-3] {
+            row("test cubic r 0.4", &curve, &r, tol, Output::Native);
+        }
+    }
+}
