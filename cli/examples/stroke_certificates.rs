@@ -5,7 +5,8 @@
 //! (`lncert::stroke::certificate`) and its check by the independent verifier
 //! (`lncert::certify::verify::verify` on the JSON text), with the ratio
 //! verify / stroke, the document's size, its parts (claim (a)) and boxes
-//! (claim (b)), and the largest bound the verifier recomputed.
+//! (claim (b)), the largest bound the verifier recomputed, and whether the
+//! certificate states claim (c) (simple, disjoint, oriented contours).
 //!
 //! ```sh
 //! cargo run --release -p lncert-cli --example stroke_certificates [NAME]
@@ -79,10 +80,11 @@ fn row(name: &str, curve: &[Bezier<Rational>], r: &Rational, tol: f64, output: O
     let tv = t2.elapsed().as_secs_f64();
     match v {
         Ok(v) => println!(
-            "| {name} | {tol:e} | {ts:.3} s | {tw:.3} s | {tv:.3} s | {:.2} | {} kB | {parts} + {boxes} | {:.3e} |",
+            "| {name} | {tol:e} | {ts:.3} s | {tw:.3} s | {tv:.3} s | {:.2} | {} kB | {parts} + {boxes} | {:.3e} | {} |",
             tv / ts,
             text.len().div_ceil(1000),
-            v.max_bound
+            v.max_bound,
+            if c["simple"] == true { "yes" } else { "no" }
         ),
         Err(e) => println!("| {name} | {tol:e} | {ts:.3} s | {tw:.3} s | REFUSED: {e} |"),
     }
@@ -90,8 +92,8 @@ fn row(name: &str, curve: &[Bezier<Rational>], r: &Rational, tol: f64, output: O
 
 fn main() {
     let only = std::env::args().nth(1);
-    println!("| input | TOL | stroke | write | verify | verify/stroke | size | parts + boxes | largest bound |");
-    println!("|---|---|---|---|---|---|---|---|---|");
+    println!("| input | TOL | stroke | write | verify | verify/stroke | size | parts + boxes | largest bound | (c) simple |");
+    println!("|---|---|---|---|---|---|---|---|---|---|");
     let one = Rational::from_integer(1.into());
     for (name, el) in ICONS {
         if only.as_deref().is_some_and(|o| o != name) {

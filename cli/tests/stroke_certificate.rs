@@ -164,3 +164,71 @@ fn certificate_flag_is_refused_where_it_cannot_state_the_stroke() {
     assert_eq!(r.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&r.stderr).contains("--certificate"));
 }
+
+/// `hausdorff X STROKE.json --tol T --certificate C`: a stroke distance
+/// certificate that `verify` accepts; edited so that its parts no longer add
+/// up, or about another outline, it is refused.
+#[test]
+fn distance_certificate_of_another_outline_verifies() {
+    let stroke = tmp(
+        "sd-stroke.json",
+        r#"{"stroke": {"curve": "M 0 0 L 4 0", "pen": {"circle": "1/2"}}}"#,
+    );
+    let x = tmp(
+        "sd-x.txt",
+        "M -0.5 -0.51 L 4.5 -0.51 L 4.5 0.51 L -0.5 0.51 Z",
+    );
+    let cert = x.with_file_name("sd.cert.json");
+    let run = |tol: &str| {
+        lncert(&[
+            "hausdorff",
+            x.to_str().unwrap(),
+            stroke.to_str().unwrap(),
+            "--tol",
+            tol,
+            "--certificate",
+            cert.to_str().unwrap(),
+        ])
+    };
+    // the corners are ≈ 0.2163 from the caps: 1/5 is refuted, nothing written
+    let o = run("1/5");
+    assert_eq!(
+        o.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&o.stdout)
+    );
+    assert!(!cert.exists());
+    let o = run("1/4");
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let v = lncert(&["verify", cert.to_str().unwrap()]);
+    let out = String::from_utf8_lossy(&v.stdout);
+    assert_eq!(v.status.code(), Some(0), "{out}");
+    assert!(out.contains("≤ 1/4") && out.contains("r = 1/2"), "{out}");
+    let doc: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&cert).unwrap()).unwrap();
+    let refused_at = |d: serde_json::Value, at: &str| {
+        let p = cert.with_file_name("sd-edit.json");
+        std::fs::write(&p, d.to_string()).unwrap();
+        let o = lncert(&["verify", p.to_str().unwrap(), "--json"]);
+        assert_eq!(o.status.code(), Some(1));
+        let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        assert!(v["at"].as_str().unwrap().starts_with(at), "{at}: {v}");
+    };
+    // a claim smaller than the parts' sum
+    let mut d = doc.clone();
+    d["tol"] = "1/5".into();
+    refused_at(d, "tol");
+    // the Hausdorff part about another outline (its b translated)
+    let mut d = doc.clone();
+    let b = d["shape_to_outline"]["b"]
+        .to_string()
+        .replace("\"1/2\"", "\"3/5\"");
+    d["shape_to_outline"]["b"] = serde_json::from_str(&b).unwrap();
+    refused_at(d, "shape_to_outline");
+}

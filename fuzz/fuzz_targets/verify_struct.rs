@@ -3,7 +3,8 @@
 //!
 //! The bytes are *choices* (read with `arbitrary::Unstructured`): one of the
 //! seed certificates of fuzz/seeds/verify/ (embedded; version 2 with box
-//! covers, version 3 with parametric maps), then 1 to 4 mutations of
+//! covers, version 3 with parametric maps, stroke certificates and a stroke
+//! distance certificate), then 1 to 4 mutations of
 //! its JSON tree ([`Mutation`]): add a key (from the keys of the certificate and
 //! shape formats, plus `clockwise`, `bounds`, `bound`, `digest`, `extra`) with a
 //! boolean, a small integer, a canonical rational or a copy of a subtree; remove
@@ -30,7 +31,7 @@ use serde_json::Value;
 use std::fmt::Write;
 use std::sync::OnceLock;
 
-const SEED_TEXTS: [&str; 11] = [
+const SEED_TEXTS: [&str; 14] = [
     include_str!("../seeds/verify/cert_quad_seg.json"),
     include_str!("../seeds/verify/cert_quad_seg_tol1.json"),
     include_str!("../seeds/verify/cert_box_deleted.json"),
@@ -42,6 +43,9 @@ const SEED_TEXTS: [&str; 11] = [
     include_str!("../seeds/verify/cert_map_arc_cubic.json"),
     include_str!("../seeds/verify/cert_map_offset_quad.json"),
     include_str!("../seeds/verify/cert_union_conv_sides.json"),
+    include_str!("../seeds/verify/stroke_segment.json"),
+    include_str!("../seeds/verify/stroke_corner.json"),
+    include_str!("../seeds/verify/stroke_distance_rect.json"),
 ];
 
 fn seeds() -> &'static [Value] {
@@ -56,11 +60,14 @@ fn seeds() -> &'static [Value] {
 
 /// Keys a forger may add: every key of the formats, and the classic extras.
 #[rustfmt::skip]
-const KEYS: [&str; 31] = [
+const KEYS: [&str; 45] = [
     "clockwise", "bounds", "bound", "digest", "beziers", "bezier", "arc", "offset",
     "convolution", "side", "ellipse", "curve", "distance", "radius", "center", "from", "to",
     "piece", "target", "s", "t", "k", "tol", "claim", "extra", "format", "version", "directions",
     "maps", "phi", "union",
+    // stroke and stroke distance certificates
+    "outline", "cover", "boundary", "of", "boxes", "near", "inside", "contour", "u", "o", "w",
+    "mu", "dirs", "at",
 ];
 
 /// A value to put somewhere.

@@ -10,7 +10,7 @@
 use super::{Piece, Stroke};
 use crate::certify::verify::stroke::geom::{arc_hull, ip, iq, BoxT, Path};
 use crate::certify::verify::stroke::{
-    check_bbox, check_part, BBox, Input, OPiece, CLAIM, FORMAT, Q2, VERSION,
+    check_bbox, check_part, BBox, Input, OPiece, Span, CLAIM, FORMAT, Q2, VERSION,
 };
 use crate::curve::Bezier;
 use crate::scalar::{rational_from_f64, rational_to_string, Interval, Rational, Scalar};
@@ -660,9 +660,14 @@ pub fn certificate(
         })
         .collect();
     let mut cover: Vec<Vec<Value>> = ctx.outline.iter().map(|_| Vec::new()).collect();
+    let mut spans: Vec<Vec<Vec<Span>>> = ctx.outline.iter().map(|_| Vec::new()).collect();
     for ((c, _), v) in jobs.iter().zip(covers) {
-        cover[*c].push(Value::Array(v?));
+        let v = v?;
+        spans[*c].push(v.iter().map(span_of).collect::<Result<_, _>>()?);
+        cover[*c].push(Value::Array(v));
     }
+    // claim (c), as the verifier will check it
+    let simple = crate::certify::verify::stroke::simple_check(&ctx.outline, &spans).is_ok();
     // (b)
     let fams = ctx.input.families();
     let boundary: Vec<Result<Value, Error>> = fams
@@ -685,5 +690,94 @@ pub fn certificate(
         "outline": outline_json,
         "cover": cover,
         "boundary": boundary,
+        "simple": simple,
+    }))
+}
+
+/// The range of a written part, read back exactly.
+fn span_of(v: &Value) -> Result<Span, Error> {
+    let r = |x: &Value| {
+        crate::parse_rational(x.as_str().unwrap_or_default()).map_err(|e| err(e.reason))
+    };
+    if let Some(s) = v.get("s") {
+        return Ok(Span::Bez(r(&s[0])?, r(&s[1])?));
+    }
+    let d = &v["dirs"];
+    Ok(Span::Arc(
+        [r(&d[0][0])?, r(&d[0][1])?],
+        [r(&d[1][0])?, r(&d[1][1])?],
+    ))
+}
+
+/// The stroke distance certificate of `d_H(x, ∂S) ≤ tol` (format
+/// [`crate::certify::verify::stroke::DISTANCE_FORMAT`]) from a referee's run
+/// ([`super::distance_to_stroke`], [`super::distance_through`]): a Hausdorff
+/// certificate of `d_H(x, L) ≤ tol − E` from the run's outline search and the
+/// stroke certificate of `d_H(L, ∂S) ≤ E`, `E` the stroke's tolerance.
+///
+/// Errors (field `certificate`): the stroke is not proven, `tol ≤ E`, the
+/// outline search's bounds exceed `tol − E` (or it stopped early), or
+/// [`certificate`]'s errors.
+///
+/// # Examples
+/// ```
+/// use lncert::certify::Config;
+/// use lncert::shape::ShapeDesc;
+/// use lncert::stroke::{distance_certificate, distance_to_stroke, StrokeOptions};
+/// use lncert::{parse_curve, parse_rational};
+/// # fn main() -> Result<(), lncert::Error> {
+/// let curve = parse_curve("M 0 0 L 4 0")?;
+/// let r = parse_rational("1/2")?;
+/// // a rectangle 0.01 outside the stadium's sides, its corners off the caps
+/// let x = ShapeDesc::parse("M -0.5 -0.51 L 4.5 -0.51 L 4.5 0.51 L -0.5 0.51 Z")?;
+/// let d = distance_to_stroke(&x, &curve, &StrokeOptions::new(r.clone(), "1e-2".parse()?), &Config::default())?;
+/// let tol: lncert::Tolerance = "1/4".parse()?;
+/// let cert = distance_certificate(&x, &d, &curve, &r, &tol)?;
+/// let v = lncert::certify::verify::verify(&cert.to_string()).unwrap();
+/// assert_eq!(v.tol, parse_rational("1/4")?);
+/// # Ok(())
+/// # }
+/// ```
+pub fn distance_certificate(
+    x: &crate::shape::ShapeDesc,
+    d: &super::StrokeDistance,
+    curve: &[Bezier<Rational>],
+    radius: &Rational,
+    tol: &crate::Tolerance,
+) -> Result<Value, Error> {
+    use crate::certify::verify::stroke::{DISTANCE_CLAIM, DISTANCE_FORMAT};
+    let h = d
+        .outline
+        .as_ref()
+        .ok_or_else(|| err("the stroke is not proven: no outline to go through"))?;
+    if h.incomplete() {
+        return Err(err(
+            "the outline search stopped before its gap (its budget)",
+        ));
+    }
+    let e = d.stroke.tol.exact().clone();
+    let th = tol.exact() - &e;
+    let th = crate::Tolerance::new(th).map_err(|_| {
+        err(format!(
+            "the stroke's tolerance {e} is not below the claimed {}",
+            tol.exact()
+        ))
+    })?;
+    let l = d.stroke.outline_shape().map_err(|e| err(e.to_string()))?;
+    let ch = crate::certify::Certificate::new(x, &l, &th, h).ok_or_else(|| {
+        err(format!(
+            "the outline search proves d_H(shape, outline) ≤ {:e}, above TOL − E = {}",
+            h.hi,
+            th.exact()
+        ))
+    })?;
+    let cs = certificate(curve, &d.stroke, radius)?;
+    Ok(json!({
+        "format": DISTANCE_FORMAT,
+        "version": VERSION,
+        "claim": DISTANCE_CLAIM,
+        "tol": qs(tol.exact()),
+        "shape_to_outline": ch.doc,
+        "outline_to_stroke": cs,
     }))
 }

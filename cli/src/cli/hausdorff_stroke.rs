@@ -5,8 +5,11 @@
 //! lncert's proven outline `L` at tolerance `E` and the triangle inequality;
 //! without `--stroke-tol`, [`lncert::stroke::referee`]'s default `E` and its
 //! fallbacks).
-//! Either argument may be the stroke. No certificate is written: `∂S` ends at
-//! irrational crossings, which the certificate language cannot state yet.
+//! Either argument may be the stroke. With `--tol T --certificate C` (circular
+//! pens) a proven `d_H ≤ T` is written as a stroke distance certificate
+//! (`lncert-stroke-distance-certificate`: a Hausdorff certificate of
+//! `d_H(X, L) ≤ T − E` and the stroke certificate of `d_H(L, ∂S) ≤ E`),
+//! which `lncert verify` re-checks on its own.
 
 use super::args::{bad, number};
 use super::hausdorff::{approx_json, Arg, HausdorffArgs};
@@ -28,17 +31,28 @@ pub(crate) fn run(
     rel_f: f64,
     tol: Option<Tolerance>,
 ) -> Result<i32, CliError> {
-    if a.certificate.is_some() {
-        return Err(bad(
-            "--certificate",
-            "no certificate about a stroke's exact boundary is written yet (its crossings are irrational); the bounds printed are proven",
-        ));
-    }
     let (stroke_is_a, shape, approx_shape, st, approx_st) = match (x, y) {
         (Arg::Stroke(s, ps), Arg::Shape(o, po)) => (true, o, po, s, ps),
         (Arg::Shape(o, po), Arg::Stroke(s, ps)) => (false, o, po, s, ps),
         _ => unreachable!("the caller passes exactly one stroke"),
     };
+    if a.certificate.is_some() {
+        if tol.is_none() {
+            return Err(bad(
+                "--certificate",
+                "needs --tol T: the certificate states d_H ≤ T",
+            ));
+        }
+        if !matches!(st.pen, PenShape::Circle(_)) {
+            return Err(bad(
+                "--certificate",
+                "stroke certificates state the stroke of a disk ({\"circle\": R}); an elliptical pen's bounds are printed, not certified",
+            ));
+        }
+        if let Some(p) = &a.certificate {
+            super::args::output_file("--certificate", p)?;
+        }
+    }
     let cfg = Config {
         rel: rel_f,
         max_boxes: a.max_boxes,
@@ -76,6 +90,40 @@ pub(crate) fn run(
         seconds: start.elapsed().as_secs_f64(),
     };
     print_report(a.json, || report.json(), || report.text());
+    if let (Some(path), Some(t)) = (&a.certificate, &tol) {
+        if verdict == Some("certified") {
+            let r = match &st.pen {
+                PenShape::Circle(r) => r.clone(),
+                PenShape::Ellipse(_) => unreachable!("refused above"),
+            };
+            match lncert::stroke::distance_certificate(&shape, &d, &st.curve, &r, t) {
+                Ok(doc) => {
+                    let text = doc.to_string();
+                    std::fs::write(path, &text).map_err(|e| bad("--certificate", e))?;
+                    eprintln!(
+                        "lncert: certificate of d_H ≤ {} written to {} ({} kB); check it with: lncert verify {}",
+                        t.exact(),
+                        path.display(),
+                        text.len().div_ceil(1000),
+                        path.display()
+                    );
+                }
+                Err(e) => {
+                    eprintln!(
+                        "lncert: --certificate {}: not written: {}",
+                        path.display(),
+                        e.reason
+                    );
+                    return Ok(EXIT_UNDECIDED);
+                }
+            }
+        } else {
+            eprintln!(
+                "lncert: --certificate {}: not written (the claim d_H ≤ TOL is not proven)",
+                path.display()
+            );
+        }
+    }
     Ok(match verdict {
         Some("certified") => EXIT_OK,
         Some("refuted") => EXIT_REFUTED,
@@ -149,7 +197,7 @@ impl Report<'_> {
             "verdict": self.verdict,
             "incomplete": !d.complete(),
             "proof": "stroke",
-            "certificate": serde_json::Value::Null,
+            "certificate": serde_json::Value::Null, // written after the report, see stderr
             "seconds": self.seconds,
             "input_approximation": approx_json(ap_a, ap_b),
         })

@@ -20,6 +20,16 @@ pub fn check_accepted(text: &str, tol: &Rational) {
     if doc["format"] == "lncert-stroke-certificate" {
         return check_stroke(&doc, tol);
     }
+    if doc["format"] == "lncert-stroke-distance-certificate" {
+        // both parts were accepted: each claim must hold (the sum follows)
+        let part_tol = |d: &Value| {
+            lncert::parse_rational(d["tol"].as_str().expect("a tolerance")).expect("canonical")
+        };
+        let h = &doc["shape_to_outline"];
+        check_accepted(&h.to_string(), &part_tol(h));
+        let s = &doc["outline_to_stroke"];
+        return check_stroke(s, &part_tol(s));
+    }
     let key = format!("{}\n{}", doc["a"], doc["b"]);
     let known = LOWER.lock().unwrap().get(&key).cloned();
     let (lo, what) = match known {

@@ -172,16 +172,32 @@ pub(crate) fn verify_json(doc: &Json) -> Result<Valid, Invalid> {
     check_document(doc).map_err(top_level)
 }
 
+/// A Hausdorff certificate only (no other format): the first part of a
+/// stroke distance certificate.
+pub(crate) fn check_hausdorff_document(doc: &Json) -> Result<Valid, Invalid> {
+    if doc.get("format").and_then(|f| f.as_str()) != Some(FORMAT) {
+        return Err(inv("format", format!("expected \"{FORMAT}\"")));
+    }
+    check_document(doc)
+}
+
 fn check_document(doc: &Json) -> Result<Valid, Invalid> {
     // the format and version first: another format's keys are not errors of this one
     if let Some(format) = doc.get("format") {
         if format.as_str() == Some(stroke::FORMAT) {
             return stroke::check(doc);
         }
+        if format.as_str() == Some(stroke::DISTANCE_FORMAT) {
+            return stroke::check_distance(doc);
+        }
         if format.as_str() != Some(FORMAT) {
             return Err(inv(
                 "format",
-                format!("expected \"{FORMAT}\" or \"{}\"", stroke::FORMAT),
+                format!(
+                    "expected \"{FORMAT}\", \"{}\" or \"{}\"",
+                    stroke::FORMAT,
+                    stroke::DISTANCE_FORMAT
+                ),
             ));
         }
     }

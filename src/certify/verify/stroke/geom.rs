@@ -388,7 +388,7 @@ fn positive(g: Vec<Interval>, j: usize) -> Result<(), String> {
 }
 
 /// Bernstein coefficients of a product (degrees add).
-fn bprod(a: &[Interval], b: &[Interval]) -> Vec<Interval> {
+pub(crate) fn bprod(a: &[Interval], b: &[Interval]) -> Vec<Interval> {
     let (m, n) = (a.len() - 1, b.len() - 1);
     // binomials enclosed (beyond 2⁵³ they are not floats)
     let binom = |n: usize| -> Vec<Interval> {

@@ -12,10 +12,12 @@
 //!   "outline": [[PIECE, ...], ...],            closed contours, consecutive pieces sharing
 //!                                              exact end points
 //!   "cover": [[[PART, ...], ...], ...],        per contour, per piece: its parts in order
-//!   "boundary": [{"of": NAME, "boxes": [BOX, ...]}, ...]
+//!   "boundary": [{"of": NAME, "boxes": [BOX, ...]}, ...],
+//!   "simple": BOOL                             claim (c): simple, disjoint contours
 //! }
 //! PIECE = {"bezier": [[Q, Q], ...]}
 //!       | {"arc": {"center": [Q, Q], "radius": Q, "from": [Q, Q], "to": [Q, Q], "clockwise": BOOL}}
+//!                                              (ends exactly on the circle; from = to: the whole circle)
 //! PART  = {"s": [Q, Q], "o": IN, "w": OUT}             (a Bézier's parameter range)
 //!       | {"dirs": [[Q, Q], [Q, Q]], "o": IN, "w": OUT}  (an arc's radius directions)
 //! IN    = {"piece": j, "u": Q}                          the disk B(x_j(u), r) ⊆ S
@@ -48,10 +50,17 @@
 //! `∂S`). Crossings of the raw boundary need no exact parameter: near one the
 //! boxes on the removed branch are still near the outline, then inside.
 //!
+//! **(c) with `"simple": true`: the contours are simple and pairwise disjoint**
+//! (consecutive pieces meet only at their shared end) and each has a decided
+//! orientation, checked by the verifier's own search over the parts of (a)
+//! ([`simple`]); the statement then gives the orientations.
+//!
 //! Every number is a canonical exact rational; unknown or duplicate keys are
 //! refused; every failure names its field.
 
 pub(crate) mod geom;
+mod simple;
+pub(crate) use simple::{simple as simple_check, Span};
 
 use super::read::{canonical_index, canonical_rational, exact_object, join};
 use super::{inv, Invalid, Valid};
@@ -71,9 +80,100 @@ pub const FORMAT: &str = "lncert-stroke-certificate";
 pub const VERSION: u64 = 1;
 /// The claim of this format.
 pub const CLAIM: &str = "hausdorff(outline, boundary(curve + disk(radius))) <= tol";
+/// The format of a stroke distance certificate: `d_H(X, ∂S) ≤ tol` for any
+/// shape `X`, through a proven outline `L` — a Hausdorff certificate of
+/// `d_H(X, L) ≤ tol₁` and a stroke certificate of `d_H(L, ∂S) ≤ tol₂` about
+/// the same `L` (exact geometry), with `tol₁ + tol₂ ≤ tol` (triangle inequality).
+///
+/// ```text
+/// {"format": "lncert-stroke-distance-certificate", "version": 1,
+///  "claim": "hausdorff(shape, boundary(curve + disk(radius))) <= tol", "tol": Q,
+///  "shape_to_outline": HAUSDORFF_CERTIFICATE,     a = X, b = L
+///  "outline_to_stroke": STROKE_CERTIFICATE}       outline = L
+/// ```
+pub const DISTANCE_FORMAT: &str = "lncert-stroke-distance-certificate";
+/// The claim of a stroke distance certificate.
+pub const DISTANCE_CLAIM: &str = "hausdorff(shape, boundary(curve + disk(radius))) <= tol";
+/// Its keys, in the order the writer writes them.
+pub const DISTANCE_KEYS: [&str; 6] = [
+    "format",
+    "version",
+    "claim",
+    "tol",
+    "shape_to_outline",
+    "outline_to_stroke",
+];
+
+/// Checks a stroke distance certificate: both parts valid, about the same
+/// outline, tolerances adding up to at most `tol`.
+pub(crate) fn check_distance(doc: &Json) -> Result<Valid, Invalid> {
+    let [_f, version, claim, tol, h, st] = exact_object(doc, "", DISTANCE_KEYS)?;
+    if !matches!(version, Json::Number(v) if **v == *VERSION.to_string()) {
+        return Err(inv(
+            "version",
+            format!("this verifier reads version {VERSION} of {DISTANCE_FORMAT}"),
+        ));
+    }
+    if claim.as_str() != Some(DISTANCE_CLAIM) {
+        return Err(inv("claim", format!("expected \"{DISTANCE_CLAIM}\"")));
+    }
+    let tol = canonical_rational(tol, "tol")?;
+    fn nest(at: &'static str) -> impl Fn(Invalid) -> Invalid {
+        move |e| {
+            let w = if e.at.is_empty() {
+                at.to_string()
+            } else {
+                join(at, &e.at)
+            };
+            inv(w, e.reason)
+        }
+    }
+    let vh = super::check_hausdorff_document(h).map_err(nest("shape_to_outline"))?;
+    if st.get("format").and_then(|f| f.as_str()) != Some(FORMAT) {
+        return Err(inv(
+            "outline_to_stroke.format",
+            format!("expected \"{FORMAT}\""),
+        ));
+    }
+    let vs = check(st).map_err(nest("outline_to_stroke"))?;
+    if &vh.tol + &vs.tol > tol {
+        return Err(inv(
+            "tol",
+            format!(
+                "the parts prove {} + {} = {}, more than the claimed {tol}",
+                vh.tol,
+                vs.tol,
+                &vh.tol + &vs.tol
+            ),
+        ));
+    }
+    // the Hausdorff certificate's b must be the stroke certificate's outline
+    let b = h
+        .get("b")
+        .ok_or_else(|| inv("shape_to_outline.b", "missing"))?
+        .to_value();
+    let b = crate::shape::ShapeDesc::from_value(&b)
+        .map_err(|e| inv("shape_to_outline.b", e.to_string()))?;
+    let (outline, _) = shapes(st).map_err(nest("outline_to_stroke"))?;
+    b.same_as(&outline).map_err(|why| {
+        inv(
+            "shape_to_outline.b",
+            format!("not the stroke certificate's outline: {why}"),
+        )
+    })?;
+    Ok(Valid {
+        tol,
+        a: vh.a,
+        b: vs.b,
+        max_bound: (vh.max_bound + vs.max_bound).next_up(),
+        boxes: vh.boxes + vs.boxes,
+    })
+}
+
 /// The top-level keys, in the order the writer writes them.
-pub const KEYS: [&str; 9] = [
+pub const KEYS: [&str; 10] = [
     "format", "version", "claim", "tol", "radius", "curve", "outline", "cover", "boundary",
+    "simple",
 ];
 
 /// An exact point.
@@ -290,6 +390,7 @@ pub(crate) enum OPiece {
         ccw_u: Q2,
         ccw_v: Q2,
         t: ArcT,
+        clockwise: bool,
     },
 }
 
@@ -344,6 +445,7 @@ impl OPiece {
             ccw_u: cu,
             ccw_v: cv,
             t,
+            clockwise,
         })
     }
     pub(crate) fn bezier(exact: Vec<Q2>) -> OPiece {
@@ -520,7 +622,7 @@ fn check_cover_piece(
     piece: &OPiece,
     input: &Input,
     tol: crate::scalar::Interval,
-) -> Result<Tally, Invalid> {
+) -> Result<(Tally, Vec<simple::Span>), Invalid> {
     let parts = arr(v, at, "parts")?;
     if parts.is_empty() {
         return Err(inv(at, "no parts: the piece is not covered"));
@@ -528,6 +630,7 @@ fn check_cover_piece(
     let zero = Rational::zero();
     let one = Rational::from_integer(1.into());
     let mut max = 0.0f64;
+    let mut spans = Vec::with_capacity(parts.len());
     let mut prev: Option<Q2> = None;
     let mut prev_s: Rational = zero.clone();
     for (k, p) in parts.iter().enumerate() {
@@ -551,6 +654,7 @@ fn check_cover_piece(
                     return Err(inv(format!("{atk}.s[1]"), "expected s0 < s1 ≤ 1"));
                 }
                 prev_s = s1.clone();
+                spans.push(simple::Span::Bez(s0.clone(), s1.clone()));
                 (iv.restrict(iq(&s0), iq(&s1)), o, w)
             }
             OPiece::Arc {
@@ -580,6 +684,7 @@ fn check_cover_piece(
                     ));
                 }
                 prev = Some(d1.clone());
+                spans.push(simple::Span::Arc(d0.clone(), d1.clone()));
                 let h = arc_hull(t.c, t.rho, ip(&d0), ip(&d1))
                     .ok_or_else(|| inv(join(&atk, "dirs"), "hull not finite"))?;
                 let _ = ccw_v;
@@ -600,7 +705,7 @@ fn check_cover_piece(
     if !end_ok {
         return Err(inv(at, "the parts stop before the end of the piece"));
     }
-    Ok((max, parts.len()))
+    Ok(((max, parts.len()), spans))
 }
 
 /// One box of the cover of `∂S`.
@@ -825,7 +930,7 @@ pub(crate) fn shapes(
 
 /// Checks a stroke certificate (the format and version already read).
 pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
-    let [_f, version, claim, tol, radius, curve, outline, cover, boundary] =
+    let [_f, version, claim, tol, radius, curve, outline, cover, boundary, simple_claim] =
         exact_object(doc, "", KEYS)?;
     if !matches!(version, Json::Number(v) if **v == *VERSION.to_string()) {
         return Err(inv(
@@ -865,6 +970,7 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
         ));
     }
     let mut jobs = Vec::new();
+    let mut contour_of = Vec::new();
     for (ci, (c, ps)) in cov.iter().zip(&outline).enumerate() {
         let at = format!("cover[{ci}]");
         let per = arr(c, &at, "pieces")?;
@@ -876,18 +982,35 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
         }
         for (i, (v, p)) in per.iter().zip(ps).enumerate() {
             jobs.push((format!("cover[{ci}][{i}]"), v, p));
+            contour_of.push((ci, i));
         }
     }
-    let a: Vec<Result<Tally, Invalid>> = jobs
+    let a: Vec<_> = jobs
         .par_iter()
         .map(|(at, v, p)| check_cover_piece(v, at, p, &input, tol_i))
         .collect();
     let (mut max, mut count) = (0.0f64, 0usize);
-    for t in a {
-        let (m, n) = t?;
+    let mut spans: Vec<Vec<Vec<simple::Span>>> = outline.iter().map(|_| Vec::new()).collect();
+    for (t, (c, _)) in a.into_iter().zip(&contour_of) {
+        let ((m, n), sp) = t?;
         max = max.max(m);
         count += n;
+        spans[*c].push(sp);
     }
+    // (c): simple, disjoint contours and their orientations, when claimed
+    let orient = match simple_claim {
+        Json::Bool(true) => Some(
+            simple::simple(&outline, &spans)
+                .map_err(|e| inv("simple", format!("claimed, but {e}")))?,
+        ),
+        Json::Bool(false) => None,
+        o => {
+            return Err(inv(
+                "simple",
+                format!("expected true or false, found {}", o.describe()),
+            ))
+        }
+    };
     // (b): every family of ∂S's cover
     let fams = input.families();
     let bd = arr(boundary, "boundary", "families")?;
@@ -923,11 +1046,19 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
     Ok(Valid {
         tol: tol_q,
         a: format!(
-            "an outline of {} closed contour(s), {} pieces ({} Bézier, {} exact arcs)",
+            "an outline of {} closed contour(s), {} pieces ({} Bézier, {} exact arcs){}",
             outline.len(),
             n_pieces,
             n_pieces - arcs,
-            arcs
+            arcs,
+            match &orient {
+                Some(o) => format!(
+                    "; simple and disjoint, {} counter-clockwise and {} clockwise",
+                    o.iter().filter(|c| **c).count(),
+                    o.iter().filter(|c| !**c).count()
+                ),
+                None => "; simplicity not claimed".to_string(),
+            }
         ),
         b: format!(
             "∂(x ⊕ disk(r)), r = {}, x = {} Bézier piece(s) in {} component(s) ({} closed)",
@@ -940,3 +1071,6 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
         boxes: count,
     })
 }
+
+#[cfg(test)]
+mod tests;
