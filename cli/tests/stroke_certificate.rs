@@ -232,3 +232,36 @@ fn distance_certificate_of_another_outline_verifies() {
     d["shape_to_outline"]["b"] = serde_json::from_str(&b).unwrap();
     refused_at(d, "shape_to_outline");
 }
+
+/// Glyphs: a certificate for DejaVu Sans `A` (straight pieces whose foot maps
+/// end exactly at a piece's end: the writer once stepped past it by a rounding)
+/// and `S` (curved, with join arcs), both simple with one hole or none.
+#[test]
+fn glyph_stroke_certificates_verify() {
+    let Some(font) = common::dejavu() else { return };
+    for (g, holes) in [("A", 1), ("S", 0)] {
+        let cert = tmp(&format!("glyph-{g}.cert.json"), "");
+        let o = lncert(&[
+            "stroke",
+            font.to_str().unwrap(),
+            "--glyph",
+            g,
+            "--pen",
+            "circle:20",
+            "--tol",
+            "1/2",
+            "--certificate",
+            cert.to_str().unwrap(),
+        ]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(0), "{g}: {err}");
+        let v = lncert(&["verify", cert.to_str().unwrap()]);
+        let out = String::from_utf8_lossy(&v.stdout);
+        assert_eq!(v.status.code(), Some(0), "{g}: {out}");
+        assert!(out.contains("simple and disjoint"), "{g}: {out}");
+        // the stroke of a glyph outline with h holes: the contours' outer and
+        // inner boundaries, 2 (h + 1) contours, half of them clockwise
+        let want = format!("{} clockwise", holes + 1);
+        assert!(out.contains(&want), "{g}: {out}");
+    }
+}

@@ -413,9 +413,17 @@ impl Ctx<'_> {
                     stack.push((t0, tm, depth + 1));
                 }
                 None => {
+                    let p = fval(t0).unwrap_or(DVec2::NAN);
+                    let near = self.near_outline(p, f64::INFINITY);
+                    let (_, _, d_in) = nearest_input(&self.fin, p);
                     return Err(err(format!(
-                        "the boundary near parameter {t0} is neither proven near the outline nor inside the stroke"
-                    )))
+                        "the boundary near parameter {t0}, at ({:.6}, {:.6}), is neither proven near the outline nor inside the stroke (outline {:.3e} away, input {:.6e} for r {})",
+                        p.x,
+                        p.y,
+                        near.first().map_or(f64::INFINITY, |n| n.3),
+                        d_in,
+                        self.r
+                    )));
                 }
             }
         }
@@ -471,7 +479,9 @@ impl Ctx<'_> {
                             0.0
                         };
                         // the foot map must stay in [0, 1] over the box
-                        let reach = k.abs() * 0.5 * (bx.all.sup() - bx.all.inf());
+                        // (with room for the enclosure's rounding)
+                        let reach =
+                            k.abs() * 0.5 * (bx.all.sup() - bx.all.inf()) * (1.0 + 1e-9) + 1e-15;
                         let s = if reach < 0.5 {
                             s.clamp(reach, 1.0 - reach)
                         } else {

@@ -53,7 +53,7 @@
 //! **(c) with `"simple": true`: the contours are simple and pairwise disjoint**
 //! (consecutive pieces meet only at their shared end) and each has a decided
 //! orientation, checked by the verifier's own search over the parts of (a)
-//! ([`simple`]); the statement then gives the orientations.
+//! (`simple.rs`); the statement then gives the orientations.
 //!
 //! Every number is a canonical exact rational; unknown or duplicate keys are
 //! refused; every failure names its field.
