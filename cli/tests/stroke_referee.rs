@@ -344,11 +344,16 @@ fn cli_referee_verdicts_and_errors() {
         let f = format!("{} {}", j["error"]["field"], j["error"]["reason"]);
         assert!(f.contains(field), "{text}: {j}");
     }
-    // two strokes, and a certificate, are refused
+    // two strokes are refused, and a certificate without --tol
     let o = lncert(&["hausdorff", ss, ss]);
     assert_eq!(o.status.code(), Some(2));
     let cert = common::tmp("c.json", "");
     std::fs::remove_file(&cert).unwrap();
+    let o = lncert(&["hausdorff", xs, ss, "--certificate", cert.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--certificate"));
+    assert!(!cert.exists());
+    // with --tol, a certified verdict comes with a stroke distance certificate
     let o = lncert(&[
         "hausdorff",
         xs,
@@ -358,9 +363,19 @@ fn cli_referee_verdicts_and_errors() {
         "--certificate",
         cert.to_str().unwrap(),
     ]);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("--certificate"));
-    assert!(!cert.exists());
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let v = lncert(&["verify", cert.to_str().unwrap()]);
+    assert_eq!(
+        v.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&v.stdout)
+    );
 }
 
 /// Skia's committed outline of the heart icon (`cli/examples/data/`, made by
