@@ -10,7 +10,7 @@
 use super::{Piece, Stroke};
 use crate::certify::verify::stroke::geom::{arc_hull, ip, iq, BoxT, Path};
 use crate::certify::verify::stroke::{
-    check_bbox, check_part, BBox, Input, OPiece, Span, CLAIM, FORMAT, Q2, VERSION,
+    check_bbox, check_part, exact_points, BBox, Input, OPiece, Span, CLAIM, FORMAT, Q2, VERSION,
 };
 use crate::curve::Bezier;
 use crate::scalar::{rational_from_f64, rational_to_string, Interval, Rational, Scalar};
@@ -561,15 +561,7 @@ pub fn certificate(
             "the stroke is not proven: no certificate is written for an unproven outline",
         ));
     }
-    let exact: Vec<Vec<Q2>> = curve
-        .iter()
-        .map(|b| {
-            b.points()
-                .iter()
-                .map(|p| [p.x.clone(), p.y.clone()])
-                .collect()
-        })
-        .collect();
+    let exact: Vec<Vec<Q2>> = curve.iter().map(exact_points).collect();
     let input =
         Input::new(exact.clone(), radius.clone(), "curve").map_err(|e| err(e.to_string()))?;
     let fin: Vec<FBez> = exact
@@ -585,11 +577,7 @@ pub fn certificate(
         for (i, p) in c.pieces.iter().enumerate() {
             match p {
                 Piece::Bezier(b) => {
-                    let e: Vec<Q2> = b
-                        .points()
-                        .iter()
-                        .map(|p| [p.x.clone(), p.y.clone()])
-                        .collect();
+                    let e: Vec<Q2> = exact_points(b);
                     js.push(json!({"bezier": e.iter().map(pt).collect::<Vec<_>>()}));
                     fout.push((ci, i, FPiece::Bez(FBez::new(e.iter().map(v2).collect()))));
                     ps.push(OPiece::bezier(e));

@@ -179,6 +179,14 @@ pub const KEYS: [&str; 10] = [
 /// An exact point.
 pub(crate) type Q2 = [Rational; 2];
 
+/// The exact control points of a Bézier, as the certificate states them.
+pub(crate) fn exact_points(b: &crate::curve::Bezier<Rational>) -> Vec<Q2> {
+    b.points()
+        .iter()
+        .map(|p| [p.x.clone(), p.y.clone()])
+        .collect()
+}
+
 fn cross(a: &Q2, b: &Q2) -> Rational {
     &a[0] * &b[1] - &a[1] * &b[0]
 }

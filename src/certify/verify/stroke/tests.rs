@@ -1085,16 +1085,7 @@ fn the_families_hold_the_sampled_stroke_boundary() {
         let f = fixture(k);
         let r = f.r.approx();
         let curve: Vec<Vec<F2>> = f.curve.iter().map(fpts).collect();
-        let exact: Vec<Vec<super::Q2>> = f
-            .curve
-            .iter()
-            .map(|b| {
-                b.points()
-                    .iter()
-                    .map(|p| [p.x.clone(), p.y.clone()])
-                    .collect()
-            })
-            .collect();
+        let exact: Vec<Vec<super::Q2>> = f.curve.iter().map(super::exact_points).collect();
         let fams = super::Input::new(exact, f.r.clone(), "curve")
             .unwrap()
             .families();
