@@ -1096,6 +1096,34 @@ fn near_g1_corners_are_joints_not_crossings() {
     }
 }
 
+/// Slightly bent polylines: the offset segment on the concave side runs
+/// into a crossing near the corner, where the exact ∂S test proves no point
+/// (what made DejaVu `!` and `~` take seconds). The kept test halves those
+/// sub-pieces and gives witnesses outside S to the failing chunks only
+/// (`proofs/trimming.md`, "Kept by chunks"). Every output point is within the
+/// reported (a) bound of ∂S by dense sampling, and ∂S within TOL of the output.
+#[test]
+fn sub_pieces_kept_chunk_by_chunk_near_shallow_corners() {
+    for d in ["M 0 0 L 10 0 L 20 -1", "M 0 0 L 10 0 L 20 0.5"] {
+        let x = parse_curve(d).unwrap();
+        let tol = 1e-2;
+        let s = stroke(&x, &StrokeOptions::new(q("1"), common::tol(tol))).unwrap();
+        assert!(s.proven(), "{d}: {:?} {:?} {:?}", s.a, s.b, s.c);
+        check_closed_simple(&s);
+        assert!(s.a.bound <= tol, "{d}: {:?}", s.a);
+        let cf: Vec<Bezier<f64>> = x.iter().map(|b| b.map(Scalar::approx)).collect();
+        for p in output_points(&s, 200) {
+            let dd = dist_to_curve(&cf, p);
+            assert!(
+                (dd - 1.0).abs() <= s.a.bound + 1e-9,
+                "{d}: output point {p:?} at distance {dd} from x, (a) bound {}",
+                s.a.bound
+            );
+        }
+        sampled_check(&x, &s, 1.0, tol, 2e-3);
+    }
+}
+
 mod common;
 
 /// Glyphs whose strokes needed the decisions of the last round (DejaVu, font

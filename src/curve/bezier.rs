@@ -48,6 +48,10 @@ impl<S: Scalar> Bezier<S> {
     }
     /// de Casteljau evaluation.
     pub fn eval(&self, t: &S) -> V2<S> {
+        let (xs, ys) = self.coords();
+        if let (Some(x), Some(y)) = (S::bernstein_eval(&xs, t), S::bernstein_eval(&ys, t)) {
+            return V2::new(x, y);
+        }
         let mut p = self.pts.clone();
         let n = p.len();
         for r in 1..n {
@@ -100,6 +104,15 @@ impl<S: Scalar> Bezier<S> {
         // the convex form (1 − u) p + u q: in floats a parameter 0 or 1 gives an
         // end control point bit for bit, and neighbouring spans share the
         // point at their common parameter.
+        let (xs, ys) = self.coords();
+        if let (Some(x), Some(y)) = (
+            S::bernstein_restrict(&xs, a, b),
+            S::bernstein_restrict(&ys, a, b),
+        ) {
+            return Bezier {
+                pts: x.into_iter().zip(y).map(|(x, y)| V2::new(x, y)).collect(),
+            };
+        }
         let n = self.degree();
         let pts = (0..=n)
             .map(|i| {

@@ -122,6 +122,9 @@ impl<S: Scalar> Poly<S> {
     }
     /// Power form of the Bernstein polynomial `sum b_i B^n_i(t)`.
     pub fn from_bernstein(b: &[S]) -> Self {
+        if let Some(c) = S::bernstein_to_power(b) {
+            return Poly::new(c);
+        }
         let n = b.len().saturating_sub(1);
         let mut acc = Poly::zero();
         for (i, bi) in b.iter().enumerate() {

@@ -171,6 +171,26 @@ pub trait Scalar:
     fn scale(&self, k: i64) -> Self {
         self.clone() * Self::from_i64(k)
     }
+
+    // Fast paths of Bernstein-form operations on one coordinate. `None` (the
+    // default) means "use the generic de Casteljau code"; an arithmetic that
+    // overrides one must return exactly what the generic code computes (an
+    // exact arithmetic: the same numbers; see `scalar::rational`).
+
+    /// The coordinate of the Bézier with coordinates `c` at `t`.
+    fn bernstein_eval(_c: &[Self], _t: &Self) -> Option<Self> {
+        None
+    }
+    /// The coordinates of the Bézier with coordinates `c` restricted to
+    /// `[a, b]` (blossoms `c(a^(n−i), b^i)`).
+    fn bernstein_restrict(_c: &[Self], _a: &Self, _b: &Self) -> Option<Vec<Self>> {
+        None
+    }
+    /// The power-basis coefficients of the polynomial with Bernstein
+    /// coefficients `b` on `[0, 1]`.
+    fn bernstein_to_power(_b: &[Self]) -> Option<Vec<Self>> {
+        None
+    }
 }
 
 /// Square roots: only arithmetics that can represent them (`f64`, [`Interval`]).

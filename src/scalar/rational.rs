@@ -3,7 +3,7 @@
 
 use super::{Scalar, Sign};
 use num_bigint::BigInt;
-use num_traits::{Signed, ToPrimitive, Zero};
+use num_traits::{One, Signed, ToPrimitive, Zero};
 
 /// Exact rational numbers, the ground truth of every decision.
 pub type Rational = num_rational::BigRational;
@@ -36,6 +36,108 @@ impl Scalar for Rational {
     fn approx(&self) -> f64 {
         rational_to_f64_nearest(self)
     }
+    fn bernstein_eval(c: &[Self], t: &Self) -> Option<Self> {
+        if c.is_empty() {
+            return None;
+        }
+        if t.is_zero() {
+            return Some(c[0].clone());
+        }
+        if t.is_one() {
+            return Some(c[c.len() - 1].clone());
+        }
+        let (mut p, den) = common_numerators(c);
+        let (pt, qt) = (t.numer(), t.denom());
+        let rest = qt - pt;
+        let n = p.len() - 1;
+        for r in 0..n {
+            for j in 0..n - r {
+                p[j] = &rest * &p[j] + pt * &p[j + 1];
+            }
+        }
+        Some(Rational::new(p.swap_remove(0), den * qt.pow(n as u32)))
+    }
+    fn bernstein_restrict(c: &[Self], a: &Self, b: &Self) -> Option<Vec<Self>> {
+        if c.is_empty() {
+            return None;
+        }
+        let (nums, den) = common_numerators(c);
+        let n = nums.len() - 1;
+        let (pa, qa) = (a.numer(), a.denom());
+        let (pb, qb) = (b.numer(), b.denom());
+        let (ra, rb) = (qa - pa, qb - pb);
+        Some(
+            (0..=n)
+                .map(|i| {
+                    // blossom c(a^(n−i), b^i): de Casteljau steps with
+                    // integer weights (q − p, p), the denominators collected
+                    let mut p = nums.clone();
+                    for r in 0..n {
+                        let (pu, ru) = if r < n - i { (pa, &ra) } else { (pb, &rb) };
+                        for j in 0..n - r {
+                            p[j] = ru * &p[j] + pu * &p[j + 1];
+                        }
+                    }
+                    let d = &den * qa.pow((n - i) as u32) * qb.pow(i as u32);
+                    Rational::new(p.swap_remove(0), d)
+                })
+                .collect(),
+        )
+    }
+    fn bernstein_to_power(b: &[Self]) -> Option<Vec<Self>> {
+        if b.is_empty() {
+            return None;
+        }
+        // c_k = C(n, k) Σ_{j ≤ k} (−1)^(k−j) C(k, j) b_j
+        let (nums, den) = common_numerators(b);
+        let n = nums.len() - 1;
+        let binom = |n: usize, k: usize| -> BigInt {
+            let mut v = BigInt::from(1u32);
+            for i in 0..k {
+                v = v * BigInt::from(n - i) / BigInt::from(i + 1);
+            }
+            v
+        };
+        Some(
+            (0..=n)
+                .map(|k| {
+                    let mut s = BigInt::zero();
+                    for (j, x) in nums.iter().enumerate().take(k + 1) {
+                        let w = binom(k, j);
+                        if (k - j) % 2 == 0 {
+                            s += w * x;
+                        } else {
+                            s -= w * x;
+                        }
+                    }
+                    Rational::new(s * binom(n, k), den.clone())
+                })
+                .collect(),
+        )
+    }
+}
+
+/// The values `x_k = n_k / d` with one common denominator `d` (the least
+/// common multiple of theirs): `(n_k, d)`.
+fn common_numerators(xs: &[Rational]) -> (Vec<BigInt>, BigInt) {
+    use num_integer::Integer;
+    let mut d = BigInt::from(1u32);
+    for x in xs {
+        if !x.denom().is_one() {
+            d = d.lcm(x.denom());
+        }
+    }
+    let nums = xs
+        .iter()
+        .map(|x| {
+            if x.denom() == &d {
+                x.numer().clone()
+            } else {
+                x.numer() * (&d / x.denom())
+            }
+        })
+        .collect();
+    (nums, d)
 }
 
 /// Why a number literal was rejected.
@@ -437,6 +539,66 @@ mod tests {
             "", "-", "1/", "/2", "1.2.3", "inf", "1e", "0x10", "1/0", "1e99999", "--1",
         ] {
             assert!(parse_rational(s).is_err(), "{s:?} should be rejected");
+        }
+    }
+}
+
+#[cfg(test)]
+mod bernstein_fast_path_tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// Σ C(n, k) t^k (1 − t)^(n − k) c_k, term by term (the oracle).
+    fn bernstein_sum(c: &[Rational], t: &Rational) -> Rational {
+        let n = c.len() - 1;
+        let one = <Rational as One>::one();
+        let mut s = <Rational as Zero>::zero();
+        for (k, ck) in c.iter().enumerate() {
+            let mut binom = BigInt::from(1u32);
+            for i in 0..k {
+                binom = binom * BigInt::from(n - i) / BigInt::from(i + 1);
+            }
+            let mut term = ck.clone() * Rational::from_integer(binom);
+            for _ in 0..k {
+                term *= t;
+            }
+            for _ in 0..n - k {
+                term *= &one - t;
+            }
+            s += term;
+        }
+        s
+    }
+
+    fn rat() -> impl Strategy<Value = Rational> {
+        (-10_000i64..10_000, 1i64..5_000).prop_map(|(p, q)| Rational::new(p.into(), q.into()))
+    }
+
+    proptest! {
+        #[test]
+        fn fast_paths_agree_with_the_bernstein_sum(
+            c in prop::collection::vec(rat(), 1..8),
+            a in rat(),
+            b in rat(),
+            u in rat(),
+        ) {
+            // eval at t, and at the end parameters
+            for t in [&a, &<Rational as Zero>::zero(), &<Rational as One>::one()] {
+                prop_assert_eq!(Rational::bernstein_eval(&c, t).unwrap(), bernstein_sum(&c, t));
+            }
+            // restrict: the part over [a, b] at u is the whole at a + u (b − a)
+            let r = Rational::bernstein_restrict(&c, &a, &b).unwrap();
+            prop_assert_eq!(r.len(), c.len());
+            let at = &a + &u * (&b - &a);
+            prop_assert_eq!(bernstein_sum(&r, &u), bernstein_sum(&c, &at));
+            // power basis: Σ p_k t^k is the Bernstein sum
+            let p = Rational::bernstein_to_power(&c).unwrap();
+            prop_assert_eq!(p.len(), c.len());
+            let mut v = <Rational as Zero>::zero();
+            for pk in p.iter().rev() {
+                v = v * &u + pk;
+            }
+            prop_assert_eq!(v, bernstein_sum(&c, &u));
         }
     }
 }

@@ -223,6 +223,8 @@ struct Joint {
 
 struct InPiece {
     x: IB,
+    /// The box of `x`'s control points.
+    bb: IV,
     h: IB,
     h2: IB,
     /// The piece ending at this piece's start.
@@ -286,6 +288,7 @@ impl Input {
                 let h = x.hodograph();
                 let h2 = h.hodograph();
                 InPiece {
+                    bb: bbox(&x),
                     x,
                     h,
                     h2,
@@ -454,15 +457,29 @@ impl Input {
         if b <= a {
             return true;
         }
-        let xr = self.pieces[j].x.restrict(&point(a), &point(b));
-        let xb = bbox(&xr);
-        if box_dist2_lo(e, &xb) > self.r2.sup() {
+        let p = &self.pieces[j];
+        if a == 0.0 && b == 1.0 {
+            // the whole piece: its box is computed once
+            if box_dist2_lo(e, &p.bb) > self.r2.sup() {
+                return true;
+            }
+            return self.far_part(&p.x, e, depth);
+        }
+        let xr = p.x.restrict(&point(a), &point(b));
+        if box_dist2_lo(e, &bbox(&xr)) > self.r2.sup() {
             return true;
         }
+        self.far_part(&xr, e, depth)
+    }
+
+    /// [`Input::far`] on an enclosure `xr` of a part of a piece whose box is
+    /// not already far: Bernstein coefficients, then de Casteljau halves
+    /// (each an enclosure of its exact half).
+    fn far_part(&self, xr: &IB, e: &IV, depth: u32) -> bool {
         let (c, eps) = centre(e);
         let (ex, ey) = (point(eps.x.mag()), point(eps.y.mag()));
         let reach = self.r + (ex * ex + ey * ey).sqrt();
-        let (xs, ys) = coords(&xr);
+        let (xs, ys) = coords(xr);
         let dx: Vec<Interval> = xs.iter().map(|v| *v - c.x).collect();
         let dy: Vec<Interval> = ys.iter().map(|v| *v - c.y).collect();
         let g = add(&bprod(&dx, &dx), &bprod(&dy, &dy));
@@ -473,8 +490,20 @@ impl Input {
         if depth == 0 {
             return false;
         }
-        let m = 0.5 * (a + b);
-        self.far(j, e, a, m, depth - 1) && self.far(j, e, m, b, depth - 1)
+        // hopeless: an end point of the part (a point of the piece) is
+        // within `reach` of the centre, so no subdivision can prove it (an
+        // early `false` only gives up; near a joint this saves 2^depth parts)
+        let pts = xr.points();
+        for q in [&pts[0], &pts[pts.len() - 1]] {
+            let (qx, qy) = (q.x - c.x, q.y - c.y);
+            if (qx * qx + qy * qy).sup() < r2.inf() {
+                return false;
+            }
+        }
+        let (l, r) = xr.split(&point(0.5));
+        [l, r]
+            .iter()
+            .all(|h| box_dist2_lo(e, &bbox(h)) > self.r2.sup() || self.far_part(h, e, depth - 1))
     }
 
     /// The widest window `[w0, w1] ⊇ [t0, t1]` of piece `j` on which `g` is
@@ -786,6 +815,11 @@ impl Input {
             todo.push((m, b));
             todo.push((a, m));
         }
+        log::trace!(
+            "onside: piece {i} [{t0}, {t1}] floor {floor}: {nodes} nodes, {} leaves, {} unproven",
+            leaves.len(),
+            leaves.iter().filter(|l| !l.0).count()
+        );
         charge(&leaves, budget)
     }
 }

@@ -329,13 +329,27 @@ pub(super) fn prove_kept(
     form: &Form,
     budget: f64,
 ) -> Option<f64> {
+    prove_kept_capped(curve, curve_f, piece, e_in, form, budget, 4000)
+}
+
+/// [`prove_kept`] giving up after `max_parts` parts (a cheap first try on a
+/// short sub-piece, which one or two witnesses cover).
+pub(super) fn prove_kept_capped(
+    curve: &[Bezier<Rational>],
+    curve_f: &[Bezier<f64>],
+    piece: &Piece,
+    e_in: f64,
+    form: &Form,
+    budget: f64,
+    max_parts: usize,
+) -> Option<f64> {
     let rf = form.reach;
     let mut todo: Vec<(Part, u32)> = Part::initial(piece)?.into_iter().map(|p| (p, 0)).collect();
     let mut worst: f64 = 0.0;
     let mut n = 0;
     while let Some((part, depth)) = todo.pop() {
         n += 1;
-        if n > 4000 {
+        if n > max_parts {
             return None;
         }
         let hull = part.hull()?;

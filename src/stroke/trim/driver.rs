@@ -2,7 +2,7 @@
 
 use super::add_note;
 use super::chain::{chain, check_simple};
-use super::classify::{foot, prove_kept, prove_removed, Part};
+use super::classify::{foot, prove_kept, prove_kept_capped, prove_removed, Part};
 use super::pinch::pinched_loops;
 use super::sides::{check, dist_hi, raw_contours, Kind, Raw};
 use super::split::{find_crossings, split_piece, Bridge, Sub};
@@ -306,6 +306,20 @@ fn kept_bound(run: &Run, onside_input: Option<&Input>, s: &Sub, est: f64) -> Opt
         let pad = 1e-12;
         if budget > 0.0 {
             if let Some((t0, t1)) = link.exact_range(range.0 - pad, range.1 + pad) {
+                // cheap tries first: a few exact ∂S intervals, then a few
+                // witnesses outside S (a sub-piece about TOL long between a
+                // near-G¹ joint and a crossing has no point the ∂S test can
+                // prove, and failing it at full depth costs 100–400 ms)
+                if polygon_length(&s.post) <= 2.0 * tol {
+                    if let Some(l) = input.prove_interval(link.piece, &link.d, t0, t1, budget, 64) {
+                        return Some((e_in + l).next_up());
+                    }
+                    if let Some(b) =
+                        prove_kept_capped(run.curve, &run.curve_f, &s.post, e_in, run.form, tol, 4)
+                    {
+                        return Some(b);
+                    }
+                }
                 if let Some(l) = input.prove_interval(link.piece, &link.d, t0, t1, budget, 2048) {
                     return Some((e_in + l).next_up());
                 }
@@ -314,12 +328,126 @@ fn kept_bound(run: &Run, onside_input: Option<&Input>, s: &Sub, est: f64) -> Opt
                     s.raw,
                     link.piece
                 );
+                // what failed is usually local (a shallow crossing at one
+                // end): halve, and give witnesses to the failing chunks only
+                if let Piece::Bezier(pre) = &s.pre {
+                    let k = KeptChunks {
+                        run,
+                        input,
+                        link,
+                        s,
+                        pre,
+                        e_in,
+                        budget,
+                    };
+                    if let Some(b) = k.bound(0.0, 1.0, 0) {
+                        return Some(b);
+                    }
+                }
             } else {
                 log::trace!("onside: no exact range for raw {}", s.raw);
             }
         }
     }
     prove_kept(run.curve, &run.curve_f, &s.post, e_in, run.form, tol)
+}
+
+/// The length of a Bézier piece's control polygon in floats (an estimate
+/// that only orders the tries; infinite for an arc).
+fn polygon_length(p: &Piece) -> f64 {
+    match p {
+        Piece::Bezier(b) => b
+            .points()
+            .windows(2)
+            .map(|w| (w[1].x.approx() - w[0].x.approx()).hypot(w[1].y.approx() - w[0].y.approx()))
+            .sum(),
+        Piece::Arc(_) => f64::INFINITY,
+    }
+}
+
+/// Depth of the halving in [`KeptChunks::bound`]: a chunk that the exact ∂S
+/// intervals cannot keep is halved down to 1/16 of the sub-piece before its
+/// points get witnesses outside `S` (the per-part test, slow on long chunks).
+const KEPT_CHUNK_DEPTH: u32 = 4;
+
+/// The kept test of one Bézier sub-piece with a link to its exact offset,
+/// chunk by chunk (`proofs/trimming.md`, "Kept by exact ∂S intervals", and
+/// "Kept by chunks"): a chunk `u ∈ [u0, u1]` of `pre` is kept either by
+/// [`Input::prove_interval`] on the exact parameters it stands for (its
+/// unproven runs charged to proven leaves of the same chunk, so chunks are
+/// independent), or by witnesses outside `S` for `pre` restricted to it.
+struct KeptChunks<'a, 'b> {
+    run: &'a Run<'b>,
+    input: &'a Input,
+    link: &'a super::sides::Link,
+    s: &'a Sub,
+    pre: &'a Bezier<Rational>,
+    /// The sub-piece's `raw.e_in + delta`, rounded up.
+    e_in: f64,
+    /// `tol − e_in`: what a chunk's unproven run may use.
+    budget: f64,
+}
+
+impl KeptChunks<'_, '_> {
+    /// A bound of claim (a) over the points of `post` whose parameter `u`
+    /// (the parameter of `pre`) is in `[u0, u1]`, or `None`.
+    fn bound(&self, u0: f64, u1: f64, depth: u32) -> Option<f64> {
+        let (r0, r1) = (self.s.range.0.approx(), self.s.range.1.approx());
+        // the raw parameters of the chunk, padded so that the exact range
+        // covers every raw point of the chunk whatever the float rounding
+        let pad = 1e-12;
+        let (a, b) = (r0 + u0 * (r1 - r0) - pad, r0 + u1 * (r1 - r0) + pad);
+        // (the whole sub-piece's ∂S test has failed before depth 0)
+        if depth > 0 {
+            let nodes = (2048usize >> depth).max(64);
+            if let Some((t0, t1)) = self.link.exact_range(a.max(0.0), b.min(1.0)) {
+                if let Some(l) = self.input.prove_interval(
+                    self.link.piece,
+                    &self.link.d,
+                    t0,
+                    t1,
+                    self.budget,
+                    nodes,
+                ) {
+                    return Some((self.e_in + l).next_up());
+                }
+            }
+        }
+        // a few witnesses outside S may cover the chunk (near a corner or a
+        // crossing, where the ∂S test proves nothing)
+        if let Some(b) = self.witnesses(u0, u1, 4) {
+            return Some(b);
+        }
+        let m = 0.5 * (u0 + u1);
+        if depth < KEPT_CHUNK_DEPTH && u0 < m && m < u1 {
+            let l = self.bound(u0, m, depth + 1)?;
+            let r = self.bound(m, u1, depth + 1)?;
+            return Some(l.max(r));
+        }
+        self.witnesses(u0, u1, 4000)
+    }
+
+    /// Witnesses outside `S` for the exact chunk `[u0, u1]` of `pre` (at most
+    /// `max_parts` parts): each of its points is within `raw.e_in` of `S` (of
+    /// a point of `S`) and within `rho` of a point outside, so within
+    /// `max(rho, raw.e_in)` of `∂S`; `post` moves it by at most `delta`
+    /// (`e_in` holds both).
+    fn witnesses(&self, u0: f64, u1: f64, max_parts: usize) -> Option<f64> {
+        let (q0, q1) = (rational_from_f64(u0)?, rational_from_f64(u1)?);
+        let chunk = Piece::Bezier(self.pre.restrict(&q0, &q1));
+        let raw_e_in = self.run.raws[self.s.raw].e_in;
+        let kept = prove_kept_capped(
+            self.run.curve,
+            &self.run.curve_f,
+            &chunk,
+            raw_e_in,
+            self.run.form,
+            self.run.tol - self.s.delta,
+            max_parts,
+        )?;
+        log::trace!("kept chunk [{u0}, {u1}] of raw {} by witnesses", self.s.raw);
+        Some((kept + self.s.delta).next_up().max(self.e_in))
+    }
 }
 
 /// The removal test of one sub-piece that is not kept (only boundary pieces
