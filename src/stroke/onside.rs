@@ -164,6 +164,27 @@ fn elevate(a: &[Interval], deg: usize) -> Vec<Interval> {
     bprod(a, &vec![point(1.0); deg - n + 1])
 }
 
+/// `sign · (q_k − p·(hx_k, hy_k)) > 0` for every `k` and every point `p`
+/// of the box `e` (`[q, hx, hy]`: the Bernstein coefficients of a whole
+/// piece's `q + p`-linear form, one degree): every coefficient of the form
+/// at each `p ∈ e` is in the interval computed, since it is linear in `p`.
+/// A fast first try of the convexity and monotony tests on `[0, 1]`; the
+/// centred form on restricted windows follows when it fails.
+fn whole_positive(f: &[Vec<Interval>; 3], e: &IV, sign: i8) -> bool {
+    let [q, hx, hy] = f;
+    !q.is_empty()
+        && q.len() == hx.len()
+        && q.len() == hy.len()
+        && q.iter().zip(hx).zip(hy).all(|((q, a), b)| {
+            let v = *q - e.x * *a - e.y * *b;
+            if sign > 0 {
+                v.inf() > 0.0
+            } else {
+                v.sup() < 0.0
+            }
+        })
+}
+
 /// The unproven run at the end of `leaves` (in order) is already longer
 /// than `budget`: the interval cannot be kept this way (stop early).
 fn run_over(leaves: &[(bool, f64)], budget: f64) -> bool {
@@ -227,6 +248,13 @@ struct InPiece {
     bb: IV,
     h: IB,
     h2: IB,
+    /// The whole piece's Bernstein coefficients of `|x′|² + x·x″` and of
+    /// `x″` (both coordinates), at one degree: the convexity test on the
+    /// window `[0, 1]` is `q − p·x″ > 0` for every point `p` of the box
+    /// ([`Input::convex_at`]), computed once per piece.
+    convex_whole: [Vec<Interval>; 3],
+    /// The same for the monotony test: `x·x′` and `x′`.
+    monotone_whole: [Vec<Interval>; 3],
     /// The piece ending at this piece's start.
     prev: Option<Joint>,
     /// The piece starting at this piece's end.
@@ -287,7 +315,31 @@ impl Input {
                 let x = b.map(interval_from_rational);
                 let h = x.hodograph();
                 let h2 = h.hodograph();
+                let n = x.degree();
+                let (xs, ys) = coords(&x);
+                let (hx, hy) = coords(&h);
+                let (h2x, h2y) = coords(&h2);
+                let deg = (2 * n).saturating_sub(2).max(n);
+                let q = add(
+                    &add(
+                        &elevate(&bprod(&hx, &hx), deg),
+                        &elevate(&bprod(&hy, &hy), deg),
+                    ),
+                    &add(
+                        &elevate(&bprod(&xs, &h2x), deg),
+                        &elevate(&bprod(&ys, &h2y), deg),
+                    ),
+                );
+                let convex_whole = [q, elevate(&h2x, deg), elevate(&h2y, deg)];
+                let deg1 = (2 * n).saturating_sub(1);
+                let monotone_whole = [
+                    add(&bprod(&xs, &hx), &bprod(&ys, &hy)),
+                    elevate(&hx, deg1),
+                    elevate(&hy, deg1),
+                ];
                 InPiece {
+                    convex_whole,
+                    monotone_whole,
                     bb: bbox(&x),
                     x,
                     h,
@@ -359,6 +411,9 @@ impl Input {
     }
 
     fn convex_at(&self, j: usize, e: &IV, w0: f64, w1: f64, depth: u32) -> bool {
+        if w0 == 0.0 && w1 == 1.0 && whole_positive(&self.pieces[j].convex_whole, e, 1) {
+            return true;
+        }
         let xr = self.pieces[j].x.restrict(&point(w0), &point(w1));
         let n = xr.degree();
         let (c, eps) = centre(e);
@@ -407,6 +462,13 @@ impl Input {
     /// increases on the window, so a window from a point `x(w0)` where
     /// `g = r²` holds no other point as near; `sign < 0` the mirror image.
     fn monotone(&self, j: usize, e: &IV, w0: f64, w1: f64, sign: i8, depth: u32) -> bool {
+        if w0 == 0.0
+            && w1 == 1.0
+            && self.pieces[j].x.degree() > 0
+            && whole_positive(&self.pieces[j].monotone_whole, e, sign)
+        {
+            return true;
+        }
         let xr = self.pieces[j].x.restrict(&point(w0), &point(w1));
         let n = xr.degree();
         if n == 0 {
