@@ -679,17 +679,25 @@ fn segment_pair(pieces: &[Bezier<Rational>], i: usize, j: usize) -> Option<Inter
             return Some(out);
         }
     }
-    // no shared end: B's parts that stay on one side of the line or project
-    // beyond the segment's ends (interval Bernstein coefficients of f and of
-    // s(t) = w·(B − P)/|w|², halved a few times) hold no contact
-    if !shared[0] && !shared[1] {
-        let fi: Vec<Interval> = fb.iter().map(interval_from_rational).collect();
+    // B's parts that stay on one side of the line or project beyond the
+    // segment's ends (interval Bernstein coefficients of f and of
+    // s(t) = w·(B − P)/|w|², halved a few times) hold no contact. At a shared
+    // end f is first divided by its root there: f = t^z0 (1 − t)^z1 g with
+    // g's Bernstein coefficients g_(k−z0) = f_k C(n, k) / C(n − z0 − z1, k − z0)
+    // (z0, z1 the exact zero coefficients at the ends), so g ≠ 0 on a part
+    // means no contact there but the joint itself (z0, z1 are then the exact
+    // multiplicities of the end roots).
+    if z0 + z1 < n {
+        let m = n - 1 - z0 - z1;
+        let gi: Vec<Interval> = (z0..n - z1)
+            .map(|k| interval_from_rational(&fb[k]) * binom_iv(n - 1, k) / binom_iv(m, k - z0))
+            .collect();
         let si: Vec<Interval> = other
             .points()
             .iter()
             .map(|v| interval_from_rational(&(w.dot(&v.sub(p0)) / &w2)))
             .collect();
-        if no_contact(&fi, &si, 5) {
+        if gi.iter().all(|c| !c.is_empty()) && no_contact(&gi, &si, 5) {
             out.complete = true;
             return Some(out);
         }
@@ -809,6 +817,17 @@ fn no_contact(f: &[Interval], s: &[Interval], depth: u32) -> bool {
     let (fl, fr) = crate::curve::bernstein_halves(f);
     let (sl, sr) = crate::curve::bernstein_halves(s);
     no_contact(&fl, &sl, depth - 1) && no_contact(&fr, &sr, depth - 1)
+}
+
+/// `C(n, k)` enclosed (exact below 2⁵³, as every degree here is small).
+fn binom_iv(n: usize, k: usize) -> Interval {
+    let mut v = Interval::try_from((1.0, 1.0)).expect("one");
+    for i in 0..k {
+        let a = Interval::try_from(((n - i) as f64, (n - i) as f64)).expect("finite");
+        let b = Interval::try_from(((i + 1) as f64, (i + 1) as f64)).expect("finite");
+        v = v * a / b;
+    }
+    v
 }
 
 /// `f(t) / (t − r)` for a root `r` of `f` (synthetic division, exact).

@@ -597,13 +597,14 @@ pub(crate) fn check_part(
     let y = bez.at(iq(o_u));
     let (r, mu_i) = (iq(&input.r), iq(mu));
     let wi = ip(w);
-    outside(wi, &input.iv, (r + mu_i).sqr()).map_err(|e| format!("w: {e}"))?;
+    // the bound first (cheap), then the disk's proof (a subdivision)
     let b = part_bound(hull, y, r, wi, mu_i);
     if b > tol.inf() {
         return Err(format!(
             "the part is only proven within {b:e} of the boundary, above the tolerance"
         ));
     }
+    outside(wi, &input.iv, (r + mu_i).sqr()).map_err(|e| format!("w: {e}"))?;
     Ok(b)
 }
 
@@ -967,8 +968,13 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
         .enumerate()
         .map(|(j, p)| points(p, &format!("curve[{j}]")))
         .collect::<Result<_, _>>()?;
+    let t0 = std::time::Instant::now();
     let input = Input::new(exact, r, "curve")?;
     let outline = read_outline(outline)?;
+    log::debug!(
+        "stroke certificate: input and outline read in {:?}",
+        t0.elapsed()
+    );
     // (a): every piece's parts
     let cov = arr(cover, "cover", "contours")?;
     if cov.len() != outline.len() {
@@ -1005,6 +1011,7 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
         count += n;
         spans[*c].push(sp);
     }
+    log::debug!("stroke certificate: (a) checked at {:?}", t0.elapsed());
     // (c): simple, disjoint contours and their orientations, when claimed
     let orient = match simple_claim {
         Json::Bool(true) => Some(
@@ -1019,6 +1026,7 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
             ))
         }
     };
+    log::debug!("stroke certificate: (c) checked at {:?}", t0.elapsed());
     // (b): every family of ∂S's cover
     let fams = input.families();
     let bd = arr(boundary, "boundary", "families")?;
@@ -1044,6 +1052,7 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
         max = max.max(m);
         count += n;
     }
+    log::debug!("stroke certificate: (b) checked at {:?}", t0.elapsed());
     let n_pieces: usize = outline.iter().map(|c| c.len()).sum();
     let arcs = outline
         .iter()
