@@ -597,14 +597,13 @@ pub(crate) fn check_part(
     let y = bez.at(iq(o_u));
     let (r, mu_i) = (iq(&input.r), iq(mu));
     let wi = ip(w);
-    // the bound first (cheap), then the disk's proof (a subdivision)
+    outside(wi, &input.iv, (r + mu_i).sqr()).map_err(|e| format!("w: {e}"))?;
     let b = part_bound(hull, y, r, wi, mu_i);
     if b > tol.inf() {
         return Err(format!(
             "the part is only proven within {b:e} of the boundary, above the tolerance"
         ));
     }
-    outside(wi, &input.iv, (r + mu_i).sqr()).map_err(|e| format!("w: {e}"))?;
     Ok(b)
 }
 
