@@ -32,6 +32,7 @@
 
 use crate::curve::{Bezier, V2};
 use crate::scalar::{interval_from_rational, rational_from_f64, Interval, Rational, Scalar};
+use crate::stroke::onside::binom;
 use crate::tangency::complete::{solve, RationalBox, SolveOptions, UndecidedReason};
 use crate::tangency::krawczyk::{IBox, System2};
 use crate::tangency::poly2::Poly2;
@@ -690,7 +691,7 @@ fn segment_pair(pieces: &[Bezier<Rational>], i: usize, j: usize) -> Option<Inter
     if z0 + z1 < n {
         let m = n - 1 - z0 - z1;
         let gi: Vec<Interval> = (z0..n - z1)
-            .map(|k| interval_from_rational(&fb[k]) * binom_iv(n - 1, k) / binom_iv(m, k - z0))
+            .map(|k| interval_from_rational(&fb[k]) * binom(n - 1, k) / binom(m, k - z0))
             .collect();
         let si: Vec<Interval> = other
             .points()
@@ -817,17 +818,6 @@ fn no_contact(f: &[Interval], s: &[Interval], depth: u32) -> bool {
     let (fl, fr) = crate::curve::bernstein_halves(f);
     let (sl, sr) = crate::curve::bernstein_halves(s);
     no_contact(&fl, &sl, depth - 1) && no_contact(&fr, &sr, depth - 1)
-}
-
-/// `C(n, k)` enclosed (exact below 2⁵³, as every degree here is small).
-fn binom_iv(n: usize, k: usize) -> Interval {
-    let mut v = Interval::try_from((1.0, 1.0)).expect("one");
-    for i in 0..k {
-        let a = Interval::try_from(((n - i) as f64, (n - i) as f64)).expect("finite");
-        let b = Interval::try_from(((i + 1) as f64, (i + 1) as f64)).expect("finite");
-        v = v * a / b;
-    }
-    v
 }
 
 /// `f(t) / (t − r)` for a root `r` of `f` (synthetic division, exact).

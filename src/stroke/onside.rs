@@ -116,7 +116,7 @@ fn pascal() -> &'static [Vec<f64>] {
 
 /// An enclosure of `C(n, k)`: exact from the table below [`EXACT_ROWS`], an
 /// outward rounded product beyond (still an enclosure at any degree).
-fn binom(n: usize, k: usize) -> Interval {
+pub(crate) fn binom(n: usize, k: usize) -> Interval {
     if n < EXACT_ROWS {
         return point(pascal()[n][k]);
     }
@@ -164,12 +164,54 @@ fn elevate(a: &[Interval], deg: usize) -> Vec<Interval> {
     bprod(a, &vec![point(1.0); deg - n + 1])
 }
 
-/// `sign · (q_k − p·(hx_k, hy_k)) > 0` for every `k` and every point `p`
-/// of the box `e` (`[q, hx, hy]`: the Bernstein coefficients of a whole
-/// piece's `q + p`-linear form, one degree): every coefficient of the form
-/// at each `p ∈ e` is in the interval computed, since it is linear in `p`.
-/// A fast first try of the convexity and monotony tests on `[0, 1]`; the
-/// centred form on restricted windows follows when it fails.
+/// The Bernstein coefficients, at one degree, of `g″/2 = |x′|² + (x − c)·x″`
+/// (the convexity form of `g(t') = |p − x(t')|²` at the point `c`) and of
+/// `x″`: `[q, x″_x, x″_y]`, so that the form at `p = c + ε` is
+/// `q − ε·x″` (linear in `ε`, see [`whole_positive`]). `h`, `h2`: the
+/// hodographs of `x`. The polynomial part is computed as one, so the
+/// dependency of `x` and `x″` is not lost.
+fn convex_form(x: &IB, h: &IB, h2: &IB, c: &IV) -> [Vec<Interval>; 3] {
+    let n = x.degree();
+    let (xs, ys) = coords(x);
+    let dx: Vec<Interval> = xs.iter().map(|v| *v - c.x).collect();
+    let dy: Vec<Interval> = ys.iter().map(|v| *v - c.y).collect();
+    let (hx, hy) = coords(h);
+    let (h2x, h2y) = coords(h2);
+    let deg = (2 * n).saturating_sub(2).max(n);
+    let q = add(
+        &add(
+            &elevate(&bprod(&hx, &hx), deg),
+            &elevate(&bprod(&hy, &hy), deg),
+        ),
+        &add(
+            &elevate(&bprod(&dx, &h2x), deg),
+            &elevate(&bprod(&dy, &h2y), deg),
+        ),
+    );
+    [q, elevate(&h2x, deg), elevate(&h2y, deg)]
+}
+
+/// As [`convex_form`] for the monotony form `g′/2 = (x − c)·x′`:
+/// `[q, x′_x, x′_y]` (`x` of degree ≥ 1).
+fn monotone_form(x: &IB, h: &IB, c: &IV) -> [Vec<Interval>; 3] {
+    let deg = (2 * x.degree()).saturating_sub(1);
+    let (xs, ys) = coords(x);
+    let dx: Vec<Interval> = xs.iter().map(|v| *v - c.x).collect();
+    let dy: Vec<Interval> = ys.iter().map(|v| *v - c.y).collect();
+    let (hx, hy) = coords(h);
+    [
+        add(&bprod(&dx, &hx), &bprod(&dy, &hy)),
+        elevate(&hx, deg),
+        elevate(&hy, deg),
+    ]
+}
+
+/// `sign · (q_k − p·(a_k, b_k)) > 0` for every `k` and every point `p` of
+/// the box `e` (`[q, a, b]` from [`convex_form`] or [`monotone_form`]):
+/// each coefficient of the form at `p ∈ e` lies in the interval computed,
+/// since it is linear in `p`. With `e` the whole box of `E` and forms at the
+/// origin (cached per piece) it is a fast first try on `[0, 1]`; with `e`
+/// the box minus its centre it is the centred form on windows.
 fn whole_positive(f: &[Vec<Interval>; 3], e: &IV, sign: i8) -> bool {
     let [q, hx, hy] = f;
     !q.is_empty()
@@ -315,28 +357,9 @@ impl Input {
                 let x = b.map(interval_from_rational);
                 let h = x.hodograph();
                 let h2 = h.hodograph();
-                let n = x.degree();
-                let (xs, ys) = coords(&x);
-                let (hx, hy) = coords(&h);
-                let (h2x, h2y) = coords(&h2);
-                let deg = (2 * n).saturating_sub(2).max(n);
-                let q = add(
-                    &add(
-                        &elevate(&bprod(&hx, &hx), deg),
-                        &elevate(&bprod(&hy, &hy), deg),
-                    ),
-                    &add(
-                        &elevate(&bprod(&xs, &h2x), deg),
-                        &elevate(&bprod(&ys, &h2y), deg),
-                    ),
-                );
-                let convex_whole = [q, elevate(&h2x, deg), elevate(&h2y, deg)];
-                let deg1 = (2 * n).saturating_sub(1);
-                let monotone_whole = [
-                    add(&bprod(&xs, &hx), &bprod(&ys, &hy)),
-                    elevate(&hx, deg1),
-                    elevate(&hy, deg1),
-                ];
+                let zero = V2::new(point(0.0), point(0.0));
+                let convex_whole = convex_form(&x, &h, &h2, &zero);
+                let monotone_whole = monotone_form(&x, &h, &zero);
                 InPiece {
                     convex_whole,
                     monotone_whole,
@@ -415,37 +438,9 @@ impl Input {
             return true;
         }
         let xr = self.pieces[j].x.restrict(&point(w0), &point(w1));
-        let n = xr.degree();
         let (c, eps) = centre(e);
         let h = xr.hodograph();
-        let h2 = h.hodograph();
-        let (xs, ys) = coords(&xr);
-        let dx: Vec<Interval> = xs.iter().map(|v| *v - c.x).collect();
-        let dy: Vec<Interval> = ys.iter().map(|v| *v - c.y).collect();
-        let (hx, hy) = coords(&h);
-        let (h2x, h2y) = coords(&h2);
-        let deg = (2 * n).saturating_sub(2).max(n);
-        let q = add(
-            &add(
-                &elevate(&bprod(&hx, &hx), deg),
-                &elevate(&bprod(&hy, &hy), deg),
-            ),
-            &add(
-                &elevate(&bprod(&dx, &h2x), deg),
-                &elevate(&bprod(&dy, &h2y), deg),
-            ),
-        );
-        let l = add(
-            &elevate(&h2x, deg)
-                .iter()
-                .map(|v| *v * eps.x)
-                .collect::<Vec<_>>(),
-            &elevate(&h2y, deg)
-                .iter()
-                .map(|v| *v * eps.y)
-                .collect::<Vec<_>>(),
-        );
-        if q.len() == l.len() && q.iter().zip(&l).all(|(a, b)| (*a - *b).inf() > 0.0) {
+        if whole_positive(&convex_form(&xr, &h, &h.hodograph(), &c), &eps, 1) {
             return true;
         }
         if depth == 0 {
@@ -470,38 +465,11 @@ impl Input {
             return true;
         }
         let xr = self.pieces[j].x.restrict(&point(w0), &point(w1));
-        let n = xr.degree();
-        if n == 0 {
+        if xr.degree() == 0 {
             return false;
         }
         let (c, eps) = centre(e);
-        let h = xr.hodograph();
-        let (xs, ys) = coords(&xr);
-        let dx: Vec<Interval> = xs.iter().map(|v| *v - c.x).collect();
-        let dy: Vec<Interval> = ys.iter().map(|v| *v - c.y).collect();
-        let (hx, hy) = coords(&h);
-        let deg = 2 * n - 1;
-        let q = add(&bprod(&dx, &hx), &bprod(&dy, &hy));
-        let l = add(
-            &elevate(&hx, deg)
-                .iter()
-                .map(|v| *v * eps.x)
-                .collect::<Vec<_>>(),
-            &elevate(&hy, deg)
-                .iter()
-                .map(|v| *v * eps.y)
-                .collect::<Vec<_>>(),
-        );
-        let ok = q.len() == l.len()
-            && q.iter().zip(&l).all(|(a, b)| {
-                let v = *a - *b;
-                if sign > 0 {
-                    v.inf() > 0.0
-                } else {
-                    v.sup() < 0.0
-                }
-            });
-        if ok {
+        if whole_positive(&monotone_form(&xr, &xr.hodograph(), &c), &eps, sign) {
             return true;
         }
         if depth == 0 {

@@ -319,22 +319,14 @@ fn hull_radius_hi(h: &[V2<Interval>], w: &V2<Rational>) -> f64 {
     h.iter().map(|p| box_dist_hi(p, &w)).fold(0.0, f64::max)
 }
 
-/// Kept test: every point of the piece is within the returned bound of a
-/// point proven outside `S`. Returns the largest such distance.
-pub(super) fn prove_kept(
-    curve: &[Bezier<Rational>],
-    curve_f: &[Bezier<f64>],
-    piece: &Piece,
-    e_in: f64,
-    form: &Form,
-    budget: f64,
-) -> Option<f64> {
-    prove_kept_capped(curve, curve_f, piece, e_in, form, budget, 4000)
-}
+/// Parts the kept test may use on one piece before giving up.
+pub(super) const KEPT_MAX_PARTS: usize = 4000;
 
-/// [`prove_kept`] giving up after `max_parts` parts (a cheap first try on a
+/// Kept test: every point of the piece is within the returned bound of a
+/// point proven outside `S`. Returns the largest such distance; `None` after
+/// `max_parts` parts ([`KEPT_MAX_PARTS`], or a few for a cheap first try on a
 /// short sub-piece, which one or two witnesses cover).
-pub(super) fn prove_kept_capped(
+pub(super) fn prove_kept(
     curve: &[Bezier<Rational>],
     curve_f: &[Bezier<f64>],
     piece: &Piece,

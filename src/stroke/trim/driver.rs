@@ -2,7 +2,7 @@
 
 use super::add_note;
 use super::chain::{chain, check_simple};
-use super::classify::{foot, prove_kept, prove_kept_capped, prove_removed, Part};
+use super::classify::{foot, prove_kept, prove_removed, Part, KEPT_MAX_PARTS};
 use super::pinch::pinched_loops;
 use super::sides::{check, dist_hi, raw_contours, Kind, Raw};
 use super::split::{find_crossings, split_piece, Bridge, Sub};
@@ -315,7 +315,7 @@ fn kept_bound(run: &Run, onside_input: Option<&Input>, s: &Sub, est: f64) -> Opt
                         return Some((e_in + l).next_up());
                     }
                     if let Some(b) =
-                        prove_kept_capped(run.curve, &run.curve_f, &s.post, e_in, run.form, tol, 4)
+                        prove_kept(run.curve, &run.curve_f, &s.post, e_in, run.form, tol, 4)
                     {
                         return Some(b);
                     }
@@ -349,7 +349,15 @@ fn kept_bound(run: &Run, onside_input: Option<&Input>, s: &Sub, est: f64) -> Opt
             }
         }
     }
-    prove_kept(run.curve, &run.curve_f, &s.post, e_in, run.form, tol)
+    prove_kept(
+        run.curve,
+        &run.curve_f,
+        &s.post,
+        e_in,
+        run.form,
+        tol,
+        KEPT_MAX_PARTS,
+    )
 }
 
 /// The length of a Bézier piece's control polygon in floats (an estimate
@@ -424,7 +432,7 @@ impl KeptChunks<'_, '_> {
             let r = self.bound(m, u1, depth + 1)?;
             return Some(l.max(r));
         }
-        self.witnesses(u0, u1, 4000)
+        self.witnesses(u0, u1, KEPT_MAX_PARTS)
     }
 
     /// Witnesses outside `S` for the exact chunk `[u0, u1]` of `pre` (at most
@@ -436,7 +444,7 @@ impl KeptChunks<'_, '_> {
         let (q0, q1) = (rational_from_f64(u0)?, rational_from_f64(u1)?);
         let chunk = Piece::Bezier(self.pre.restrict(&q0, &q1));
         let raw_e_in = self.run.raws[self.s.raw].e_in;
-        let kept = prove_kept_capped(
+        let kept = prove_kept(
             self.run.curve,
             &self.run.curve_f,
             &chunk,
