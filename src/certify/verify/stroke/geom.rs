@@ -57,6 +57,14 @@ pub(crate) struct Bez {
     pub(crate) pts: Vec<P>,
     d: Vec<P>,
     dd: Vec<P>,
+    /// The distance form of [`outside`], computed once per piece:
+    /// `|x − p|²` has the Bernstein coefficients `sq_k − 2 p·elev_k + |p|²`
+    /// (degree `2n`), where `sq` are those of `|x|²` and `elev` the control
+    /// points raised to degree `2n`.
+    sq: Vec<Interval>,
+    elev: Vec<P>,
+    /// The control polygon's box `[lo, hi]` (`None` if not finite).
+    bbox: Option<(P, P)>,
 }
 
 fn hodograph(p: &[P]) -> Vec<P> {
@@ -84,7 +92,41 @@ impl Bez {
     pub(crate) fn new(pts: Vec<P>) -> Bez {
         let d = hodograph(&pts);
         let dd = hodograph(&d);
-        Bez { pts, d, dd }
+        let xs: Vec<Interval> = pts.iter().map(|q| q[0]).collect();
+        let ys: Vec<Interval> = pts.iter().map(|q| q[1]).collect();
+        let ones = vec![ic(1.0); pts.len()];
+        let sq = bprod(&xs, &xs)
+            .iter()
+            .zip(bprod(&ys, &ys))
+            .map(|(a, b)| *a + b)
+            .collect();
+        let elev = bprod(&xs, &ones)
+            .into_iter()
+            .zip(bprod(&ys, &ones))
+            .map(|(x, y)| [x, y])
+            .collect();
+        let bbox = pts.iter().try_fold(
+            [[f64::INFINITY; 2], [f64::NEG_INFINITY; 2]],
+            |[mut lo, mut hi], q| {
+                for i in 0..2 {
+                    if !finite(q[i]) {
+                        return None;
+                    }
+                    lo[i] = lo[i].min(q[i].inf());
+                    hi[i] = hi[i].max(q[i].sup());
+                }
+                Some([lo, hi])
+            },
+        );
+        let bbox = bbox.map(|[lo, hi]| ([ic(lo[0]), ic(lo[1])], [ic(hi[0]), ic(hi[1])]));
+        Bez {
+            pts,
+            d,
+            dd,
+            sq,
+            elev,
+            bbox,
+        }
     }
     pub(crate) fn at(&self, t: Interval) -> P {
         casteljau(&self.pts, t)
@@ -198,9 +240,11 @@ pub(crate) struct BoxT {
 
 impl BoxT {
     pub(crate) fn new(t0: &Rational, t1: &Rational) -> BoxT {
-        let m = (t0 + t1) / Rational::from_integer(2.into());
-        let all = hull(iq(t0), iq(t1));
-        let mid = iq(&m);
+        // the midpoint enclosed from the ends' enclosures (exact, a point,
+        // for float ends): the mean-value form holds for any enclosure of it
+        let (a, b) = (iq(t0), iq(t1));
+        let all = hull(a, b);
+        let mid = (a + b) * ic(0.5);
         BoxT {
             all,
             mid,
@@ -331,24 +375,51 @@ pub(crate) fn inside(path: &dyn Path, bx: &BoxT, y: P, r2: Interval) -> Result<(
 /// `|p − x(u)|² > r²` for every `u ∈ [0, 1]` and every input piece: `p` is
 /// outside `S`. Bernstein coefficients of `|x − p|² − r²`, subdivided (depth
 /// ≤ 24, at most 4 096 leaves per piece) until all are positive.
-pub(crate) fn outside(p: P, input: &[Bez], r2: Interval) -> Result<(), String> {
+///
+/// With a hint `(j, u)`: the point of piece `j` nearest to `p`
+/// is about `x_j(u)`. That piece's form is split at `u` first: the distance
+/// is least there, and each side then needs far fewer halvings. The hint
+/// only orders the work; `[0, u]` and `[u, 1]` cover `[0, 1]` whatever `u`.
+pub(crate) fn outside_near(
+    p: P,
+    input: &[Bez],
+    r2: Interval,
+    hint: Option<(usize, f64)>,
+) -> Result<(), String> {
     // (called with r2 = (r + μ)² for a disk of radius μ about p)
+    let p2 = dot(p, p);
+    let split = |g: Vec<Interval>, j: usize| -> Result<(), String> {
+        match hint {
+            Some((h, u)) if h == j && u > 0.0 && u < 1.0 => {
+                let (a, b) = split_at(&g, ic(u));
+                positive(a, j)?;
+                positive(b, j)
+            }
+            _ => positive(g, j),
+        }
+    };
     for (j, b) in input.iter().enumerate() {
         // the control polygon's box: farther than r from p ⇒ the piece is
-        let (mut lo, mut hi) = (b.pts[0], b.pts[0]);
-        for q in &b.pts {
-            for i in 0..2 {
-                lo[i] = ic(lo[i].inf().min(q[i].inf()));
-                hi[i] = ic(hi[i].sup().max(q[i].sup()));
+        if let Some((lo, hi)) = b.bbox {
+            let gap = |i: usize| {
+                let below = lo[i] - p[i];
+                let above = p[i] - hi[i];
+                let g = below.inf().max(above.inf()).max(0.0);
+                ic(g).sqr()
+            };
+            if (gap(0) + gap(1)).inf() > r2.sup() {
+                continue;
             }
         }
-        let gap = |i: usize| {
-            let below = lo[i] - p[i];
-            let above = p[i] - hi[i];
-            let g = below.inf().max(above.inf()).max(0.0);
-            ic(g).sqr()
-        };
-        if (gap(0) + gap(1)).inf() > r2.sup() {
+        // the form computed once per piece first; the coefficients of
+        // `x − p` squared when it does not decide (they are tighter far
+        // from the origin)
+        let g: Vec<Interval> =
+            b.sq.iter()
+                .zip(&b.elev)
+                .map(|(s, e)| *s - ic(2.0) * dot(p, *e) + p2 - r2)
+                .collect();
+        if split(g, j).is_ok() {
             continue;
         }
         let xs: Vec<Interval> = b.pts.iter().map(|q| q[0] - p[0]).collect();
@@ -358,9 +429,28 @@ pub(crate) fn outside(p: P, input: &[Bez], r2: Interval) -> Result<(), String> {
             .zip(bprod(&ys, &ys))
             .map(|(a, c)| *a + c - r2)
             .collect();
-        positive(g, j)?;
+        split(g, j)?;
     }
     Ok(())
+}
+
+/// The Bernstein coefficients of `g` restricted to `[0, t]` and `[t, 1]`
+/// (de Casteljau at the point `t`), each enclosed.
+fn split_at(g: &[Interval], t: Interval) -> (Vec<Interval>, Vec<Interval>) {
+    let mut w = g.to_vec();
+    let n = w.len();
+    let u = ic(1.0) - t;
+    let mut left = Vec::with_capacity(n);
+    let mut right = Vec::with_capacity(n);
+    for k in 0..n {
+        left.push(w[0]);
+        right.push(w[n - 1 - k]);
+        for i in 0..(n - 1 - k) {
+            w[i] = w[i] * u + w[i + 1] * t;
+        }
+    }
+    right.reverse();
+    (left, right)
 }
 
 fn positive(g: Vec<Interval>, j: usize) -> Result<(), String> {

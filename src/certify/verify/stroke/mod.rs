@@ -68,10 +68,10 @@ use crate::json::Json;
 use crate::scalar::Rational;
 use crate::shape::io::{MAX_CONTROL_POINTS, MAX_SEGMENTS};
 use geom::{
-    arc_hull, inside, ip, iq, near_arc, near_bezier, outside, part_bound, ArcT, Bez, BoxT, ConeArc,
-    Path, Side, P,
+    arc_hull, inside, ip, iq, near_arc, near_bezier, outside_near, part_bound, ArcT, Bez, BoxT,
+    ConeArc, Path, Side, P,
 };
-use num_traits::{Signed, Zero};
+use num_traits::{Signed, ToPrimitive, Zero};
 use rayon::prelude::*;
 
 /// Format name in the `format` field.
@@ -192,6 +192,30 @@ fn cross(a: &Q2, b: &Q2) -> Rational {
 }
 fn dotq(a: &Q2, b: &Q2) -> Rational {
     &a[0] * &b[0] + &a[1] * &b[1]
+}
+
+/// `cross(a, b) > 0 ∧ dot(a, b) > 0`, decided exactly: the interval
+/// enclosure (outward rounding) decides when it excludes 0, the exact
+/// rational products only when it does not.
+fn turns_ccw_less_than_right_angle(a: &Q2, b: &Q2) -> bool {
+    let (ai, bi) = (ip(a), ip(b));
+    let cr = ai[0] * bi[1] - ai[1] * bi[0];
+    let dt = ai[0] * bi[0] + ai[1] * bi[1];
+    let cross_pos = if cr.inf() > 0.0 {
+        true
+    } else if cr.sup() < 0.0 {
+        false
+    } else {
+        cross(a, b).is_positive()
+    };
+    cross_pos
+        && if dt.inf() > 0.0 {
+            true
+        } else if dt.sup() < 0.0 {
+            false
+        } else {
+            dotq(a, b).is_positive()
+        }
 }
 fn subq(a: &Q2, b: &Q2) -> Q2 {
     [&a[0] - &b[0], &a[1] - &b[1]]
@@ -471,14 +495,42 @@ fn arr<'j>(v: &'j Json, at: &str, what: &str) -> Result<&'j [Json], Invalid> {
     })
 }
 
-fn point(v: &Json, at: &str) -> Result<Q2, Invalid> {
-    let a = arr(v, at, "2 coordinates")?;
+/// A field's path, formatted only when an error names it: the readers of
+/// the per-part and per-box fields run tens of thousands of times per
+/// certificate, and building their paths eagerly cost more than reading them.
+type At<'a> = &'a dyn Fn() -> String;
+
+/// Names the error of a reader called with the empty path: `at()` followed
+/// by the field path the reader gave relative to it.
+fn named<T>(r: Result<T, Invalid>, at: impl FnOnce() -> String) -> Result<T, Invalid> {
+    r.map_err(|e| {
+        let base = at();
+        let at = if e.at.is_empty() {
+            base
+        } else if e.at.starts_with('[') {
+            format!("{base}{}", e.at)
+        } else {
+            join(&base, &e.at)
+        };
+        Invalid {
+            at,
+            reason: e.reason,
+        }
+    })
+}
+
+fn rational_at(v: &Json, at: At) -> Result<Rational, Invalid> {
+    named(canonical_rational(v, ""), at)
+}
+
+fn point(v: &Json, at: At) -> Result<Q2, Invalid> {
+    let a = named(arr(v, "", "2 coordinates"), at)?;
     if a.len() != 2 {
-        return Err(inv(at, "expected a point [x, y]"));
+        return Err(inv(at(), "expected a point [x, y]"));
     }
     Ok([
-        canonical_rational(&a[0], &format!("{at}[0]"))?,
-        canonical_rational(&a[1], &format!("{at}[1]"))?,
+        rational_at(&a[0], &|| format!("{}[0]", at()))?,
+        rational_at(&a[1], &|| format!("{}[1]", at()))?,
     ])
 }
 
@@ -495,7 +547,7 @@ fn points(v: &Json, at: &str) -> Result<Vec<Q2>, Invalid> {
     }
     a.iter()
         .enumerate()
-        .map(|(i, p)| point(p, &format!("{at}[{i}]")))
+        .map(|(i, p)| point(p, &|| format!("{at}[{i}]")))
         .collect()
 }
 
@@ -518,10 +570,10 @@ fn read_piece(v: &Json, at: &str) -> Result<OPiece, Invalid> {
         }
     };
     OPiece::arc(
-        point(c, &join(&at, "center"))?,
+        point(c, &|| join(&at, "center"))?,
         canonical_rational(rho, &join(&at, "radius"))?,
-        point(from, &join(&at, "from"))?,
-        point(to, &join(&at, "to"))?,
+        point(from, &|| join(&at, "from"))?,
+        point(to, &|| join(&at, "to"))?,
         cw,
     )
     .map_err(|e| inv(at, e))
@@ -597,7 +649,10 @@ pub(crate) fn check_part(
     let y = bez.at(iq(o_u));
     let (r, mu_i) = (iq(&input.r), iq(mu));
     let wi = ip(w);
-    outside(wi, &input.iv, (r + mu_i).sqr()).map_err(|e| format!("w: {e}"))?;
+    // the disk's centre lies along the normal at the witness point `x_j(u)`
+    // in certificates lncert writes: `u` hints where the distance is least
+    let hint = (o_piece, o_u.to_f64().unwrap_or(0.5));
+    outside_near(wi, &input.iv, (r + mu_i).sqr(), Some(hint)).map_err(|e| format!("w: {e}"))?;
     let b = part_bound(hull, y, r, wi, mu_i);
     if b > tol.inf() {
         return Err(format!(
@@ -607,19 +662,19 @@ pub(crate) fn check_part(
     Ok(b)
 }
 
-fn read_witness(v: &Json, at: &str) -> Result<(usize, Rational), Invalid> {
-    let [p, u] = exact_object(v, at, ["piece", "u"])?;
+fn read_witness(v: &Json, at: At) -> Result<(usize, Rational), Invalid> {
+    let [p, u] = named(exact_object(v, "", ["piece", "u"]), at)?;
     Ok((
-        canonical_index(p, &join(at, "piece"))?,
-        canonical_rational(u, &join(at, "u"))?,
+        named(canonical_index(p, ""), || join(&at(), "piece"))?,
+        rational_at(u, &|| join(&at(), "u"))?,
     ))
 }
 
-fn read_outside(v: &Json, at: &str) -> Result<(Q2, Rational), Invalid> {
-    let [a, m] = exact_object(v, at, ["at", "mu"])?;
+fn read_outside(v: &Json, at: At) -> Result<(Q2, Rational), Invalid> {
+    let [a, m] = named(exact_object(v, "", ["at", "mu"]), at)?;
     Ok((
-        point(a, &join(at, "at"))?,
-        canonical_rational(m, &join(at, "mu"))?,
+        point(a, &|| join(&at(), "at"))?,
+        rational_at(m, &|| join(&at(), "mu"))?,
     ))
 }
 
@@ -642,24 +697,24 @@ fn check_cover_piece(
     let mut prev: Option<Q2> = None;
     let mut prev_s: Rational = zero.clone();
     for (k, p) in parts.iter().enumerate() {
-        let atk = format!("{at}[{k}]");
+        let atk = || format!("{at}[{k}]");
         let (hull, o, w) = match piece {
             OPiece::Bezier { iv, .. } => {
-                let [s, o, w] = exact_object(p, &atk, ["s", "o", "w"])?;
-                let sa = arr(s, &join(&atk, "s"), "2 parameters")?;
+                let [s, o, w] = named(exact_object(p, "", ["s", "o", "w"]), atk)?;
+                let sa = named(arr(s, "", "2 parameters"), || join(&atk(), "s"))?;
                 if sa.len() != 2 {
-                    return Err(inv(join(&atk, "s"), "expected [s0, s1]"));
+                    return Err(inv(join(&atk(), "s"), "expected [s0, s1]"));
                 }
-                let s0 = canonical_rational(&sa[0], &format!("{atk}.s[0]"))?;
-                let s1 = canonical_rational(&sa[1], &format!("{atk}.s[1]"))?;
+                let s0 = rational_at(&sa[0], &|| format!("{}.s[0]", atk()))?;
+                let s1 = rational_at(&sa[1], &|| format!("{}.s[1]", atk()))?;
                 if s0 != prev_s {
                     return Err(inv(
-                        format!("{atk}.s[0]"),
+                        format!("{}.s[0]", atk()),
                         format!("expected {prev_s}: the parts must cover [0, 1] in order"),
                     ));
                 }
                 if s1 <= s0 || s1 > one {
-                    return Err(inv(format!("{atk}.s[1]"), "expected s0 < s1 ≤ 1"));
+                    return Err(inv(format!("{}.s[1]", atk()), "expected s0 < s1 ≤ 1"));
                 }
                 prev_s = s1.clone();
                 spans.push(simple::Span::Bez(s0.clone(), s1.clone()));
@@ -668,40 +723,40 @@ fn check_cover_piece(
             OPiece::Arc {
                 ccw_u, ccw_v, t, ..
             } => {
-                let [d, o, w] = exact_object(p, &atk, ["dirs", "o", "w"])?;
-                let da = arr(d, &join(&atk, "dirs"), "2 directions")?;
+                let [d, o, w] = named(exact_object(p, "", ["dirs", "o", "w"]), atk)?;
+                let da = named(arr(d, "", "2 directions"), || join(&atk(), "dirs"))?;
                 if da.len() != 2 {
-                    return Err(inv(join(&atk, "dirs"), "expected [d0, d1]"));
+                    return Err(inv(join(&atk(), "dirs"), "expected [d0, d1]"));
                 }
-                let d0 = point(&da[0], &format!("{atk}.dirs[0]"))?;
-                let d1 = point(&da[1], &format!("{atk}.dirs[1]"))?;
+                let d0 = point(&da[0], &|| format!("{}.dirs[0]", atk()))?;
+                let d1 = point(&da[1], &|| format!("{}.dirs[1]", atk()))?;
                 let start_ok = match &prev {
                     None => cross(&d0, ccw_u).is_zero() && dotq(&d0, ccw_u).is_positive(),
                     Some(q) => *q == d0,
                 };
                 if !start_ok {
                     return Err(inv(
-                        format!("{atk}.dirs[0]"),
+                        format!("{}.dirs[0]", atk()),
                         "must continue the previous part exactly (the first: along the arc's counter-clockwise start)",
                     ));
                 }
-                if !(cross(&d0, &d1).is_positive() && dotq(&d0, &d1).is_positive()) {
+                if !turns_ccw_less_than_right_angle(&d0, &d1) {
                     return Err(inv(
-                        join(&atk, "dirs"),
+                        join(&atk(), "dirs"),
                         "a part turns counter-clockwise by less than π/2",
                     ));
                 }
                 prev = Some(d1.clone());
                 spans.push(simple::Span::Arc(d0.clone(), d1.clone()));
                 let h = arc_hull(t.c, t.rho, ip(&d0), ip(&d1))
-                    .ok_or_else(|| inv(join(&atk, "dirs"), "hull not finite"))?;
+                    .ok_or_else(|| inv(join(&atk(), "dirs"), "hull not finite"))?;
                 let _ = ccw_v;
                 (h, o, w)
             }
         };
-        let (oj, ou) = read_witness(o, &join(&atk, "o"))?;
-        let (w, mu) = read_outside(w, &join(&atk, "w"))?;
-        let b = check_part(input, &hull, oj, &ou, &w, &mu, tol).map_err(|e| inv(&atk, e))?;
+        let (oj, ou) = read_witness(o, &|| join(&atk(), "o"))?;
+        let (w, mu) = read_outside(w, &|| join(&atk(), "w"))?;
+        let b = check_part(input, &hull, oj, &ou, &w, &mu, tol).map_err(|e| inv(atk(), e))?;
         max = max.max(b);
     }
     let end_ok = match piece {
@@ -778,45 +833,45 @@ pub(crate) fn check_bbox(
     }
 }
 
-fn read_bbox(v: &Json, at: &str) -> Result<(Rational, Rational, BBox), Invalid> {
+fn read_bbox(v: &Json, at: At) -> Result<(Rational, Rational, BBox), Invalid> {
     let (t, what) = if v.get("near").is_some() {
-        let [t, n] = exact_object(v, at, ["t", "near"])?;
-        let atn = join(at, "near");
+        let [t, n] = named(exact_object(v, "", ["t", "near"]), at)?;
+        let atn = || join(&at(), "near");
         let b = if n.get("s").is_some() {
-            let [c, p, s, k] = exact_object(n, &atn, ["contour", "piece", "s", "k"])?;
+            let [c, p, s, k] = named(exact_object(n, "", ["contour", "piece", "s", "k"]), atn)?;
             BBox::NearBezier {
-                contour: canonical_index(c, &join(&atn, "contour"))?,
-                piece: canonical_index(p, &join(&atn, "piece"))?,
-                s: canonical_rational(s, &join(&atn, "s"))?,
-                k: canonical_rational(k, &join(&atn, "k"))?,
+                contour: named(canonical_index(c, ""), || join(&atn(), "contour"))?,
+                piece: named(canonical_index(p, ""), || join(&atn(), "piece"))?,
+                s: rational_at(s, &|| join(&atn(), "s"))?,
+                k: rational_at(k, &|| join(&atn(), "k"))?,
             }
         } else {
-            let [c, p] = exact_object(n, &atn, ["contour", "piece"])?;
+            let [c, p] = named(exact_object(n, "", ["contour", "piece"]), atn)?;
             BBox::NearArc {
-                contour: canonical_index(c, &join(&atn, "contour"))?,
-                piece: canonical_index(p, &join(&atn, "piece"))?,
+                contour: named(canonical_index(c, ""), || join(&atn(), "contour"))?,
+                piece: named(canonical_index(p, ""), || join(&atn(), "piece"))?,
             }
         };
         (t, b)
     } else {
-        let [t, i] = exact_object(v, at, ["t", "inside"])?;
-        let ati = join(at, "inside");
-        let [p, u] = exact_object(i, &ati, ["piece", "u"])?;
+        let [t, i] = named(exact_object(v, "", ["t", "inside"]), at)?;
+        let ati = || join(&at(), "inside");
+        let [p, u] = named(exact_object(i, "", ["piece", "u"]), ati)?;
         (
             t,
             BBox::Inside {
-                piece: canonical_index(p, &join(&ati, "piece"))?,
-                u: canonical_rational(u, &join(&ati, "u"))?,
+                piece: named(canonical_index(p, ""), || join(&ati(), "piece"))?,
+                u: rational_at(u, &|| join(&ati(), "u"))?,
             },
         )
     };
-    let ta = arr(t, &join(at, "t"), "2 parameters")?;
+    let ta = named(arr(t, "", "2 parameters"), || join(&at(), "t"))?;
     if ta.len() != 2 {
-        return Err(inv(join(at, "t"), "expected [t0, t1]"));
+        return Err(inv(join(&at(), "t"), "expected [t0, t1]"));
     }
     Ok((
-        canonical_rational(&ta[0], &format!("{at}.t[0]"))?,
-        canonical_rational(&ta[1], &format!("{at}.t[1]"))?,
+        rational_at(&ta[0], &|| format!("{}.t[0]", at()))?,
+        rational_at(&ta[1], &|| format!("{}.t[1]", at()))?,
         what,
     ))
 }
@@ -844,20 +899,20 @@ fn check_family(
     let mut cursor = Rational::zero();
     let mut max = 0.0f64;
     for (k, b) in boxes.iter().enumerate() {
-        let atk = format!("{at}.boxes[{k}]");
+        let atk = || format!("{at}.boxes[{k}]");
         let (t0, t1, what) = read_bbox(b, &atk)?;
         if t0 != cursor {
             return Err(inv(
-                format!("{atk}.t[0]"),
+                format!("{}.t[0]", atk()),
                 format!("expected {cursor}: the boxes must cover [0, 1] in order"),
             ));
         }
         if t1 <= t0 || t1 > one {
-            return Err(inv(format!("{atk}.t[1]"), "expected t0 < t1 ≤ 1"));
+            return Err(inv(format!("{}.t[1]", atk()), "expected t0 < t1 ≤ 1"));
         }
         let bx = BoxT::new(&t0, &t1);
         let bound =
-            check_bbox(&*fam.path, &bx, &what, outline, input, tol).map_err(|e| inv(&atk, e))?;
+            check_bbox(&*fam.path, &bx, &what, outline, input, tol).map_err(|e| inv(atk(), e))?;
         max = max.max(bound);
         cursor = t1;
     }
@@ -901,7 +956,7 @@ pub(crate) fn shapes(
                     let a = p.get("arc").ok_or_else(|| inv(&at, "missing arc"))?;
                     let c = point(
                         a.get("center").ok_or_else(|| inv(&at, "missing center"))?,
-                        &at,
+                        &|| at.clone(),
                     )?;
                     let rho = canonical_rational(
                         a.get("radius").ok_or_else(|| inv(&at, "missing radius"))?,

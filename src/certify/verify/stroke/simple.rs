@@ -22,6 +22,7 @@
 use super::geom::{arc_hull, bprod, ic, ip, iq, Bez, P};
 use super::{OPiece, Q2};
 use crate::scalar::{atan_enclosure, Interval, Rational};
+use rayon::prelude::*;
 
 /// The range of one part: a Bézier's parameters or an arc's radius directions.
 #[derive(Clone, Debug)]
@@ -200,14 +201,13 @@ pub(crate) fn simple(
     spans: &[Vec<Vec<Span>>],
 ) -> Result<Vec<bool>, String> {
     // the segments in travel order per contour: (contour, index in contour)
-    let mut segs: Vec<(usize, usize, Seg)> = Vec::new();
+    let mut flat: Vec<(usize, usize, &OPiece, &Span)> = Vec::new();
     let mut count = Vec::new();
     for (c, (pieces, sp)) in outline.iter().zip(spans).enumerate() {
         let mut k = 0;
         for (piece, parts) in pieces.iter().zip(sp) {
             for s in parts {
-                let sg = seg(piece, s.clone()).ok_or("a part's hull is not finite")?;
-                segs.push((c, k, sg));
+                flat.push((c, k, piece, s));
                 k += 1;
             }
         }
@@ -216,38 +216,53 @@ pub(crate) fn simple(
         }
         count.push(k);
     }
-    for (c, k, s) in &segs {
-        if !injective(s) {
-            return Err(format!("part {k} of contour {c} is not proven injective"));
-        }
-    }
+    let segs: Vec<(usize, usize, Seg)> = flat
+        .into_par_iter()
+        .map(|(c, k, piece, s)| {
+            let sg = seg(piece, s.clone()).ok_or("a part's hull is not finite")?;
+            if !injective(&sg) {
+                return Err(format!("part {k} of contour {c} is not proven injective"));
+            }
+            Ok((c, k, sg))
+        })
+        .collect::<Vec<_>>()
+        .into_iter()
+        .collect::<Result<_, String>>()?;
     let adjacent = |(c1, k1): (usize, usize), (c2, k2): (usize, usize)| {
         c1 == c2 && ((k1 + 1) % count[c1] == k2 || (k2 + 1) % count[c1] == k1)
     };
+    // the sweep's candidate pairs (boxes overlapping in x), then each pair
+    // decided, in parallel; the first failing pair in sweep order is reported
     let mut order: Vec<usize> = (0..segs.len()).collect();
     order.sort_by(|&a, &b| segs[a].2.lo[0].total_cmp(&segs[b].2.lo[0]));
+    let mut pairs: Vec<(usize, usize)> = Vec::new();
     for (oi, &i) in order.iter().enumerate() {
-        let (ci, ki, si) = &segs[i];
+        let si = &segs[i].2;
         for &j in &order[oi + 1..] {
-            let (cj, kj, sj) = &segs[j];
-            if sj.lo[0] > si.hi[0] {
+            if segs[j].2.lo[0] > si.hi[0] {
                 break;
             }
-            let ok = if adjacent((*ci, *ki), (*cj, *kj)) {
-                if (ki + 1) % count[*ci] == *kj {
-                    touch_once(si, sj, 0)
-                } else {
-                    touch_once(sj, si, 0)
-                }
-            } else {
-                apart(si, sj, 0)
-            };
-            if !ok {
-                return Err(format!(
-                    "parts {ki} of contour {ci} and {kj} of contour {cj} are not proven apart (except at a shared end)"
-                ));
-            }
+            pairs.push((i, j));
         }
+    }
+    let failed = pairs.par_iter().find_first(|&&(i, j)| {
+        let (ci, ki, si) = &segs[i];
+        let (cj, kj, sj) = &segs[j];
+        !if adjacent((*ci, *ki), (*cj, *kj)) {
+            if (ki + 1) % count[*ci] == *kj {
+                touch_once(si, sj, 0)
+            } else {
+                touch_once(sj, si, 0)
+            }
+        } else {
+            apart(si, sj, 0)
+        }
+    });
+    if let Some(&(i, j)) = failed {
+        let ((ci, ki, _), (cj, kj, _)) = (&segs[i], &segs[j]);
+        return Err(format!(
+            "parts {ki} of contour {ci} and {kj} of contour {cj} are not proven apart (except at a shared end)"
+        ));
     }
     // orientation: the sign of the enclosed area
     outline
@@ -285,9 +300,18 @@ fn area_term(piece: &OPiece, parts: &[Span]) -> Option<Interval> {
             let mut theta = ic(0.0);
             for s in parts {
                 let Span::Arc(d0, d1) = s else { return None };
-                let cr = &d0[0] * &d1[1] - &d0[1] * &d1[0];
-                let dt = &d0[0] * &d1[0] + &d0[1] * &d1[1];
-                theta += atan_enclosure(iq(&cr) / iq(&dt));
+                // the turn's tangent, enclosed from the directions' own
+                // enclosures; exactly only when that quotient is not finite
+                let (a, b) = (ip(d0), ip(d1));
+                let q = (a[0] * b[1] - a[1] * b[0]) / (a[0] * b[0] + a[1] * b[1]);
+                let q = if q.is_common_interval() {
+                    q
+                } else {
+                    let cr = &d0[0] * &d1[1] - &d0[1] * &d1[0];
+                    let dt = &d0[0] * &d1[0] + &d0[1] * &d1[1];
+                    iq(&cr) / iq(&dt)
+                };
+                theta += atan_enclosure(q);
             }
             if theta.sup() >= 2.0 * std::f64::consts::PI {
                 return None;

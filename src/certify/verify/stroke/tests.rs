@@ -1141,7 +1141,8 @@ fn the_families_hold_the_sampled_stroke_boundary() {
 
 mod geom_edges {
     use super::super::geom::{
-        inside, ip, iq, near_arc, near_bezier, outside, part_bound, Bez, BoxT, ConeArc, Path, P,
+        inside, ip, iq, near_arc, near_bezier, outside_near, part_bound, Bez, BoxT, ConeArc, Path,
+        P,
     };
     use super::super::OPiece;
     use super::q;
@@ -1300,6 +1301,19 @@ mod geom_edges {
 
     #[test]
     fn outside_is_strict() {
+        // the hint only orders the work: every hint gives the same verdict,
+        // the right one, a wrong one, one at an end, one for another piece
+        let outside = |p: P, x: &[Bez], r2: Interval| {
+            let v = outside_near(p, x, r2, None);
+            for h in [(0, 0.5), (0, 0.25), (0, 0.9), (0, 1e-12), (1, 0.7)] {
+                assert_eq!(
+                    outside_near(p, x, r2, Some(h)).is_ok(),
+                    v.is_ok(),
+                    "hint {h:?} changed the verdict"
+                );
+            }
+            v
+        };
         let x = [bez(&[("0", "0"), ("4", "0")])];
         // touching the piece's side and its end
         assert!(outside(pt("2", "3/2"), &x, sq("3/2")).is_err());
@@ -1336,4 +1350,122 @@ mod geom_edges {
         let b = part_bound(&vec![pt("0", "0")], y, r, w, mu);
         assert!((2.5..2.5 + 1e-12).contains(&b), "{b}");
     }
+}
+
+/// The per-part and per-box fields are read with paths built only on
+/// error; every malformed field is still named exactly, at each depth.
+#[test]
+fn malformed_part_and_box_fields_are_named_exactly() {
+    // "2/4" is not in lowest terms, `true` is not a rational, `{}` not a list
+    let bad_values = [json!("2/4"), json!(true)];
+    for k in [CUBIC, SQUARE] {
+        let f = fixture(k);
+        for (c, i, is_arc) in kinds(&f.cert) {
+            let part = format!("cover[{c}][{i}][0]");
+            let span = if is_arc { "dirs" } else { "s" };
+            let mut fields: Vec<(Vec<Value>, String)> = vec![
+                (vec![json!("w"), json!("mu")], format!("{part}.w.mu")),
+                (
+                    vec![json!("w"), json!("at"), json!(1)],
+                    format!("{part}.w.at[1]"),
+                ),
+                (vec![json!("o"), json!("u")], format!("{part}.o.u")),
+            ];
+            if is_arc {
+                fields.push((
+                    vec![json!(span), json!(1), json!(0)],
+                    format!("{part}.dirs[1][0]"),
+                ));
+            } else {
+                fields.push((vec![json!(span), json!(1)], format!("{part}.s[1]")));
+            }
+            for (path, at) in &fields {
+                for bad in &bad_values {
+                    let mut doc = f.cert.clone();
+                    let mut v = &mut doc["cover"][c][i][0];
+                    for key in path {
+                        v = match key {
+                            Value::String(s) => &mut v[s.as_str()],
+                            Value::Number(n) => &mut v[n.as_u64().unwrap() as usize],
+                            _ => unreachable!(),
+                        };
+                    }
+                    *v = bad.clone();
+                    refused_exactly(&doc, at);
+                }
+            }
+            // a missing key and an unknown key are named under the part
+            let mut doc = f.cert.clone();
+            doc["cover"][c][i][0]["o"]
+                .as_object_mut()
+                .unwrap()
+                .remove("u");
+            refused_exactly(&doc, &format!("{part}.o.u"));
+            let mut doc = f.cert.clone();
+            doc["cover"][c][i][0]["w"]["extra"] = json!(1);
+            refused_exactly(&doc, &format!("{part}.w.extra"));
+            // a part that is not an object is named by its index
+            let mut doc = f.cert.clone();
+            doc["cover"][c][i][0] = json!([]);
+            refused_exactly(&doc, &part);
+        }
+        // the boxes: the first box of each kind, every field
+        for (fam, fv) in f.cert["boundary"].as_array().unwrap().iter().enumerate() {
+            for (b, bx) in fv["boxes"].as_array().unwrap().iter().enumerate() {
+                let at = format!("boundary[{fam}].boxes[{b}]");
+                let keys: Vec<(&str, &str)> = if bx.get("inside").is_some() {
+                    vec![("inside", "u"), ("inside", "piece")]
+                } else if bx["near"].get("s").is_some() {
+                    vec![("near", "s"), ("near", "k"), ("near", "contour")]
+                } else {
+                    vec![("near", "piece")]
+                };
+                for (outer, inner) in keys {
+                    let mut doc = f.cert.clone();
+                    doc["boundary"][fam]["boxes"][b][outer][inner] = json!(true);
+                    refused_exactly(&doc, &format!("{at}.{outer}.{inner}"));
+                }
+                let mut doc = f.cert.clone();
+                doc["boundary"][fam]["boxes"][b]["t"][1] = json!("2/4");
+                refused_exactly(&doc, &format!("{at}.t[1]"));
+                let mut doc = f.cert.clone();
+                doc["boundary"][fam]["boxes"][b]["t"] = json!({});
+                refused_exactly(&doc, &format!("{at}.t"));
+            }
+        }
+    }
+}
+
+/// An arc part must turn counter-clockwise by less than a right angle: a
+/// part that turns clockwise, by exactly π/2, or not at all is refused at
+/// its `dirs` (the interval filter of that sign test decides none of these
+/// wrongly; the exact products settle the boundary cases).
+#[test]
+fn an_arc_part_turning_the_wrong_way_is_refused() {
+    let f = fixture(CUBIC);
+    let mut tried = 0;
+    for (c, i, is_arc) in kinds(&f.cert) {
+        if !is_arc {
+            continue;
+        }
+        let d = &f.cert["cover"][c][i][0]["dirs"];
+        let (d0, d1) = (
+            [num(&d[0][0]), num(&d[0][1])],
+            [num(&d[1][0]), num(&d[1][1])],
+        );
+        let two = Rational::from_integer(2.into());
+        let k = &two * (&d0[0] * &d1[0] + &d0[1] * &d1[1]) / (&d0[0] * &d0[0] + &d0[1] * &d0[1]);
+        // d1 mirrored in d0: the same angle, clockwise
+        let mirrored = [&k * &d0[0] - &d1[0], &k * &d0[1] - &d1[1]];
+        // d0 turned by exactly π/2, and d0 itself
+        let right = [-d0[1].clone(), d0[0].clone()];
+        for bad in [mirrored, right, d0.clone()] {
+            let mut doc = f.cert.clone();
+            doc["cover"][c][i][0]["dirs"][1] = json!([qv(&bad[0]), qv(&bad[1])]);
+            let e = refused_exactly(&doc, &format!("cover[{c}][{i}][0].dirs"));
+            assert!(e.reason.contains("less than π/2"), "{e}");
+            tried += 1;
+        }
+    }
+    assert!(tried >= 3, "the fixture has arc parts");
 }
