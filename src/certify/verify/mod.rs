@@ -158,12 +158,18 @@ const KEYS_2: [&str; 7] = ["format", "version", "claim", "tol", "a", "b", "direc
 /// assert_eq!(verify(&forged.to_string()).unwrap_err().at, "tol");
 /// ```
 pub fn verify(text: &str) -> Result<Valid, Invalid> {
+    let t0 = std::time::Instant::now();
     let doc = parse(text, &Limits::DEFAULT).map_err(|e| {
         inv(
             e.path.clone(),
             format!("{} (line {}, column {})", e.reason, e.line, e.column),
         )
     })?;
+    log::debug!(
+        "certificate: {} bytes read in {:?}",
+        text.len(),
+        t0.elapsed()
+    );
     verify_json(&doc)
 }
 
