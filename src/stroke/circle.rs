@@ -593,7 +593,17 @@ fn end_roots_only(
         let m = h.len() - 1;
         h = (0..m).map(|j| h[j] * iv(m) / iv(m - j)).collect();
     }
-    end_hits(b, c, arc, (h, bi, ci), (at0, at1))
+    if let Some(hits) = end_hits(b, c, arc, (h.clone(), bi, ci), (at0, at1)) {
+        return Some(hits);
+    }
+    // the rest `h` has roots (a crossing next to the joint, as where a cap
+    // meets its own side's offset again): on `(0, 1)` they are exactly
+    // `g`'s other roots (`h(0) ≠ 0`, `h(1) ≠ 0` exactly: the multiplicities
+    // are below three), found by intervals when they are simple
+    let inner = simple_hits(h, bi, ci, arc, (0.0, 1.0), 14)?;
+    let ends = end_point_hits(b, c, arc, (at0, at1))?;
+    let (first, last): (Vec<ArcHit>, Vec<ArcHit>) = ends.into_iter().partition(|e| e.t.0.is_zero());
+    Some(first.into_iter().chain(inner).chain(last).collect())
 }
 
 /// The end roots as hits, once the rest `h` of `g` (the end roots of
@@ -611,6 +621,18 @@ fn end_hits(
     if !no_hit(h, bi, ci, arc, (0.0, 1.0), 14) {
         return None;
     }
+    end_point_hits(b, c, arc, (at0, at1))
+}
+
+/// The end roots (multiplicities `at0`, `at1`) whose points are in the arc's
+/// range, as hits (`multiple` above multiplicity 1); `None` when a range test
+/// is not decided.
+fn end_point_hits(
+    b: &Bezier<Rational>,
+    c: &V2<Rational>,
+    arc: &Arc,
+    (at0, at1): (usize, usize),
+) -> Option<Vec<ArcHit>> {
     let mut hits = Vec::new();
     for (k, t) in [
         (at0, <Rational as Zero>::zero()),
@@ -732,6 +754,14 @@ pub fn bezier_arc(b: &Bezier<Rational>, arc: &Arc) -> ArcMeet {
         b.points().last().map(|p| p.map(Scalar::approx)),
         arc.center.map(Scalar::approx)
     );
+    exact_hits(b, arc)
+}
+
+/// [`bezier_arc`] by exact root isolation of `|B(t) − c|² − r²` alone (the
+/// fallback of its interval filters, and their oracle in tests).
+fn exact_hits(b: &Bezier<Rational>, arc: &Arc) -> ArcMeet {
+    let mut out = ArcMeet::default();
+    let (c, r) = (&arc.center, &arc.radius);
     let g = circle_poly(b, c, r);
     if g.clone().trimmed().degree().is_none() {
         // the piece lies on the circle: an overlap
@@ -1164,6 +1194,90 @@ mod tests {
 
     /// A piece leaving a point of the circle (transversally, or tangentially:
     /// a double root) and wandering off: the interval deflation of
+    /// A joint on the circle and a second crossing next to it (a cap
+    /// meeting its own side's offset again): [`end_roots_only`] finds the
+    /// inner crossings by intervals on the deflated rest. Each decided case
+    /// agrees with exact root isolation ([`exact_hits`]): the same hits in
+    /// the same order, the same multiplicities, and each inner bracket holds
+    /// the exact isolation's root (the brackets meet).
+    #[test]
+    fn inner_crossings_next_to_a_joint_match_exact_isolation() {
+        let mut rng = crate::test_util::TestRng::new(0x2c9f_41d3_a0b7_5e61);
+        let (mut decided, mut with_inner) = (0, 0);
+        for case in 0..200 {
+            let c = V2::new(q(rng.int(200), 97), q(rng.int(200), 89));
+            let r = q(20 + rng.int(50).abs(), 13);
+            let th = rng.int(1000) as f64 / 150.0;
+            let p0 = snap(&c, &r, (th.cos(), th.sin())).expect("finite");
+            let v = p0.sub(&c);
+            // leave the joint inwards or along the tangent, then come out
+            // through the circle: the points beyond it lie outside
+            let s = q(1 + rng.int(20).abs(), 60);
+            let tangent = case % 2 == 1;
+            let p1 = if tangent {
+                V2::new(&p0.x - &v.y * &s, &p0.y + &v.x * &s)
+            } else {
+                V2::new(&p0.x - &v.x * &s, &p0.y - &v.y * &s)
+            };
+            let out = q(3 + rng.int(5).abs(), 2);
+            let p2 = V2::new(&c.x + &v.x * &out, &c.y + &v.y * &out);
+            let mut pts = vec![p0.clone(), p1, p2];
+            if case % 3 == 0 {
+                pts.push(V2::new(
+                    &c.x + &v.x * &out + q(rng.int(50), 7),
+                    &c.y + &v.y * &out + q(rng.int(50), 11),
+                ));
+            }
+            if case % 4 == 0 {
+                pts.reverse();
+            }
+            let b = Bezier::new(pts);
+            // an arc around the joint's direction: the crossing next to the
+            // joint is in its range (on either side of the joint)
+            let dir = |a: f64| snap(&c, &r, (a.cos(), a.sin())).expect("finite");
+            let arc = Arc {
+                center: c.clone(),
+                radius: r.clone(),
+                from: dir(th - 1.5),
+                to: dir(th + 1.5),
+                clockwise: false,
+            };
+            let bi = b.map(interval_from_rational);
+            let ci = c.map(interval_from_rational);
+            let gi = circle_bernstein_iv(&bi, &ci, &r);
+            let Some(fast) = end_roots_only(&b, &c, &r, &arc, (&gi, &bi, &ci)) else {
+                continue;
+            };
+            decided += 1;
+            let exact = exact_hits(&b, &arc);
+            assert!(exact.undecided.is_empty(), "case {case}: {exact:?}");
+            assert_eq!(
+                fast.len(),
+                exact.hits.len(),
+                "case {case}: {fast:?} vs {exact:?}"
+            );
+            let zero = <Rational as Zero>::zero();
+            let one = <Rational as One>::one();
+            for (f, e) in fast.iter().zip(&exact.hits) {
+                assert_eq!(f.multiple, e.multiple, "case {case}");
+                assert!(
+                    f.t.0 <= e.t.1 && e.t.0 <= f.t.1,
+                    "case {case}: brackets {:?} and {:?} apart",
+                    f.t,
+                    e.t
+                );
+                if f.t.0 != zero && f.t.1 != one {
+                    with_inner += 1;
+                }
+            }
+            // the whole search gives the same hits
+            let whole = bezier_arc(&b, &arc);
+            assert_eq!(whole.hits.len(), exact.hits.len(), "case {case}");
+        }
+        assert!(decided > 100, "{decided} decided");
+        assert!(with_inner > 50, "{with_inner} inner crossings found");
+    }
+
     /// [`end_roots_only`] agrees with the exact one wherever both decide, and
     /// decides most cases.
     #[test]
