@@ -777,3 +777,75 @@ fn quadratic_output_on_the_grid() {
         "--output",
     );
 }
+
+/// TOL below the default grid's rounding move (`√2/2` font units): nothing
+/// can be proven on integer units, the run says so once and per glyph and
+/// names the grid that can; on that grid (`1/2`) the glyph is proven within
+/// TOL with every point on it, cubic and quadratic.
+#[test]
+fn a_grid_too_coarse_for_tol_is_named_and_the_finer_one_proves() {
+    let Some(sans) = dejavu() else { return };
+    let rep = dir("coarse.json");
+    let o = run_ok(&[
+        "font",
+        sans.to_str().unwrap(),
+        "--glyphs",
+        "l",
+        "--offset",
+        "40",
+        "--tol",
+        "1/2",
+        "--jobs",
+        "1",
+        "--out",
+        dir("coarse.ufo").to_str().unwrap(),
+        "--report",
+        rep.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(3));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("--grid 1/2 or --grid none can"), "{err}");
+    let r = report(&rep);
+    let reason = r["glyphs"][0]["reason"].as_str().unwrap_or_default();
+    assert!(reason.contains("(use --grid 1/2 or --grid none)"), "{r}");
+    for output in ["cubic", "quadratic"] {
+        let out = dir(&format!("half-{output}.ufo"));
+        let rep = dir(&format!("half-{output}.json"));
+        let o = run_ok(&[
+            "font",
+            sans.to_str().unwrap(),
+            "--glyphs",
+            "l",
+            "--offset",
+            "40",
+            "--tol",
+            "1/2",
+            "--grid",
+            "1/2",
+            "--output",
+            output,
+            "--jobs",
+            "1",
+            "--out",
+            out.to_str().unwrap(),
+            "--report",
+            rep.to_str().unwrap(),
+        ]);
+        assert_eq!(o.status.code(), Some(0), "{output}");
+        assert!(!String::from_utf8_lossy(&o.stderr).contains("no glyph"));
+        let r = report(&rep);
+        assert_eq!(r["summary"]["proven"], 1, "{r}");
+        assert!(r["glyphs"][0]["bound"].as_f64().unwrap() <= 0.5, "{r}");
+        let ufo = norad::Font::load(&out).unwrap();
+        let glyph = ufo.default_layer().get_glyph("l").unwrap();
+        assert!(!glyph.contours.is_empty());
+        for c in &glyph.contours {
+            for p in &c.points {
+                assert!(
+                    (2.0 * p.x).fract() == 0.0 && (2.0 * p.y).fract() == 0.0,
+                    "{p:?}"
+                );
+            }
+        }
+    }
+}

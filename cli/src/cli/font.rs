@@ -423,8 +423,11 @@ fn prove(src: &Source, job: &Job, g: &mut GlyphResult) {
             0.9 * (job.tol - delta_grid)
         } else {
             reasons.push(format!(
-                "the grid's rounding move {delta_grid:.4} is not below TOL {}",
-                job.tol
+                "the grid's rounding move {delta_grid:.4} is not below TOL {}{}",
+                job.tol,
+                finer_grid(job.tol)
+                    .map(|g| format!(" (use --grid {g} or --grid none)"))
+                    .unwrap_or_default()
             ));
             job.tol / 2.0
         }
@@ -916,6 +919,15 @@ fn report_html(doc: &serde_json::Value, info: &FontInfo, results: &[GlyphResult]
     h
 }
 
+/// The coarsest grid `1/2^k` (`k ≥ 1`) whose rounding move `2^−k·√2/2` is
+/// below `0.8·TOL`, leaving the stroke a fifth of it: the suggestion when the
+/// grid asked for is too coarse for `TOL`.
+fn finer_grid(tol: f64) -> Option<String> {
+    (1..=30)
+        .find(|&k| f64::powi(2.0, -k) * std::f64::consts::FRAC_1_SQRT_2 < 0.8 * tol)
+        .map(|k| format!("1/{}", 1u64 << k))
+}
+
 /// Runs `lncert font`.
 pub fn run(a: &FontArgs) -> Result<i32, CliError> {
     let op = op_of(a)?;
@@ -931,6 +943,18 @@ pub fn run(a: &FontArgs) -> Result<i32, CliError> {
     let html = report_is_html(a)?;
     let (src, info) = read_font(a)?;
     let ids = select(a.glyphs.as_deref(), &info, &src)?;
+    if let Some(g) = &grid {
+        let delta = lncert::offset::kernels::rounding_move(g);
+        if delta >= tol {
+            eprintln!(
+                "note: --grid {g} moves a point by up to {delta:.4}, not below TOL {tol}: no glyph \
+                 can be proven on it{}",
+                finer_grid(tol)
+                    .map(|f| format!("; --grid {f} or --grid none can"))
+                    .unwrap_or_default()
+            );
+        }
+    }
     let job = Job {
         op,
         tol,
@@ -1148,6 +1172,30 @@ fn progress_bar(n: usize) -> Option<indicatif::ProgressBar> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The suggested grid is the coarsest dyadic one whose rounding move is
+    /// below 0.8·TOL, and none is suggested beyond 2⁻³⁰.
+    #[test]
+    fn the_suggested_grid_is_the_coarsest_that_leaves_room() {
+        for (tol, want) in [(0.5, Some("1/2")), (0.3, Some("1/4")), (0.1, Some("1/16"))] {
+            assert_eq!(finer_grid(tol).as_deref(), want, "TOL {tol}");
+        }
+        for tol in [0.5, 0.3, 0.1, 1e-3, 1e-6] {
+            let g = finer_grid(tol).expect("a grid");
+            let k = g
+                .trim_start_matches("1/")
+                .parse::<u64>()
+                .unwrap()
+                .trailing_zeros() as i32;
+            let mv = |k: i32| f64::powi(2.0, -k) * std::f64::consts::FRAC_1_SQRT_2;
+            assert!(mv(k) < 0.8 * tol, "TOL {tol}: {g} moves too far");
+            assert!(
+                k == 1 || mv(k - 1) >= 0.8 * tol,
+                "TOL {tol}: {g} is not the coarsest"
+            );
+        }
+        assert_eq!(finer_grid(1e-12), None);
+    }
 
     /// Dense two-sided check of [`segment_move2`]: every sampled point of the
     /// exact piece is within the bound of the segment, and every point of the
