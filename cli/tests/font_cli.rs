@@ -785,33 +785,11 @@ fn quadratic_output_on_the_grid() {
 #[test]
 fn a_grid_too_coarse_for_tol_is_named_and_the_finer_one_proves() {
     let Some(sans) = dejavu() else { return };
-    let rep = dir("coarse.json");
-    let o = run_ok(&[
-        "font",
-        sans.to_str().unwrap(),
-        "--glyphs",
-        "l",
-        "--offset",
-        "40",
-        "--tol",
-        "1/2",
-        "--jobs",
-        "1",
-        "--out",
-        dir("coarse.ufo").to_str().unwrap(),
-        "--report",
-        rep.to_str().unwrap(),
-    ]);
-    assert_eq!(o.status.code(), Some(3));
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert!(err.contains("--grid 1/2 or --grid none can"), "{err}");
-    let r = report(&rep);
-    let reason = r["glyphs"][0]["reason"].as_str().unwrap_or_default();
-    assert!(reason.contains("(use --grid 1/2 or --grid none)"), "{r}");
-    for output in ["cubic", "quadratic"] {
-        let out = dir(&format!("half-{output}.ufo"));
-        let rep = dir(&format!("half-{output}.json"));
-        let o = run_ok(&[
+    // `l` offset by 40 at TOL 1/2, with `extra` options: the run, its
+    // report and its UFO
+    let run = |name: &str, extra: &[&str]| {
+        let (out, rep) = (dir(&format!("{name}.ufo")), dir(&format!("{name}.json")));
+        let mut args = vec![
             "font",
             sans.to_str().unwrap(),
             "--glyphs",
@@ -820,20 +798,29 @@ fn a_grid_too_coarse_for_tol_is_named_and_the_finer_one_proves() {
             "40",
             "--tol",
             "1/2",
-            "--grid",
-            "1/2",
-            "--output",
-            output,
             "--jobs",
             "1",
             "--out",
             out.to_str().unwrap(),
             "--report",
             rep.to_str().unwrap(),
-        ]);
+        ];
+        args.extend_from_slice(extra);
+        (run_ok(&args), report(&rep), out)
+    };
+    let (o, r, _) = run("coarse", &[]);
+    assert_eq!(o.status.code(), Some(3));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("--grid 1/2 or --grid none can"), "{err}");
+    let reason = r["glyphs"][0]["reason"].as_str().unwrap_or_default();
+    assert!(reason.contains("(use --grid 1/2 or --grid none)"), "{r}");
+    for output in ["cubic", "quadratic"] {
+        let (o, r, out) = run(
+            &format!("half-{output}"),
+            &["--grid", "1/2", "--output", output],
+        );
         assert_eq!(o.status.code(), Some(0), "{output}");
         assert!(!String::from_utf8_lossy(&o.stderr).contains("no glyph"));
-        let r = report(&rep);
         assert_eq!(r["summary"]["proven"], 1, "{r}");
         assert!(r["glyphs"][0]["bound"].as_f64().unwrap() <= 0.5, "{r}");
         let ufo = norad::Font::load(&out).unwrap();

@@ -1192,8 +1192,20 @@ mod tests {
         assert_eq!(arcs_meet(&arc, &near, None), Some(true));
     }
 
-    /// A piece leaving a point of the circle (transversally, or tangentially:
-    /// a double root) and wandering off: the interval deflation of
+    /// A random circle (centre, radius at least `r_min/13`) and a rational
+    /// point `p0` exactly on it at the angle `θ`: `(c, r, θ, p0, p0 − c)`.
+    fn joint_on_a_circle(
+        rng: &mut crate::test_util::TestRng,
+        r_min: i64,
+    ) -> (V2<Rational>, Rational, f64, V2<Rational>, V2<Rational>) {
+        let c = V2::new(q(rng.int(200), 97), q(rng.int(200), 89));
+        let r = q(r_min + rng.int(50).abs(), 13);
+        let th = rng.int(1000) as f64 / 150.0;
+        let p0 = snap(&c, &r, (th.cos(), th.sin())).expect("finite");
+        let v = p0.sub(&c);
+        (c, r, th, p0, v)
+    }
+
     /// A joint on the circle and a second crossing next to it (a cap
     /// meeting its own side's offset again): [`end_roots_only`] finds the
     /// inner crossings by intervals on the deflated rest. Each decided case
@@ -1205,11 +1217,7 @@ mod tests {
         let mut rng = crate::test_util::TestRng::new(0x2c9f_41d3_a0b7_5e61);
         let (mut decided, mut with_inner) = (0, 0);
         for case in 0..200 {
-            let c = V2::new(q(rng.int(200), 97), q(rng.int(200), 89));
-            let r = q(20 + rng.int(50).abs(), 13);
-            let th = rng.int(1000) as f64 / 150.0;
-            let p0 = snap(&c, &r, (th.cos(), th.sin())).expect("finite");
-            let v = p0.sub(&c);
+            let (c, r, th, p0, v) = joint_on_a_circle(&mut rng, 20);
             // leave the joint inwards or along the tangent, then come out
             // through the circle: the points beyond it lie outside
             let s = q(1 + rng.int(20).abs(), 60);
@@ -1278,6 +1286,8 @@ mod tests {
         assert!(with_inner > 50, "{with_inner} inner crossings found");
     }
 
+    /// A piece leaving a point of the circle (transversally, or tangentially:
+    /// a double root) and wandering off: the interval deflation of
     /// [`end_roots_only`] agrees with the exact one wherever both decide, and
     /// decides most cases.
     #[test]
@@ -1285,11 +1295,7 @@ mod tests {
         let mut rng = crate::test_util::TestRng::new(0x51ed_270b_7f4a_7c15);
         let (mut both, mut fast_only, mut exact_only, mut tangential) = (0, 0, 0, 0);
         for case in 0..300 {
-            let c = V2::new(q(rng.int(200), 97), q(rng.int(200), 89));
-            let r = q(1 + rng.int(50).abs(), 13);
-            let th = rng.int(1000) as f64 / 150.0;
-            let p0 = snap(&c, &r, (th.cos(), th.sin())).expect("finite");
-            let v = p0.sub(&c);
+            let (c, r, th, p0, v) = joint_on_a_circle(&mut rng, 1);
             let tangent = case % 2 == 1;
             let deg = 1 + (case / 2) % 3;
             let mut pts = vec![p0.clone()];

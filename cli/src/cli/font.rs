@@ -924,8 +924,9 @@ fn report_html(doc: &serde_json::Value, info: &FontInfo, results: &[GlyphResult]
 /// grid asked for is too coarse for `TOL`.
 fn finer_grid(tol: f64) -> Option<String> {
     (1..=30)
-        .find(|&k| f64::powi(2.0, -k) * std::f64::consts::FRAC_1_SQRT_2 < 0.8 * tol)
-        .map(|k| format!("1/{}", 1u64 << k))
+        .map(|k| Rational::new(1.into(), (1i64 << k).into()))
+        .find(|g| lncert::offset::kernels::rounding_move(g) < 0.8 * tol)
+        .map(|g| g.to_string())
 }
 
 /// Runs `lncert font`.
@@ -1187,7 +1188,9 @@ mod tests {
                 .parse::<u64>()
                 .unwrap()
                 .trailing_zeros() as i32;
-            let mv = |k: i32| f64::powi(2.0, -k) * std::f64::consts::FRAC_1_SQRT_2;
+            let mv = |k: i32| {
+                lncert::offset::kernels::rounding_move(&Rational::new(1.into(), (1i64 << k).into()))
+            };
             assert!(mv(k) < 0.8 * tol, "TOL {tol}: {g} moves too far");
             assert!(
                 k == 1 || mv(k - 1) >= 0.8 * tol,

@@ -470,7 +470,7 @@ fn positive(g: Vec<Interval>, j: usize) -> Result<(), String> {
                 "the point is not proven farther than r from input piece {j}"
             ));
         }
-        let (a, b) = halves(&g);
+        let (a, b) = split_at(&g, ic(0.5));
         stack.push((a, depth + 1));
         stack.push((b, depth + 1));
     }
@@ -499,24 +499,6 @@ pub(crate) fn bprod(a: &[Interval], b: &[Interval]) -> Vec<Interval> {
         *o /= bmn[k];
     }
     out
-}
-
-/// The Bernstein coefficients of the two halves `[0, ½]`, `[½, 1]`.
-fn halves(g: &[Interval]) -> (Vec<Interval>, Vec<Interval>) {
-    let mut w = g.to_vec();
-    let n = w.len();
-    let mut left = Vec::with_capacity(n);
-    let mut right = Vec::with_capacity(n);
-    let half = ic(0.5);
-    for k in 0..n {
-        left.push(w[0]);
-        right.push(w[n - 1 - k]);
-        for i in 0..(n - 1 - k) {
-            w[i] = (w[i] + w[i + 1]) * half;
-        }
-    }
-    right.reverse();
-    (left, right)
 }
 
 /// The points whose convex hull holds one part of the outline.

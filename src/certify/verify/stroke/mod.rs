@@ -187,10 +187,10 @@ pub(crate) fn exact_points(b: &crate::curve::Bezier<Rational>) -> Vec<Q2> {
         .collect()
 }
 
-fn cross(a: &Q2, b: &Q2) -> Rational {
+pub(super) fn cross(a: &Q2, b: &Q2) -> Rational {
     &a[0] * &b[1] - &a[1] * &b[0]
 }
-fn dotq(a: &Q2, b: &Q2) -> Rational {
+pub(super) fn dotq(a: &Q2, b: &Q2) -> Rational {
     &a[0] * &b[0] + &a[1] * &b[1]
 }
 

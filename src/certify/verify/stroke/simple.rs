@@ -20,7 +20,7 @@
 //! proven below `2π` so that the parts do not wind around more than the arc.
 
 use super::geom::{arc_hull, bprod, ic, ip, iq, Bez, P};
-use super::{OPiece, Q2};
+use super::{cross, dotq, OPiece, Q2};
 use crate::scalar::{atan_enclosure, Interval, Rational};
 use rayon::prelude::*;
 
@@ -307,9 +307,7 @@ fn area_term(piece: &OPiece, parts: &[Span]) -> Option<Interval> {
                 let q = if q.is_common_interval() {
                     q
                 } else {
-                    let cr = &d0[0] * &d1[1] - &d0[1] * &d1[0];
-                    let dt = &d0[0] * &d1[0] + &d0[1] * &d1[1];
-                    iq(&cr) / iq(&dt)
+                    iq(&cross(d0, d1)) / iq(&dotq(d0, d1))
                 };
                 theta += atan_enclosure(q);
             }
