@@ -298,6 +298,27 @@ pub(crate) fn conv_span(
     Some(Piece::from_iv(data, (0.0, 1.0), (0.0, 1.0)))
 }
 
+/// The piece of the span `[t₀, t₁]` of the Bézier curve `x` itself (its
+/// exact restriction, enclosed in interval arithmetic as [`offset_span`]
+/// encloses an offset's).
+pub(crate) fn bezier_span(x: &Bezier<Rational>, t: (f64, f64)) -> Option<Piece> {
+    if !(t.0.is_finite() && t.1.is_finite() && t.0 < t.1) || x.points().is_empty() {
+        return None;
+    }
+    let (p0, p1) = (
+        Interval::try_from((t.0, t.0)).ok()?,
+        Interval::try_from((t.1, t.1)).ok()?,
+    );
+    let span = x.map(iv).restrict(&p0, &p1);
+    let pts: Vec<(Interval, Interval)> = span.points().iter().map(|p| (p.x, p.y)).collect();
+    let [pts, d1, d2, _] = hodographs_iv(pts);
+    Some(Piece::from_iv(
+        PieceData::Bez { pts, d1, d2 },
+        (0.0, 1.0),
+        (0.0, 1.0),
+    ))
+}
+
 /// The piece of a Bézier curve with float (exact dyadic) control points.
 pub(crate) fn bezier_f64(b: &Bezier<f64>) -> Option<Piece> {
     let pts = b

@@ -73,7 +73,9 @@ pub use convolve::convolve;
 pub use corners::corners;
 pub use driver::{offset, span_f64};
 pub use fit::Output;
-pub use gridfit::{offset_on_grid, GridOffset, GridSegment, Target};
+pub use gridfit::{
+    chain_on_grid, offset_on_grid, ChainGridOptions, GridOffset, GridSegment, Target,
+};
 pub use options::{OffsetError, OffsetMethod, OffsetOptions, MIN_REL_TOL};
 pub use results::{
     absorbed_arcs, exact_bezier, exact_offset_shape, join_arcs, ConvSide, Corner, OffsetResult,

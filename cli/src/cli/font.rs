@@ -111,6 +111,13 @@ pub struct FontArgs {
     pub json: bool,
 }
 
+/// A grid whose rounding move is at most this share of TOL is rounded to;
+/// a coarser one is fitted ([`lncert::offset::chain_on_grid`]).
+const ROUND_SHARE: f64 = 0.5;
+/// The share of TOL the stroke is asked for when the outline is fitted on the
+/// grid (the rest, less the arcs' bound, goes to the fit).
+const FIT_STROKE_SHARE: f64 = 0.3;
+
 /// Largest font file read.
 const MAX_FONT_BYTES: u64 = super::curve_input::MAX_FONT_BYTES;
 
@@ -418,21 +425,13 @@ fn prove(src: &Source, job: &Job, g: &mut GlyphResult) {
         .map(lncert::offset::kernels::rounding_move)
         .unwrap_or(0.0);
     let mut reasons: Vec<String> = Vec::new();
-    let stroke_tol = if job.grid.is_some() {
-        if delta_grid < job.tol {
-            0.9 * (job.tol - delta_grid)
-        } else {
-            reasons.push(format!(
-                "the grid's rounding move {delta_grid:.4} is not below TOL {}{}",
-                job.tol,
-                finer_grid(job.tol)
-                    .map(|g| format!(" (use --grid {g} or --grid none)"))
-                    .unwrap_or_default()
-            ));
-            job.tol / 2.0
-        }
+    // a grid whose rounding move takes more than ROUND_SHARE of TOL: the
+    // stroke's outline is refitted on the grid instead of rounded
+    let fit_on_grid = job.grid.is_some() && delta_grid > ROUND_SHARE * job.tol;
+    let stroke_tol = if fit_on_grid {
+        FIT_STROKE_SHARE * job.tol
     } else {
-        0.9 * job.tol
+        0.9 * (job.tol - delta_grid)
     };
     let stroke_tol = match lncert::Tolerance::from_f64(stroke_tol) {
         Ok(t) => t,
@@ -448,7 +447,7 @@ fn prove(src: &Source, job: &Job, g: &mut GlyphResult) {
         lncert::offset::Output::Cubic
     };
     // what is left of TOL for the arcs' quadratics (cubic arcs take ~1e-7 r)
-    let arc_target = 0.05 * (job.tol - delta_grid).max(job.tol / 2.0);
+    let arc_target = 0.05 * (job.tol - if fit_on_grid { 0.0 } else { delta_grid });
     let s = match stroke(&pieces, &opts) {
         Ok(s) => s,
         Err(e) => {
@@ -469,15 +468,32 @@ fn prove(src: &Source, job: &Job, g: &mut GlyphResult) {
         ));
     }
     let (contours, arc_bound) = to_beziers(kept, job.quadratic, arc_target, &mut reasons);
-    let (rounded, move2) = round_contours(&contours, &job.grid, &mut reasons);
-    let delta = sqrt_up(&move2);
+    let (rounded, grid_bound, grid_what) = match (&job.grid, fit_on_grid) {
+        (Some(grid), true) => {
+            let left = (job.tol - (stroke_bound + arc_bound).next_up()) * 0.999;
+            let fitted = fit_contours(&contours, grid, left, job.quadratic, &mut reasons);
+            if !fitted.1.is_finite() && delta_grid >= job.tol {
+                if let Some(f) = finer_grid(job.tol) {
+                    reasons.push(format!(
+                        "the grid's rounding move {delta_grid:.4} is not below TOL {} (--grid {f} leaves room)",
+                        job.tol
+                    ));
+                }
+            }
+            fitted
+        }
+        _ => {
+            let (rounded, move2) = round_contours(&contours, &job.grid, &mut reasons);
+            (rounded, sqrt_up(&move2), "rounding")
+        }
+    };
     // rounded up: the sum of three proven bounds
-    let bound = ((stroke_bound + arc_bound).next_up() + delta).next_up();
+    let bound = ((stroke_bound + arc_bound).next_up() + grid_bound).next_up();
     g.bound = bound;
     // (a NaN bound is not proven either)
     if bound.is_nan() || bound > job.tol {
         reasons.push(format!(
-            "the bound {bound:.4} (stroke {stroke_bound:.4} + arcs {arc_bound:.2e} + rounding {delta:.4}) exceeds TOL {}",
+            "the bound {bound:.4} (stroke {stroke_bound:.4} + arcs {arc_bound:.2e} + {grid_what} {grid_bound:.4}) exceeds TOL {}",
             job.tol
         ));
     }
@@ -599,6 +615,74 @@ fn to_beziers(
         contours.push(out);
     }
     (contours, arc_bound)
+}
+
+/// The stroke's outline refitted on the grid ([`lncert::offset::chain_on_grid`]),
+/// each output piece proven within `left` of its part of the outline; returns
+/// the contours, the certified bound (infinite when some piece is not proven
+/// or nothing is left of TOL) and what it is called in reasons.
+fn fit_contours(
+    contours: &[Vec<Bezier<Rational>>],
+    grid: &Rational,
+    left: f64,
+    quadratic: bool,
+    reasons: &mut Vec<String>,
+) -> (Vec<Vec<Bezier<Rational>>>, f64, &'static str) {
+    let what = "grid fit";
+    let tol = match lncert::Tolerance::from_f64(left) {
+        Ok(t) if left > 0.0 => t,
+        _ => {
+            reasons.push(format!(
+                "nothing is left of TOL for the grid fit ({left:.4})"
+            ));
+            return (contours.to_vec(), f64::INFINITY, what);
+        }
+    };
+    let mut opts = lncert::offset::ChainGridOptions::new(grid.clone(), tol);
+    opts.quadratic = quadratic;
+    let r = match lncert::offset::chain_on_grid(contours, &opts) {
+        Ok(r) => r,
+        Err(e) => {
+            reasons.push(format!("the grid fit refused the outline: {e}"));
+            return (contours.to_vec(), f64::INFINITY, what);
+        }
+    };
+    if !r.reached() {
+        reasons.push(format!(
+            "grid fit: {} of {} pieces not proven within {left:.4}",
+            r.unreached.len(),
+            r.segments.len()
+        ));
+    }
+    let exact = |b: &Bezier<f64>| -> Option<Bezier<Rational>> {
+        let pts = b
+            .points()
+            .iter()
+            .map(|p| Some(V2::new(rational_from_f64(p.x)?, rational_from_f64(p.y)?)))
+            .collect::<Option<Vec<_>>>()?;
+        Some(Bezier::new(pts))
+    };
+    let mut out = Vec::new();
+    for &(first, n, _) in &r.contours {
+        let c: Option<Vec<Bezier<Rational>>> = r.segments[first..first + n]
+            .iter()
+            .map(|s| exact(&s.bezier))
+            .collect();
+        match c {
+            Some(c) if !c.is_empty() => out.push(c),
+            Some(_) => {}
+            None => {
+                reasons.push("grid fit: a control point is not finite".into());
+                return (contours.to_vec(), f64::INFINITY, what);
+            }
+        }
+    }
+    let bound = if r.reached() {
+        r.certified_hi
+    } else {
+        f64::INFINITY
+    };
+    (out, bound, what)
 }
 
 /// Every control point rounded to the grid; returns the rounded contours
@@ -944,18 +1028,6 @@ pub fn run(a: &FontArgs) -> Result<i32, CliError> {
     let html = report_is_html(a)?;
     let (src, info) = read_font(a)?;
     let ids = select(a.glyphs.as_deref(), &info, &src)?;
-    if let Some(g) = &grid {
-        let delta = lncert::offset::kernels::rounding_move(g);
-        if delta >= tol {
-            eprintln!(
-                "note: --grid {g} moves a point by up to {delta:.4}, not below TOL {tol}: no glyph \
-                 can be proven on it{}",
-                finer_grid(tol)
-                    .map(|f| format!("; --grid {f} or --grid none can"))
-                    .unwrap_or_default()
-            );
-        }
-    }
     let job = Job {
         op,
         tol,

@@ -8,7 +8,117 @@ use glam::DVec2;
 
 impl Ctx<'_> {
     /// A cubic from `a.g` to `b.g` with inner control points on the grid.
+    /// On a chain whose stretch between the joints turns a sharp corner, the
+    /// smooth fit competes with cubics (quadratics) whose inner control
+    /// points are grid points near the corner ([`Self::corner_fit`]).
     pub(super) fn fit(
+        &self,
+        c: &Contour,
+        a: &Joint,
+        b: &Joint,
+        dense: &[(Pos, DVec2)],
+    ) -> Option<Bezier<f64>> {
+        let smooth = self.fit_smooth(c, a, b, dense);
+        if !self.corner_joints {
+            return smooth;
+        }
+        let pts: Vec<DVec2> = dense.iter().map(|d| d.1).collect();
+        let corners = self.corners_in(c, dense);
+        let cornered = if corners.is_empty() {
+            None
+        } else {
+            self.corner_fit(&pts, a.g, b.g, &corners)
+        };
+        // the segment between the joints is the last resort (the proof
+        // decides; a failed fit has nothing better to offer)
+        let line =
+            (a.g != b.g).then(|| Bezier::new(vec![V2::new(a.g.x, a.g.y), V2::new(b.g.x, b.g.y)]));
+        let best = [smooth, cornered]
+            .into_iter()
+            .flatten()
+            .map(|b| (self.score(&pts, &b), b))
+            .filter(|(s, _)| *s < 1e6)
+            .min_by(|x, y| x.0.total_cmp(&y.0))
+            .map(|x| x.1);
+        best.or(line)
+    }
+
+    /// The sharp corners (turning by more than 20°) at the joints between
+    /// parts among the samples.
+    fn corners_in(&self, c: &Contour, dense: &[(Pos, DVec2)]) -> Vec<DVec2> {
+        let cos_max = 20f64.to_radians().cos();
+        let n = c.parts.len();
+        let last = dense.len().saturating_sub(1);
+        dense
+            .iter()
+            .enumerate()
+            .filter(|(i, (pos, _))| {
+                *i > 0 && *i < last && pos.u == 1.0 && (pos.part + 1 < n || c.closed)
+            })
+            .map(|(_, d)| d)
+            .filter(|(pos, _)| {
+                match (
+                    self.frame(&c.parts[pos.part], 1.0),
+                    self.frame(&c.parts[(pos.part + 1) % n], 0.0),
+                ) {
+                    (Some((t0, _)), Some((t1, _))) => t0.dot(t1) < cos_max,
+                    _ => true,
+                }
+            })
+            .map(|d| d.1)
+            .collect()
+    }
+
+    /// The best (sampled two-sided error) cubic from `a` to `b` whose two
+    /// inner control points (a quadratic's one) are grid points within two
+    /// grid steps of a corner: a cubic with both at one point turns sharply
+    /// there without a loop.
+    fn corner_fit(
+        &self,
+        pts: &[DVec2],
+        a: DVec2,
+        b: DVec2,
+        corners: &[DVec2],
+    ) -> Option<Bezier<f64>> {
+        let mut near: Vec<DVec2> = Vec::new();
+        for &c in corners.iter().take(4) {
+            let g = self.nearest_grid(c);
+            for i in -2i32..=2 {
+                for j in -2i32..=2 {
+                    if i * i + j * j <= 5 {
+                        let q = g + DVec2::new(f64::from(i), f64::from(j)) * self.gf;
+                        if !near.contains(&q) {
+                            near.push(q);
+                        }
+                    }
+                }
+            }
+        }
+        let v = |p: DVec2| V2::new(p.x, p.y);
+        let mut best: Option<(f64, Bezier<f64>)> = None;
+        let mut consider = |bz: Bezier<f64>| {
+            let s = self.score(pts, &bz);
+            if best.as_ref().is_none_or(|b| s < b.0) {
+                best = Some((s, bz));
+            }
+        };
+        if self.quadratic {
+            for &q in &near {
+                consider(Bezier::new(vec![v(a), v(q), v(b)]));
+            }
+        } else {
+            for &p in &near {
+                for &q in &near {
+                    consider(Bezier::new(vec![v(a), v(p), v(q), v(b)]));
+                }
+            }
+        }
+        let out = best?.1;
+        fit::round_to_grid(&out, &self.grid).filter(|r| *r == out)
+    }
+
+    /// The smooth fit between two joints (see [`Self::fit`]).
+    fn fit_smooth(
         &self,
         c: &Contour,
         a: &Joint,
@@ -27,6 +137,14 @@ impl Ctx<'_> {
             k1,
         };
         let pts: Vec<DVec2> = dense.iter().map(|d| d.1).collect();
+        // a chain's straight (or nearly straight) stretch: the segment
+        // between the joints, when it is already well within the tolerance
+        if self.corner_joints && a.g != b.g {
+            let line = Bezier::new(vec![v(a.g), v(b.g)]);
+            if two_sided(&pts, &line) <= LINE_SHARE * self.tol.value() {
+                return Some(line);
+            }
+        }
         if self.quadratic {
             return self.fit_quadratic(&e, &pts, a.g, b.g);
         }
@@ -58,7 +176,8 @@ impl Ctx<'_> {
         let p = refined.points();
         let mut q = [self.exact_grid(dv(&p[1]))?, self.exact_grid(dv(&p[2]))?];
         let make = |q: &[DVec2; 2]| Bezier::new(vec![v(a.g), v(q[0]), v(q[1]), v(b.g)]);
-        let mut err = two_sided(&pts, &make(&q));
+        let score = |b: &Bezier<f64>| self.score(&pts, b);
+        let mut err = score(&make(&q));
         for _ in 0..48 {
             let mut improved = false;
             for i in 0..2 {
@@ -70,7 +189,7 @@ impl Ctx<'_> {
                 ] {
                     let mut t = q;
                     t[i] += d;
-                    let e2 = two_sided(&pts, &make(&t));
+                    let e2 = score(&make(&t));
                     if e2 < err {
                         err = e2;
                         q = t;
@@ -82,9 +201,42 @@ impl Ctx<'_> {
                 break;
             }
         }
-        let out = make(&q);
+        let out = self.chain_shape(&pts, a.g, b.g, make(&q))?;
         // the moved points are grid multiples: check they are exact
         fit::round_to_grid(&out, &self.grid).filter(|r| *r == out)
+    }
+
+    /// What the grid descent lowers: the sampled two-sided error, and on a
+    /// chain ([`super::chain_on_grid`]) a large penalty for a control polygon
+    /// that turns back on itself (consecutive legs turning by 120° or
+    /// more: a curve that retraces or nearly cusps, which the simplicity
+    /// check of the output cannot pass), so that such a polygon is left
+    /// whenever a neighbour is not.
+    fn score(&self, pts: &[DVec2], b: &Bezier<f64>) -> f64 {
+        let e = two_sided(pts, b);
+        if self.corner_joints && !forward_legs(b) {
+            e + 1e6 * (1.0 + self.tol.value())
+        } else {
+            e
+        }
+    }
+
+    /// On a chain, a fit whose control polygon turns back is not kept: the
+    /// segment between the joints instead when its sampled error is within
+    /// the tolerance, else nothing (the caller splits).
+    fn chain_shape(
+        &self,
+        pts: &[DVec2],
+        a: DVec2,
+        b: DVec2,
+        fitted: Bezier<f64>,
+    ) -> Option<Bezier<f64>> {
+        if !self.corner_joints || forward_legs(&fitted) {
+            return Some(fitted);
+        }
+        let v = |p: DVec2| V2::new(p.x, p.y);
+        let line = Bezier::new(vec![v(a), v(b)]);
+        (a != b && two_sided(pts, &line) <= self.tol.value()).then_some(line)
     }
 
     /// The quadratic between two grid joints: the control point at the end
@@ -96,7 +248,7 @@ impl Ctx<'_> {
         let first = fit::tangent_quadratic(e)?;
         let mut q = self.exact_grid(dv(&first.points()[1]))?;
         let make = |q: DVec2| Bezier::new(vec![v(a), v(q), v(b)]);
-        let mut err = two_sided(pts, &make(q));
+        let mut err = self.score(pts, &make(q));
         for _ in 0..96 {
             let mut improved = false;
             for d in [
@@ -105,7 +257,7 @@ impl Ctx<'_> {
                 DVec2::new(0.0, self.gf),
                 DVec2::new(0.0, -self.gf),
             ] {
-                let e2 = two_sided(pts, &make(q + d));
+                let e2 = self.score(pts, &make(q + d));
                 if e2 < err {
                     err = e2;
                     q += d;
@@ -116,9 +268,33 @@ impl Ctx<'_> {
                 break;
             }
         }
-        let out = make(q);
+        let out = self.chain_shape(pts, a, b, make(q))?;
         fit::round_to_grid(&out, &self.grid).filter(|r| *r == out)
     }
+}
+
+/// The share of the tolerance under which a chain's segment between two
+/// joints is written as a line.
+const LINE_SHARE: f64 = 0.5;
+
+/// Every two consecutive legs of the control polygon (non-zero) turn by
+/// less than 120°; or a cubic's middle leg is zero and the outer two are
+/// not opposite.
+fn forward_legs(b: &Bezier<f64>) -> bool {
+    let p: Vec<DVec2> = b.points().iter().map(dv).collect();
+    let legs: Vec<DVec2> = p.windows(2).map(|w| w[1] - w[0]).collect();
+    // a cubic with its two inner points at one place: the hodograph
+    // `(1−t)²·l₀ + t²·l₂` turns by less than a half turn (no loop), unless
+    // the outer legs are opposite
+    if let [l0, l1, l2] = legs[..] {
+        if l1 == DVec2::ZERO && l0 != DVec2::ZERO && l2 != DVec2::ZERO {
+            return l0.perp_dot(l2) != 0.0 || l0.dot(l2) > 0.0;
+        }
+    }
+    legs.iter().all(|l| *l != DVec2::ZERO)
+        && legs
+            .windows(2)
+            .all(|w| w[0].dot(w[1]) > -0.5 * w[0].length() * w[1].length())
 }
 
 /// The sampled two-sided distance between the exact samples (a polyline) and
@@ -126,7 +302,22 @@ impl Ctx<'_> {
 pub(super) fn two_sided(exact: &[DVec2], c: &Bezier<f64>) -> f64 {
     // a quadratic is measured as its exact degree elevation (the same curve)
     let elevated;
-    let c = if c.degree() == 2 {
+    let c = if c.degree() == 1 {
+        let p = c.points();
+        let at = |w: f64| {
+            V2::new(
+                p[0].x + (p[1].x - p[0].x) * w,
+                p[0].y + (p[1].y - p[0].y) * w,
+            )
+        };
+        elevated = Bezier::new(vec![
+            p[0].clone(),
+            at(1.0 / 3.0),
+            at(2.0 / 3.0),
+            p[1].clone(),
+        ]);
+        &elevated
+    } else if c.degree() == 2 {
         let p = c.points();
         let third = |a: &V2<f64>, b: &V2<f64>| {
             V2::new(a.x + (b.x - a.x) * 2.0 / 3.0, a.y + (b.y - a.y) * 2.0 / 3.0)

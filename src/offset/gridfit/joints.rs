@@ -2,7 +2,7 @@
 //! moved along it to grid points.
 
 use super::outline::{Contour, Ctx, Joint, Part, Pos};
-use super::{bad, OffsetError, JOINT_SHARE, MIN_GAP_STEPS, WINDOW_STEPS};
+use super::{bad, OffsetError, JOINT_SHARE, MIN_GAP_STEPS, SPLIT_SHARE, WINDOW_STEPS};
 use glam::DVec2;
 
 impl Ctx<'_> {
@@ -16,31 +16,61 @@ impl Ctx<'_> {
         hi: Pos,
         window: f64,
     ) -> Option<(Joint, f64)> {
-        let first = self.snap_within(c, nominal, lo, hi, window)?;
+        let first = self.snap_within(c, nominal, (lo, hi), window, &[], JOINT_SHARE)?;
         if first.1 <= JOINT_SHARE * self.tol.value() {
             return Some(first);
         }
-        self.snap_within(c, nominal, lo, hi, f64::INFINITY)
+        self.snap_within(c, nominal, (lo, hi), f64::INFINITY, &[], JOINT_SHARE)
     }
 
-    /// Moves a joint from `nominal` along the exact curve, strictly between
-    /// `lo` and `hi` (or onto them when they equal `nominal`), by at most
-    /// `window` of arc length, to the position closest to `nominal` whose
-    /// nearest grid point is within `tol/2`; else to the position with the
-    /// nearest grid point. Returns the joint and its grid point's distance
-    /// from the curve.
-    fn snap_within(
+    /// A split's joint: [`Self::snap`] among the positions whose nearest grid
+    /// point is none of `avoid` (the joints it splits between), and when no
+    /// grid point in `window` is within `tol/2` of the curve, the one within
+    /// `SPLIT_SHARE·tol` closest to `nominal` before any farther one.
+    pub(super) fn snap_split(
         &self,
         c: &Contour,
         nominal: Pos,
         lo: Pos,
         hi: Pos,
         window: f64,
+        avoid: &[DVec2],
     ) -> Option<(Joint, f64)> {
-        let delta = JOINT_SHARE * self.tol.value();
+        for share in [JOINT_SHARE, SPLIT_SHARE] {
+            let found = self.snap_within(c, nominal, (lo, hi), window, avoid, share)?;
+            if found.1 <= share * self.tol.value() {
+                return Some(found);
+            }
+        }
+        self.snap_within(c, nominal, (lo, hi), f64::INFINITY, avoid, SPLIT_SHARE)
+    }
+
+    /// Moves a joint from `nominal` along the exact curve, strictly between
+    /// `lo` and `hi` (or onto them when they equal `nominal`), by at most
+    /// `window` of arc length, to the position closest to `nominal` whose
+    /// nearest grid point (none of `avoid`) is within `share·tol`; else to the
+    /// position with the nearest grid point. Returns the joint and its grid
+    /// point's distance from the curve.
+    fn snap_within(
+        &self,
+        c: &Contour,
+        nominal: Pos,
+        (lo, hi): (Pos, Pos),
+        window: f64,
+        avoid: &[DVec2],
+        share: f64,
+    ) -> Option<(Joint, f64)> {
+        let delta = share * self.tol.value();
         let h = self.gf / 16.0;
         let p0 = self.point(&c.parts[nominal.part], nominal.u)?;
-        let score = |p: DVec2| (p - self.nearest_grid(p)).length();
+        let score = |p: DVec2| {
+            let g = self.nearest_grid(p);
+            if avoid.contains(&g) {
+                f64::INFINITY
+            } else {
+                (p - g).length()
+            }
+        };
         let mut best = (score(p0), 0.0, nominal);
         let mut good: Option<(f64, Pos)> = (best.0 <= delta).then_some((0.0, nominal));
         for dir in [1.0f64, -1.0] {
@@ -130,7 +160,7 @@ impl Ctx<'_> {
         let min_gap = MIN_GAP_STEPS * self.gf;
         let mut cands = Vec::new();
         for (k, p) in c.parts.iter().enumerate() {
-            let cusp = self.is_cusp(c, k);
+            let cusp = !self.corner_joints && self.is_cusp(c, k);
             if !cusp || (k == 0 && !c.closed) {
                 cands.push(Pos { part: k, u: 0.0 });
             }
@@ -204,7 +234,14 @@ impl Ctx<'_> {
             let open_end = i == 0 && !c.closed;
             let found = if open_end {
                 // an open end moves inwards by tol/2 at most
-                self.snap_within(c, pos, lo, hi, JOINT_SHARE * self.tol.value())
+                self.snap_within(
+                    c,
+                    pos,
+                    (lo, hi),
+                    JOINT_SHARE * self.tol.value(),
+                    &[],
+                    JOINT_SHARE,
+                )
             } else {
                 let window = (WINDOW_STEPS * self.gf).min(0.45 * prev_len.min(next_len));
                 self.snap(c, pos, lo, hi, window)
@@ -223,7 +260,14 @@ impl Ctx<'_> {
         if !c.closed {
             let lo = joints.last().map_or(last, |j| j.pos);
             let (j, _) = self
-                .snap_within(c, last, lo, last, JOINT_SHARE * self.tol.value())
+                .snap_within(
+                    c,
+                    last,
+                    (lo, last),
+                    JOINT_SHARE * self.tol.value(),
+                    &[],
+                    JOINT_SHARE,
+                )
                 .ok_or_else(|| bad("curve", "the exact offset cannot be evaluated at its end"))?;
             joints.push(j);
         }

@@ -42,6 +42,7 @@
 //! reached (reported, never guessed). Convolutions are not supported on such
 //! grids yet (their corners need elliptic arcs).
 
+mod chain;
 mod fitting;
 mod joints;
 mod outline;
@@ -57,6 +58,7 @@ use crate::curve::Bezier;
 use crate::scalar::{Rational, Scalar};
 use crate::shape::{ArcDesc, ShapeDesc};
 use crate::Tolerance;
+pub use chain::{chain_on_grid, ChainGridOptions};
 use outline::Ctx;
 use prove::{Built, Stats};
 
@@ -268,7 +270,8 @@ pub fn offset_on_grid(
     let ctx = Ctx {
         curve,
         xf: curve.iter().map(|x| x.map(|v| v.approx())).collect(),
-        kernel: &kernel,
+        kernel: Some(&kernel),
+        corner_joints: false,
         reach: Reach::of(&kernel),
         gf: grid.approx(),
         grid: grid.clone(),

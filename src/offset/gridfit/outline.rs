@@ -53,7 +53,11 @@ pub(super) struct Joint {
 pub(super) struct Ctx<'a> {
     pub(super) curve: &'a [Bezier<Rational>],
     pub(super) xf: Vec<Bezier<f64>>,
-    pub(super) kernel: &'a Kernel,
+    /// The exact curve's kernel (`None`: the curve itself, [`super::chain_on_grid`]).
+    pub(super) kernel: Option<&'a Kernel>,
+    /// Sharp corners of the exact curve are nominal joints too (a chain's
+    /// corners; an offset's cusps are not).
+    pub(super) corner_joints: bool,
     pub(super) reach: Reach,
     pub(super) grid: Rational,
     pub(super) gf: f64,
@@ -258,9 +262,10 @@ impl Ctx<'_> {
             };
             out.push((s, pos, self.point(&c.parts[pos.part], pos.u)?));
         }
-        // the joints between parts (a cusp's tip among them) are samples too
+        // the joints between parts (a cusp's tip among them) are samples too:
+        // a range's last raw sample (`u = 1`) when another range follows
         for (k, r) in raw.iter().enumerate() {
-            if k > 0 && k + 1 < raw.len() && r.0.u == 0.0 {
+            if k > 0 && k + 1 < raw.len() && r.0.u == 1.0 {
                 out.push((r.2, r.0, r.1));
             }
         }

@@ -43,11 +43,13 @@ impl Ctx<'_> {
             if depth >= MAX_DEPTH
                 || stats.refits.load(std::sync::atomic::Ordering::Relaxed) >= self.max_splits
             {
+                log::trace!("gridfit split refused at depth {depth}: depth or split budget spent");
                 return None;
             }
             let d = dense.as_ref()?;
             let mid = d[d.len() / 2].0;
             if mid == a.pos || mid == b.pos {
+                log::trace!("gridfit split refused at depth {depth}: the middle is a joint");
                 return None;
             }
             // the walk stays inside (a, b); across the closing joint of a
@@ -66,7 +68,11 @@ impl Ctx<'_> {
                 (Pos { part: 0, u: 0.0 }, b.pos)
             };
             let len = self.length(c, a.pos, b.pos);
-            let (m, dist) = self.snap(c, mid, lo, hi, (0.25 * len).min(WINDOW_STEPS * self.gf))?;
+            let window = (0.25 * len).min(WINDOW_STEPS * self.gf);
+            let Some((m, dist)) = self.snap_split(c, mid, lo, hi, window, &[a.g, b.g]) else {
+                log::trace!("gridfit split refused at depth {depth}: no joint near {mid:?}");
+                return None;
+            };
             // a joint off the curve by more than tol/2 leaves the cubics less
             // room, but may still be proven: up to 0.9 tol
             if dist.is_nan()
@@ -76,6 +82,9 @@ impl Ctx<'_> {
                 || m.g == a.g
                 || m.g == b.g
             {
+                log::trace!(
+                    "gridfit split refused at depth {depth}: mid {mid:?} -> {m:?} (off {dist}), joints {a:?} {b:?}"
+                );
                 return None;
             }
             stats
@@ -192,7 +201,10 @@ impl Ctx<'_> {
 
     fn target_piece(&self, t: &Target) -> Option<CPiece> {
         match t {
-            Target::Span { piece, t } => self.kernel.span_piece(&self.curve[*piece], *t),
+            Target::Span { piece, t } => match self.kernel {
+                Some(k) => k.span_piece(&self.curve[*piece], *t),
+                None => crate::certify::piece::bezier_span(&self.curve[*piece], *t),
+            },
             Target::Arc(a) => CPiece::arc(a).ok(),
         }
     }
