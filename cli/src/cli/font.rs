@@ -418,6 +418,76 @@ fn prove(src: &Source, job: &Job, g: &mut GlyphResult) {
         g.bound = 0.0;
         return;
     }
+    let modes = job.modes();
+    for (k, &mode) in modes.iter().enumerate() {
+        match attempt(job, &pieces, mode) {
+            Err(e) => {
+                g.reason = e;
+                return;
+            }
+            Ok(mut a) => {
+                if !a.reasons.is_empty() && k + 1 < modes.len() {
+                    continue;
+                }
+                g.bound = a.bound;
+                g.contours = std::mem::take(&mut a.contours);
+                if a.reasons.is_empty() {
+                    g.verdict = Verdict::Proven;
+                } else {
+                    g.verdict = Verdict::NotProven;
+                    a.reasons.truncate(6);
+                    g.reason = a.reasons.join("; ");
+                }
+                return;
+            }
+        }
+    }
+}
+
+/// One stroke of a glyph and its outline on the grid.
+struct Attempt {
+    /// Why it is not proven (empty: proven).
+    reasons: Vec<String>,
+    /// The written contours, oriented.
+    contours: Vec<Vec<Bezier<Rational>>>,
+    /// The certified bound (stroke + arcs + grid).
+    bound: f64,
+}
+
+/// How a glyph's stroke is put on the grid.
+#[derive(Clone, Copy, Debug)]
+enum Mode {
+    /// Every control point rounded, the stroke at `0.9 (TOL − δ)`.
+    Round,
+    /// The outline refitted on the grid, the stroke at this share of TOL.
+    Fit(f64),
+}
+
+impl Job {
+    /// The modes tried in turn until one proves the glyph: rounding while
+    /// the grid's move `δ` leaves the stroke room (`δ ≤ ROUND_SHARE·TOL`:
+    /// alone; `δ < 0.9·TOL`: first), then the grid fit with two stroke shares
+    /// (other stroke pieces give other joints and corner fits).
+    fn modes(&self) -> Vec<Mode> {
+        let Some(grid) = &self.grid else {
+            return vec![Mode::Round];
+        };
+        let delta = lncert::offset::kernels::rounding_move(grid);
+        if delta <= ROUND_SHARE * self.tol {
+            return vec![Mode::Round];
+        }
+        let mut modes = Vec::new();
+        if delta < 0.9 * self.tol {
+            modes.push(Mode::Round);
+        }
+        modes.extend([Mode::Fit(FIT_STROKE_SHARE), Mode::Fit(0.2)]);
+        modes
+    }
+}
+
+/// The stroke and everything after it for one glyph in one mode; `Err`: the
+/// engine refused the glyph.
+fn attempt(job: &Job, pieces: &[Bezier<Rational>], mode: Mode) -> Result<Attempt, String> {
     let r = job.op.radius();
     let delta_grid = job
         .grid
@@ -425,20 +495,13 @@ fn prove(src: &Source, job: &Job, g: &mut GlyphResult) {
         .map(lncert::offset::kernels::rounding_move)
         .unwrap_or(0.0);
     let mut reasons: Vec<String> = Vec::new();
-    // a grid whose rounding move takes more than ROUND_SHARE of TOL: the
-    // stroke's outline is refitted on the grid instead of rounded
-    let fit_on_grid = job.grid.is_some() && delta_grid > ROUND_SHARE * job.tol;
-    let stroke_tol = if fit_on_grid {
-        FIT_STROKE_SHARE * job.tol
-    } else {
-        0.9 * (job.tol - delta_grid)
+    let (fit_on_grid, stroke_tol) = match mode {
+        Mode::Fit(share) if job.grid.is_some() => (true, share * job.tol),
+        _ => (false, 0.9 * (job.tol - delta_grid)),
     };
     let stroke_tol = match lncert::Tolerance::from_f64(stroke_tol) {
         Ok(t) => t,
-        Err(e) => {
-            g.reason = format!("no tolerance is left for the stroke: {e}");
-            return;
-        }
+        Err(e) => return Err(format!("no tolerance is left for the stroke: {e}")),
     };
     let mut opts = StrokeOptions::new(r.clone(), stroke_tol);
     opts.output = if job.quadratic {
@@ -448,12 +511,9 @@ fn prove(src: &Source, job: &Job, g: &mut GlyphResult) {
     };
     // what is left of TOL for the arcs' quadratics (cubic arcs take ~1e-7 r)
     let arc_target = 0.05 * (job.tol - if fit_on_grid { 0.0 } else { delta_grid });
-    let s = match stroke(&pieces, &opts) {
+    let s = match stroke(pieces, &opts) {
         Ok(s) => s,
-        Err(e) => {
-            g.reason = format!("the stroke engine refused the glyph: {e}");
-            return;
-        }
+        Err(e) => return Err(format!("the stroke engine refused the glyph: {e}")),
     };
     for (name, c) in [("a", &s.a), ("b", &s.b), ("c", &s.c)] {
         if !c.proven {
@@ -461,7 +521,7 @@ fn prove(src: &Source, job: &Job, g: &mut GlyphResult) {
         }
     }
     let stroke_bound = s.a.bound.max(s.b.bound);
-    let kept = select_contours(job, &pieces, &s.contours, &mut reasons);
+    let kept = select_contours(job, pieces, &s.contours, &mut reasons);
     if matches!(job.op, Op::Offset(_)) && !(stroke_bound < r.approx() && s.a.proven) {
         reasons.push(format!(
             "the in/out selection is not proven: it needs claim (a) with a bound below |D| = {r}"
@@ -489,7 +549,6 @@ fn prove(src: &Source, job: &Job, g: &mut GlyphResult) {
     };
     // rounded up: the sum of three proven bounds
     let bound = ((stroke_bound + arc_bound).next_up() + grid_bound).next_up();
-    g.bound = bound;
     // (a NaN bound is not proven either)
     if bound.is_nan() || bound > job.tol {
         reasons.push(format!(
@@ -504,15 +563,12 @@ fn prove(src: &Source, job: &Job, g: &mut GlyphResult) {
             false
         }
     };
-    let oriented = orient(&rounded, simple_ok, &mut reasons);
-    g.contours = oriented;
-    if reasons.is_empty() {
-        g.verdict = Verdict::Proven;
-    } else {
-        g.verdict = Verdict::NotProven;
-        reasons.truncate(6);
-        g.reason = reasons.join("; ");
-    }
+    let contours = orient(&rounded, simple_ok, &mut reasons);
+    Ok(Attempt {
+        reasons,
+        contours,
+        bound,
+    })
 }
 
 /// The selection of `--offset`: the stroke's contours outside the glyph's

@@ -18,16 +18,17 @@ impl Ctx<'_> {
         b: &Joint,
         dense: &[(Pos, DVec2)],
     ) -> Option<Bezier<f64>> {
-        let smooth = self.fit_smooth(c, a, b, dense);
         if !self.corner_joints {
-            return smooth;
+            return self.fit_smooth(c, a, b, dense);
         }
         let pts: Vec<DVec2> = dense.iter().map(|d| d.1).collect();
         let corners = self.corners_in(c, dense);
-        let cornered = if corners.is_empty() {
-            None
+        // a smooth fit cannot turn a corner (the caller splits until the
+        // corner's cubic can)
+        let (smooth, cornered) = if corners.is_empty() {
+            (self.fit_smooth(c, a, b, dense), None)
         } else {
-            self.corner_fit(&pts, a.g, b.g, &corners)
+            (None, self.corner_fit(&pts, a.g, b.g, &corners))
         };
         // the segment between the joints is the last resort (the proof
         // decides; a failed fit has nothing better to offer)
@@ -69,10 +70,11 @@ impl Ctx<'_> {
             .collect()
     }
 
-    /// The best (sampled two-sided error) cubic from `a` to `b` whose two
-    /// inner control points (a quadratic's one) are grid points within two
-    /// grid steps of a corner: a cubic with both at one point turns sharply
-    /// there without a loop.
+    /// A cubic from `a` to `b` turning a corner: its two inner control
+    /// points at the grid point within two grid steps of a corner with the
+    /// least sampled two-sided error (a cubic with both at one point turns
+    /// sharply there without a loop), then moved apart by grid steps while
+    /// the error falls. A quadratic takes the best such point.
     fn corner_fit(
         &self,
         pts: &[DVec2],
@@ -102,19 +104,81 @@ impl Ctx<'_> {
                 best = Some((s, bz));
             }
         };
-        if self.quadratic {
-            for &q in &near {
-                consider(Bezier::new(vec![v(a), v(q), v(b)]));
-            }
-        } else {
-            for &p in &near {
-                for &q in &near {
-                    consider(Bezier::new(vec![v(a), v(p), v(q), v(b)]));
+        // both inner points at each place (a quadratic's one), then the two
+        // moved apart by grid steps while the sampled error falls
+        for &q in &near {
+            consider(if self.quadratic {
+                Bezier::new(vec![v(a), v(q), v(b)])
+            } else {
+                Bezier::new(vec![v(a), v(q), v(q), v(b)])
+            });
+        }
+        let (mut err, mut out) = best?;
+        if !self.quadratic {
+            let steps = [
+                DVec2::new(self.gf, 0.0),
+                DVec2::new(-self.gf, 0.0),
+                DVec2::new(0.0, self.gf),
+                DVec2::new(0.0, -self.gf),
+            ];
+            for _ in 0..16 {
+                let p: Vec<DVec2> = out.points().iter().map(dv).collect();
+                let mut improved = false;
+                for i in 1..=2 {
+                    for d in steps {
+                        let mut t = p.clone();
+                        t[i] += d;
+                        let cand = Bezier::new(t.iter().map(|x| v(*x)).collect());
+                        let e2 = self.score(pts, &cand);
+                        if e2 < err {
+                            (err, out) = (e2, cand);
+                            improved = true;
+                        }
+                    }
+                }
+                if !improved {
+                    break;
                 }
             }
         }
-        let out = best?.1;
         fit::round_to_grid(&out, &self.grid).filter(|r| *r == out)
+    }
+
+    /// On a chain, between two joints on one piece of the same degree as the
+    /// output: that piece restricted to the joints' span, its ends replaced by
+    /// the joints' grid points and its inner control points rounded to the
+    /// grid, when its sampled error is within half the tolerance (the
+    /// chain's pieces are fitted curves already: refitting them costs more
+    /// and rarely does better).
+    fn chain_restriction(
+        &self,
+        c: &Contour,
+        a: &Joint,
+        b: &Joint,
+        pts: &[DVec2],
+    ) -> Option<Bezier<f64>> {
+        let degree = if self.quadratic { 2 } else { 3 };
+        if !self.corner_joints || a.pos.part != b.pos.part || !a.pos.before(b.pos) {
+            return None;
+        }
+        let part = &c.parts[a.pos.part];
+        let super::outline::Part::Span { piece, .. } = part else {
+            return None;
+        };
+        let x = &self.xf[*piece];
+        if x.degree() != degree {
+            return None;
+        }
+        let sub = x.restrict(&part.param(a.pos.u), &part.param(b.pos.u));
+        let p = sub.points();
+        let v = |p: DVec2| V2::new(p.x, p.y);
+        let mut out = vec![v(a.g)];
+        for q in &p[1..degree] {
+            out.push(v(self.exact_grid(dv(q))?));
+        }
+        out.push(v(b.g));
+        let out = Bezier::new(out);
+        (self.score(pts, &out) <= 0.5 * self.tol.value()).then_some(out)
     }
 
     /// The smooth fit between two joints (see [`Self::fit`]).
@@ -145,6 +209,9 @@ impl Ctx<'_> {
                 return Some(line);
             }
         }
+        if let Some(sub) = self.chain_restriction(c, a, b, &pts) {
+            return Some(sub);
+        }
         if self.quadratic {
             return self.fit_quadratic(&e, &pts, a.g, b.g);
         }
@@ -167,7 +234,9 @@ impl Ctx<'_> {
         let refined = fit::refine_minimax(&e, &pts, best);
         // where the end tangents constrain too much (a hairpin round a cusp,
         // joints moved off their nominal places) free both inner points
-        let refined = if two_sided(&pts, &refined) > 0.25 * self.tol.value() {
+        // (on a chain, whose fits are proven cheaply, only when far off)
+        let free_above = if self.corner_joints { 0.6 } else { 0.25 };
+        let refined = if two_sided(&pts, &refined) > free_above * self.tol.value() {
             free_inner_points(&pts, refined)
         } else {
             refined
@@ -278,18 +347,24 @@ impl Ctx<'_> {
 const LINE_SHARE: f64 = 0.5;
 
 /// Every two consecutive legs of the control polygon (non-zero) turn by
-/// less than 120°; or a cubic's middle leg is zero and the outer two are
-/// not opposite.
+/// less than 120°; or, for a quadratic and for a cubic whose middle leg is
+/// zero, the two (outer) legs are not opposite.
 fn forward_legs(b: &Bezier<f64>) -> bool {
     let p: Vec<DVec2> = b.points().iter().map(dv).collect();
     let legs: Vec<DVec2> = p.windows(2).map(|w| w[1] - w[0]).collect();
-    // a cubic with its two inner points at one place: the hodograph
-    // `(1−t)²·l₀ + t²·l₂` turns by less than a half turn (no loop), unless
-    // the outer legs are opposite
-    if let [l0, l1, l2] = legs[..] {
-        if l1 == DVec2::ZERO && l0 != DVec2::ZERO && l2 != DVec2::ZERO {
-            return l0.perp_dot(l2) != 0.0 || l0.dot(l2) > 0.0;
-        }
+    // a quadratic (hodograph `(1−t)·l₀ + t·l₁`), or a cubic with its two
+    // inner points at one place (hodograph `(1−t)²·l₀ + t²·l₂`): the tangent
+    // turns by less than a half turn and the curve does not retrace itself,
+    // unless the two legs are opposite
+    let outer = match legs[..] {
+        [l0, l1] => Some((l0, l1)),
+        [l0, l1, l2] if l1 == DVec2::ZERO => Some((l0, l2)),
+        _ => None,
+    };
+    if let Some((l0, l1)) = outer {
+        return l0 != DVec2::ZERO
+            && l1 != DVec2::ZERO
+            && (l0.perp_dot(l1) != 0.0 || l0.dot(l1) > 0.0);
     }
     legs.iter().all(|l| *l != DVec2::ZERO)
         && legs
