@@ -22,12 +22,17 @@
 //!   (glyphs without outline, such as the space, are written empty).
 //!   Composites are decomposed.
 //! * `--grid G` (default `1`: integer font units; a positive dyadic rational
-//!   such as `1/2`, or `none`): every control point is rounded to the grid
-//!   (`none`: to the nearest `f64`); the move of each control point is at most
-//!   `δ`, so the pieces move pointwise at most `δ` (Bernstein weights sum to
-//!   1), `δ` is charged to the bound, and claim (c) — closed, simple, disjoint
-//!   contours — is checked again on the rounded contours. The stroke is asked
-//!   for `TOL − δ` (`0.9·TOL` without grid) so that the total can meet `TOL`.
+//!   such as `1/2`, or `none`): every control point on the grid. While the
+//!   grid's rounding move `δ = G·√2/2` is at most `TOL/2`, every control point
+//!   is rounded (`none`: to the nearest `f64`); the move of each control point
+//!   is at most `δ`, so the pieces move pointwise at most `δ` (Bernstein
+//!   weights sum to 1), `δ` is charged to the bound, and the stroke is asked
+//!   for `0.9 (TOL − δ)`. Above that the stroke is asked for `0.3·TOL` (then
+//!   `0.2·TOL`) and its outline is refitted on the grid
+//!   ([`lncert::offset::chain_on_grid`]: joints moved along the outline to
+//!   grid points, every piece proven against its span of it), the fit's
+//!   certified bound charged instead. Either way claim (c) — closed, simple,
+//!   disjoint contours — is checked again on the contours written.
 //! * Output: cubic pieces (and lines); the stroke's exact arcs are converted to
 //!   certified cubics ([`lncert::shape::svgarc::circular_arc_cubics`]) and
 //!   their bound charged. `--output quadratic` (TrueType): the stroke's sides
@@ -94,7 +99,8 @@ pub struct FontArgs {
     /// certified quadratics).
     #[arg(long, value_enum, default_value_t = FontOutput::Cubic)]
     pub output: FontOutput,
-    /// The grid control points are rounded to (`1`, `1/2`, ... or `none`).
+    /// The grid every control point is on (`1`, `1/2`, ... or `none`):
+    /// rounded to it, or fitted on it when its rounding move exceeds TOL/2.
     #[arg(long, default_value = "1")]
     pub grid: String,
     /// Write a report: `.json` or `.html`.
