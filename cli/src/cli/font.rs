@@ -465,14 +465,17 @@ struct Attempt {
 enum Mode {
     /// Every control point rounded, the stroke at `0.9 (TOL − δ)`.
     Round,
-    /// The outline refitted on the grid, the stroke at this share of TOL.
-    Fit(f64),
+    /// The outline refitted on the grid, the stroke at this share of TOL,
+    /// corner turns up to `acos(−hairpin_cos)`
+    /// ([`lncert::offset::ChainGridOptions::hairpin_cos`]).
+    Fit(f64, f64),
 }
 
 impl Job {
     /// The modes tried in turn until one proves the glyph: rounding while
     /// the grid's move `δ` leaves the stroke room (`δ ≤ ROUND_SHARE·TOL`:
-    /// alone; `δ < 0.9·TOL`: first), then the grid fit with two stroke shares
+    /// alone; `δ < 0.9·TOL`: first), then the grid fit with any corner turn,
+    /// with turns below 154°, and both again with a second stroke share
     /// (other stroke pieces give other joints and corner fits).
     fn modes(&self) -> Vec<Mode> {
         let Some(grid) = &self.grid else {
@@ -486,7 +489,12 @@ impl Job {
         if delta < 0.9 * self.tol {
             modes.push(Mode::Round);
         }
-        modes.extend([Mode::Fit(FIT_STROKE_SHARE), Mode::Fit(0.2)]);
+        modes.extend([
+            Mode::Fit(FIT_STROKE_SHARE, 1.0),
+            Mode::Fit(FIT_STROKE_SHARE, 0.9),
+            Mode::Fit(0.2, 1.0),
+            Mode::Fit(0.2, 0.9),
+        ]);
         modes
     }
 }
@@ -502,7 +510,7 @@ fn attempt(job: &Job, pieces: &[Bezier<Rational>], mode: Mode) -> Result<Attempt
         .unwrap_or(0.0);
     let mut reasons: Vec<String> = Vec::new();
     let (fit_on_grid, stroke_tol) = match mode {
-        Mode::Fit(share) if job.grid.is_some() => (true, share * job.tol),
+        Mode::Fit(share, _) if job.grid.is_some() => (true, share * job.tol),
         _ => (false, 0.9 * (job.tol - delta_grid)),
     };
     let stroke_tol = match lncert::Tolerance::from_f64(stroke_tol) {
@@ -537,7 +545,17 @@ fn attempt(job: &Job, pieces: &[Bezier<Rational>], mode: Mode) -> Result<Attempt
     let (rounded, grid_bound, grid_what) = match (&job.grid, fit_on_grid) {
         (Some(grid), true) => {
             let left = (job.tol - (stroke_bound + arc_bound).next_up()) * 0.999;
-            let fitted = fit_contours(&contours, grid, left, job.quadratic, &mut reasons);
+            let hairpin_cos = match mode {
+                Mode::Fit(_, h) => h,
+                Mode::Round => 1.0,
+            };
+            let fitted = fit_contours(
+                &contours,
+                grid,
+                left,
+                (job.quadratic, hairpin_cos),
+                &mut reasons,
+            );
             if !fitted.1.is_finite() && delta_grid >= job.tol {
                 if let Some(f) = finer_grid(job.tol) {
                     reasons.push(format!(
@@ -687,7 +705,7 @@ fn fit_contours(
     contours: &[Vec<Bezier<Rational>>],
     grid: &Rational,
     left: f64,
-    quadratic: bool,
+    (quadratic, hairpin_cos): (bool, f64),
     reasons: &mut Vec<String>,
 ) -> (Vec<Vec<Bezier<Rational>>>, f64, &'static str) {
     let what = "grid fit";
@@ -702,6 +720,7 @@ fn fit_contours(
     };
     let mut opts = lncert::offset::ChainGridOptions::new(grid.clone(), tol);
     opts.quadratic = quadratic;
+    opts.hairpin_cos = hairpin_cos;
     let r = match lncert::offset::chain_on_grid(contours, &opts) {
         Ok(r) => r,
         Err(e) => {

@@ -25,6 +25,11 @@ pub struct ChainGridOptions {
     pub max_boxes: usize,
     /// Splits after failed proofs, in all.
     pub max_splits: usize,
+    /// A quadratic, or a cubic with both inner points at one place, may turn
+    /// by less than `acos(−hairpin_cos)`: `1` (the default) allows any turn
+    /// short of a reversal (the sharp tips of `V`, `w`); `0.9` stops at about
+    /// 154° (a tip that sharp may cross its neighbours next to its joint).
+    pub hairpin_cos: f64,
 }
 
 impl ChainGridOptions {
@@ -36,6 +41,7 @@ impl ChainGridOptions {
             quadratic: false,
             max_boxes: 50_000,
             max_splits: 20_000,
+            hairpin_cos: 1.0,
         }
     }
 }
@@ -131,6 +137,7 @@ pub fn chain_on_grid(
         xf: curve.iter().map(|x| x.map(|v| v.approx())).collect(),
         kernel: None,
         corner_joints: true,
+        hairpin_cos: opts.hairpin_cos,
         reach: Reach::Offset(0.0),
         gf: opts.grid.approx(),
         grid: opts.grid.clone(),

@@ -283,7 +283,7 @@ impl Ctx<'_> {
     /// whenever a neighbour is not.
     fn score(&self, pts: &[DVec2], b: &Bezier<f64>) -> f64 {
         let e = two_sided(pts, b);
-        if self.corner_joints && !forward_legs(b) {
+        if self.corner_joints && !forward_legs(b, self.hairpin_cos) {
             e + 1e6 * (1.0 + self.tol.value())
         } else {
             e
@@ -300,7 +300,7 @@ impl Ctx<'_> {
         b: DVec2,
         fitted: Bezier<f64>,
     ) -> Option<Bezier<f64>> {
-        if !self.corner_joints || forward_legs(&fitted) {
+        if !self.corner_joints || forward_legs(&fitted, self.hairpin_cos) {
             return Some(fitted);
         }
         let v = |p: DVec2| V2::new(p.x, p.y);
@@ -348,14 +348,15 @@ const LINE_SHARE: f64 = 0.5;
 
 /// Every two consecutive legs of the control polygon (non-zero) turn by
 /// less than 120°; or, for a quadratic and for a cubic whose middle leg is
-/// zero, the two (outer) legs are not opposite.
-fn forward_legs(b: &Bezier<f64>) -> bool {
+/// zero, the two (outer) legs turn by less than `acos(−hairpin_cos)`.
+fn forward_legs(b: &Bezier<f64>, hairpin_cos: f64) -> bool {
     let p: Vec<DVec2> = b.points().iter().map(dv).collect();
     let legs: Vec<DVec2> = p.windows(2).map(|w| w[1] - w[0]).collect();
     // a quadratic (hodograph `(1−t)·l₀ + t·l₁`), or a cubic with its two
     // inner points at one place (hodograph `(1−t)²·l₀ + t²·l₂`): the tangent
     // turns by less than a half turn and the curve does not retrace itself,
-    // unless the two legs are opposite
+    // unless the two legs are opposite (`hairpin_cos < 1` refuses sharper
+    // turns too: they nearly retrace and cross their neighbours)
     let outer = match legs[..] {
         [l0, l1] => Some((l0, l1)),
         [l0, l1, l2] if l1 == DVec2::ZERO => Some((l0, l2)),
@@ -364,7 +365,7 @@ fn forward_legs(b: &Bezier<f64>) -> bool {
     if let Some((l0, l1)) = outer {
         return l0 != DVec2::ZERO
             && l1 != DVec2::ZERO
-            && (l0.perp_dot(l1) != 0.0 || l0.dot(l1) > 0.0);
+            && l0.dot(l1) > -hairpin_cos * l0.length() * l1.length();
     }
     legs.iter().all(|l| *l != DVec2::ZERO)
         && legs

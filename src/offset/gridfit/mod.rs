@@ -272,6 +272,7 @@ pub fn offset_on_grid(
         xf: curve.iter().map(|x| x.map(|v| v.approx())).collect(),
         kernel: Some(&kernel),
         corner_joints: false,
+        hairpin_cos: 1.0,
         reach: Reach::of(&kernel),
         gf: grid.approx(),
         grid: grid.clone(),

@@ -58,6 +58,8 @@ pub(super) struct Ctx<'a> {
     /// Sharp corners of the exact curve are nominal joints too (a chain's
     /// corners; an offset's cusps are not).
     pub(super) corner_joints: bool,
+    /// [`super::ChainGridOptions::hairpin_cos`].
+    pub(super) hairpin_cos: f64,
     pub(super) reach: Reach,
     pub(super) grid: Rational,
     pub(super) gf: f64,
