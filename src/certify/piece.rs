@@ -277,16 +277,7 @@ pub(crate) fn conv_span(
     q: (Interval, Interval, Interval),
     sigma: i8,
 ) -> Option<Piece> {
-    if !(t.0.is_finite() && t.1.is_finite() && t.0 < t.1) || x.points().is_empty() {
-        return None;
-    }
-    let (p0, p1) = (
-        Interval::try_from((t.0, t.0)).ok()?,
-        Interval::try_from((t.1, t.1)).ok()?,
-    );
-    let span = x.map(iv).restrict(&p0, &p1);
-    let pts: Vec<(Interval, Interval)> = span.points().iter().map(|p| (p.x, p.y)).collect();
-    let [pts, hod, hod2, hod3] = hodographs_iv(pts);
+    let [pts, hod, hod2, hod3] = hodographs_iv(span_iv(x, t)?);
     let data = PieceData::Conv {
         pts,
         hod,
@@ -298,10 +289,9 @@ pub(crate) fn conv_span(
     Some(Piece::from_iv(data, (0.0, 1.0), (0.0, 1.0)))
 }
 
-/// The piece of the span `[t₀, t₁]` of the Bézier curve `x` itself (its
-/// exact restriction, enclosed in interval arithmetic as [`offset_span`]
-/// encloses an offset's).
-pub(crate) fn bezier_span(x: &Bezier<Rational>, t: (f64, f64)) -> Option<Piece> {
+/// Enclosures of the control points of `x` restricted to `[t₀, t₁]` (`None`
+/// unless `t₀ < t₁` are finite and `x` has points).
+fn span_iv(x: &Bezier<Rational>, t: (f64, f64)) -> Option<Vec<(Interval, Interval)>> {
     if !(t.0.is_finite() && t.1.is_finite() && t.0 < t.1) || x.points().is_empty() {
         return None;
     }
@@ -310,8 +300,14 @@ pub(crate) fn bezier_span(x: &Bezier<Rational>, t: (f64, f64)) -> Option<Piece> 
         Interval::try_from((t.1, t.1)).ok()?,
     );
     let span = x.map(iv).restrict(&p0, &p1);
-    let pts: Vec<(Interval, Interval)> = span.points().iter().map(|p| (p.x, p.y)).collect();
-    let [pts, d1, d2, _] = hodographs_iv(pts);
+    Some(span.points().iter().map(|p| (p.x, p.y)).collect())
+}
+
+/// The piece of the span `[t₀, t₁]` of the Bézier curve `x` itself (its
+/// exact restriction, enclosed in interval arithmetic as [`offset_span`]
+/// encloses an offset's).
+pub(crate) fn bezier_span(x: &Bezier<Rational>, t: (f64, f64)) -> Option<Piece> {
+    let [pts, d1, d2, _] = hodographs_iv(span_iv(x, t)?);
     Some(Piece::from_iv(
         PieceData::Bez { pts, d1, d2 },
         (0.0, 1.0),

@@ -735,19 +735,11 @@ fn fit_contours(
             r.segments.len()
         ));
     }
-    let exact = |b: &Bezier<f64>| -> Option<Bezier<Rational>> {
-        let pts = b
-            .points()
-            .iter()
-            .map(|p| Some(V2::new(rational_from_f64(p.x)?, rational_from_f64(p.y)?)))
-            .collect::<Option<Vec<_>>>()?;
-        Some(Bezier::new(pts))
-    };
     let mut out = Vec::new();
     for &(first, n, _) in &r.contours {
         let c: Option<Vec<Bezier<Rational>>> = r.segments[first..first + n]
             .iter()
-            .map(|s| exact(&s.bezier))
+            .map(|s| lncert::offset::exact_bezier(&s.bezier))
             .collect();
         match c {
             Some(c) if !c.is_empty() => out.push(c),

@@ -5,10 +5,10 @@
 use super::outline::{Contour, Ctx, Part};
 use super::prove::{self, Built, Stats};
 use super::{GridOffset, OffsetError};
-use crate::curve::{Bezier, V2};
+use crate::curve::Bezier;
 use crate::offset::fit::{self, Reach};
 use crate::offset::options::bad;
-use crate::scalar::{rational_from_f64, Rational, Scalar};
+use crate::scalar::{Rational, Scalar};
 use crate::Tolerance;
 use num_traits::{Signed, Zero};
 
@@ -216,10 +216,8 @@ pub(super) fn as_segment(b: &Bezier<f64>) -> Option<Bezier<f64>> {
     if pts.len() < 3 {
         return None;
     }
-    let q: Vec<V2<Rational>> = pts
-        .iter()
-        .map(|p| Some(V2::new(rational_from_f64(p.x)?, rational_from_f64(p.y)?)))
-        .collect::<Option<_>>()?;
+    let exact = crate::offset::exact_bezier(b)?;
+    let q = exact.points();
     let (a, z) = (&q[0], &q[q.len() - 1]);
     let d = z.sub(a);
     let len2 = d.dot(&d);
