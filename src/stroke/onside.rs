@@ -608,6 +608,12 @@ impl Input {
                 break;
             }
             let q = &self.pieces[j];
+            // a neighbour wholly farther than r needs no window: the far
+            // test passes it by the same box test (stopping a chain early is
+            // always sound, it only leaves more to the far test)
+            if box_dist2_lo(e, &q.bb) > self.r2.sup() {
+                break;
+            }
             if !jn.g1 {
                 // g_j′ at the joint (towards i) must be ≤ 0: for a previous
                 // piece (E − c)·x_j′(1) > 0, for a next one (E − c)·x_j′(0) < 0
