@@ -621,6 +621,19 @@ fn check_pieces(c: &[Bezier<Rational>], field: &str) -> Result<(), ShapeError> {
     Ok(())
 }
 
+/// Some direction `v` (the first or last control point, or their sum) has
+/// `v·h_k > 0` for every control point `h_k` of the hodograph `h`, exactly:
+/// then `v·x′(t) = Σ B_k(t) v·h_k > 0` on `[0, 1]` (the Bernstein weights are
+/// nonnegative and sum to 1), so `x′` has no zero there. The common case,
+/// decided without the polynomial gcd.
+fn one_sided(h: &Bezier<Rational>) -> bool {
+    let p = h.points();
+    let (first, last) = (&p[0], &p[p.len() - 1]);
+    [first.clone(), last.clone(), first.add(last)]
+        .iter()
+        .any(|v| p.iter().all(|q| v.dot(q).is_positive()))
+}
+
 /// The offset and the convolution need a normal everywhere: `x′(t) ≠ 0` on `[0, 1]`,
 /// decided exactly (no common root of `x′` and `y′`).
 fn check_regular(c: &[Bezier<Rational>], field: &str) -> Result<(), ShapeError> {
@@ -628,7 +641,11 @@ fn check_regular(c: &[Bezier<Rational>], field: &str) -> Result<(), ShapeError> 
         if b.degree() == 0 {
             return Err(err(format!("{field}[{i}]"), "a single point has no normal"));
         }
-        let (dx, dy) = b.hodograph().power_coords();
+        let h = b.hodograph();
+        if one_sided(&h) {
+            continue;
+        }
+        let (dx, dy) = h.power_coords();
         let (dx, dy) = (dx.trimmed(), dy.trimmed());
         let all_zero =
             dx.coeffs().iter().all(Zero::is_zero) && dy.coeffs().iter().all(Zero::is_zero);
@@ -640,4 +657,70 @@ fn check_regular(c: &[Bezier<Rational>], field: &str) -> Result<(), ShapeError> 
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// The exact decision alone: `x′` and `y′` have a common root on
+    /// `[0, 1]` (or vanish identically).
+    fn singular_by_gcd(b: &Bezier<Rational>) -> bool {
+        let (dx, dy) = b.hodograph().power_coords();
+        let (dx, dy) = (dx.trimmed(), dy.trimmed());
+        (dx.coeffs().iter().all(Zero::is_zero) && dy.coeffs().iter().all(Zero::is_zero))
+            || has_common_root_in(&dx, &dy, &Span::unit_closed())
+    }
+
+    fn cubic(p: [(i64, i64); 4]) -> Bezier<Rational> {
+        Bezier::new(
+            p.iter()
+                .map(|&(x, y)| {
+                    V2::new(
+                        Rational::from_integer(x.into()),
+                        Rational::from_integer(y.into()),
+                    )
+                })
+                .collect(),
+        )
+    }
+
+    #[test]
+    fn singular_cubics_are_not_one_sided() {
+        // a cusp at t = 1/2, a zero end derivative, a reversal (a quadratic
+        // whose control point lies beyond its end), a point
+        for b in [
+            cubic([(0, 0), (1, 1), (0, 1), (1, 0)]),
+            cubic([(0, 0), (0, 0), (1, 2), (3, 1)]),
+            Bezier::new(cubic([(0, 0), (4, 0), (2, 0), (2, 0)]).points()[..3].to_vec()),
+        ] {
+            assert!(singular_by_gcd(&b), "{b:?}");
+            assert!(!one_sided(&b.hodograph()), "{b:?}");
+            assert!(check_regular(std::slice::from_ref(&b), "curve").is_err());
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(512))]
+
+        /// The hull filter never accepts a singular piece: wherever it
+        /// decides, the exact gcd test finds no common root; and the checked
+        /// verdict is the gcd's on every piece.
+        #[test]
+        fn the_hull_filter_agrees_with_the_exact_gcd(
+            p in proptest::collection::vec((-6i64..=6, -6i64..=6), 2..=5)
+        ) {
+            let b = Bezier::new(
+                p.iter()
+                    .map(|&(x, y)| V2::new(Rational::from_integer(x.into()), Rational::from_integer(y.into())))
+                    .collect(),
+            );
+            let singular = singular_by_gcd(&b);
+            if one_sided(&b.hodograph()) {
+                prop_assert!(!singular);
+            }
+            prop_assert_eq!(check_regular(std::slice::from_ref(&b), "curve").is_err(), singular);
+        }
+    }
 }
