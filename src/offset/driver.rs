@@ -146,9 +146,10 @@ fn construct(
     x: &Bezier<Rational>,
     t: (f64, f64),
     kernel: &Kernel,
+    target: f64,
 ) -> Option<(Bezier<f64>, Option<lnpair::LnPairPiece>)> {
     if output != Output::Native {
-        return fit::construct(output, x, t, kernel).map(|b| (b, None));
+        return fit::construct(output, x, t, kernel, target).map(|b| (b, None));
     }
     let sub = span_f64(x, t)?;
     let d = match kernel {
@@ -206,7 +207,11 @@ fn certify_segment(
     searches: &std::sync::atomic::AtomicUsize,
 ) -> (Option<OffsetSegment>, f64, bool) {
     let split = 0.5;
-    let Some((built, pair)) = construct(opts.method, opts.output, x, task.t, kernel) else {
+    let target = match &opts.grid {
+        None => opts.tol.value(),
+        Some(g) => opts.tol.value() - fit::rounding_move(g),
+    };
+    let Some((built, pair)) = construct(opts.method, opts.output, x, task.t, kernel, target) else {
         return (None, split_point(opts, x, task.t, kernel, None), false);
     };
     let Some((bez, unrounded, fit_tol)) = on_grid(built, opts) else {

@@ -532,13 +532,22 @@ const LS_SAMPLES: usize = 16;
 /// Interior samples (dense) for choosing among candidates.
 const CHOICE_SAMPLES: usize = 48;
 
+/// The sampled error band, as multiples of the span's target, in which a
+/// cubic candidate is refined ([`refine_minimax`], about 40 sampled-error
+/// evaluations): below it the proof has room to spare, above it no handle
+/// lengths bring the span within its target (the driver splits it unproven).
+const REFINE_BAND: (f64, f64) = (0.25, 16.0);
+
 /// The fitted segment of one span (`output` Cubic or Quadratic): `None` when
-/// no candidate exists (the driver splits the span).
+/// no candidate exists (the driver splits the span). `target`: the error the
+/// segment is to be proven within (only the effort spent on refining the
+/// choice depends on it).
 pub(super) fn construct(
     output: super::Output,
     x: &Bezier<Rational>,
     t: (f64, f64),
     kernel: &Kernel,
+    target: f64,
 ) -> Option<Bezier<f64>> {
     let sub = super::span_f64(x, t)?;
     let reach = Reach::of(kernel);
@@ -576,6 +585,10 @@ pub(super) fn construct(
                 .map(|c| (sampled_error(&dense, &c), c))
                 .filter(|(err, _)| err.is_finite())
                 .min_by(|a, b| a.0.total_cmp(&b.0))?;
+            let (lo, hi) = (REFINE_BAND.0 * target, REFINE_BAND.1 * target);
+            if !(best.0 > lo && best.0 < hi) {
+                return Some(best.1);
+            }
             Some(refine_minimax(&e, &dense, best))
         }
     }
