@@ -7,6 +7,8 @@
 //! ```sh
 //! cargo run --release --example icon_strokes
 //! SKIA_PYTHON=/tmp/skvenv/bin/python cargo run --release --example icon_strokes
+//! # only the elements whose names contain `heart`, 50 lncert runs (profiling)
+//! LNCERT_RUNS=50 cargo run --release --example icon_strokes -- heart
 //! ```
 //!
 //! The icon elements are written below ([`ICONS`], viewBox 0 0 24 24) and read
@@ -75,6 +77,7 @@ const ICONS: [(&str, &str); 8] = [
 /// Pen radius (stroke-width 2).
 const RADIUS: i64 = 1;
 const TOL: f64 = 1e-2;
+/// lncert runs per element (the environment variable `LNCERT_RUNS` overrides).
 const LNCERT_RUNS: usize = 5;
 const KURBO_RUNS: usize = 1000;
 
@@ -181,13 +184,21 @@ struct LncertRun {
     stroke: Stroke,
 }
 
+fn lncert_runs() -> usize {
+    std::env::var("LNCERT_RUNS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .filter(|&n| n > 0)
+        .unwrap_or(LNCERT_RUNS)
+}
+
 fn run_lncert(name: &str, curve: &[Bezier<Rational>]) -> Result<LncertRun, String> {
     let tol = lncert::Tolerance::from_f64(TOL).map_err(|e| e.to_string())?;
     let mut o = StrokeOptions::new(Rational::from_integer(RADIUS.into()), tol);
     o.output = Output::Cubic;
     let mut times = Vec::new();
     let mut first: Option<Stroke> = None;
-    for _ in 0..LNCERT_RUNS {
+    for _ in 0..lncert_runs() {
         let t0 = Instant::now();
         let s = stroke(curve, &o).map_err(|e| e.to_string())?;
         times.push(t0.elapsed().as_secs_f64());
@@ -364,7 +375,12 @@ fn main() {
     );
     let mut rows = Vec::new();
     let mut paths = Vec::new();
+    // names given on the command line select the elements containing them
+    let only: Vec<String> = std::env::args().skip(1).collect();
     for (name, element) in ICONS {
+        if !only.is_empty() && !only.iter().any(|o| name.contains(o.as_str())) {
+            continue;
+        }
         let curve = match lncert::shape::parse_svg_document(&document(element)) {
             Ok(c) => c,
             Err(e) => {
@@ -387,8 +403,9 @@ fn main() {
     let skia_cols = skia.is_ok();
 
     print!(
-        "| element | input pieces | lncert first | lncert median ({LNCERT_RUNS}) | claims | pieces out | closed | \
-         kurbo median ({KURBO_RUNS}) | kurbo segs | lncert/kurbo |"
+        "| element | input pieces | lncert first | lncert median ({}) | claims | pieces out | closed | \
+         kurbo median ({KURBO_RUNS}) | kurbo segs | lncert/kurbo |",
+        lncert_runs()
     );
     if skia_cols {
         print!(" Skia (TOL) | Skia segs | Skia res 1 | lncert/Skia |");
