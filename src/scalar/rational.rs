@@ -238,11 +238,34 @@ fn parse_decimal(s: &str) -> Result<Rational, &'static str> {
 /// assert!(rational_from_f64(f64::NAN).is_none());
 /// ```
 pub fn rational_from_f64(x: f64) -> Option<Rational> {
-    if x.is_finite() {
-        Rational::from_float(x)
-    } else {
-        None
+    if !x.is_finite() {
+        return None;
     }
+    if x == 0.0 {
+        return Some(<Rational as Zero>::zero());
+    }
+    // x = ±m·2^e with m odd after stripping trailing zeros: already in lowest
+    // terms (an odd numerator over a power of two), so no gcd is needed
+    let bits = x.to_bits();
+    let exp = ((bits >> 52) & 0x7ff) as i64;
+    let frac = bits & ((1u64 << 52) - 1);
+    let (m, e) = if exp == 0 {
+        (frac, -1074)
+    } else {
+        (frac | (1u64 << 52), exp - 1075)
+    };
+    let tz = m.trailing_zeros();
+    let (m, e) = (m >> tz, e + tz as i64);
+    let n = if x < 0.0 {
+        -BigInt::from(m)
+    } else {
+        BigInt::from(m)
+    };
+    Some(if e >= 0 {
+        Rational::from_integer(n << e as usize)
+    } else {
+        Rational::new_raw(n, BigInt::one() << (-e) as usize)
+    })
 }
 
 /// `|r| ≤ 10^e`, decided exactly.
@@ -271,6 +294,18 @@ pub fn rational_to_string(r: &Rational) -> String {
 
 /// Nearest float (ties to even) of a rational; `±inf` beyond the float range.
 pub(crate) fn rational_to_f64_nearest(r: &Rational) -> f64 {
+    if let Some(x) = dyadic_f64(r) {
+        return x;
+    }
+    if let Some(x) = normal_nearest(r) {
+        return x;
+    }
+    nearest_by_bracket(r)
+}
+
+/// [`rational_to_f64_nearest`] by the bracket and an exact comparison of the
+/// distances to its ends (the general path, and the tests' oracle).
+fn nearest_by_bracket(r: &Rational) -> f64 {
     let (lo, hi) = rational_to_f64_bracket(r);
     if lo == hi {
         return lo;
@@ -397,6 +432,55 @@ fn normal_bracket(r: &Rational) -> Option<(f64, f64)> {
     })
 }
 
+/// The nearest float (ties to even) by one big-integer division when it is a
+/// normal float: `q = ⌊|n| 2^s / d⌋` with 54 significant bits, whose last bit
+/// is the half-ulp bit and whose remainder is the sticky bit, so `⌊q/2⌋`
+/// rounded to nearest even by them is the significand. `None` outside the
+/// normal range (the caller brackets instead).
+fn normal_nearest(r: &Rational) -> Option<f64> {
+    let (n, d) = (r.numer(), r.denom());
+    if n.is_zero() {
+        return Some(0.0);
+    }
+    let (a, b) = (n.magnitude(), d.magnitude());
+    // 2^(e − 1) < |r| < 2^(e + 1)
+    let e = a.bits() as i64 - b.bits() as i64;
+    if !(-1000..=1000).contains(&e) {
+        return None;
+    }
+    // s so that 2^53 ≤ |r| 2^s < 2^55; then one bit less if needed
+    let mut s = 54 - e;
+    let div = |s: i64| {
+        let (num, den) = if s >= 0 {
+            (a << s as usize, b.clone())
+        } else {
+            (a.clone(), b << (-s) as usize)
+        };
+        let (q, rem) = num_integer::Integer::div_rem(&num, &den);
+        (q, rem.is_zero())
+    };
+    let (mut q, mut exact) = div(s);
+    if q.bits() > 54 {
+        s -= 1;
+        (q, exact) = div(s);
+    }
+    if q.bits() != 54 {
+        return None;
+    }
+    let q = q.to_u64()?;
+    let (mut m, half) = (q >> 1, q & 1 == 1);
+    if half && (!exact || m & 1 == 1) {
+        m += 1; // at most 2^53: still exact in a float
+    }
+    // |r| rounds to m·2^-(s − 1); the scale is an exact power of two
+    let scale = 2f64.powi(-(s as i32 - 1));
+    let v = m as f64 * scale;
+    if !(v.is_normal() && scale.is_normal()) {
+        return None;
+    }
+    Some(if r.is_negative() { -v } else { v })
+}
+
 /// A float close to `r` (within a few ulps) without overflow on huge numerators.
 fn approx_quotient(r: &Rational) -> f64 {
     let (n, d) = (r.numer(), r.denom());
@@ -499,6 +583,75 @@ mod tests {
         assert!(checked > 3000, "{checked}");
         assert_eq!(normal_bracket(&parse_rational("1e-320").unwrap()), None);
         assert_eq!(normal_bracket(&parse_rational("1e400").unwrap()), None);
+    }
+
+    /// The one-division nearest float agrees with the bracket and an exact
+    /// comparison of distances, ties included (halfway rationals round to
+    /// the even significand), and declines outside the normal range.
+    #[test]
+    fn division_nearest_matches_the_exact_comparison() {
+        let mut x = 0x2545f4914f6cdd1du64;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        let (mut checked, mut ties) = (0, 0);
+        for _ in 0..3000 {
+            let n = BigInt::from(next() >> (next() % 64)) * BigInt::from(next() % 1000 + 1);
+            let d = BigInt::from((next() >> (next() % 64)) | 1) * BigInt::from(3 + next() % 5);
+            let shift = (next() % 2200) as usize;
+            let n = if next() % 2 == 0 { -n } else { n };
+            // a halfway point between two adjacent floats (a tie) and points
+            // a hair beside it
+            let v = f64::from_bits(next() % 0x7fe0_0000_0000_0000);
+            let (lo, hi) = (
+                rational_from_f64(v).unwrap(),
+                rational_from_f64(v.next_up()).unwrap(),
+            );
+            let mid = (&lo + &hi) / Rational::from_integer(2.into());
+            let hair = (&hi - &lo) / Rational::from_integer(BigInt::from(1u64 << 40));
+            for r in [
+                Rational::new(n.clone() << shift, d.clone()),
+                Rational::new(n.clone(), d.clone() << shift),
+                Rational::new(n.clone(), d.clone()),
+                mid.clone(),
+                &mid + &hair,
+                &mid - &hair,
+            ] {
+                if let Some(f) = normal_nearest(&r) {
+                    assert_eq!(f.to_bits(), nearest_by_bracket(&r).to_bits(), "{r}");
+                    checked += 1;
+                    ties += usize::from(r == mid);
+                }
+            }
+        }
+        assert!(checked > 8000 && ties > 2000, "{checked} {ties}");
+        assert_eq!(normal_nearest(&parse_rational("1e-320").unwrap()), None);
+        assert_eq!(normal_nearest(&parse_rational("1e400").unwrap()), None);
+    }
+
+    /// The float to rational conversion is `num-rational`'s exactly (lowest
+    /// terms), for normal, subnormal, integral and signed floats.
+    #[test]
+    fn float_to_rational_matches_num_rational() {
+        let mut x = 0x9e3779b97f4a7c15u64;
+        for i in 0..20_000u64 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let v = f64::from_bits(x);
+            for v in [v, (i as f64) * 0.25, -(i as f64), 5e-324, -0.0, f64::MAX] {
+                if v.is_finite() {
+                    let r = rational_from_f64(v).unwrap();
+                    assert_eq!(r, Rational::from_float(v).unwrap(), "{v:e}");
+                    assert_eq!(r.reduced(), r, "{v:e}");
+                }
+            }
+        }
+        assert_eq!(rational_from_f64(f64::NAN), None);
+        assert_eq!(rational_from_f64(f64::INFINITY), None);
     }
 
     #[test]
