@@ -701,6 +701,59 @@ fn one_sign(g: Vec<Interval>, depth: u32) -> bool {
     one_sign(left, depth - 1) && one_sign(right, depth - 1)
 }
 
+/// Outward enclosure of a piece's control-point box, `[x, y]`.
+fn control_box(b: &Bezier<Rational>) -> [Interval; 2] {
+    let iv = |f: fn(&V2<Rational>) -> &Rational| {
+        b.points()
+            .iter()
+            .map(|p| interval_from_rational(f(p)))
+            .reduce(|a, b| a.convex_hull(b))
+            .expect("nonempty")
+    };
+    [iv(|p| &p.x), iv(|p| &p.y)]
+}
+
+/// [`bezier_arc`] on every pair `(Bézier i, arc j)` whose boxes may meet,
+/// in parallel, in the order `(i, j)`: only pairs that meet or are undecided
+/// are returned. A pair is skipped when the enclosed control box of the
+/// Bézier and the enclosed box of the whole circle are disjoint (outward
+/// rounded, so the skip is exact: the piece lies in its control box, the arc
+/// in its circle's box); [`bezier_arc`] then finds nothing either.
+pub fn bezier_arc_all(bez: &[&Bezier<Rational>], arcs: &[&Arc]) -> Vec<(usize, usize, ArcMeet)> {
+    use rayon::prelude::*;
+    let bb: Vec<[Interval; 2]> = bez.iter().map(|b| control_box(b)).collect();
+    let cb: Vec<[Interval; 2]> = arcs
+        .iter()
+        .map(|a| {
+            let (c, r) = (
+                a.center.map(interval_from_rational),
+                interval_from_rational(&a.radius),
+            );
+            [c.x - r, c.y - r]
+                .into_iter()
+                .zip([c.x + r, c.y + r])
+                .map(|(lo, hi)| lo.convex_hull(hi))
+                .collect::<Vec<_>>()
+                .try_into()
+                .expect("two coordinates")
+        })
+        .collect();
+    let apart = |a: &[Interval; 2], b: &[Interval; 2]| {
+        (0..2).any(|k| a[k].sup() < b[k].inf() || b[k].sup() < a[k].inf())
+    };
+    let pairs: Vec<(usize, usize)> = (0..bez.len())
+        .flat_map(|i| (0..arcs.len()).map(move |j| (i, j)))
+        .filter(|&(i, j)| !apart(&bb[i], &cb[j]))
+        .collect();
+    pairs
+        .into_par_iter()
+        .filter_map(|(i, j)| {
+            let m = bezier_arc(bez[i], arcs[j]);
+            (!m.hits.is_empty() || !m.undecided.is_empty()).then_some((i, j, m))
+        })
+        .collect()
+}
+
 /// All points where the Bézier piece meets the arc: the real roots of
 /// `|B(t) − c|² − r²` on `[0, 1]` (exact isolation), each kept when its point
 /// is in the arc's angle range (decided on an interval enclosure of the point
@@ -1112,6 +1165,51 @@ mod tests {
                 }
             }
             prop_assert_eq!(hits.len(), in_range);
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+        /// The box-filtered, parallel pass finds exactly the pairs that
+        /// [`bezier_arc`] on every pair finds, with the same hits (the
+        /// filter only skips pairs that cannot meet).
+        #[test]
+        fn all_pairs_match_the_pairwise_test(
+            bs in proptest::collection::vec(proptest::collection::vec((-12i64..12, -12i64..12), 2..=4), 1..6),
+            arcs in proptest::collection::vec(((-6i64..6, -6i64..6, 1i64..8), (-30i64..30, -30i64..30)), 1..5),
+        ) {
+            let bez: Vec<Bezier<Rational>> = bs
+                .iter()
+                .map(|p| Bezier::new(p.iter().map(|&(x, y)| V2::new(q(x, 2), q(y, 2))).collect()))
+                .collect();
+            let arcs: Vec<Arc> = arcs
+                .iter()
+                .filter_map(|&((cx, cy, rr), (u0, u1))| {
+                    let (c, r) = (V2::new(q(cx, 2), q(cy, 2)), q(rr, 2));
+                    let at = |u: i64| snap(&c, &r, ((u as f64 * 0.2).cos(), (u as f64 * 0.2).sin()));
+                    let (from, to) = (at(u0)?, at(u1)?);
+                    (from != to).then(|| Arc { center: c.clone(), radius: r.clone(), from, to, clockwise: u1 < u0 })
+                })
+                .collect();
+            let (br, ar): (Vec<&Bezier<Rational>>, Vec<&Arc>) = (bez.iter().collect(), arcs.iter().collect());
+            let mut all = bezier_arc_all(&br, &ar);
+            all.sort_by_key(|m| (m.0, m.1));
+            let mut pairwise = Vec::new();
+            for (i, b) in bez.iter().enumerate() {
+                for (j, a) in arcs.iter().enumerate() {
+                    let m = bezier_arc(b, a);
+                    if !m.hits.is_empty() || !m.undecided.is_empty() {
+                        pairwise.push((i, j, m));
+                    }
+                }
+            }
+            prop_assert_eq!(all.len(), pairwise.len());
+            for (x, y) in all.iter().zip(&pairwise) {
+                prop_assert_eq!((x.0, x.1), (y.0, y.1));
+                let ts = |m: &ArcMeet| m.hits.iter().map(|h| h.t.clone()).collect::<Vec<_>>();
+                prop_assert_eq!(ts(&x.2), ts(&y.2));
+                prop_assert_eq!(&x.2.undecided, &y.2.undecided);
+            }
         }
     }
 

@@ -4,7 +4,7 @@
 use super::types::{Contour, Orientation, Piece};
 use crate::curve::Bezier;
 use crate::scalar::{Interval, Rational};
-use crate::stroke::circle::{arcs_meet, bezier_arc};
+use crate::stroke::circle::{arcs_meet, bezier_arc_all, Arc};
 use crate::stroke::intersect::{intersections, IntersectOptions};
 use num_traits::{One, Zero};
 
@@ -113,33 +113,35 @@ pub(super) fn check_simple(contours: &[Contour], iopts: &IntersectOptions) -> (b
             problems.push(format!("pieces {a} and {b} touch but are not consecutive"));
         }
     }
-    for &ai in &arcs {
-        let Piece::Arc(arc) = flat[ai].0 else {
-            continue;
-        };
-        for &bi in &bez {
-            let Piece::Bezier(b) = flat[bi].0 else {
-                continue;
-            };
-            let m = bezier_arc(b, arc);
-            if !m.undecided.is_empty() {
-                complete = false;
-                problems.push(format!("pieces {bi} and {ai}: undecided"));
-            }
-            for h in &m.hits {
-                let joint = h.t.0 == h.t.1 && {
-                    let pt = if h.t.0.is_zero() {
-                        Some(&b.points()[0])
-                    } else if h.t.0 == <Rational as One>::one() {
-                        b.points().last()
-                    } else {
-                        None
-                    };
-                    pt.is_some_and(|p| *p == arc.from || *p == arc.to) && consecutive(ai, bi)
+    let arc_refs: Vec<&Arc> = arcs
+        .iter()
+        .filter_map(|&i| match flat[i].0 {
+            Piece::Arc(a) => Some(a),
+            Piece::Bezier(_) => None,
+        })
+        .collect();
+    let bz_refs: Vec<&Bezier<Rational>> = bz.iter().collect();
+    let mut meets = bezier_arc_all(&bz_refs, &arc_refs);
+    meets.sort_by_key(|m| (m.1, m.0));
+    for (i, j, m) in meets {
+        let (bi, ai, b, arc) = (bez[i], arcs[j], bz_refs[i], arc_refs[j]);
+        if !m.undecided.is_empty() {
+            complete = false;
+            problems.push(format!("pieces {bi} and {ai}: undecided"));
+        }
+        for h in &m.hits {
+            let joint = h.t.0 == h.t.1 && {
+                let pt = if h.t.0.is_zero() {
+                    Some(&b.points()[0])
+                } else if h.t.0 == <Rational as One>::one() {
+                    b.points().last()
+                } else {
+                    None
                 };
-                if !joint {
-                    problems.push(format!("pieces {bi} and {ai} meet"));
-                }
+                pt.is_some_and(|p| *p == arc.from || *p == arc.to) && consecutive(ai, bi)
+            };
+            if !joint {
+                problems.push(format!("pieces {bi} and {ai} meet"));
             }
         }
     }

@@ -5,7 +5,7 @@ use super::sides::{approx_dir, dist_hi, set_end, Raw};
 use super::types::{Piece, RawCrossing};
 use crate::curve::{Bezier, V2};
 use crate::scalar::{rational_from_f64, Interval, Rational, Scalar};
-use crate::stroke::circle::{arc_meetings, bezier_arc, snap, Arc, Meetings};
+use crate::stroke::circle::{arc_meetings, bezier_arc_all, snap, Arc, ArcMeet, Meetings};
 use crate::stroke::intersect::{intersections, Crossing, IntersectOptions};
 use num_traits::{One, Signed, Zero};
 use std::time::Instant;
@@ -200,16 +200,31 @@ pub(super) fn find_crossings(
         bridges: Vec::new(),
     };
     bezier_crossings(raws, &bez_idx, iopts, notes, &mut found, t0);
-    for &ai in &arc_idx {
-        let Piece::Arc(arc) = &raws[ai].piece else {
-            continue;
-        };
-        for &bi in &bez_idx {
-            let Piece::Bezier(b) = &raws[bi].piece else {
-                continue;
-            };
-            bezier_arc_crossings((bi, b), (ai, arc), notes, &mut found);
-        }
+    let bez: Vec<&Bezier<Rational>> = bez_idx
+        .iter()
+        .filter_map(|&i| match &raws[i].piece {
+            Piece::Bezier(b) => Some(b),
+            Piece::Arc(_) => None,
+        })
+        .collect();
+    let arcs: Vec<&Arc> = arc_idx
+        .iter()
+        .filter_map(|&i| match &raws[i].piece {
+            Piece::Arc(a) => Some(a),
+            Piece::Bezier(_) => None,
+        })
+        .collect();
+    // arc by arc, Bézier by Bézier, as the pairs were always taken
+    let mut meets = bezier_arc_all(&bez, &arcs);
+    meets.sort_by_key(|m| (m.1, m.0));
+    for (i, j, m) in meets {
+        bezier_arc_crossings(
+            (bez_idx[i], bez[i]),
+            (arc_idx[j], arcs[j]),
+            m,
+            notes,
+            &mut found,
+        );
     }
     arc_arc_crossings(raws, &arc_idx, bridge_mu, notes, &mut found);
     log::debug!("arcs: {:?}", t0.elapsed());
@@ -328,16 +343,17 @@ fn bezier_split(a: &Piece, b: &Piece, c: &Crossing) -> Option<(V2<Rational>, Rat
     }
 }
 
-/// The crossings of raw Bézier piece `bi` and raw arc `ai`, split at a
+/// The crossings of raw Bézier piece `bi` and raw arc `ai` (what
+/// [`crate::stroke::circle::bezier_arc`] found, `m`), split at a
 /// rational point exactly on the circle; joints (a shared end point) are
 /// skipped, tangential contacts and crossings at an arc end are noted.
 fn bezier_arc_crossings(
     (bi, b): (usize, &Bezier<Rational>),
     (ai, arc): (usize, &Arc),
+    m: ArcMeet,
     notes: &mut Vec<String>,
     found: &mut Crossings,
 ) {
-    let m = bezier_arc(b, arc);
     if !m.hits.is_empty() || !m.undecided.is_empty() {
         log::trace!("bez {bi} arc {ai}: {:?}", m);
     }
