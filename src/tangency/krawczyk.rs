@@ -68,6 +68,48 @@ impl IPoly2 {
             c: p.coeffs().iter().map(interval_from_rational).collect(),
         }
     }
+    /// `∂p/∂x`, enclosed: each coefficient `(i + 1)·c_{i+1,j}` as the
+    /// outward-rounded product of the integer and the enclosure of `c`
+    /// (encloses the exact derivative's coefficient).
+    fn dx(&self) -> Self {
+        let w = self.dy + 1;
+        if self.dx == 0 {
+            return IPoly2 {
+                dx: 0,
+                dy: self.dy,
+                c: vec![pt(0.0); w],
+            };
+        }
+        let c = (0..self.dx)
+            .flat_map(|i| (0..w).map(move |j| (i, j)))
+            .map(|(i, j)| pt((i + 1) as f64) * self.c[(i + 1) * w + j])
+            .collect();
+        IPoly2 {
+            dx: self.dx - 1,
+            dy: self.dy,
+            c,
+        }
+    }
+    /// `∂p/∂y`, enclosed as [`IPoly2::dx`].
+    fn dy(&self) -> Self {
+        let w = self.dy + 1;
+        if self.dy == 0 {
+            return IPoly2 {
+                dx: self.dx,
+                dy: 0,
+                c: vec![pt(0.0); self.dx + 1],
+            };
+        }
+        let c = (0..=self.dx)
+            .flat_map(|i| (0..self.dy).map(move |j| (i, j)))
+            .map(|(i, j)| pt((j + 1) as f64) * self.c[i * w + j + 1])
+            .collect();
+        IPoly2 {
+            dx: self.dx,
+            dy: self.dy - 1,
+            c,
+        }
+    }
     /// Interval Horner evaluation at a box.
     pub fn eval(&self, x: Interval, y: Interval) -> Interval {
         let w = self.dy + 1;
@@ -245,15 +287,13 @@ impl System2 {
     pub fn new(p: &Poly2<Rational>, q: &Poly2<Rational>) -> Self {
         let mut linear = linear_parts(p);
         linear.extend(linear_parts(q));
+        // the partial derivatives from the enclosed coefficients: each
+        // coefficient of `p` is converted once (the conversions dominate)
+        let (pi, qi) = (IPoly2::new(p), IPoly2::new(q));
         System2 {
-            p: IPoly2::new(p),
-            q: IPoly2::new(q),
-            grad: [
-                IPoly2::new(&p.dx()),
-                IPoly2::new(&p.dy()),
-                IPoly2::new(&q.dx()),
-                IPoly2::new(&q.dy()),
-            ],
+            grad: [pi.dx(), pi.dy(), qi.dx(), qi.dy()],
+            p: pi,
+            q: qi,
             form: EnclosureForm::Taylor,
             exact: [p.clone(), q.clone()],
             linear,
@@ -588,6 +628,30 @@ mod tests {
                 let py = x * x * x - 4.0 * x * y;
                 assert!(e.jac[0][0].contains(px) && e.jac[0][1].contains(py));
                 assert!(e.jac[1][0].contains(-1.0) && e.jac[1][1].contains(3.0 * y * y));
+            }
+        }
+    }
+
+    /// The gradient enclosed from the enclosed coefficients holds the exact
+    /// derivative's coefficients (computed in rationals), at every degree
+    /// pattern, including constant and linear variables.
+    #[test]
+    fn interval_partials_enclose_the_exact_ones() {
+        for (p, q) in [
+            ("x^3*y - 2*x*y^2 + 5", "y^3 - x + 1/3"),
+            ("1/3*x^6*y^5 - 7/11*x^2*y^4 + 10^30/7*x*y - 3", "x - 2/3"),
+            ("5", "y^2 - 1/10"),
+        ] {
+            let (p, q) = (parse_poly2(p).unwrap(), parse_poly2(q).unwrap());
+            let s = System2::new(&p, &q);
+            let exact = [p.dx(), p.dy(), q.dx(), q.dy()];
+            for (g, e) in s.grad.iter().zip(&exact) {
+                let e = IPoly2::new(e);
+                assert_eq!((g.dx, g.dy), (e.dx, e.dy));
+                for (a, b) in g.c.iter().zip(&e.c) {
+                    assert!(b.subset(*a), "{a:?} does not hold {b:?}");
+                    assert!(a.wid() <= 4.0 * b.wid() + b.mag() * 1e-15, "{a:?} {b:?}");
+                }
             }
         }
     }
