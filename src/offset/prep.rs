@@ -7,7 +7,7 @@ use crate::poly::{
     certify_no_root, has_root_in, isolate_roots, isolate_simple_roots, square_free, Poly, RealRoot,
     Span,
 };
-use crate::scalar::{interval_from_rational, rational_from_f64, Rational};
+use crate::scalar::{interval_from_rational, rational_from_f64, Interval, Rational};
 use num_traits::{Signed, Zero};
 
 /// `x′ × x″` of a Bézier piece as an exact power-basis polynomial.
@@ -85,6 +85,67 @@ pub(crate) fn bisect(sf: &Poly<Rational>, r: &RealRoot, bits: u32) -> RealRoot {
     RealRoot { lo: l, hi: h }
 }
 
+/// [`bisect`] for an isolating interval `[a, b]` with float ends (the
+/// interval isolation's), kept in floats: each midpoint is a float strictly
+/// between the ends, its sign taken from the interval enclosure of `sf` at
+/// the point and exactly (the float as a rational) only when the enclosure
+/// holds 0. Stops once the float width is at most `2^-bits / 2` (the exact
+/// width is then below `2^-bits`). The ends are exact floats, so the result
+/// is the same proof as [`bisect`]'s, without rational midpoints.
+fn bisect_f64(
+    sf: &Poly<Rational>,
+    sf_iv: &Poly<Interval>,
+    (mut a, mut b): (f64, f64),
+    bits: u32,
+) -> Option<RealRoot> {
+    let exact = |x: f64| rational_from_f64(x);
+    let sign = |x: f64| -> Option<i8> {
+        let e = sf_iv.eval(&Interval::try_from((x, x)).ok()?);
+        if e.inf() > 0.0 {
+            return Some(1);
+        }
+        if e.sup() < 0.0 {
+            return Some(-1);
+        }
+        let v = sf.eval(&exact(x)?);
+        Some(if v.is_zero() {
+            0
+        } else if v.is_positive() {
+            1
+        } else {
+            -1
+        })
+    };
+    let sa = sign(a)?;
+    if sa == 0 || sign(b)? == sa {
+        return None;
+    }
+    let w = 0.5 * 2f64.powi(-(bits as i32));
+    while b - a > w {
+        let m = 0.5 * a + 0.5 * b;
+        if !(a < m && m < b) {
+            break;
+        }
+        let sm = sign(m)?;
+        if sm == 0 {
+            let e = exact(m)?;
+            return Some(RealRoot {
+                lo: e.clone(),
+                hi: e,
+            });
+        }
+        if sm == sa {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    Some(RealRoot {
+        lo: exact(a)?,
+        hi: exact(b)?,
+    })
+}
+
 /// The roots of `p` in `span`, exactly isolated, refined to width `2^-bits`.
 pub(crate) fn roots_refined(p: &Poly<Rational>, span: &Span, bits: u32) -> Vec<RealRoot> {
     if is_zero_poly(p) || no_root_in_unit(p) {
@@ -102,14 +163,16 @@ pub(crate) fn roots_refined(p: &Poly<Rational>, span: &Span, bits: u32) -> Vec<R
             return pieces
                 .into_iter()
                 .map(|(a, b)| {
-                    bisect(
-                        p,
-                        &RealRoot {
-                            lo: exact(a),
-                            hi: exact(b),
-                        },
-                        bits,
-                    )
+                    bisect_f64(p, &pi, (a, b), bits).unwrap_or_else(|| {
+                        bisect(
+                            p,
+                            &RealRoot {
+                                lo: exact(a),
+                                hi: exact(b),
+                            },
+                            bits,
+                        )
+                    })
                 })
                 .collect();
         }
@@ -436,6 +499,39 @@ mod tests {
                 prop_assert!(size > 0.0);
                 prop_assert!((d.x - exact.x).abs() <= size * 2f64.powi(-30));
                 prop_assert!((d.y - exact.y).abs() <= size * 2f64.powi(-30));
+            }
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(128))]
+
+        /// Refined roots of a product of known simple factors: one interval
+        /// per root in `[0, 1]`, each of width at most `2⁻⁴⁰` and holding
+        /// exactly that root (checked against the known roots, not by the
+        /// code under test).
+        #[test]
+        fn refined_roots_hold_the_known_roots(
+            roots in proptest::collection::btree_set(1i64..1000, 1..6),
+            outside in proptest::collection::vec(1i64..3000, 0..3),
+            den in 1i64..4,
+        ) {
+            let den = den * 1000;
+            let q = |n: i64| Rational::new(n.into(), den.into());
+            let known: Vec<Rational> = roots.iter().map(|&n| q(n)).collect();
+            let mut p = Poly::new(vec![Rational::from_integer(1.into())]);
+            // roots beyond 1 (and their factors) must not be reported
+            for r in known.iter().cloned().chain(outside.iter().map(|&n| q(n + den))) {
+                p = p.mul(&Poly::new(vec![-r, Rational::from_integer(1.into())]));
+            }
+            let span = Span::closed(Rational::zero(), Rational::from_integer(1.into()));
+            let found = roots_refined(&p, &span, 40);
+            let known: Vec<&Rational> = known.iter().collect();
+            prop_assert_eq!(found.len(), known.len());
+            let w = Rational::new(1.into(), num_bigint::BigInt::from(1u64 << 40));
+            for (f, k) in found.iter().zip(&known) {
+                prop_assert!(&f.hi - &f.lo <= w);
+                prop_assert!(f.lo <= **k && **k <= f.hi, "{:?} misses {}", f, k);
             }
         }
     }
