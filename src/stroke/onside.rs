@@ -275,6 +275,23 @@ fn box_dist2_lo(a: &IV, b: &IV) -> f64 {
     (gx * gx + gy * gy).inf()
 }
 
+/// Remembered one-form tests of one box on one piece: `(kind, w0, w1)` →
+/// proven (`kind` 0 for convexity, the sign for monotony).
+#[derive(Default)]
+struct Memo(Vec<((i8, u64, u64), bool)>);
+
+impl Memo {
+    fn get_or(&mut self, kind: i8, w0: f64, w1: f64, test: impl FnOnce() -> bool) -> bool {
+        let key = (kind, w0.to_bits(), w1.to_bits());
+        if let Some(&(_, v)) = self.0.iter().find(|(k, _)| *k == key) {
+            return v;
+        }
+        let v = test();
+        self.0.push((key, v));
+        v
+    }
+}
+
 /// A joint of two input pieces, seen from one of them.
 #[derive(Clone, Copy, Debug)]
 struct Joint {
@@ -434,20 +451,32 @@ impl Input {
     }
 
     fn convex_at(&self, j: usize, e: &IV, w0: f64, w1: f64, depth: u32) -> bool {
+        self.convex_memo(j, e, w0, w1, depth, &mut Memo::default())
+    }
+
+    /// [`Input::convex_at`] with the one-form tests of this box `e` on piece
+    /// `j` remembered in `memo`: a window search halves its window, whose
+    /// halves and quarters are then the previous try's (same exact test, same
+    /// answer; only the work is shared).
+    fn convex_memo(&self, j: usize, e: &IV, w0: f64, w1: f64, depth: u32, memo: &mut Memo) -> bool {
         if w0 == 0.0 && w1 == 1.0 && whole_positive(&self.pieces[j].convex_whole, e, 1) {
             return true;
         }
-        let xr = self.pieces[j].x.restrict(&point(w0), &point(w1));
-        let (c, eps) = centre(e);
-        let h = xr.hodograph();
-        if whole_positive(&convex_form(&xr, &h, &h.hodograph(), &c), &eps, 1) {
+        let one = memo.get_or(0, w0, w1, || {
+            let xr = self.pieces[j].x.restrict(&point(w0), &point(w1));
+            let (c, eps) = centre(e);
+            let h = xr.hodograph();
+            whole_positive(&convex_form(&xr, &h, &h.hodograph(), &c), &eps, 1)
+        });
+        if one {
             return true;
         }
         if depth == 0 {
             return false;
         }
         let m = 0.5 * (w0 + w1);
-        self.convex_at(j, e, w0, m, depth - 1) && self.convex_at(j, e, m, w1, depth - 1)
+        self.convex_memo(j, e, w0, m, depth - 1, memo)
+            && self.convex_memo(j, e, m, w1, depth - 1, memo)
     }
 
     /// `g′` has the strict sign `sign` on `E × [w0, w1]` of piece `j`: with
@@ -457,6 +486,20 @@ impl Input {
     /// increases on the window, so a window from a point `x(w0)` where
     /// `g = r²` holds no other point as near; `sign < 0` the mirror image.
     fn monotone(&self, j: usize, e: &IV, w0: f64, w1: f64, sign: i8, depth: u32) -> bool {
+        self.monotone_memo(j, e, (w0, w1), sign, depth, &mut Memo::default())
+    }
+
+    /// [`Input::monotone`] with its one-form tests remembered (see
+    /// [`Input::convex_memo`]).
+    fn monotone_memo(
+        &self,
+        j: usize,
+        e: &IV,
+        (w0, w1): (f64, f64),
+        sign: i8,
+        depth: u32,
+        memo: &mut Memo,
+    ) -> bool {
         if w0 == 0.0
             && w1 == 1.0
             && self.pieces[j].x.degree() > 0
@@ -464,19 +507,23 @@ impl Input {
         {
             return true;
         }
-        let xr = self.pieces[j].x.restrict(&point(w0), &point(w1));
-        if xr.degree() == 0 {
-            return false;
-        }
-        let (c, eps) = centre(e);
-        if whole_positive(&monotone_form(&xr, &xr.hodograph(), &c), &eps, sign) {
+        let one = memo.get_or(sign, w0, w1, || {
+            let xr = self.pieces[j].x.restrict(&point(w0), &point(w1));
+            if xr.degree() == 0 {
+                return false;
+            }
+            let (c, eps) = centre(e);
+            whole_positive(&monotone_form(&xr, &xr.hodograph(), &c), &eps, sign)
+        });
+        if one {
             return true;
         }
         if depth == 0 {
             return false;
         }
         let m = 0.5 * (w0 + w1);
-        self.monotone(j, e, w0, m, sign, depth - 1) && self.monotone(j, e, m, w1, sign, depth - 1)
+        self.monotone_memo(j, e, (w0, m), sign, depth - 1, memo)
+            && self.monotone_memo(j, e, (m, w1), sign, depth - 1, memo)
     }
 
     /// Every point of piece `j` over `[a, b]` is at distance `> r` from the
@@ -554,10 +601,12 @@ impl Input {
             (a, b) if a == 1.0 && b == 1.0 => Some(-1),
             _ => None,
         };
+        // one box, one piece: the halved windows share their sub-windows
+        let mut memo = Memo::default();
         loop {
             let (w0, w1) = ((t0 - w).max(0.0), (t1 + w).min(1.0));
-            if self.convex(j, e, w0, w1)
-                || end_sign.is_some_and(|sg| self.monotone(j, e, w0, w1, sg, 2))
+            if self.convex_memo(j, e, w0, w1, 2, &mut memo)
+                || end_sign.is_some_and(|sg| self.monotone_memo(j, e, (w0, w1), sg, 2, &mut memo))
             {
                 return Some((w0, w1));
             }
