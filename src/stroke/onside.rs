@@ -718,6 +718,19 @@ impl Input {
     /// proven to point towards it, continued through joints
     /// ([`Input::chain_windows`]). `None` when some piece at `c` fails.
     fn point_windows(&self, c: &V2<Rational>, e: &IV) -> Option<Vec<(usize, f64, f64)>> {
+        self.point_windows_from(c, e, &|_| MAX_WINDOW)
+    }
+
+    /// [`Input::point_windows`] with the window search on piece `j` starting
+    /// at width `start(j)` instead of [`MAX_WINDOW`] (a hint from a
+    /// neighbouring part of the same arc: only the order of the tries, and
+    /// so possibly a narrower window, depends on it).
+    fn point_windows_from(
+        &self,
+        c: &V2<Rational>,
+        e: &IV,
+        start: &dyn Fn(usize) -> f64,
+    ) -> Option<Vec<(usize, f64, f64)>> {
         let ci = V2::new(interval_from_rational(&c.x), interval_from_rational(&c.y));
         let diff = V2::new(e.x - ci.x, e.y - ci.y);
         let mut out = Vec::new();
@@ -733,7 +746,7 @@ impl Input {
                 if dot(&diff, t).inf().partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
                     return None;
                 }
-                let (w0, _) = self.window(j, e, (1.0, 1.0), MAX_WINDOW, 1.0 / 1024.0)?;
+                let (w0, _) = self.window(j, e, (1.0, 1.0), start(j), 1.0 / 1024.0)?;
                 out.push((j, w0, 1.0));
                 if w0 == 0.0 {
                     out.extend(self.chain_windows(j, e, false));
@@ -744,7 +757,7 @@ impl Input {
                 if dot(&diff, t).sup().partial_cmp(&0.0) != Some(std::cmp::Ordering::Less) {
                     return None;
                 }
-                let (_, w1) = self.window(j, e, (0.0, 0.0), MAX_WINDOW, 1.0 / 1024.0)?;
+                let (_, w1) = self.window(j, e, (0.0, 0.0), start(j), 1.0 / 1024.0)?;
                 out.push((j, 0.0, w1));
                 if w1 == 1.0 {
                     out.extend(self.chain_windows(j, e, true));
@@ -802,6 +815,7 @@ impl Input {
         parts.reverse();
         let mut leaves: Vec<(bool, f64)> = Vec::new();
         let mut nodes = 0;
+        let mut hints: std::collections::BTreeMap<usize, f64> = Default::default();
         while let Some(a) = parts.pop() {
             nodes += 1;
             if nodes > max_nodes {
@@ -814,9 +828,26 @@ impl Input {
                 dot(&d, &d).sqrt().sup()
             };
             let len = side(&hv[0], &hv[1]) + side(&hv[1], &hv[2]);
-            let ok = self
-                .point_windows(&arc.center, &e)
-                .is_some_and(|w| self.far_outside(&e, &w));
+            // the search starts at twice the window the last proven part
+            // needed on each piece, and from the widest when that fails
+            let hinted = self
+                .point_windows_from(&arc.center, &e, &|j| {
+                    hints.get(&j).copied().unwrap_or(MAX_WINDOW)
+                })
+                .filter(|w| self.far_outside(&e, w));
+            let proven = match hinted {
+                Some(w) => Some(w),
+                None if !hints.is_empty() => self
+                    .point_windows(&arc.center, &e)
+                    .filter(|w| self.far_outside(&e, w)),
+                None => None,
+            };
+            if let Some(w) = &proven {
+                for &(j, w0, w1) in w {
+                    hints.insert(j, (2.0 * (w1 - w0)).min(MAX_WINDOW));
+                }
+            }
+            let ok = proven.is_some();
             if ok {
                 leaves.push((true, len));
                 continue;
