@@ -99,7 +99,10 @@ fn bisect_f64(
     bits: u32,
 ) -> Option<RealRoot> {
     let exact = |x: f64| rational_from_f64(x);
-    let sign = |x: f64| -> Option<i8> {
+    // the exact sign by integers: the numerators over a common denominator
+    // (computed once, on the first point the enclosure leaves undecided)
+    let mut ints: Option<Vec<num_bigint::BigInt>> = None;
+    let mut sign = |x: f64| -> Option<i8> {
         let e = sf_iv.eval(&Interval::try_from((x, x)).ok()?);
         if e.inf() > 0.0 {
             return Some(1);
@@ -107,14 +110,8 @@ fn bisect_f64(
         if e.sup() < 0.0 {
             return Some(-1);
         }
-        let v = sf.eval(&exact(x)?);
-        Some(if v.is_zero() {
-            0
-        } else if v.is_positive() {
-            1
-        } else {
-            -1
-        })
+        let n = ints.get_or_insert_with(|| common_numerators(sf));
+        dyadic_sign(n, x)
     };
     let sa = sign(a)?;
     if sa == 0 || sign(b)? == sa {
@@ -143,6 +140,50 @@ fn bisect_f64(
     Some(RealRoot {
         lo: exact(a)?,
         hi: exact(b)?,
+    })
+}
+
+/// The numerators of `p`'s coefficients over their least common denominator
+/// (positive), so that `p` and `Σ nᵢ xⁱ` have the same signs.
+fn common_numerators(p: &Poly<Rational>) -> Vec<num_bigint::BigInt> {
+    let l = p.coeffs().iter().fold(num_bigint::BigInt::from(1), |l, c| {
+        num_integer::Integer::lcm(&l, c.denom())
+    });
+    p.coeffs()
+        .iter()
+        .map(|c| c.numer() * (&l / c.denom()))
+        .collect()
+}
+
+/// The exact sign of `Σ nᵢ xⁱ` at the finite float `x ≥ 0`, in integers:
+/// with `x = k/2^s`, `2^{s·deg} Σ nᵢ xⁱ = Σ nᵢ kⁱ 2^{s(deg − i)}` by Horner
+/// (no rational arithmetic).
+fn dyadic_sign(n: &[num_bigint::BigInt], x: f64) -> Option<i8> {
+    use num_bigint::{BigInt, Sign};
+    if !(x.is_finite() && x >= 0.0) {
+        return None;
+    }
+    let bits = x.to_bits();
+    let (exp, frac) = (((bits >> 52) & 0x7ff) as i64, bits & ((1u64 << 52) - 1));
+    let (mant, e) = if exp == 0 {
+        (frac, -1074)
+    } else {
+        (frac | (1u64 << 52), exp - 1075)
+    };
+    // x = mant·2^e = k/2^s
+    let (k, s) = if e >= 0 {
+        (BigInt::from(mant) << e as usize, 0usize)
+    } else {
+        (BigInt::from(mant), (-e) as usize)
+    };
+    let mut acc = BigInt::from(0);
+    for (j, c) in n.iter().rev().enumerate() {
+        acc = acc * &k + (c << (s * j));
+    }
+    Some(match acc.sign() {
+        Sign::Plus => 1,
+        Sign::Minus => -1,
+        Sign::NoSign => 0,
     })
 }
 
@@ -533,6 +574,28 @@ mod tests {
                 prop_assert!(&f.hi - &f.lo <= w);
                 prop_assert!(f.lo <= **k && **k <= f.hi, "{:?} misses {}", f, k);
             }
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(256))]
+
+        /// The integer sign at a float is the sign of the exact rational
+        /// evaluation, zeros included (a dyadic root of the polynomial).
+        #[test]
+        fn the_integer_sign_matches_the_rational_evaluation(
+            c in proptest::collection::vec((-1000i64..=1000, 1i64..=999), 1..8),
+            x in 0.0f64..=1.0,
+            root_at_x in any::<bool>(),
+        ) {
+            let mut p = Poly::new(c.iter().map(|&(n, d)| Rational::new(n.into(), d.into())).collect());
+            let xr = rational_from_f64(x).unwrap();
+            if root_at_x {
+                p = p.mul(&Poly::new(vec![-xr.clone(), Rational::from_integer(1.into())]));
+            }
+            let v = p.eval(&xr);
+            let expect = if v.is_zero() { 0 } else if v.is_positive() { 1 } else { -1 };
+            prop_assert_eq!(dyadic_sign(&common_numerators(&p), x), Some(expect));
         }
     }
 
