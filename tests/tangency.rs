@@ -235,6 +235,18 @@ fn assert_same_roots(rep: &TangencyReport, orc: &OracleSolution) {
     }
 }
 
+/// The solver's contract: a complete answer matches the oracle one to one,
+/// an incomplete one is sound ([`assert_sound_partial`]). Returns whether
+/// the answer was complete.
+fn assert_contract(rep: &TangencyReport, orc: &OracleSolution) -> bool {
+    if rep.complete {
+        assert_same_roots(rep, orc);
+    } else {
+        assert_sound_partial(rep, orc);
+    }
+    rep.complete
+}
+
 /// The solver's contract when it runs out of budget: every certified box
 /// holds exactly one oracle root, and every oracle root outside all certified
 /// boxes overlaps a box reported undecided (nothing dropped silently).
@@ -283,11 +295,7 @@ fn budget_exhaustion_at_a_random_domain_end_is_reported() {
     let prob = TangencyProblem::new(sys.clone(), None).unwrap();
     let rep = solve_complete(&prob, &SolveOptions::default());
     let orc = exact_solutions(&sys, &prob.a2_window);
-    if rep.complete {
-        assert_same_roots(&rep, &orc);
-    } else {
-        assert_sound_partial(&rep, &orc);
-    }
+    assert_contract(&rep, &orc);
 }
 
 /// A planted case found by CI (2026-11-30) where the budget runs out near a
@@ -315,11 +323,7 @@ fn budget_exhaustion_near_the_domain_end_is_reported() {
         rep.undecided.len(),
         orc.roots.len()
     );
-    if rep.complete {
-        assert_same_roots(&rep, &orc);
-    } else {
-        assert_sound_partial(&rep, &orc);
-    }
+    assert_contract(&rep, &orc);
 }
 
 proptest! {
@@ -334,10 +338,7 @@ proptest! {
         let rep = solve_complete(&prob, &SolveOptions::default());
         let orc = exact_solutions(&p.sys, &p.window);
         let runs = PLANTED_RUNS.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
-        if rep.complete {
-            assert_same_roots(&rep, &orc);
-        } else {
-            assert_sound_partial(&rep, &orc);
+        if !assert_contract(&rep, &orc) {
             let bad = PLANTED_INCOMPLETE.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             prop_assert!(bad * 50 <= runs.max(50), "{bad} of {runs} planted cases incomplete");
             return Ok(());
@@ -366,10 +367,7 @@ proptest! {
         // oracle one to one; a budget-exhausted one is sound and reports
         // what is left, and such answers stay rare
         let runs = RANDOM_RUNS.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
-        if rep.complete {
-            assert_same_roots(&rep, &orc);
-        } else {
-            assert_sound_partial(&rep, &orc);
+        if !assert_contract(&rep, &orc) {
             let bad = RANDOM_INCOMPLETE.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             prop_assert!(bad * 50 <= runs.max(50), "{bad} of {runs} random cases incomplete");
         }

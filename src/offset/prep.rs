@@ -163,18 +163,12 @@ fn dyadic_sign(n: &[num_bigint::BigInt], x: f64) -> Option<i8> {
     if !(x.is_finite() && x >= 0.0) {
         return None;
     }
-    let bits = x.to_bits();
-    let (exp, frac) = (((bits >> 52) & 0x7ff) as i64, bits & ((1u64 << 52) - 1));
-    let (mant, e) = if exp == 0 {
-        (frac, -1074)
-    } else {
-        (frac | (1u64 << 52), exp - 1075)
-    };
-    // x = mant·2^e = k/2^s
+    // x = m·2^e = k/2^s
+    let (m, e) = crate::scalar::float_parts(x);
     let (k, s) = if e >= 0 {
-        (BigInt::from(mant) << e as usize, 0usize)
+        (BigInt::from(m) << e as usize, 0usize)
     } else {
-        (BigInt::from(mant), (-e) as usize)
+        (BigInt::from(m), (-e) as usize)
     };
     let mut acc = BigInt::from(0);
     for (j, c) in n.iter().rev().enumerate() {
@@ -332,25 +326,14 @@ pub fn unit_left_normal(x: &Bezier<Rational>, t: f64) -> Option<V2<f64>> {
 /// points and of the arithmetic); `None` otherwise (the caller computes it
 /// exactly).
 fn derivative_f64(x: &Bezier<Rational>, t: f64) -> Option<V2<f64>> {
-    let p: Vec<glam::DVec2> = x
-        .points()
-        .iter()
-        .map(|q| {
-            glam::DVec2::new(
-                crate::scalar::Scalar::approx(&q.x),
-                crate::scalar::Scalar::approx(&q.y),
-            )
-        })
-        .collect();
-    let n = p.len().checked_sub(1).filter(|&n| n > 0)?;
-    let mut h: Vec<glam::DVec2> = p.windows(2).map(|w| (w[1] - w[0]) * n as f64).collect();
-    for r in 1..h.len() {
-        for i in 0..h.len() - r {
-            h[i] = h[i] + (h[i + 1] - h[i]) * t;
-        }
+    let xf = x.map(crate::scalar::Scalar::approx);
+    let n = xf.degree();
+    if n == 0 {
+        return None;
     }
-    let d = h[0];
-    let mag = p
+    let d = xf.hodograph().eval_fast(t);
+    let mag = xf
+        .points()
         .iter()
         .map(|q| q.x.abs().max(q.y.abs()))
         .fold(0.0, f64::max);

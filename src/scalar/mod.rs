@@ -27,6 +27,7 @@ pub use interval::{
     atan_enclosure, interval_from_rational, interval_to_json, sin_cos_enclosure, Interval,
     IntervalExt,
 };
+pub(crate) use rational::float_parts;
 pub use rational::{
     abs_le_pow10, parse_rational, rational_from_f64, rational_to_string, ParseNumberError, Rational,
 };

@@ -229,6 +229,24 @@ fn parse_decimal(s: &str) -> Result<Rational, &'static str> {
     Ok(if neg { -value } else { value })
 }
 
+/// A finite float as `(m, e)` with `|x| = m·2^e`, `m` odd (or `0` for a
+/// zero): the exact dyadic value, without rounding.
+pub(crate) fn float_parts(x: f64) -> (u64, i64) {
+    let bits = x.to_bits();
+    let exp = ((bits >> 52) & 0x7ff) as i64;
+    let frac = bits & ((1u64 << 52) - 1);
+    let (m, e) = if exp == 0 {
+        (frac, -1074)
+    } else {
+        (frac | (1u64 << 52), exp - 1075)
+    };
+    if m == 0 {
+        return (0, 0);
+    }
+    let tz = m.trailing_zeros();
+    (m >> tz, e + tz as i64)
+}
+
 /// The exact rational value of a finite float; `None` for NaN and infinities.
 ///
 /// # Examples
@@ -244,18 +262,9 @@ pub fn rational_from_f64(x: f64) -> Option<Rational> {
     if x == 0.0 {
         return Some(<Rational as Zero>::zero());
     }
-    // x = ±m·2^e with m odd after stripping trailing zeros: already in lowest
-    // terms (an odd numerator over a power of two), so no gcd is needed
-    let bits = x.to_bits();
-    let exp = ((bits >> 52) & 0x7ff) as i64;
-    let frac = bits & ((1u64 << 52) - 1);
-    let (m, e) = if exp == 0 {
-        (frac, -1074)
-    } else {
-        (frac | (1u64 << 52), exp - 1075)
-    };
-    let tz = m.trailing_zeros();
-    let (m, e) = (m >> tz, e + tz as i64);
+    // x = ±m·2^e with m odd: already in lowest terms (an odd numerator over
+    // a power of two), so no gcd is needed
+    let (m, e) = float_parts(x);
     let n = if x < 0.0 {
         -BigInt::from(m)
     } else {
@@ -382,24 +391,21 @@ fn dyadic_f64(r: &Rational) -> Option<f64> {
     Some(nf * f64::from_bits((1023 - k) << 52))
 }
 
-/// The bracket of `r` by one big-integer division when both ends are normal
-/// floats: `q = ⌊|n| 2^s / d⌋` with 53 significant bits, so `q 2^-s ≤ |r| <
-/// (q + 1) 2^-s` and both are floats (`q + 1 = 2^53` included). `None`
-/// outside the normal range (the caller walks instead).
-fn normal_bracket(r: &Rational) -> Option<(f64, f64)> {
-    let (n, d) = (r.numer(), r.denom());
-    if n.is_zero() {
-        return Some((0.0, 0.0));
+/// `(q, exact, s)` with `q = ⌊|r|·2^s⌋` of exactly `k` significant bits and
+/// `exact` when `q = |r|·2^s`, by one big-integer division (two when the
+/// first quotient has a bit too many); `None` for `r = 0` or `|r|` beyond
+/// `2^±1000` (the callers' normal range).
+fn quotient_bits(r: &Rational, k: i64) -> Option<(BigInt, bool, i64)> {
+    let (a, b) = (r.numer().magnitude(), r.denom().magnitude());
+    if a.is_zero() {
+        return None;
     }
-    let a = n.magnitude();
-    let b = d.magnitude();
-    // 2^(bits(a) − bits(b) − 1) < |r| < 2^(bits(a) − bits(b) + 1)
+    // 2^(e − 1) < |r| < 2^(e + 1)
     let e = a.bits() as i64 - b.bits() as i64;
     if !(-1000..=1000).contains(&e) {
         return None;
     }
-    // s so that 2^52 ≤ |r| 2^s < 2^54; then one more bit if needed
-    let mut s = 53 - e;
+    // s so that 2^(k−1) ≤ |r| 2^s < 2^(k+1); then one bit less if needed
     let div = |s: i64| {
         let (num, den) = if s >= 0 {
             (a << s as usize, b.clone())
@@ -409,14 +415,24 @@ fn normal_bracket(r: &Rational) -> Option<(f64, f64)> {
         let (q, rem) = num_integer::Integer::div_rem(&num, &den);
         (q, rem.is_zero())
     };
+    let mut s = k - e;
     let (mut q, mut exact) = div(s);
-    if q.bits() > 53 {
+    if q.bits() as i64 > k {
         s -= 1;
         (q, exact) = div(s);
     }
-    if q.bits() != 53 {
-        return None;
+    (q.bits() as i64 == k).then(|| (BigInt::from(q), exact, s))
+}
+
+/// The bracket of `r` by one big-integer division when both ends are normal
+/// floats: `q = ⌊|n| 2^s / d⌋` with 53 significant bits, so `q 2^-s ≤ |r| <
+/// (q + 1) 2^-s` and both are floats (`q + 1 = 2^53` included). `None`
+/// outside the normal range (the caller walks instead).
+fn normal_bracket(r: &Rational) -> Option<(f64, f64)> {
+    if r.numer().is_zero() {
+        return Some((0.0, 0.0));
     }
+    let (q, exact, s) = quotient_bits(r, 53)?;
     let qf = q.to_f64()?; // exact: 53 bits
     let scale = 2f64.powi(-(s as i32)); // exact power of two, normal for |s| ≤ 1060
     let lo = qf * scale;
@@ -438,35 +454,10 @@ fn normal_bracket(r: &Rational) -> Option<(f64, f64)> {
 /// rounded to nearest even by them is the significand. `None` outside the
 /// normal range (the caller brackets instead).
 fn normal_nearest(r: &Rational) -> Option<f64> {
-    let (n, d) = (r.numer(), r.denom());
-    if n.is_zero() {
+    if r.numer().is_zero() {
         return Some(0.0);
     }
-    let (a, b) = (n.magnitude(), d.magnitude());
-    // 2^(e − 1) < |r| < 2^(e + 1)
-    let e = a.bits() as i64 - b.bits() as i64;
-    if !(-1000..=1000).contains(&e) {
-        return None;
-    }
-    // s so that 2^53 ≤ |r| 2^s < 2^55; then one bit less if needed
-    let mut s = 54 - e;
-    let div = |s: i64| {
-        let (num, den) = if s >= 0 {
-            (a << s as usize, b.clone())
-        } else {
-            (a.clone(), b << (-s) as usize)
-        };
-        let (q, rem) = num_integer::Integer::div_rem(&num, &den);
-        (q, rem.is_zero())
-    };
-    let (mut q, mut exact) = div(s);
-    if q.bits() > 54 {
-        s -= 1;
-        (q, exact) = div(s);
-    }
-    if q.bits() != 54 {
-        return None;
-    }
+    let (q, exact, s) = quotient_bits(r, 54)?;
     let q = q.to_u64()?;
     let (mut m, half) = (q >> 1, q & 1 == 1);
     if half && (!exact || m & 1 == 1) {

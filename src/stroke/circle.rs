@@ -703,14 +703,8 @@ fn one_sign(g: Vec<Interval>, depth: u32) -> bool {
 
 /// Outward enclosure of a piece's control-point box, `[x, y]`.
 fn control_box(b: &Bezier<Rational>) -> [Interval; 2] {
-    let iv = |f: fn(&V2<Rational>) -> &Rational| {
-        b.points()
-            .iter()
-            .map(|p| interval_from_rational(f(p)))
-            .reduce(|a, b| a.convex_hull(b))
-            .expect("nonempty")
-    };
-    [iv(|p| &p.x), iv(|p| &p.y)]
+    let e = crate::stroke::onside::bbox(&b.map(interval_from_rational));
+    [e.x, e.y]
 }
 
 /// [`bezier_arc`] on every pair `(Bézier i, arc j)` whose boxes may meet,

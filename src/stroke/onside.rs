@@ -61,7 +61,8 @@ fn hull(xs: impl Iterator<Item = Interval>) -> Interval {
     Interval::try_from((lo, hi)).unwrap_or(Interval::ENTIRE)
 }
 
-fn bbox(b: &IB) -> IV {
+/// The box of an interval Bézier's control points.
+pub(crate) fn bbox(b: &IB) -> IV {
     V2::new(
         hull(b.points().iter().map(|p| p.x)),
         hull(b.points().iter().map(|p| p.y)),
