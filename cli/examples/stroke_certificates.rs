@@ -1,7 +1,8 @@
 //! Stroke certificates, timed in one run (medians of 5): for each icon element of
 //! `icon_strokes` (circular pen of radius 1, round caps and joins, cubic
 //! output, TOL 1e-2) and for the test cubic (pen radius 0.4, native output,
-//! TOL 1e-2 and 1e-3), the proven stroke, the certificate's writing
+//! TOL 1e-2 and 1e-3) and elliptical pens on the test cubic and a closed oval
+//! (cubic output; the certificate of the pre-image under `M⁻¹`), the proven stroke, the certificate's writing
 //! (`lncert::stroke::certificate`) and its check by the independent verifier
 //! (`lncert::certify::verify::verify` on the JSON text), with the ratio
 //! verify / stroke, the document's size, its parts (claim (a)) and boxes
@@ -14,8 +15,8 @@
 
 use lncert::curve::Bezier;
 use lncert::offset::Output;
-use lncert::scalar::Rational;
-use lncert::stroke::{certificate, stroke, StrokeOptions};
+use lncert::scalar::{Rational, Scalar};
+use lncert::stroke::{certificate, stroke, PenShape, StrokeOptions};
 use std::time::Instant;
 
 /// The icon elements (viewBox 0 0 24 24), as in `icon_strokes`.
@@ -50,8 +51,13 @@ fn median(mut v: Vec<f64>) -> f64 {
     v[v.len() / 2]
 }
 
-fn row(name: &str, curve: &[Bezier<Rational>], r: &Rational, tol: f64, output: Output) {
-    let mut o = StrokeOptions::new(r.clone(), lncert::Tolerance::from_f64(tol).expect("tol"));
+fn row(name: &str, curve: &[Bezier<Rational>], pen: PenShape, tol: f64, output: Output) {
+    let r = match &pen {
+        PenShape::Circle(r) => r.clone(),
+        PenShape::Ellipse(_) => Rational::from_integer(1.into()),
+    };
+    let r = &r;
+    let mut o = StrokeOptions::with_pen(pen, lncert::Tolerance::from_f64(tol).expect("tol"));
     o.output = output;
     // medians of RUNS interleaved runs (stroke, then verify): one run of a
     // few milliseconds is at the mercy of the shared machine
@@ -125,13 +131,56 @@ fn main() {
             r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 24 24" fill="none" stroke="currentColor" stroke-width="2">{el}</svg>"#
         );
         let curve = lncert::shape::parse_svg_document(&doc).expect("icon");
-        row(name, &curve, &one, 1e-2, Output::Cubic);
+        row(
+            name,
+            &curve,
+            PenShape::Circle(one.clone()),
+            1e-2,
+            Output::Cubic,
+        );
     }
     if only.as_deref().is_none_or(|o| o == "cubic") {
         let curve = lncert::parse_curve("M -0.95 0.7 C -0.3 0.5 0.3 -2.5 0.9 -0.2").expect("cubic");
         let r = lncert::parse_rational("2/5").expect("radius");
         for tol in [1e-2, 1e-3] {
-            row("test cubic r 0.4", &curve, &r, tol, Output::Native);
+            row(
+                "test cubic r 0.4",
+                &curve,
+                PenShape::Circle(r.clone()),
+                tol,
+                Output::Native,
+            );
         }
+    }
+    // elliptical pens: the certificate of the pre-image under M⁻¹
+    if only.as_deref().is_none_or(|o| o == "ellipse pen") {
+        let q = |s: &str| lncert::parse_rational(s).expect("number");
+        let pen = |a: &str, b: &str, th: &str, tol: f64| {
+            let angle = lncert::offset::Angle::parse(th).expect("angle");
+            // the rotation as `lncert stroke --pen ellipse:` represents it
+            let (af, bf) = (q(a).approx(), q(b).approx());
+            let max_angle = (tol * 1e-3 / (af + af * af / bf)).clamp(1e-12, 1e-6);
+            let p =
+                lncert::offset::Pen::ellipse_within(&q(a), &q(b), &angle, max_angle).expect("pen");
+            PenShape::Ellipse(p)
+        };
+        let curve = lncert::parse_curve("M -0.95 0.7 C -0.3 0.5 0.3 -2.5 0.9 -0.2").expect("cubic");
+        for tol in [1e-2, 1e-3] {
+            row(
+                "test cubic, ellipse 0.4, 0.2, π/6",
+                &curve,
+                pen("0.4", "0.2", "pi/6", tol),
+                tol,
+                Output::Cubic,
+            );
+        }
+        let oval = lncert::parse_curve("M 0 0 C 0 2 4 2 4 0 C 4 -2 0 -2 0 0 Z").expect("oval");
+        row(
+            "closed oval, ellipse 0.7, 0.3, π/6",
+            &oval,
+            pen("0.7", "0.3", "pi/6", 1e-2),
+            1e-2,
+            Output::Cubic,
+        );
     }
 }

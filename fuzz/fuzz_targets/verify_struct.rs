@@ -3,8 +3,8 @@
 //!
 //! The bytes are *choices* (read with `arbitrary::Unstructured`): one of the
 //! seed certificates of fuzz/seeds/verify/ (embedded; version 2 with box
-//! covers, version 3 with parametric maps, stroke certificates and a stroke
-//! distance certificate), then 1 to 4 mutations of
+//! covers, version 3 with parametric maps, stroke certificates (a disk pen and
+//! an elliptical one) and a stroke distance certificate), then 1 to 4 mutations of
 //! its JSON tree ([`Mutation`]): add a key (from the keys of the certificate and
 //! shape formats, plus `clockwise`, `bounds`, `bound`, `digest`, `extra`) with a
 //! boolean, a small integer, a canonical rational or a copy of a subtree; remove
@@ -31,7 +31,7 @@ use serde_json::Value;
 use std::fmt::Write;
 use std::sync::OnceLock;
 
-const SEED_TEXTS: [&str; 14] = [
+const SEED_TEXTS: [&str; 15] = [
     include_str!("../seeds/verify/cert_quad_seg.json"),
     include_str!("../seeds/verify/cert_quad_seg_tol1.json"),
     include_str!("../seeds/verify/cert_box_deleted.json"),
@@ -46,6 +46,7 @@ const SEED_TEXTS: [&str; 14] = [
     include_str!("../seeds/verify/stroke_segment.json"),
     include_str!("../seeds/verify/stroke_corner.json"),
     include_str!("../seeds/verify/stroke_distance_rect.json"),
+    include_str!("../seeds/verify/stroke_ellipse_segment.json"),
 ];
 
 fn seeds() -> &'static [Value] {
@@ -60,14 +61,14 @@ fn seeds() -> &'static [Value] {
 
 /// Keys a forger may add: every key of the formats, and the classic extras.
 #[rustfmt::skip]
-const KEYS: [&str; 45] = [
+const KEYS: [&str; 46] = [
     "clockwise", "bounds", "bound", "digest", "beziers", "bezier", "arc", "offset",
     "convolution", "side", "ellipse", "curve", "distance", "radius", "center", "from", "to",
     "piece", "target", "s", "t", "k", "tol", "claim", "extra", "format", "version", "directions",
     "maps", "phi", "union",
     // stroke and stroke distance certificates
     "outline", "cover", "boundary", "of", "boxes", "near", "inside", "contour", "u", "o", "w",
-    "mu", "dirs", "at",
+    "mu", "dirs", "at", "pen",
 ];
 
 /// A value to put somewhere.

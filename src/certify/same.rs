@@ -69,6 +69,10 @@ impl ShapeDesc {
     /// // decimals are exact: 1.3333 is not 4/3
     /// let near = ShapeDesc::parse("M 2 0 C 1.3333 1.3333 0.6667 1.3333 0 0").unwrap();
     /// assert!(whole.same_as(&near).is_err());
+    /// // a union of one member is that member
+    /// let one = ShapeDesc::union(vec![cubic.clone()]).unwrap();
+    /// assert!(one.same_as(&whole).is_ok() && whole.same_as(&one).is_ok());
+    /// assert!(one.same_as(&near).is_err());
     /// ```
     pub fn same_as(&self, other: &ShapeDesc) -> Result<(), String> {
         match (self, other) {
@@ -81,6 +85,13 @@ impl ShapeDesc {
                 same_curve(x, &rev).map_err(|_| e)
             }),
             (ShapeDesc::Arc(a), ShapeDesc::Arc(b)) => same_arc(a, b),
+            // a union of one member is that member's point set
+            (ShapeDesc::Union(x), y) if x.len() == 1 && !matches!(y, ShapeDesc::Union(_)) => {
+                x[0].same_as(y)
+            }
+            (x, ShapeDesc::Union(y)) if y.len() == 1 && !matches!(x, ShapeDesc::Union(_)) => {
+                x.same_as(&y[0])
+            }
             (ShapeDesc::Union(x), ShapeDesc::Union(y)) => {
                 if x.len() != y.len() {
                     return Err(format!("unions of {} and {} members", x.len(), y.len()));

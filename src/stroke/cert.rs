@@ -10,7 +10,8 @@
 use super::{Piece, Stroke};
 use crate::certify::verify::stroke::geom::{arc_hull, ip, iq, BoxT, Path};
 use crate::certify::verify::stroke::{
-    check_bbox, check_part, exact_points, BBox, Input, OPiece, Span, CLAIM, FORMAT, Q2, VERSION,
+    check_bbox, check_part, exact_points, BBox, Input, OPiece, PenMap, Span, CLAIM, CLAIM_ELLIPSE,
+    FORMAT, Q2, VERSION,
 };
 use crate::curve::Bezier;
 use crate::scalar::{rational_from_f64, rational_to_string, Interval, Rational, Scalar};
@@ -528,9 +529,18 @@ impl Ctx<'_> {
 /// circular pen of radius `radius`, at the stroke's tolerance: a JSON
 /// document that [`crate::certify::verify::verify`] checks on its own.
 ///
-/// Errors (field `certificate`): an elliptical pen or butt caps (the format
-/// states `∂(x ⊕ disk r)`), claims (a) or (c) not proven, an arc with equal
-/// ends, or a part or box the tests cannot decide within their depth.
+/// For an elliptical pen `E = M · disk(1)` (`s.pen`; `radius` is not used)
+/// the certificate states `d_H(L, ∂(x ⊕ E)) ≤ tol` with the exact matrix `M`
+/// (key `"pen"`); its parts and boxes are those of the disk certificate of
+/// the pre-images `M⁻¹L`, `M⁻¹x` at `tol / ‖M‖₂` (rounded down), since
+/// `x ⊕ E = M (M⁻¹x ⊕ disk(1))` (`proofs/stroke-certificate.md`,
+/// "Elliptical pens"). The outline must then be Bézier pieces only (the
+/// elliptical pen's caps are).
+///
+/// Errors (field `certificate`): claims (a) or (c) not proven, an arc with
+/// equal ends, or a part or box the tests cannot decide within their depth
+/// (for an elliptical pen: the pre-image is farther than `tol / ‖M‖₂` from
+/// its stroke — stroke at a smaller tolerance).
 ///
 /// # Examples
 /// ```
@@ -551,10 +561,8 @@ pub fn certificate(
     s: &Stroke,
     radius: &Rational,
 ) -> Result<Value, Error> {
-    if s.pen.is_some() {
-        return Err(err(
-            "an elliptical pen: the certificate states the stroke of a disk",
-        ));
+    if let Some(pen) = &s.pen {
+        return ellipse_certificate(curve, s, pen);
     }
     if !(s.a.proven && s.b.proven && s.c.proven) {
         return Err(err(
@@ -692,6 +700,72 @@ pub fn certificate(
     }))
 }
 
+/// The certificate of an elliptical pen's stroke `∂(x ⊕ M·disk(1))`: since
+/// `x ⊕ M·disk(1) = M (M⁻¹x ⊕ disk(1))`, the disk certificate of the
+/// pre-image outline `M⁻¹L` of the curve `M⁻¹x` at `t′` (`‖M‖₂ t′ ≤ tol`,
+/// [`PenMap::pre_tol`]), stated about `x`, `M` and `L` themselves: the
+/// verifier maps them exactly and checks the same parts and boxes.
+fn ellipse_certificate(
+    curve: &[Bezier<Rational>],
+    s: &Stroke,
+    pen: &crate::offset::Pen,
+) -> Result<Value, Error> {
+    let m = [
+        [pen.m[0][0].clone(), pen.m[0][1].clone()],
+        [pen.m[1][0].clone(), pen.m[1][1].clone()],
+    ];
+    let map = PenMap::new(m.clone()).ok_or_else(|| err("a singular pen matrix"))?;
+    let tol_q = s.tol.exact().clone();
+    let t = map
+        .pre_tol(&tol_q)
+        .ok_or_else(|| err("tol / ‖M‖₂ underflows"))?;
+    let pre_bez = |b: &Bezier<Rational>| {
+        Bezier::new(
+            exact_points(b)
+                .iter()
+                .map(|q| {
+                    let [x, y] = map.pre(q);
+                    crate::curve::V2::new(x, y)
+                })
+                .collect(),
+        )
+    };
+    let mut pre = s.clone();
+    pre.pen = None;
+    pre.tol = crate::Tolerance::new(t).map_err(|e| err(e.to_string()))?;
+    let mut outline_json = Vec::new();
+    for (ci, c) in pre.contours.iter_mut().enumerate() {
+        let mut js = Vec::new();
+        for (i, p) in c.pieces.iter_mut().enumerate() {
+            let Piece::Bezier(b) = p else {
+                return Err(err(format!(
+                    "outline[{ci}][{i}]: an exact circular arc in an elliptical pen's outline"
+                )));
+            };
+            js.push(json!({"bezier": exact_points(b).iter().map(pt).collect::<Vec<_>>()}));
+            *b = pre_bez(b);
+        }
+        outline_json.push(Value::Array(js));
+    }
+    let pre_curve: Vec<Bezier<Rational>> = curve.iter().map(pre_bez).collect();
+    let one = Rational::from_integer(1.into());
+    let mut doc = certificate(&pre_curve, &pre, &one)?;
+    let o = doc.as_object_mut().expect("the writer writes an object");
+    o.remove("radius");
+    o.insert("claim".into(), json!(CLAIM_ELLIPSE));
+    o.insert("tol".into(), qs(&tol_q));
+    o.insert("pen".into(), json!({"ellipse": [pt(&m[0]), pt(&m[1])]}));
+    o.insert(
+        "curve".into(),
+        json!(curve
+            .iter()
+            .map(|b| exact_points(b).iter().map(pt).collect::<Vec<_>>())
+            .collect::<Vec<_>>()),
+    );
+    o.insert("outline".into(), Value::Array(outline_json));
+    Ok(doc)
+}
+
 /// The range of a written part, read back exactly.
 fn span_of(v: &Value) -> Result<Span, Error> {
     let r = |x: &Value| {
@@ -743,7 +817,7 @@ pub fn distance_certificate(
     radius: &Rational,
     tol: &crate::Tolerance,
 ) -> Result<Value, Error> {
-    use crate::certify::verify::stroke::{DISTANCE_CLAIM, DISTANCE_FORMAT};
+    use crate::certify::verify::stroke::{DISTANCE_CLAIM, DISTANCE_CLAIM_ELLIPSE, DISTANCE_FORMAT};
     let h = d
         .outline
         .as_ref()
@@ -773,7 +847,7 @@ pub fn distance_certificate(
     Ok(json!({
         "format": DISTANCE_FORMAT,
         "version": VERSION,
-        "claim": DISTANCE_CLAIM,
+        "claim": if d.stroke.pen.is_some() { DISTANCE_CLAIM_ELLIPSE } else { DISTANCE_CLAIM },
         "tol": qs(tol.exact()),
         "shape_to_outline": ch.doc,
         "outline_to_stroke": cs,

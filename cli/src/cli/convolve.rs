@@ -81,7 +81,8 @@ pub struct ConvolveArgs {
     /// still certified and reported, and the result is proven only if it is ≤ T).
     #[arg(long, value_enum, default_value_t = Accept::Certified)]
     pub accept: Accept,
-    /// Write the certificate(s) (see the module docs for the names).
+    /// Write the certificate(s) (see the module docs for the names); with
+    /// `--trim`, the outline's stroke certificate.
     #[arg(long)]
     pub certificate: Option<PathBuf>,
     /// Write a picture: trajectory, exact convolution, approximants, cusps.
@@ -102,8 +103,9 @@ pub struct ConvolveArgs {
     /// Trim: the proven outline of the region the pen sweeps (both sides
     /// trimmed at their crossings, loops removed, closed by half-ellipse
     /// caps), as `lncert stroke --pen ellipse:…` computes it; `--side` is
-    /// not used, `--svg` draws the outline.
-    #[arg(long, conflicts_with_all = ["certificate", "grid"])]
+    /// not used, `--svg` draws the outline, `--certificate` writes the
+    /// outline's stroke certificate (`lncert stroke --certificate`).
+    #[arg(long, conflicts_with = "grid")]
     pub trim: bool,
     /// Write the result as an SVG document (`.svg`): one path per side
     /// (`data-lncert-side`, `data-lncert-proven`), or with `--trim` the
@@ -250,7 +252,7 @@ fn run_trim(a: &ConvolveArgs, curve: &[Bezier<Rational>], pen: Pen) -> Result<i3
         svg: a.svg.clone(),
         path_out: None,
         out: a.out.clone(),
-        certificate: None,
+        certificate: a.certificate.clone(),
         json: a.json,
     };
     super::stroke::run_with(&sa, curve, lncert::stroke::PenShape::Ellipse(pen))

@@ -43,12 +43,6 @@ pub(crate) fn run(
                 "needs --tol T: the certificate states d_H ≤ T",
             ));
         }
-        if !matches!(st.pen, PenShape::Circle(_)) {
-            return Err(bad(
-                "--certificate",
-                "stroke certificates state the stroke of a disk ({\"circle\": R}); an elliptical pen's bounds are printed, not certified",
-            ));
-        }
         if let Some(p) = &a.certificate {
             super::args::output_file("--certificate", p)?;
         }
@@ -94,7 +88,8 @@ pub(crate) fn run(
         if verdict == Some("certified") {
             let r = match &st.pen {
                 PenShape::Circle(r) => r.clone(),
-                PenShape::Ellipse(_) => unreachable!("refused above"),
+                // the stroke's own pen matrix is stated; no radius is used
+                PenShape::Ellipse(_) => lncert::Rational::from_integer(1.into()),
             };
             match lncert::stroke::distance_certificate(&shape, &d, &st.curve, &r, t) {
                 Ok(doc) => {

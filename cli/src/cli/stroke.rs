@@ -288,12 +288,6 @@ pub(crate) fn options(a: &StrokeArgs, pen: PenShape) -> Result<StrokeOptions, Cl
     }
     if let Some(p) = &a.certificate {
         super::args::output_file("--certificate", p)?;
-        if matches!(pen, PenShape::Ellipse(_)) {
-            return Err(bad(
-                "--certificate",
-                "stroke certificates state the stroke of a disk: use --pen circle:R",
-            ));
-        }
         if matches!(a.cap, Cap::Butt) {
             return Err(bad(
                 "--certificate",

@@ -98,9 +98,30 @@ fn pts(v: &Value) -> Vec<(f64, f64)> {
 /// `|dist(q, x) − r| ≤ tol` (a point within `tol` of `∂S`, where the distance
 /// to the curve is `r`, has it; `dist` is 1-Lipschitz). The distance is taken
 /// to a dense polyline of the curve, within its sampling gap.
+///
+/// An elliptical pen `M · disk(1)`: points and curve are mapped by `M⁻¹`
+/// (floats), where `∂S` is at distance 1 from the curve and `dist(M⁻¹ ·, ·)`
+/// is `‖M⁻¹‖₂`-Lipschitz (bounded by the Frobenius norm), so
+/// `|dist(M⁻¹q, M⁻¹x) − 1| ≤ ‖M⁻¹‖_F tol`.
 fn check_stroke(doc: &Value, tol: &Rational) {
-    let tol = lncert::scalar::Scalar::approx(tol);
-    let r = num(&doc["radius"]);
+    let mut tol = lncert::scalar::Scalar::approx(tol);
+    let (r, map) = match doc.get("pen") {
+        Some(pen) => {
+            let m = &pen["ellipse"];
+            let (a, b, c, d) = (num(&m[0][0]), num(&m[0][1]), num(&m[1][0]), num(&m[1][1]));
+            let det = a * d - b * c;
+            let inv = [[d / det, -b / det], [-c / det, a / det]];
+            let fro = inv.iter().flatten().map(|x| x * x).sum::<f64>().sqrt();
+            tol *= fro * (1.0 + 1e-9);
+            (1.0, Some(inv))
+        }
+        None => (num(&doc["radius"]), None),
+    };
+    let pre = |q: (f64, f64)| match &map {
+        Some(m) => (m[0][0] * q.0 + m[0][1] * q.1, m[1][0] * q.0 + m[1][1] * q.1),
+        None => q,
+    };
+    let pts = |v: &Value| -> Vec<(f64, f64)> { pts(v).into_iter().map(pre).collect() };
     let mut curve = Vec::new();
     let mut gap = 0.0f64;
     for p in doc["curve"].as_array().expect("curve") {

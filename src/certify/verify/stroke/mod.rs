@@ -15,6 +15,19 @@
 //!   "boundary": [{"of": NAME, "boxes": [BOX, ...]}, ...],
 //!   "simple": BOOL                             claim (c): simple, disjoint contours
 //! }
+//! ```
+//!
+//! **An elliptical pen** `E = M · disk(1)`: `"pen": {"ellipse": [[m11, m12],
+//! [m21, m22]]}` (exact, `det M ≠ 0`) in place of `"radius"`, claim
+//! `hausdorff(outline, boundary(curve + ellipse(pen))) <= tol`. Since
+//! `x ⊕ E = M (M⁻¹x ⊕ disk(1))`, the verifier maps `curve` and `outline` by
+//! `M⁻¹` exactly (Bézier pieces only: an exact arc is refused) and checks
+//! `cover`, `boundary` and `simple` below for the disk of radius 1 at
+//! `t′ = inf(tol / ‖M‖₂)` (outward enclosure of the norm): then
+//! `d_H(L, ∂S) ≤ ‖M‖₂ d_H(M⁻¹L, ∂(M⁻¹x ⊕ disk(1))) ≤ tol`. Orientations are
+//! stated for `L` (those of `M⁻¹L` times `sign det M`).
+//!
+//! ```text
 //! PIECE = {"bezier": [[Q, Q], ...]}
 //!       | {"arc": {"center": [Q, Q], "radius": Q, "from": [Q, Q], "to": [Q, Q], "clockwise": BOOL}}
 //!                                              (ends exactly on the circle; from = to: the whole circle)
@@ -94,6 +107,9 @@ pub const CLAIM: &str = "hausdorff(outline, boundary(curve + disk(radius))) <= t
 pub const DISTANCE_FORMAT: &str = "lncert-stroke-distance-certificate";
 /// The claim of a stroke distance certificate.
 pub const DISTANCE_CLAIM: &str = "hausdorff(shape, boundary(curve + disk(radius))) <= tol";
+/// The claim of a stroke distance certificate whose stroke certificate is
+/// of an elliptical pen.
+pub const DISTANCE_CLAIM_ELLIPSE: &str = "hausdorff(shape, boundary(curve + ellipse(pen))) <= tol";
 /// Its keys, in the order the writer writes them.
 pub const DISTANCE_KEYS: [&str; 6] = [
     "format",
@@ -114,8 +130,16 @@ pub(crate) fn check_distance(doc: &Json) -> Result<Valid, Invalid> {
             format!("this verifier reads version {VERSION} of {DISTANCE_FORMAT}"),
         ));
     }
-    if claim.as_str() != Some(DISTANCE_CLAIM) {
-        return Err(inv("claim", format!("expected \"{DISTANCE_CLAIM}\"")));
+    let want = if st.get("pen").is_some() {
+        DISTANCE_CLAIM_ELLIPSE
+    } else {
+        DISTANCE_CLAIM
+    };
+    if claim.as_str() != Some(want) {
+        return Err(inv(
+            "claim",
+            format!("expected \"{want}\" (the pen of outline_to_stroke)"),
+        ));
     }
     let tol = canonical_rational(tol, "tol")?;
     fn nest(at: &'static str) -> impl Fn(Invalid) -> Invalid {
@@ -175,6 +199,96 @@ pub const KEYS: [&str; 10] = [
     "format", "version", "claim", "tol", "radius", "curve", "outline", "cover", "boundary",
     "simple",
 ];
+
+/// The claim of a certificate for an elliptical pen `E = M · disk(1)`.
+pub const CLAIM_ELLIPSE: &str = "hausdorff(outline, boundary(curve + ellipse(pen))) <= tol";
+/// The top-level keys of a certificate for an elliptical pen: `"pen"`
+/// (`{"ellipse": [[m11, m12], [m21, m22]]}`) in place of `"radius"`.
+pub const KEYS_ELLIPSE: [&str; 10] = [
+    "format", "version", "claim", "tol", "pen", "curve", "outline", "cover", "boundary", "simple",
+];
+
+/// An elliptical pen `E = M · disk(1)` read exactly: `M`, its inverse, and
+/// the stroke tolerance `t′` at which the pre-image `M⁻¹ L` is checked
+/// against `∂(M⁻¹ x ⊕ disk(1))` so that `‖M‖₂ · t′ ≤ tol`.
+pub(crate) struct PenMap {
+    pub(crate) m: [Q2; 2],
+    pub(crate) inv: [Q2; 2],
+    pub(crate) det_negative: bool,
+    /// A proven upper bound of `‖M‖₂`.
+    pub(crate) norm_sup: f64,
+}
+
+impl PenMap {
+    /// Reads `{"ellipse": [[m11, m12], [m21, m22]]}` (rows, exact, `det M ≠ 0`).
+    pub(crate) fn read(v: &Json) -> Result<PenMap, Invalid> {
+        let [e] = exact_object(v, "pen", ["ellipse"])?;
+        let rows = arr(e, "pen.ellipse", "2 rows")?;
+        if rows.len() != 2 {
+            return Err(inv(
+                "pen.ellipse",
+                "expected 2 rows [[m11, m12], [m21, m22]]",
+            ));
+        }
+        let r0 = point(&rows[0], &|| "pen.ellipse[0]".to_string())?;
+        let r1 = point(&rows[1], &|| "pen.ellipse[1]".to_string())?;
+        PenMap::new([r0, r1]).ok_or_else(|| inv("pen.ellipse", "a singular matrix (det M = 0)"))
+    }
+
+    /// `M` by rows; `None` when `det M = 0`.
+    pub(crate) fn new(m: [Q2; 2]) -> Option<PenMap> {
+        let det = &m[0][0] * &m[1][1] - &m[0][1] * &m[1][0];
+        if det.is_zero() {
+            return None;
+        }
+        let inv = [
+            [&m[1][1] / &det, -&m[0][1] / &det],
+            [-&m[1][0] / &det, &m[0][0] / &det],
+        ];
+        // ‖M‖₂² = (s + √(s² − 4 det²)) / 2, s the squared Frobenius norm
+        let s = m
+            .iter()
+            .flatten()
+            .map(|x| {
+                let xi = iq(x);
+                xi * xi
+            })
+            .fold(iq(&Rational::zero()), |a, b| a + b);
+        let d = iq(&det);
+        let disc = (s * s - iq(&Rational::from_integer(4.into())) * d * d)
+            .intersection(crate::scalar::Interval::try_from((0.0, f64::INFINITY)).ok()?);
+        let half = crate::scalar::Interval::try_from((0.5, 0.5)).ok()?;
+        let norm = ((s + disc.sqrt()) * half).sqrt();
+        let norm_sup = norm.sup();
+        if !norm_sup.is_finite() || norm_sup <= 0.0 {
+            return None;
+        }
+        Some(PenMap {
+            m,
+            inv,
+            det_negative: det.is_negative(),
+            norm_sup,
+        })
+    }
+
+    /// `M⁻¹ p`, exactly.
+    pub(crate) fn pre(&self, p: &Q2) -> Q2 {
+        [
+            &self.inv[0][0] * &p[0] + &self.inv[0][1] * &p[1],
+            &self.inv[1][0] * &p[0] + &self.inv[1][1] * &p[1],
+        ]
+    }
+
+    /// The pre-image tolerance `t′ > 0` with `‖M‖₂ · t′ ≤ tol` (rounded
+    /// down), as an exact rational; `None` when it underflows.
+    pub(crate) fn pre_tol(&self, tol: &Rational) -> Option<Rational> {
+        let norm = crate::scalar::Interval::try_from((self.norm_sup, self.norm_sup)).ok()?;
+        let t = (iq(tol) / norm).inf();
+        (t.is_finite() && t > 0.0)
+            .then(|| crate::scalar::rational_from_f64(t))
+            .flatten()
+    }
+}
 
 /// An exact point.
 pub(crate) type Q2 = [Rational; 2];
@@ -991,40 +1105,97 @@ pub(crate) fn shapes(
     Ok((outline, curve))
 }
 
+/// The pre-image `M⁻¹ L` of an outline under an elliptical pen's map: its
+/// Bézier pieces mapped exactly; an exact circular arc has no Bézier or arc
+/// pre-image and is refused.
+pub(crate) fn pre_outline(
+    outline: Vec<Vec<OPiece>>,
+    pen: &PenMap,
+) -> Result<Vec<Vec<OPiece>>, Invalid> {
+    outline
+        .into_iter()
+        .enumerate()
+        .map(|(ci, c)| {
+            c.into_iter()
+                .enumerate()
+                .map(|(i, p)| match p {
+                    OPiece::Bezier { exact, .. } => {
+                        Ok(OPiece::bezier(exact.iter().map(|q| pen.pre(q)).collect()))
+                    }
+                    OPiece::Arc { .. } => Err(inv(
+                        format!("outline[{ci}][{i}]"),
+                        "an exact circular arc: the outline of an elliptical pen's stroke is stated with Bézier pieces",
+                    )),
+                })
+                .collect()
+        })
+        .collect()
+}
+
 /// Checks a stroke certificate (the format and version already read).
 pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
-    let [_f, version, claim, tol, radius, curve, outline, cover, boundary, simple_claim] =
-        exact_object(doc, "", KEYS)?;
+    let elliptic = doc.get("pen").is_some();
+    let [_f, version, claim, tol, pen_or_radius, curve, outline, cover, boundary, simple_claim] =
+        if elliptic {
+            exact_object(doc, "", KEYS_ELLIPSE)?
+        } else {
+            exact_object(doc, "", KEYS)?
+        };
     if !matches!(version, Json::Number(v) if **v == *VERSION.to_string()) {
         return Err(inv(
             "version",
             format!("this verifier reads version {VERSION} of {FORMAT}"),
         ));
     }
-    if claim.as_str() != Some(CLAIM) {
+    let want = if elliptic { CLAIM_ELLIPSE } else { CLAIM };
+    if claim.as_str() != Some(want) {
         return Err(inv(
             "claim",
-            format!("expected \"{CLAIM}\", the one claim of this format"),
+            format!(
+                "expected \"{want}\", the claim of this format with a \"{}\" key",
+                if elliptic { "pen" } else { "radius" }
+            ),
         ));
     }
     let tol_q = canonical_rational(tol, "tol")?;
     if !tol_q.is_positive() {
         return Err(inv("tol", "must be > 0"));
     }
-    let tol_i = iq(&tol_q);
-    let r = canonical_rational(radius, "radius")?;
+    // an elliptical pen: everything below is checked on the pre-images under
+    // M⁻¹ (a disk pen of radius 1) at t′ with ‖M‖₂ t′ ≤ tol
+    let (pen, r, tol_i) = if elliptic {
+        let pen = PenMap::read(pen_or_radius)?;
+        let t = pen
+            .pre_tol(&tol_q)
+            .ok_or_else(|| inv("tol", "tol / ‖M‖₂ underflows: no pre-image tolerance"))?;
+        (Some(pen), Rational::from_integer(1.into()), iq(&t))
+    } else {
+        (
+            None,
+            canonical_rational(pen_or_radius, "radius")?,
+            iq(&tol_q),
+        )
+    };
     let pieces = arr(curve, "curve", "Bézier pieces")?;
     if pieces.len() > MAX_SEGMENTS {
         return Err(inv("curve", format!("more than {MAX_SEGMENTS} pieces")));
     }
-    let exact: Vec<Vec<Q2>> = pieces
+    let mut exact: Vec<Vec<Q2>> = pieces
         .iter()
         .enumerate()
         .map(|(j, p)| points(p, &format!("curve[{j}]")))
         .collect::<Result<_, _>>()?;
     let t0 = std::time::Instant::now();
+    let mut outline = read_outline(outline)?;
+    if let Some(pen) = &pen {
+        for p in exact.iter_mut() {
+            for q in p.iter_mut() {
+                *q = pen.pre(q);
+            }
+        }
+        outline = pre_outline(outline, pen)?;
+    }
     let input = Input::new(exact, r, "curve")?;
-    let outline = read_outline(outline)?;
     log::debug!(
         "stroke certificate: input and outline read in {:?}",
         t0.elapsed()
@@ -1108,6 +1279,17 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
     }
     log::debug!("stroke certificate: (b) checked at {:?}", t0.elapsed());
     let n_pieces: usize = outline.iter().map(|c| c.len()).sum();
+    // a linear map with det M < 0 reverses every contour's orientation
+    let orient = orient.map(|o| {
+        o.into_iter()
+            .map(|ccw| ccw != pen.as_ref().is_some_and(|p| p.det_negative))
+            .collect::<Vec<_>>()
+    });
+    let max = match &pen {
+        // d_H(L, ∂S) ≤ ‖M‖₂ d_H(M⁻¹L, ∂S′); the figure is informational
+        Some(p) => (max * p.norm_sup).next_up(),
+        None => max,
+    };
     let arcs = outline
         .iter()
         .flatten()
@@ -1132,8 +1314,14 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
             }
         ),
         b: format!(
-            "∂(x ⊕ disk(r)), r = {}, x = {} Bézier piece(s) in {} component(s) ({} closed)",
-            input.r,
+            "{}, x = {} Bézier piece(s) in {} component(s) ({} closed)",
+            match &pen {
+                Some(p) => format!(
+                    "∂(x ⊕ M·disk(1)), M = [[{}, {}], [{}, {}]] (checked as the pre-image under M⁻¹ at tol/‖M‖₂)",
+                    p.m[0][0], p.m[0][1], p.m[1][0], p.m[1][1]
+                ),
+                None => format!("∂(x ⊕ disk(r)), r = {}", input.r),
+            },
             input.iv.len(),
             comps.len(),
             comps.iter().filter(|c| c.2).count()
@@ -1143,5 +1331,7 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
     })
 }
 
+#[cfg(test)]
+mod ellipse_tests;
 #[cfg(test)]
 mod tests;
