@@ -185,6 +185,11 @@ struct Ctx<'a> {
     r: f64,
     tol: f64,
     tol_i: Interval,
+    /// Claim (b)'s tolerance for its near tests (`tol_i`, or for an
+    /// elliptical pen the stated `tol`, measured through `M`), and the
+    /// pre-image distance within which outline candidates are sought.
+    tol_b_i: Interval,
+    near_tol: f64,
     _s: &'a Stroke,
 }
 
@@ -440,10 +445,10 @@ impl Ctx<'_> {
     ) -> Result<Option<Value>, Error> {
         let Some(p) = p else { return Ok(None) };
         let mut tries: Vec<(BBox, Value)> = Vec::new();
-        let near = self.near_outline(p, self.tol);
+        let near = self.near_outline(p, self.near_tol);
         let (j, u, d_in) = nearest_input(&self.fin, p);
         let inside_first =
-            d_in < self.r * (1.0 - 1e-12) && near.first().is_none_or(|n| n.3 > 0.5 * self.tol);
+            d_in < self.r * (1.0 - 1e-12) && near.first().is_none_or(|n| n.3 > 0.5 * self.near_tol);
         let mut inside_try = Vec::new();
         if d_in < self.r {
             let uq = q(u)?;
@@ -517,7 +522,7 @@ impl Ctx<'_> {
             tries.extend(inside_try);
         }
         for (what, v) in tries {
-            if check_bbox(path, bx, &what, &self.outline, &self.input, self.tol_i).is_ok() {
+            if check_bbox(path, bx, &what, &self.outline, &self.input, self.tol_b_i).is_ok() {
                 return Ok(Some(v));
             }
         }
@@ -564,14 +569,27 @@ pub fn certificate(
     if let Some(pen) = &s.pen {
         return ellipse_certificate(curve, s, pen);
     }
+    disk_certificate(curve, s, radius, None)
+}
+
+/// [`certificate`] for a disk pen; with `metric = (M, tol)`, of the
+/// pre-images `curve = M⁻¹x`, `s = M⁻¹L` (radius 1, `s.tol = t′`), claim
+/// (b)'s near tests measured through `M` at the stated `tol`.
+fn disk_certificate(
+    curve: &[Bezier<Rational>],
+    s: &Stroke,
+    radius: &Rational,
+    metric: Option<(&PenMap, &Rational)>,
+) -> Result<Value, Error> {
     if !(s.a.proven && s.b.proven && s.c.proven) {
         return Err(err(
             "the stroke is not proven: no certificate is written for an unproven outline",
         ));
     }
     let exact: Vec<Vec<Q2>> = curve.iter().map(exact_points).collect();
-    let input =
+    let mut input =
         Input::new(exact.clone(), radius.clone(), "curve").map_err(|e| err(e.to_string()))?;
+    input.metric = metric.map(|(m, _)| m.metric());
     let fin: Vec<FBez> = exact
         .iter()
         .map(|p| FBez::new(p.iter().map(v2).collect()))
@@ -623,6 +641,12 @@ pub fn certificate(
         r: radius.approx(),
         tol: s.tol.value(),
         tol_i: iq(&tol_q),
+        tol_b_i: metric.map_or_else(|| iq(&tol_q), |(_, t)| iq(t)),
+        // ‖M⁻¹‖₂ ≤ ‖M⁻¹‖_F: a pre-image distance that may be within tol
+        near_tol: metric.map_or(s.tol.value(), |(m, t)| {
+            let f: f64 = m.inv.iter().flatten().map(|x| x.approx().powi(2)).sum();
+            t.approx() * f.sqrt()
+        }),
         _s: s,
     };
     // (a)
@@ -749,7 +773,7 @@ fn ellipse_certificate(
     }
     let pre_curve: Vec<Bezier<Rational>> = curve.iter().map(pre_bez).collect();
     let one = Rational::from_integer(1.into());
-    let mut doc = certificate(&pre_curve, &pre, &one)?;
+    let mut doc = disk_certificate(&pre_curve, &pre, &one, Some((&map, &tol_q)))?;
     let o = doc.as_object_mut().expect("the writer writes an object");
     o.remove("radius");
     o.insert("claim".into(), json!(CLAIM_ELLIPSE));

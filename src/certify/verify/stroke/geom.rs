@@ -275,6 +275,7 @@ pub(crate) fn near_bezier(
     s: &Rational,
     k: &Rational,
     tol2: Interval,
+    metric: Option<&[[Interval; 2]; 2]>,
 ) -> Result<f64, String> {
     let (si, ki) = (iq(s), iq(k));
     let tau = si + ki * bx.off;
@@ -292,6 +293,14 @@ pub(crate) fn near_bezier(
     let gm = sub(v, l.at(si));
     let gd = sub(d, scale(l.d_at(tau), ki));
     let g = add(gm, scale(gd, bx.off));
+    // an elliptical pen's pre-images: the distance of the images under M
+    let g = match metric {
+        Some(m) => [
+            m[0][0] * g[0] + m[0][1] * g[1],
+            m[1][0] * g[0] + m[1][1] * g[1],
+        ],
+        None => g,
+    };
     let n2 = g[0].sqr() + g[1].sqr();
     if !finite(n2) || n2.sup() > tol2.inf() {
         return Err(format!(

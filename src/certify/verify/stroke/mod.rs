@@ -22,9 +22,10 @@
 //! `hausdorff(outline, boundary(curve + ellipse(pen))) <= tol`. Since
 //! `x ⊕ E = M (M⁻¹x ⊕ disk(1))`, the verifier maps `curve` and `outline` by
 //! `M⁻¹` exactly (Bézier pieces only: an exact arc is refused) and checks
-//! `cover`, `boundary` and `simple` below for the disk of radius 1 at
-//! `t′ = inf(tol / ‖M‖₂)` (outward enclosure of the norm): then
-//! `d_H(L, ∂S) ≤ ‖M‖₂ d_H(M⁻¹L, ∂(M⁻¹x ⊕ disk(1))) ≤ tol`. Orientations are
+//! `cover`, `boundary` and `simple` below for the disk of radius 1: the parts
+//! at `t′ = inf(tol / ‖M‖₂)` (outward enclosure of the norm), so
+//! `h(L → ∂S) ≤ ‖M‖₂ h(M⁻¹L → ∂(M⁻¹x ⊕ disk(1))) ≤ tol`; the boxes' near
+//! tests through `M` (`|M (F′ − L′)| = |F − L| ≤ tol`). Orientations are
 //! stated for `L` (those of `M⁻¹L` times `sign det M`).
 //!
 //! ```text
@@ -271,6 +272,11 @@ impl PenMap {
         })
     }
 
+    /// `M`, enclosed.
+    pub(crate) fn metric(&self) -> [[crate::scalar::Interval; 2]; 2] {
+        [ip(&self.m[0]), ip(&self.m[1])]
+    }
+
     /// `M⁻¹ p`, exactly.
     pub(crate) fn pre(&self, p: &Q2) -> Q2 {
         [
@@ -346,6 +352,10 @@ pub(crate) struct Input {
     pub(crate) exact: Vec<Vec<Q2>>,
     pub(crate) iv: Vec<Bez>,
     pub(crate) r: Rational,
+    /// For an elliptical pen, `M` enclosed: the pieces are pre-images under
+    /// `M⁻¹`, and the near tests of claim (b) measure `|M (F′ − L′)| = |F − L|`
+    /// in the stated coordinates.
+    pub(crate) metric: Option<[[crate::scalar::Interval; 2]; 2]>,
 }
 
 impl Input {
@@ -377,7 +387,12 @@ impl Input {
             .iter()
             .map(|p| Bez::new(p.iter().map(ip).collect()))
             .collect();
-        Ok(Input { exact, iv, r })
+        Ok(Input {
+            exact,
+            iv,
+            r,
+            metric: None,
+        })
     }
 
     /// The connected components (pieces joined end to start): `(first, end,
@@ -925,10 +940,15 @@ pub(crate) fn check_bbox(
             s,
             k,
         } => match get(*contour, *piece)? {
-            OPiece::Bezier { iv, .. } => near_bezier(path, bx, iv, s, k, tol.sqr()),
+            OPiece::Bezier { iv, .. } => {
+                near_bezier(path, bx, iv, s, k, tol.sqr(), input.metric.as_ref())
+            }
             OPiece::Arc { .. } => Err("near: the piece is an arc (no s, k)".into()),
         },
         BBox::NearArc { contour, piece } => match get(*contour, *piece)? {
+            OPiece::Arc { .. } if input.metric.is_some() => {
+                Err("near: an arc under an elliptical pen's map".into())
+            }
             OPiece::Arc { t, .. } => near_arc(path, bx, t, tol),
             OPiece::Bezier { .. } => Err("near: the piece is a Bézier (s and k needed)".into()),
         },
@@ -1162,7 +1182,9 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
         return Err(inv("tol", "must be > 0"));
     }
     // an elliptical pen: everything below is checked on the pre-images under
-    // M⁻¹ (a disk pen of radius 1) at t′ with ‖M‖₂ t′ ≤ tol
+    // M⁻¹ (a disk pen of radius 1) at t′ with ‖M‖₂ t′ ≤ tol, but for claim
+    // (b)'s near tests, which measure in the stated coordinates at tol
+    let tol_b = iq(&tol_q);
     let (pen, r, tol_i) = if elliptic {
         let pen = PenMap::read(pen_or_radius)?;
         let t = pen
@@ -1195,7 +1217,8 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
         }
         outline = pre_outline(outline, pen)?;
     }
-    let input = Input::new(exact, r, "curve")?;
+    let mut input = Input::new(exact, r, "curve")?;
+    input.metric = pen.as_ref().map(PenMap::metric);
     log::debug!(
         "stroke certificate: input and outline read in {:?}",
         t0.elapsed()
@@ -1266,15 +1289,16 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
             ),
         ));
     }
+    let mut max_b = 0.0f64;
     let b: Vec<Result<Tally, Invalid>> = bd
         .par_iter()
         .zip(fams.par_iter())
         .enumerate()
-        .map(|(k, (v, f))| check_family(v, &format!("boundary[{k}]"), f, &outline, &input, tol_i))
+        .map(|(k, (v, f))| check_family(v, &format!("boundary[{k}]"), f, &outline, &input, tol_b))
         .collect();
     for t in b {
         let (m, n) = t?;
-        max = max.max(m);
+        max_b = max_b.max(m);
         count += n;
     }
     log::debug!("stroke certificate: (b) checked at {:?}", t0.elapsed());
@@ -1286,9 +1310,10 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
             .collect::<Vec<_>>()
     });
     let max = match &pen {
-        // d_H(L, ∂S) ≤ ‖M‖₂ d_H(M⁻¹L, ∂S′); the figure is informational
-        Some(p) => (max * p.norm_sup).next_up(),
-        None => max,
+        // h(L → ∂S) ≤ ‖M‖₂ h(M⁻¹L → ∂S′); (b)'s bounds are in the stated
+        // coordinates already; the figure is informational
+        Some(p) => (max * p.norm_sup).next_up().max(max_b),
+        None => max.max(max_b),
     };
     let arcs = outline
         .iter()

@@ -1197,21 +1197,84 @@ mod geom_edges {
         let path = Line(pt("1", "0"), pt("2", "0"));
         // on the line of L = [(0, 0), (1, 0)] but past its end: refused
         let l = bez(&[("0", "0"), ("1", "0")]);
-        let e = near_bezier(&path, &bx("0", "1"), &l, &q("3/2"), &q("1"), sq("1/10"));
+        let e = near_bezier(
+            &path,
+            &bx("0", "1"),
+            &l,
+            &q("3/2"),
+            &q("1"),
+            sq("1/10"),
+            None,
+        );
         assert!(e.unwrap_err().contains("outside [0, 1]"));
         // L = [(0, 0), (2, 0)]: the foot 3/4 + (t − 1/2)/2 ∈ [1/2, 1] is exact
         let l = bez(&[("0", "0"), ("2", "0")]);
-        let b = near_bezier(&path, &bx("0", "1"), &l, &q("3/4"), &q("1/2"), sq("1/10"));
+        let b = near_bezier(
+            &path,
+            &bx("0", "1"),
+            &l,
+            &q("3/4"),
+            &q("1/2"),
+            sq("1/10"),
+            None,
+        );
         assert!(b.unwrap() < 1e-12);
         // 1/10 above L: within 11/100, not within 9/100
         let path = Line(pt("1", "1/10"), pt("2", "1/10"));
-        let b = near_bezier(&path, &bx("0", "1"), &l, &q("3/4"), &q("1/2"), sq("11/100"));
+        let b = near_bezier(
+            &path,
+            &bx("0", "1"),
+            &l,
+            &q("3/4"),
+            &q("1/2"),
+            sq("11/100"),
+            None,
+        );
         assert!((0.1..0.11).contains(&b.unwrap()));
-        let e = near_bezier(&path, &bx("0", "1"), &l, &q("3/4"), &q("1/2"), sq("9/100"));
+        let e = near_bezier(
+            &path,
+            &bx("0", "1"),
+            &l,
+            &q("3/4"),
+            &q("1/2"),
+            sq("9/100"),
+            None,
+        );
+        assert!(e.is_err());
+        // measured through M = [[1, 1], [0, 2]] (an elliptical pen's
+        // pre-images): the offset (0, 1/10) maps to (1/10, 1/5), |·| ≈ 0.2236
+        let m = [[iq(&q("1")), iq(&q("1"))], [iq(&q("0")), iq(&q("2"))]];
+        let b = near_bezier(
+            &path,
+            &bx("0", "1"),
+            &l,
+            &q("3/4"),
+            &q("1/2"),
+            sq("23/100"),
+            Some(&m),
+        );
+        assert!((0.2236..0.2237).contains(&b.unwrap()));
+        let e = near_bezier(
+            &path,
+            &bx("0", "1"),
+            &l,
+            &q("3/4"),
+            &q("1/2"),
+            sq("22/100"),
+            Some(&m),
+        );
         assert!(e.is_err());
         // a wrong slope k: the foot runs ahead of the path
         let path = Line(pt("1", "0"), pt("2", "0"));
-        let e = near_bezier(&path, &bx("0", "1"), &l, &q("3/4"), &q("1/4"), sq("1/10"));
+        let e = near_bezier(
+            &path,
+            &bx("0", "1"),
+            &l,
+            &q("3/4"),
+            &q("1/4"),
+            sq("1/10"),
+            None,
+        );
         assert!(e.is_err());
     }
 
