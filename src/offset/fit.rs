@@ -259,8 +259,13 @@ fn solve_ls(e: &FitEnds, q: &[DVec2], u: &[f64]) -> Option<Bezier<f64>> {
 }
 
 /// The parameter of the point of the cubic nearest `p`, by Newton steps from `u`.
-pub(super) fn project(c: &Bezier<f64>, p: DVec2, mut u: f64) -> f64 {
-    let pts: Vec<DVec2> = c.points().iter().map(dv).collect();
+pub(super) fn project(c: &Bezier<f64>, p: DVec2, u: f64) -> f64 {
+    let q = c.points();
+    project4(&[dv(&q[0]), dv(&q[1]), dv(&q[2]), dv(&q[3])], p, u)
+}
+
+/// [`project`] on the four control points (no allocation).
+fn project4(pts: &[DVec2; 4], p: DVec2, mut u: f64) -> f64 {
     for _ in 0..4 {
         let w = 1.0 - u;
         let b = pts[0] * (w * w * w)
@@ -437,24 +442,36 @@ fn samples(sub: &Bezier<f64>, reach: Reach, m: usize) -> Option<Vec<V2<f64>>> {
 
 /// A sampled one-sided distance from the exact curve's samples to the cubic
 /// (each sample projected by Newton steps; a float estimate, used only to
-/// choose and refine candidates).
-pub(super) fn sampled_error(exact: &[DVec2], c: &Bezier<f64>) -> f64 {
+/// choose and refine candidates), when it is below `cap`; otherwise some
+/// value `≥ cap`
+/// (the first sample found at least `cap` away: the maximum cannot be
+/// smaller). A comparison `< cap` decides as with the full value; for
+/// `≤ x`, pass `cap = x.next_up()`.
+pub(super) fn sampled_error_capped(exact: &[DVec2], c: &Bezier<f64>, cap: f64) -> f64 {
     const N: usize = 48;
-    let cs: Vec<DVec2> = (0..=N).map(|i| c.eval_fast(i as f64 / N as f64)).collect();
+    let q = c.points();
+    let pts = [dv(&q[0]), dv(&q[1]), dv(&q[2]), dv(&q[3])];
+    let mut cs = [DVec2::ZERO; N + 1];
+    for (i, x) in cs.iter_mut().enumerate() {
+        *x = c.eval_fast(i as f64 / N as f64);
+    }
     // exact samples onto the cubic: nearest sample, then Newton (one-sided:
     // the curves are close, and the proofs check both directions)
-    exact
-        .iter()
-        .map(|p| {
-            let (i, _) = cs
-                .iter()
-                .enumerate()
-                .map(|(i, q)| (i, (*q - *p).length_squared()))
-                .fold((0, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
-            let u = project(c, *p, i as f64 / N as f64);
-            (c.eval_fast(u) - *p).length()
-        })
-        .fold(0.0, f64::max)
+    let mut max = 0.0f64;
+    for p in exact {
+        let (i, _) = cs
+            .iter()
+            .enumerate()
+            .map(|(i, q)| (i, (*q - *p).length_squared()))
+            .fold((0, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
+        let u = project4(&pts, *p, i as f64 / N as f64);
+        let d = (c.eval_fast(u) - *p).length();
+        if d >= cap {
+            return d;
+        }
+        max = max.max(d);
+    }
+    max
 }
 
 /// Evaluations of the sampled error spent by [`refine_minimax`].
@@ -474,15 +491,16 @@ pub(super) fn refine_minimax(
     if !(a0 > 0.0 && b0 > 0.0) {
         return start.1;
     }
-    let eval = |p: [f64; 2]| {
+    // capped: a value ≥ cap decides every comparison with cap as the full one
+    let eval = |p: [f64; 2], cap: f64| {
         let c = hermite(e, p[0].exp(), p[1].exp());
-        let err = sampled_error(dense, &c);
+        let err = sampled_error_capped(dense, &c, cap);
         (if err.is_finite() { err } else { f64::INFINITY }, c)
     };
     let (la, lb) = (a0.ln(), b0.ln());
     let mut simplex: Vec<([f64; 2], f64)> = vec![([la, lb], start.0)];
     for p in [[la + 0.2, lb], [la, lb + 0.2]] {
-        simplex.push((p, eval(p).0));
+        simplex.push((p, eval(p, f64::INFINITY).0));
     }
     let mut evals = 2;
     while evals < REFINE_EVALS {
@@ -493,19 +511,21 @@ pub(super) fn refine_minimax(
             (best[1] + simplex[1].0[1]) / 2.0,
         ];
         let at = |k: f64| [c[0] + k * (worst[0] - c[0]), c[1] + k * (worst[1] - c[1])];
+        // (fr is kept only below simplex[1].1, fx only below fr, fk only
+        // below simplex[2].1: those caps change no decision)
         let r = at(-1.0);
-        let fr = eval(r).0;
+        let fr = eval(r, simplex[1].1).0;
         evals += 1;
         if fr < simplex[0].1 {
             let x = at(-2.0);
-            let fx = eval(x).0;
+            let fx = eval(x, fr).0;
             evals += 1;
             simplex[2] = if fx < fr { (x, fx) } else { (r, fr) };
         } else if fr < simplex[1].1 {
             simplex[2] = (r, fr);
         } else {
             let k = at(0.5);
-            let fk = eval(k).0;
+            let fk = eval(k, simplex[2].1).0;
             evals += 1;
             if fk < simplex[2].1 {
                 simplex[2] = (k, fk);
@@ -513,7 +533,7 @@ pub(super) fn refine_minimax(
                 // shrink towards the best
                 for v in simplex.iter_mut().skip(1) {
                     v.0 = [(v.0[0] + best[0]) / 2.0, (v.0[1] + best[1]) / 2.0];
-                    v.1 = eval(v.0).0;
+                    v.1 = eval(v.0, f64::INFINITY).0;
                     evals += 1;
                 }
             }
@@ -521,7 +541,7 @@ pub(super) fn refine_minimax(
     }
     simplex.sort_by(|x, y| x.1.total_cmp(&y.1));
     if simplex[0].1 < start.0 {
-        eval(simplex[0].0).1
+        eval(simplex[0].0, f64::INFINITY).1
     } else {
         start.1
     }
@@ -580,11 +600,17 @@ pub(super) fn construct(
                 .chain(samples(&sub, reach, CHOICE_SAMPLES)?.iter().map(dv))
                 .chain(std::iter::once(dv(&e.p1)))
                 .collect();
-            let best = cands
-                .into_iter()
-                .map(|c| (sampled_error(&dense, &c), c))
-                .filter(|(err, _)| err.is_finite())
-                .min_by(|a, b| a.0.total_cmp(&b.0))?;
+            // the first least error (later ones capped at the best so far:
+            // a capped value is not below it, as the full one)
+            let mut best: Option<(f64, Bezier<f64>)> = None;
+            for c in cands {
+                let cap = best.as_ref().map_or(f64::INFINITY, |b| b.0);
+                let err = sampled_error_capped(&dense, &c, cap);
+                if err.is_finite() && best.as_ref().is_none_or(|b| err < b.0) {
+                    best = Some((err, c));
+                }
+            }
+            let best = best?;
             let (lo, hi) = (REFINE_BAND.0 * target, REFINE_BAND.1 * target);
             if !(best.0 > lo && best.0 < hi) {
                 return Some(best.1);

@@ -37,7 +37,7 @@ impl Ctx<'_> {
         let best = [smooth, cornered]
             .into_iter()
             .flatten()
-            .map(|b| (self.score(&pts, &b), b))
+            .map(|b| (self.score(&pts, &b, f64::INFINITY), b))
             .filter(|(s, _)| *s < 1e6)
             .min_by(|x, y| x.0.total_cmp(&y.0))
             .map(|x| x.1);
@@ -99,7 +99,7 @@ impl Ctx<'_> {
         let v = |p: DVec2| V2::new(p.x, p.y);
         let mut best: Option<(f64, Bezier<f64>)> = None;
         let mut consider = |bz: Bezier<f64>| {
-            let s = self.score(pts, &bz);
+            let s = self.score(pts, &bz, best.as_ref().map_or(f64::INFINITY, |b| b.0));
             if best.as_ref().is_none_or(|b| s < b.0) {
                 best = Some((s, bz));
             }
@@ -129,7 +129,7 @@ impl Ctx<'_> {
                         let mut t = p.clone();
                         t[i] += d;
                         let cand = Bezier::new(t.iter().map(|x| v(*x)).collect());
-                        let e2 = self.score(pts, &cand);
+                        let e2 = self.score(pts, &cand, err);
                         if e2 < err {
                             (err, out) = (e2, cand);
                             improved = true;
@@ -178,7 +178,8 @@ impl Ctx<'_> {
         }
         out.push(v(b.g));
         let out = Bezier::new(out);
-        (self.score(pts, &out) <= 0.5 * self.tol.value()).then_some(out)
+        let thr = 0.5 * self.tol.value();
+        (self.score(pts, &out, thr.next_up()) <= thr).then_some(out)
     }
 
     /// The smooth fit between two joints (see [`Self::fit`]).
@@ -205,7 +206,8 @@ impl Ctx<'_> {
         // between the joints, when it is already well within the tolerance
         if self.corner_joints && a.g != b.g {
             let line = Bezier::new(vec![v(a.g), v(b.g)]);
-            if two_sided(&pts, &line) <= LINE_SHARE * self.tol.value() {
+            let thr = LINE_SHARE * self.tol.value();
+            if two_sided_capped(&pts, &line, thr.next_up()) <= thr {
                 return Some(line);
             }
         }
@@ -226,17 +228,23 @@ impl Ctx<'_> {
         if len > 0.0 {
             cands.push(fit::hermite(&e, len / 3.0, len / 3.0));
         }
-        let best = cands
-            .into_iter()
-            .map(|c| (two_sided(&pts, &c), c))
-            .filter(|(err, _)| err.is_finite())
-            .min_by(|x, y| x.0.total_cmp(&y.0))?;
+        // the first least error (later ones capped at the best so far)
+        let mut best: Option<(f64, Bezier<f64>)> = None;
+        for c in cands {
+            let cap = best.as_ref().map_or(f64::INFINITY, |b| b.0);
+            let err = two_sided_capped(&pts, &c, cap);
+            if err.is_finite() && best.as_ref().is_none_or(|b| err < b.0) {
+                best = Some((err, c));
+            }
+        }
+        let best = best?;
         let refined = fit::refine_minimax(&e, &pts, best);
         // where the end tangents constrain too much (a hairpin round a cusp,
         // joints moved off their nominal places) free both inner points
         // (on a chain, whose fits are proven cheaply, only when far off)
         let free_above = if self.corner_joints { 0.6 } else { 0.25 };
-        let refined = if two_sided(&pts, &refined) > free_above * self.tol.value() {
+        let thr = free_above * self.tol.value();
+        let refined = if two_sided_capped(&pts, &refined, thr.next_up()) > thr {
             free_inner_points(&pts, refined)
         } else {
             refined
@@ -245,8 +253,8 @@ impl Ctx<'_> {
         let p = refined.points();
         let mut q = [self.exact_grid(dv(&p[1]))?, self.exact_grid(dv(&p[2]))?];
         let make = |q: &[DVec2; 2]| Bezier::new(vec![v(a.g), v(q[0]), v(q[1]), v(b.g)]);
-        let score = |b: &Bezier<f64>| self.score(&pts, b);
-        let mut err = score(&make(&q));
+        let score = |b: &Bezier<f64>, cap: f64| self.score(&pts, b, cap);
+        let mut err = score(&make(&q), f64::INFINITY);
         for _ in 0..48 {
             let mut improved = false;
             for i in 0..2 {
@@ -258,7 +266,7 @@ impl Ctx<'_> {
                 ] {
                     let mut t = q;
                     t[i] += d;
-                    let e2 = score(&make(&t));
+                    let e2 = score(&make(&t), err);
                     if e2 < err {
                         err = e2;
                         q = t;
@@ -281,12 +289,19 @@ impl Ctx<'_> {
     /// more: a curve that retraces or nearly cusps, which the simplicity
     /// check of the output cannot pass), so that such a polygon is left
     /// whenever a neighbour is not.
-    fn score(&self, pts: &[DVec2], b: &Bezier<f64>) -> f64 {
-        let e = two_sided(pts, b);
+    ///
+    /// Capped ([`two_sided_capped`]): below `cap` the value, else some
+    /// value `≥ cap`, so that `score(b, cap) < cap` decides as in full.
+    fn score(&self, pts: &[DVec2], b: &Bezier<f64>, cap: f64) -> f64 {
+        let penalty = 1e6 * (1.0 + self.tol.value());
         if self.corner_joints && !forward_legs(b, self.hairpin_cos) {
-            e + 1e6 * (1.0 + self.tol.value())
+            if cap < penalty {
+                // e + penalty ≥ penalty > cap, whatever e
+                return f64::INFINITY;
+            }
+            two_sided(pts, b) + penalty
         } else {
-            e
+            two_sided_capped(pts, b, cap)
         }
     }
 
@@ -305,7 +320,8 @@ impl Ctx<'_> {
         }
         let v = |p: DVec2| V2::new(p.x, p.y);
         let line = Bezier::new(vec![v(a), v(b)]);
-        (a != b && two_sided(pts, &line) <= self.tol.value()).then_some(line)
+        let thr = self.tol.value();
+        (a != b && two_sided_capped(pts, &line, thr.next_up()) <= thr).then_some(line)
     }
 
     /// The quadratic between two grid joints: the control point at the end
@@ -317,7 +333,7 @@ impl Ctx<'_> {
         let first = fit::tangent_quadratic(e)?;
         let mut q = self.exact_grid(dv(&first.points()[1]))?;
         let make = |q: DVec2| Bezier::new(vec![v(a), v(q), v(b)]);
-        let mut err = self.score(pts, &make(q));
+        let mut err = self.score(pts, &make(q), f64::INFINITY);
         for _ in 0..96 {
             let mut improved = false;
             for d in [
@@ -326,7 +342,7 @@ impl Ctx<'_> {
                 DVec2::new(0.0, self.gf),
                 DVec2::new(0.0, -self.gf),
             ] {
-                let e2 = self.score(pts, &make(q + d));
+                let e2 = self.score(pts, &make(q + d), err);
                 if e2 < err {
                     err = e2;
                     q += d;
@@ -376,6 +392,14 @@ fn forward_legs(b: &Bezier<f64>, hairpin_cos: f64) -> bool {
 /// The sampled two-sided distance between the exact samples (a polyline) and
 /// a cubic (float estimate: chooses candidates only).
 pub(super) fn two_sided(exact: &[DVec2], c: &Bezier<f64>) -> f64 {
+    two_sided_capped(exact, c, f64::INFINITY)
+}
+
+/// [`two_sided`] when it is below `cap`; otherwise some value `≥ cap` (a
+/// sample found at least `cap` away in either direction: the maximum is not
+/// smaller). A comparison `< cap` decides as with the full value; for `≤ x`
+/// or `> x` pass `cap = x.next_up()`.
+pub(super) fn two_sided_capped(exact: &[DVec2], c: &Bezier<f64>, cap: f64) -> f64 {
     // a quadratic is measured as its exact degree elevation (the same curve)
     let elevated;
     let c = if c.degree() == 1 {
@@ -408,25 +432,35 @@ pub(super) fn two_sided(exact: &[DVec2], c: &Bezier<f64>) -> f64 {
     } else {
         c
     };
-    let ab = fit::sampled_error(exact, c);
-    let ba = (0..=32)
-        .map(|i| {
-            let p = c.eval_fast(i as f64 / 32.0);
-            exact
-                .windows(2)
-                .map(|w| {
-                    let d = w[1] - w[0];
-                    let l2 = d.length_squared();
-                    let s = if l2 > 0.0 {
-                        ((p - w[0]).dot(d) / l2).clamp(0.0, 1.0)
-                    } else {
-                        0.0
-                    };
-                    (w[0] + d * s - p).length()
-                })
-                .fold(f64::INFINITY, f64::min)
-        })
-        .fold(0.0, f64::max);
+    let ab = fit::sampled_error_capped(exact, c, cap);
+    if ab >= cap {
+        return ab;
+    }
+    let mut ba = 0.0f64;
+    for i in 0..=32 {
+        let p = c.eval_fast(i as f64 / 32.0);
+        let d = exact
+            .windows(2)
+            .map(|w| {
+                let d = w[1] - w[0];
+                let l2 = d.length_squared();
+                let s = if l2 > 0.0 {
+                    ((p - w[0]).dot(d) / l2).clamp(0.0, 1.0)
+                } else {
+                    0.0
+                };
+                (w[0] + d * s - p).length()
+            })
+            .fold(f64::INFINITY, f64::min);
+        if d >= cap {
+            return if ab.is_finite() && d.is_finite() {
+                d
+            } else {
+                f64::INFINITY
+            };
+        }
+        ba = ba.max(d);
+    }
     if ab.is_finite() && ba.is_finite() {
         ab.max(ba)
     } else {
@@ -450,18 +484,21 @@ fn free_inner_points(exact: &[DVec2], c: Bezier<f64>) -> Bezier<f64> {
             V2::new(p[3].x, p[3].y),
         ])
     };
-    let f = |x: &[f64; 4]| two_sided(exact, &make(x));
+    // capped: fr is kept only below simplex[3].1, fe only below fr, fk only
+    // below simplex[4].1, so those caps change no decision
+    let f = |x: &[f64; 4], cap: f64| two_sided_capped(exact, &make(x), cap);
     let x0 = [p[1].x, p[1].y, p[2].x, p[2].y];
     let step = 0.05
         * (p[3] - p[0])
             .length()
             .max((p[1] - p[0]).length())
             .max(1e-300);
-    let mut simplex: Vec<([f64; 4], f64)> = vec![(x0, f(&x0))];
+    let f0 = f(&x0, f64::INFINITY);
+    let mut simplex: Vec<([f64; 4], f64)> = vec![(x0, f0)];
     for k in 0..4 {
         let mut x = x0;
         x[k] += step;
-        simplex.push((x, f(&x)));
+        simplex.push((x, f(&x, f64::INFINITY)));
     }
     let mut evals = 5;
     while evals < FREE_EVALS {
@@ -481,18 +518,18 @@ fn free_inner_points(exact: &[DVec2], c: Bezier<f64>) -> Bezier<f64> {
             x
         };
         let r = at(-1.0);
-        let fr = f(&r);
+        let fr = f(&r, simplex[3].1);
         evals += 1;
         if fr < simplex[0].1 {
             let e = at(-2.0);
-            let fe = f(&e);
+            let fe = f(&e, fr);
             evals += 1;
             simplex[4] = if fe < fr { (e, fe) } else { (r, fr) };
         } else if fr < simplex[3].1 {
             simplex[4] = (r, fr);
         } else {
             let k = at(0.5);
-            let fk = f(&k);
+            let fk = f(&k, simplex[4].1);
             evals += 1;
             if fk < simplex[4].1 {
                 simplex[4] = (k, fk);
@@ -502,14 +539,14 @@ fn free_inner_points(exact: &[DVec2], c: Bezier<f64>) -> Bezier<f64> {
                     for (x, b) in v.0.iter_mut().zip(best) {
                         *x = 0.5 * (*x + b);
                     }
-                    v.1 = f(&v.0);
+                    v.1 = f(&v.0, f64::INFINITY);
                     evals += 1;
                 }
             }
         }
     }
     simplex.sort_by(|a, b| a.1.total_cmp(&b.1));
-    if simplex[0].1 < f(&x0) {
+    if simplex[0].1 < f0 {
         make(&simplex[0].0)
     } else {
         c

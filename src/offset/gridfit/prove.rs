@@ -1,7 +1,7 @@
 //! The proof of each cubic against its targets (splitting on failure), the
 //! numbering of the results and the certificate.
 
-use super::fitting::two_sided;
+use super::fitting::two_sided_capped;
 use super::outline::{Contour, Ctx, Joint, Part, Pos};
 use super::{
     GridOffset, GridSegment, OffsetError, ProofPath, Target, MAX_DEPTH, SPLIT_SHARE, WINDOW_STEPS,
@@ -123,7 +123,8 @@ impl Ctx<'_> {
         let pts: Vec<DVec2> = dense
             .as_ref()
             .map_or(Vec::new(), |d| d.iter().map(|p| p.1).collect());
-        if depth < MAX_DEPTH && two_sided(&pts, &bez) > self.tol.value() {
+        let thr = self.tol.value();
+        if depth < MAX_DEPTH && two_sided_capped(&pts, &bez, thr.next_up()) > thr {
             if let Some(v) = split(stats) {
                 return v;
             }
