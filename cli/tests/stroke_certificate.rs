@@ -3,7 +3,8 @@
 //! only for the outline and the curve it speaks about, also for an elliptical
 //! pen; an edited certificate is refused at the named field; the flag is
 //! refused before any work where the certificate cannot state the stroke
-//! (butt caps, a `{"circle"}` input, a per-element SVG document).
+//! (butt caps, a `{"circle"}` input); an SVG document stroked per element
+//! gets a set of certificates, one per element.
 
 mod common;
 
@@ -367,4 +368,63 @@ fn elliptical_pen_certificates_verify() {
         at.starts_with("cover[") || at.starts_with("boundary["),
         "{v}"
     );
+}
+
+/// An SVG document stroked per element (each its own `stroke-width`):
+/// `--certificate` writes a certificate set that `verify` accepts, naming
+/// every element; an element's certificate forged is refused under
+/// `members[k]`; `--against` is refused for a set.
+#[test]
+fn svg_document_certificate_set_verifies() {
+    let doc = tmp(
+        "set-icon.svg",
+        r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 24 24" fill="none" stroke="black" stroke-width="2"><circle cx="12" cy="12" r="3"/><polyline points="4 17 10 11 4 5" stroke-width="1"/><path d="M20 2 L22 2" stroke="none"/></svg>"#,
+    );
+    let cert = doc.with_file_name("set-icon.cert.json");
+    let o = lncert(&[
+        "stroke",
+        doc.to_str().unwrap(),
+        "--tol",
+        "1e-2",
+        "--certificate",
+        cert.to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    assert!(err.contains("stroke certificate set (2 elements)"), "{err}");
+    let v = lncert(&["verify", cert.to_str().unwrap()]);
+    let out = String::from_utf8_lossy(&v.stdout);
+    assert_eq!(v.status.code(), Some(0), "{out}");
+    assert!(
+        out.contains("≤ 1/100") && out.contains("svg/circle[0], svg/polyline[0]"),
+        "{out}"
+    );
+    // each member states its own pen: the circle's radius 1, the polyline's 1/2
+    let set: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&cert).unwrap()).unwrap();
+    assert_eq!(set["members"][0]["certificate"]["radius"], "1");
+    assert_eq!(set["members"][1]["certificate"]["radius"], "1/2");
+    // the polyline's pen claimed as the circle's: refused under members[1]
+    let mut forged = set.clone();
+    forged["members"][1]["certificate"]["radius"] = "1".into();
+    let p = cert.with_file_name("set-icon-forged.json");
+    std::fs::write(&p, forged.to_string()).unwrap();
+    let o = lncert(&["verify", p.to_str().unwrap(), "--json"]);
+    assert_eq!(o.status.code(), Some(1));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(
+        v["at"]
+            .as_str()
+            .unwrap()
+            .starts_with("members[1].certificate."),
+        "{v}"
+    );
+    let o = lncert(&[
+        "verify",
+        cert.to_str().unwrap(),
+        "--against",
+        doc.to_str().unwrap(),
+        doc.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(1));
 }

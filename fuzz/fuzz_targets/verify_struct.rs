@@ -4,7 +4,8 @@
 //! The bytes are *choices* (read with `arbitrary::Unstructured`): one of the
 //! seed certificates of fuzz/seeds/verify/ (embedded; version 2 with box
 //! covers, version 3 with parametric maps, stroke certificates (a disk pen and
-//! an elliptical one) and a stroke distance certificate), then 1 to 4 mutations of
+//! an elliptical one), a stroke distance certificate and a certificate set), then
+//! 1 to 4 mutations of
 //! its JSON tree ([`Mutation`]): add a key (from the keys of the certificate and
 //! shape formats, plus `clockwise`, `bounds`, `bound`, `digest`, `extra`) with a
 //! boolean, a small integer, a canonical rational or a copy of a subtree; remove
@@ -31,7 +32,7 @@ use serde_json::Value;
 use std::fmt::Write;
 use std::sync::OnceLock;
 
-const SEED_TEXTS: [&str; 15] = [
+const SEED_TEXTS: [&str; 16] = [
     include_str!("../seeds/verify/cert_quad_seg.json"),
     include_str!("../seeds/verify/cert_quad_seg_tol1.json"),
     include_str!("../seeds/verify/cert_box_deleted.json"),
@@ -47,6 +48,7 @@ const SEED_TEXTS: [&str; 15] = [
     include_str!("../seeds/verify/stroke_corner.json"),
     include_str!("../seeds/verify/stroke_distance_rect.json"),
     include_str!("../seeds/verify/stroke_ellipse_segment.json"),
+    include_str!("../seeds/verify/stroke_set_two.json"),
 ];
 
 fn seeds() -> &'static [Value] {
@@ -61,14 +63,14 @@ fn seeds() -> &'static [Value] {
 
 /// Keys a forger may add: every key of the formats, and the classic extras.
 #[rustfmt::skip]
-const KEYS: [&str; 46] = [
+const KEYS: [&str; 48] = [
     "clockwise", "bounds", "bound", "digest", "beziers", "bezier", "arc", "offset",
     "convolution", "side", "ellipse", "curve", "distance", "radius", "center", "from", "to",
     "piece", "target", "s", "t", "k", "tol", "claim", "extra", "format", "version", "directions",
     "maps", "phi", "union",
     // stroke and stroke distance certificates
     "outline", "cover", "boundary", "of", "boxes", "near", "inside", "contour", "u", "o", "w",
-    "mu", "dirs", "at", "pen",
+    "mu", "dirs", "at", "pen", "members", "certificate",
 ];
 
 /// A value to put somewhere.

@@ -184,6 +184,12 @@ pub fn verify_against(text: &str, a: &ShapeDesc, b: &ShapeDesc) -> Result<Valid,
         reason: format!("{} (line {}, column {})", e.reason, e.line, e.column),
     })?;
     let valid = verify_json(&doc)?;
+    if doc.get("format").and_then(|f| f.as_str()) == Some(super::verify::stroke::SET_FORMAT) {
+        return Err(Invalid {
+            at: "format".into(),
+            reason: "a certificate set holds one outline and one curve per member: --against compares a single certificate's".into(),
+        });
+    }
     if doc.get("format").and_then(|f| f.as_str()) == Some(super::verify::stroke::FORMAT) {
         // a stroke certificate: A is its outline, B its curve
         let (outline, curve) = super::verify::stroke::shapes(&doc)?;

@@ -790,6 +790,41 @@ fn ellipse_certificate(
     Ok(doc)
 }
 
+/// A set of stroke certificates (format
+/// [`crate::certify::verify::stroke::SET_FORMAT`]): one per stroked element,
+/// each `(label, certificate)` — e.g. the elements of an SVG document, each
+/// with its own pen. `verify` checks every member on its own.
+///
+/// # Examples
+/// ```
+/// use lncert::stroke::{certificate, certificate_set, stroke, StrokeOptions};
+/// use lncert::{parse_curve, parse_rational};
+/// # fn main() -> Result<(), lncert::Error> {
+/// let mut members = Vec::new();
+/// for (path, r) in [("M 0 0 L 4 0", "1/2"), ("M 0 3 L 4 3", "1/4")] {
+///     let (x, r) = (parse_curve(path)?, parse_rational(r)?);
+///     let s = stroke(&x, &StrokeOptions::new(r.clone(), "1e-2".parse()?))?;
+///     members.push((path.to_string(), certificate(&x, &s, &r)?));
+/// }
+/// let set = certificate_set(members);
+/// let valid = lncert::certify::verify::verify(&set.to_string()).unwrap();
+/// assert!(valid.a.contains("2 stroked element(s)"));
+/// # Ok(())
+/// # }
+/// ```
+pub fn certificate_set(members: Vec<(String, Value)>) -> Value {
+    use crate::certify::verify::stroke::{SET_CLAIM, SET_FORMAT};
+    json!({
+        "format": SET_FORMAT,
+        "version": VERSION,
+        "claim": SET_CLAIM,
+        "members": members
+            .into_iter()
+            .map(|(at, c)| json!({"at": at, "certificate": c}))
+            .collect::<Vec<_>>(),
+    })
+}
+
 /// The range of a written part, read back exactly.
 fn span_of(v: &Value) -> Result<Span, Error> {
     let r = |x: &Value| {

@@ -38,7 +38,7 @@ pub(crate) mod onside;
 mod referee;
 pub(crate) mod trim;
 
-pub use cert::{certificate, distance_certificate};
+pub use cert::{certificate, certificate_set, distance_certificate};
 pub use circle::{arcs_meet, bezier_arc, Arc, ArcHit, ArcMeet};
 pub use ellipse::{half_ellipse_cap, outside_of, EllipseCap, Form};
 pub use intersect::{intersections, Crossing, IntersectOptions, Intersections, Joint, Undecided};

@@ -57,11 +57,8 @@ fn stroked(elements: &[SvgElement]) -> Result<Vec<(&SvgElement, Rational)>, CliE
 
 /// Runs the per-element stroke of an SVG document.
 pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
-    if a.certificate.is_some() {
-        return Err(bad(
-            "--certificate",
-            "a certificate states the stroke of one curve with one pen: give --pen circle:R (the document's elements are then stroked together)",
-        ));
+    if let Some(p) = &a.certificate {
+        super::args::output_file("--certificate", p)?;
     }
     let (text, elements) = read_document(a)?;
     let jobs = stroked(&elements)?;
@@ -92,11 +89,66 @@ pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
     } else {
         print_out(&report.text());
     }
-    Ok(if all {
+    let code = if all {
         super::EXIT_OK
     } else {
         super::EXIT_UNDECIDED
-    })
+    };
+    match &a.certificate {
+        Some(p) => write_certificate_set(p, &jobs, &strokes, code),
+        None => Ok(code),
+    }
+}
+
+/// `--certificate FILE`: a set of stroke certificates, one per stroked
+/// element (its own curve and pen), written when every element is proven
+/// (else a note on stderr, the exit code kept); a proven run whose
+/// certificates cannot all be built exits 3.
+fn write_certificate_set(
+    path: &std::path::Path,
+    jobs: &[(&SvgElement, Rational)],
+    strokes: &[(Stroke, f64)],
+    code: i32,
+) -> Result<i32, CliError> {
+    if code != super::EXIT_OK {
+        eprintln!(
+            "lncert: --certificate {}: not written (not every element is proven)",
+            path.display()
+        );
+        return Ok(code);
+    }
+    let t0 = std::time::Instant::now();
+    let members: Result<Vec<(String, serde_json::Value)>, String> = jobs
+        .par_iter()
+        .zip(strokes.par_iter())
+        .map(|((e, r), (s, _))| {
+            lncert::stroke::certificate(&e.pieces, s, r)
+                .map(|c| (e.at.clone(), c))
+                .map_err(|err| format!("{}: {}", e.at, err.reason))
+        })
+        .collect();
+    match members {
+        Ok(m) => {
+            let n = m.len();
+            let text = lncert::stroke::certificate_set(m).to_string();
+            std::fs::write(path, &text).map_err(|e| bad("--certificate", e))?;
+            eprintln!(
+                "lncert: stroke certificate set ({n} elements) written to {} ({} kB in {:.3} s); check it with: lncert verify {}",
+                path.display(),
+                text.len().div_ceil(1000),
+                t0.elapsed().as_secs_f64(),
+                path.display()
+            );
+            Ok(code)
+        }
+        Err(why) => {
+            eprintln!(
+                "lncert: --certificate {}: not written: {why}",
+                path.display()
+            );
+            Ok(super::EXIT_UNDECIDED)
+        }
+    }
 }
 
 /// The document's text and its elements, after the flags' checks.

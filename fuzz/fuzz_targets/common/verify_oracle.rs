@@ -20,6 +20,15 @@ pub fn check_accepted(text: &str, tol: &Rational) {
     if doc["format"] == "lncert-stroke-certificate" {
         return check_stroke(&doc, tol);
     }
+    if doc["format"] == "lncert-stroke-certificate-set" {
+        // every member was accepted: each member's claim must hold
+        for m in doc["members"].as_array().expect("members") {
+            let c = &m["certificate"];
+            let t = lncert::parse_rational(c["tol"].as_str().expect("a tolerance")).expect("canonical");
+            check_stroke(c, &t);
+        }
+        return;
+    }
     if doc["format"] == "lncert-stroke-distance-certificate" {
         // both parts were accepted: each claim must hold (the sum follows)
         let part_tol = |d: &Value| {

@@ -196,13 +196,17 @@ fn check_document(doc: &Json) -> Result<Valid, Invalid> {
         if format.as_str() == Some(stroke::DISTANCE_FORMAT) {
             return stroke::check_distance(doc);
         }
+        if format.as_str() == Some(stroke::SET_FORMAT) {
+            return stroke::check_set(doc);
+        }
         if format.as_str() != Some(FORMAT) {
             return Err(inv(
                 "format",
                 format!(
-                    "expected \"{FORMAT}\", \"{}\" or \"{}\"",
+                    "expected \"{FORMAT}\", \"{}\", \"{}\" or \"{}\"",
                     stroke::FORMAT,
-                    stroke::DISTANCE_FORMAT
+                    stroke::DISTANCE_FORMAT,
+                    stroke::SET_FORMAT
                 ),
             ));
         }

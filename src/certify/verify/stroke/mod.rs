@@ -108,6 +108,96 @@ pub const CLAIM: &str = "hausdorff(outline, boundary(curve + disk(radius))) <= t
 pub const DISTANCE_FORMAT: &str = "lncert-stroke-distance-certificate";
 /// The claim of a stroke distance certificate.
 pub const DISTANCE_CLAIM: &str = "hausdorff(shape, boundary(curve + disk(radius))) <= tol";
+/// The format of a set of stroke certificates: one per stroked element of an
+/// SVG document (each element its own curve and pen), every member a stroke
+/// certificate checked on its own.
+///
+/// ```text
+/// {"format": "lncert-stroke-certificate-set", "version": 1,
+///  "claim": "every member's claim holds",
+///  "members": [{"at": LABEL, "certificate": STROKE_CERTIFICATE}, ...]}
+/// ```
+///
+/// Valid: for each member `k`, `d_H(L_k, ∂S_k) ≤ tol_k`; the statement's
+/// `tol` is the largest, and `d_H(∪ L_k, ∪ ∂S_k) ≤ max tol_k` follows. The
+/// labels are the writer's (e.g. `svg/path[2]`), not checked.
+pub const SET_FORMAT: &str = "lncert-stroke-certificate-set";
+/// The claim of a certificate set.
+pub const SET_CLAIM: &str = "every member's claim holds";
+/// Most members of a certificate set.
+pub const MAX_SET_MEMBERS: usize = 4096;
+
+/// Checks a set of stroke certificates: each member on its own.
+pub(crate) fn check_set(doc: &Json) -> Result<Valid, Invalid> {
+    let [_f, version, claim, members] =
+        exact_object(doc, "", ["format", "version", "claim", "members"])?;
+    if !matches!(version, Json::Number(v) if **v == *VERSION.to_string()) {
+        return Err(inv(
+            "version",
+            format!("this verifier reads version {VERSION} of {SET_FORMAT}"),
+        ));
+    }
+    if claim.as_str() != Some(SET_CLAIM) {
+        return Err(inv("claim", format!("expected \"{SET_CLAIM}\"")));
+    }
+    let ms = arr(members, "members", "members")?;
+    if ms.is_empty() || ms.len() > MAX_SET_MEMBERS {
+        return Err(inv(
+            "members",
+            format!(
+                "expected 1 to {MAX_SET_MEMBERS} members, found {}",
+                ms.len()
+            ),
+        ));
+    }
+    let mut labels = Vec::new();
+    let mut out: Option<Valid> = None;
+    for (k, m) in ms.iter().enumerate() {
+        let at = format!("members[{k}]");
+        let [label, cert] = exact_object(m, &at, ["at", "certificate"])?;
+        let label = label
+            .as_str()
+            .ok_or_else(|| inv(join(&at, "at"), "expected a string label"))?;
+        if cert.get("format").and_then(|f| f.as_str()) != Some(FORMAT) {
+            return Err(inv(
+                format!("{at}.certificate.format"),
+                format!("expected \"{FORMAT}\""),
+            ));
+        }
+        let v = check(cert).map_err(|e| {
+            let w = format!("{at}.certificate");
+            inv(if e.at.is_empty() { w } else { join(&w, &e.at) }, e.reason)
+        })?;
+        labels.push(label.to_string());
+        out = Some(match out {
+            None => v,
+            Some(o) => Valid {
+                tol: if v.tol > o.tol { v.tol } else { o.tol },
+                a: o.a,
+                b: o.b,
+                max_bound: o.max_bound.max(v.max_bound),
+                boxes: o.boxes + v.boxes,
+            },
+        });
+    }
+    let mut v = out.expect("at least one member");
+    let shown = labels
+        .iter()
+        .take(8)
+        .cloned()
+        .collect::<Vec<_>>()
+        .join(", ");
+    let more = if labels.len() > 8 { ", …" } else { "" };
+    v.a = format!(
+        "the outlines of {} stroked element(s) ({shown}{more}, as labelled by the writer), each proven on its own",
+        labels.len()
+    );
+    v.b = format!(
+        "the boundaries of their strokes, each element's ∂(x_k ⊕ pen_k) with its own curve and pen (d_H of the unions ≤ the largest member tolerance)"
+    );
+    Ok(v)
+}
+
 /// The claim of a stroke distance certificate whose stroke certificate is
 /// of an elliptical pen.
 pub const DISTANCE_CLAIM_ELLIPSE: &str = "hausdorff(shape, boundary(curve + ellipse(pen))) <= tol";
@@ -1358,5 +1448,7 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
 
 #[cfg(test)]
 mod ellipse_tests;
+#[cfg(test)]
+mod set_tests;
 #[cfg(test)]
 mod tests;
