@@ -92,7 +92,7 @@ pub(crate) fn bisect(sf: &Poly<Rational>, r: &RealRoot, bits: u32) -> RealRoot {
 /// holds 0. Stops once the float width is at most `2^-bits / 2` (the exact
 /// width is then below `2^-bits`). The ends are exact floats, so the result
 /// is the same proof as [`bisect`]'s, without rational midpoints.
-fn bisect_f64(
+pub(crate) fn bisect_f64(
     sf: &Poly<Rational>,
     sf_iv: &Poly<Interval>,
     (mut a, mut b): (f64, f64),

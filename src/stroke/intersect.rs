@@ -621,7 +621,18 @@ fn pair_boxes(
 /// search, no budget. `None` (the box search decides) when neither piece is a
 /// segment of positive length or `B` lies on the segment's line.
 fn segment_pair(pieces: &[Bezier<Rational>], i: usize, j: usize) -> Option<Intersections> {
-    use crate::poly::{has_common_root_in, isolate_roots, refine_root, Poly, Span};
+    segment_pair_opt(pieces, i, j, true)
+}
+
+/// [`segment_pair`], with the float-first root path or without it (the exact
+/// path alone: for the tests that compare the two).
+fn segment_pair_opt(
+    pieces: &[Bezier<Rational>],
+    i: usize,
+    j: usize,
+    float_first: bool,
+) -> Option<Intersections> {
+    use crate::poly::{has_common_root_in, isolate_roots, refine_root, Poly, RealRoot, Span};
     let (a, b) = (&pieces[i], &pieces[j]);
     // the segment and the other piece; `swap`: the segment is piece j
     let (seg, other, swap) = if a.degree() == 1 {
@@ -732,7 +743,25 @@ fn segment_pair(pieces: &[Bezier<Rational>], i: usize, j: usize) -> Option<Inter
     let sp = Poly::from_bernstein(&sb);
     let s_enc = |lo: &Rational, hi: &Rational| sp.range_on_nonnegative(lo, hi);
     let target = q(1, 1 << 30) * q(1, 1 << 20);
-    for root in isolate_roots(&f, &Span::closed(zero.clone(), one.clone())) {
+    // float first: interval Bernstein subdivision proves every root in
+    // [0, 1] simple and isolated (strict end signs, one sign variation per
+    // piece, none elsewhere), and float bisection with exact signs where
+    // the enclosure cannot tell ([`crate::offset::prep::bisect_f64`])
+    // narrows each to the target width; otherwise the exact path (Sturm
+    // isolation, rational bisection, the tangency test)
+    let fast: Option<Vec<RealRoot>> = (float_first && f.coeffs().len() <= 61)
+        .then(|| {
+            let fi = f.map(interval_from_rational);
+            let pieces = crate::poly::isolate_simple_roots(&fi, 0.0, 1.0, 2_000)?;
+            pieces
+                .into_iter()
+                .map(|ab| crate::offset::prep::bisect_f64(&f, &fi, ab, 50))
+                .collect()
+        })
+        .flatten();
+    let simple = fast.is_some();
+    let roots = fast.unwrap_or_else(|| isolate_roots(&f, &Span::closed(zero.clone(), one.clone())));
+    for root in roots {
         let mut r = root;
         // Some(None): no contact; Some(Some(())): a crossing inside the segment
         let mut verdict = None;
@@ -766,12 +795,17 @@ fn segment_pair(pieces: &[Bezier<Rational>], i: usize, j: usize) -> Option<Inter
             Some(None) => {}
             Some(Some(_)) => {
                 let span = Span::closed(r.lo.clone(), r.hi.clone());
-                if has_common_root_in(&f, &df, &span) {
+                if !simple && has_common_root_in(&f, &df, &span) {
                     out.undecided.push(undecided("tangential"));
                     continue;
                 }
-                // a simple root: narrow it for a tight split point
-                let r = refine_root(&f, &r, &target);
+                // a simple root: narrow it for a tight split point (the
+                // float path's roots are within the target already)
+                let r = if simple {
+                    r
+                } else {
+                    refine_root(&f, &r, &target)
+                };
                 if r.is_exact() && (r.lo == zero || r.lo == one) {
                     // at an end of B (not a shared end point): a T-contact
                     out.undecided.push(undecided("boundary"));
@@ -937,6 +971,55 @@ mod tests {
         let r = intersections(&c, &IntersectOptions::default());
         assert!(!r.complete);
         assert!(r.undecided.iter().any(|u| u.pieces == (0, 1)), "{r:?}");
+    }
+
+    /// The float-first root path of the segment test against its exact path
+    /// (Sturm isolation, rational bisection, the tangency test) on random
+    /// segments and curves with small rational control points, many with
+    /// crossings and tangencies: the same crossings (each pair of parameter
+    /// ranges overlapping), joints, undecided pairs and completeness.
+    #[test]
+    fn segment_float_path_agrees_with_the_exact_path() {
+        let mut rng = crate::test_util::TestRng::new(0x51_7cc1_b727_220a);
+        let mut next = |m: i64| rng.int(m);
+        let (mut compared, mut crossings) = (0, 0);
+        for case in 0..400 {
+            let deg = 1 + case % 3;
+            let mut pt = || V2::new(q(next(12), 2), q(next(12), 2));
+            let seg = Bezier::new(vec![pt(), pt()]);
+            let mut pts: Vec<V2<Rational>> = (0..=deg).map(|_| pt()).collect();
+            if case % 5 == 1 {
+                pts[0] = seg.points()[1].clone();
+            }
+            let pieces = [seg, Bezier::new(pts)];
+            let (Some(mut a), Some(mut b)) = (
+                segment_pair_opt(&pieces, 0, 1, true),
+                segment_pair_opt(&pieces, 0, 1, false),
+            ) else {
+                continue;
+            };
+            compared += 1;
+            crossings += a.crossings.len();
+            a.crossings.sort_by(|x, y| x.t.0.total_cmp(&y.t.0));
+            b.crossings.sort_by(|x, y| x.t.0.total_cmp(&y.t.0));
+            assert_eq!(
+                a.crossings.len(),
+                b.crossings.len(),
+                "{pieces:?}\n{a:?}\n{b:?}"
+            );
+            for (x, y) in a.crossings.iter().zip(&b.crossings) {
+                let meet = |p: (f64, f64), q: (f64, f64)| p.0 <= q.1 && q.0 <= p.1;
+                assert!(meet(x.s, y.s) && meet(x.t, y.t), "{x:?} vs {y:?}");
+            }
+            assert_eq!(a.joints, b.joints);
+            assert_eq!(
+                a.undecided.len(),
+                b.undecided.len(),
+                "{pieces:?}\n{a:?}\n{b:?}"
+            );
+            assert_eq!(a.complete, b.complete);
+        }
+        assert!(compared > 200 && crossings > 60, "{compared} {crossings}");
     }
 
     /// The exact segment path against the box search, on segments and
