@@ -192,9 +192,7 @@ pub(crate) fn check_set(doc: &Json) -> Result<Valid, Invalid> {
         "the outlines of {} stroked element(s) ({shown}{more}, as labelled by the writer), each proven on its own",
         labels.len()
     );
-    v.b = format!(
-        "the boundaries of their strokes, each element's ∂(x_k ⊕ pen_k) with its own curve and pen (d_H of the unions ≤ the largest member tolerance)"
-    );
+    v.b = "the boundaries of their strokes, each element's ∂(x_k ⊕ pen_k) with its own curve and pen (d_H of the unions ≤ the largest member tolerance)".to_string();
     Ok(v)
 }
 

@@ -83,7 +83,8 @@ fn a_forged_member_is_refused_at_its_field() {
 
 #[test]
 fn a_malformed_set_is_refused_at_the_named_field() {
-    let cases: [(&dyn Fn(&mut Value), &str); 6] = [
+    type Edit<'a> = &'a dyn Fn(&mut Value);
+    let cases: [(Edit, &str); 6] = [
         (&|d| d["members"] = json!([]), "members"),
         (&|d| d["members"] = json!({}), "members"),
         (&|d| d["claim"] = json!("all fine"), "claim"),
