@@ -453,7 +453,7 @@ pub(super) fn sampled_error_capped(exact: &[DVec2], c: &Bezier<f64>, cap: f64) -
     let pts = [dv(&q[0]), dv(&q[1]), dv(&q[2]), dv(&q[3])];
     let mut cs = [DVec2::ZERO; N + 1];
     for (i, x) in cs.iter_mut().enumerate() {
-        *x = c.eval_fast(i as f64 / N as f64);
+        *x = casteljau4(&pts, i as f64 / N as f64);
     }
     // exact samples onto the cubic: nearest sample, then Newton (one-sided:
     // the curves are close, and the proofs check both directions)
@@ -465,13 +465,26 @@ pub(super) fn sampled_error_capped(exact: &[DVec2], c: &Bezier<f64>, cap: f64) -
             .map(|(i, q)| (i, (*q - *p).length_squared()))
             .fold((0, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
         let u = project4(&pts, *p, i as f64 / N as f64);
-        let d = (c.eval_fast(u) - *p).length();
+        let d = (casteljau4(&pts, u) - *p).length();
         if d >= cap {
             return d;
         }
         max = max.max(d);
     }
     max
+}
+
+/// A cubic's point at `t` by de Casteljau, the same operations in the same
+/// order as [`Bezier::eval_fast`] (so the same value, bit for bit), without
+/// its general buffer.
+pub(super) fn casteljau4(p: &[DVec2; 4], t: f64) -> DVec2 {
+    let (b0, b1, b2) = (
+        p[0] + (p[1] - p[0]) * t,
+        p[1] + (p[2] - p[1]) * t,
+        p[2] + (p[3] - p[2]) * t,
+    );
+    let (c0, c1) = (b0 + (b1 - b0) * t, b1 + (b2 - b1) * t);
+    c0 + (c1 - c0) * t
 }
 
 /// Evaluations of the sampled error spent by [`refine_minimax`].
@@ -816,5 +829,40 @@ mod tests {
             k1: 0.0,
         };
         assert!(tangent_quadratic(&e).is_none());
+    }
+
+    /// `casteljau4` is `Bezier::eval_fast` bit for bit (the fits' choices,
+    /// hence the written fonts, do not change), and the capped sampled error
+    /// is the full one below its cap and at least the cap otherwise.
+    #[test]
+    fn fast_cubic_evaluation_and_capped_error_match() {
+        let mut rng = crate::test_util::TestRng::new(0x2545_f491_4f6c_dd1d);
+        for _ in 0..500 {
+            let mut pt = || V2::new(rng.int(2000) as f64 / 7.0, rng.int(2000) as f64 / 13.0);
+            let c = Bezier::new(vec![pt(), pt(), pt(), pt()]);
+            let p = [
+                dv(&c.points()[0]),
+                dv(&c.points()[1]),
+                dv(&c.points()[2]),
+                dv(&c.points()[3]),
+            ];
+            for k in 0..=64 {
+                let t = k as f64 / 64.0 + 1e-3 * (k % 3) as f64;
+                let (a, b) = (casteljau4(&p, t), c.eval_fast(t));
+                assert!(a.x.to_bits() == b.x.to_bits() && a.y.to_bits() == b.y.to_bits());
+            }
+            let exact: Vec<DVec2> = (0..40)
+                .map(|_| DVec2::new(rng.int(2000) as f64 / 7.0, rng.int(2000) as f64 / 13.0))
+                .collect();
+            let full = sampled_error_capped(&exact, &c, f64::INFINITY);
+            for cap in [full * 0.5, full, full.next_up(), full * 2.0] {
+                let v = sampled_error_capped(&exact, &c, cap);
+                if full < cap {
+                    assert_eq!(v.to_bits(), full.to_bits());
+                } else {
+                    assert!(v >= cap && v <= full);
+                }
+            }
+        }
     }
 }

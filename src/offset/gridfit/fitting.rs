@@ -437,8 +437,10 @@ pub(super) fn two_sided_capped(exact: &[DVec2], c: &Bezier<f64>, cap: f64) -> f6
         return ab;
     }
     let mut ba = 0.0f64;
+    let q = c.points();
+    let cp = [dv(&q[0]), dv(&q[1]), dv(&q[2]), dv(&q[3])];
     for i in 0..=32 {
-        let p = c.eval_fast(i as f64 / 32.0);
+        let p = fit::casteljau4(&cp, i as f64 / 32.0);
         let d = exact
             .windows(2)
             .map(|w| {
@@ -550,5 +552,44 @@ fn free_inner_points(exact: &[DVec2], c: Bezier<f64>) -> Bezier<f64> {
         make(&simplex[0].0)
     } else {
         c
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The capped two-sided error is the full one below its cap and at
+    /// least the cap otherwise (lines, quadratics and cubics, caps around
+    /// the value; samples far from the curve, or on half of it so that the
+    /// curve-to-samples direction decides), so every comparison with the
+    /// cap decides as in full.
+    #[test]
+    fn capped_two_sided_error_decides_as_the_full_one() {
+        let mut rng = crate::test_util::TestRng::new(0x6a09_e667_f3bc_c908);
+        let mut f = |m: i64| rng.int(m) as f64 / 16.0;
+        let mut checked = 0;
+        for case in 0..300 {
+            let n = 2 + case % 3;
+            let c = Bezier::new((0..n).map(|_| V2::new(f(200), f(200))).collect());
+            // random points (far in both directions), or points of the
+            // curve over [0, 1/2] only (near one way, far the other)
+            let exact: Vec<DVec2> = if case % 2 == 0 {
+                (0..30).map(|_| DVec2::new(f(200), f(200))).collect()
+            } else {
+                (0..30).map(|k| c.eval_fast(k as f64 / 58.0)).collect()
+            };
+            let full = two_sided(&exact, &c);
+            for cap in [full * 0.25, full, full.next_up(), full * 3.0, f64::INFINITY] {
+                let v = two_sided_capped(&exact, &c, cap);
+                if full < cap {
+                    assert_eq!(v.to_bits(), full.to_bits(), "{c:?} cap {cap}");
+                } else {
+                    assert!(v >= cap && v <= full, "{v} vs {full}, cap {cap}");
+                }
+                checked += 1;
+            }
+        }
+        assert!(checked == 1500);
     }
 }
