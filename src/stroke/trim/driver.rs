@@ -320,7 +320,7 @@ fn kept_bound(run: &Run, onside_input: Option<&Input>, s: &Sub, est: f64) -> Opt
                         return Some(b);
                     }
                 }
-                if let Some(l) = input.prove_interval(link.piece, &link.d, t0, t1, budget, 2048) {
+                if let Some(l) = input.prove_interval(link.piece, &link.d, t0, t1, budget, 512) {
                     return Some((e_in + l).next_up());
                 }
                 log::trace!(
@@ -407,7 +407,7 @@ impl KeptChunks<'_, '_> {
         let (a, b) = (r0 + u0 * (r1 - r0) - pad, r0 + u1 * (r1 - r0) + pad);
         // (the whole sub-piece's ∂S test has failed before depth 0)
         if depth > 0 {
-            let nodes = (2048usize >> depth).max(64);
+            let nodes = (512usize >> depth).max(64);
             if let Some((t0, t1)) = self.link.exact_range(a.max(0.0), b.min(1.0)) {
                 if let Some(l) = self.input.prove_interval(
                     self.link.piece,
