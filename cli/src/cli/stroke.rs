@@ -343,24 +343,36 @@ fn write_certificate(
         return Ok(code);
     }
     let t0 = std::time::Instant::now();
-    match lncert::stroke::certificate(curve, s, radius) {
+    let doc = lncert::stroke::certificate(curve, s, radius).map_err(|e| e.reason);
+    write_built_certificate(path, "stroke certificate", doc, t0)
+}
+
+/// Writes a built certificate (announced on stderr with its size and time,
+/// exit 0) or says why it was not built (exit 3): shared by `--certificate`
+/// of one stroke and of an SVG document's set.
+pub(crate) fn write_built_certificate(
+    path: &std::path::Path,
+    what: &str,
+    doc: Result<serde_json::Value, String>,
+    t0: std::time::Instant,
+) -> Result<i32, CliError> {
+    match doc {
         Ok(doc) => {
             let text = doc.to_string();
             std::fs::write(path, &text).map_err(|e| bad("--certificate", e))?;
             eprintln!(
-                "lncert: stroke certificate written to {} ({} kB in {:.3} s); check it with: lncert verify {}",
+                "lncert: {what} written to {} ({} kB in {:.3} s); check it with: lncert verify {}",
                 path.display(),
                 text.len().div_ceil(1000),
                 t0.elapsed().as_secs_f64(),
                 path.display()
             );
-            Ok(code)
+            Ok(super::EXIT_OK)
         }
-        Err(e) => {
+        Err(why) => {
             eprintln!(
-                "lncert: --certificate {}: not written: {}",
-                path.display(),
-                e.reason
+                "lncert: --certificate {}: not written: {why}",
+                path.display()
             );
             Ok(super::EXIT_UNDECIDED)
         }

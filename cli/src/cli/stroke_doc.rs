@@ -127,28 +127,13 @@ fn write_certificate_set(
                 .map_err(|err| format!("{}: {}", e.at, err.reason))
         })
         .collect();
-    match members {
-        Ok(m) => {
-            let n = m.len();
-            let text = lncert::stroke::certificate_set(m).to_string();
-            std::fs::write(path, &text).map_err(|e| bad("--certificate", e))?;
-            eprintln!(
-                "lncert: stroke certificate set ({n} elements) written to {} ({} kB in {:.3} s); check it with: lncert verify {}",
-                path.display(),
-                text.len().div_ceil(1000),
-                t0.elapsed().as_secs_f64(),
-                path.display()
-            );
-            Ok(code)
-        }
-        Err(why) => {
-            eprintln!(
-                "lncert: --certificate {}: not written: {why}",
-                path.display()
-            );
-            Ok(super::EXIT_UNDECIDED)
-        }
-    }
+    let n = jobs.len();
+    super::stroke::write_built_certificate(
+        path,
+        &format!("stroke certificate set ({n} elements)"),
+        members.map(lncert::stroke::certificate_set),
+        t0,
+    )
 }
 
 /// The document's text and its elements, after the flags' checks.

@@ -4,30 +4,14 @@
 //! the same witnesses, a tolerance below what `‖M‖₂` allows, a singular
 //! matrix, an exact arc in the outline — are refused at the named field.
 
-use super::super::{verify, Invalid, Valid};
+// the helpers of the disk certificate's tests
+use super::tests::{check, q, qv, refused};
 use crate::curve::Bezier;
 use crate::offset::Pen;
-use crate::scalar::{rational_from_f64, rational_to_string, Rational};
+use crate::scalar::{rational_from_f64, Rational};
 use crate::stroke::{certificate, stroke, PenShape, Stroke, StrokeOptions};
 use serde_json::{json, Value};
 use std::sync::OnceLock;
-
-fn q(s: &str) -> Rational {
-    crate::parse_rational(s).unwrap()
-}
-fn qv(r: &Rational) -> Value {
-    Value::String(rational_to_string(r))
-}
-fn check(doc: &Value) -> Result<Valid, Invalid> {
-    verify(&doc.to_string())
-}
-#[track_caller]
-fn refused(doc: &Value) -> Invalid {
-    match check(doc) {
-        Ok(v) => panic!("a forgery was accepted: {}", v.statement()),
-        Err(e) => e,
-    }
-}
 
 /// `(curve, M by rows, tol)`: an open cubic under an axis-aligned pen of
 /// norm 2, a closed G¹ oval under a rotated pen, and the cubic under a

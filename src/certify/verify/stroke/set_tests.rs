@@ -3,21 +3,11 @@
 //! member is refused at `members[k].certificate.…`; a malformed set at the
 //! named field; `--against` is refused for a set.
 
-use super::super::{verify, Invalid, Valid};
+// the helpers of the disk certificate's tests
+use super::tests::{check, refused};
 use crate::stroke::{certificate, certificate_set, stroke, StrokeOptions};
 use serde_json::{json, Value};
 use std::sync::OnceLock;
-
-fn check(doc: &Value) -> Result<Valid, Invalid> {
-    verify(&doc.to_string())
-}
-#[track_caller]
-fn refused(doc: &Value) -> Invalid {
-    match check(doc) {
-        Ok(v) => panic!("a forgery was accepted: {}", v.statement()),
-        Err(e) => e,
-    }
-}
 
 /// Two members: a segment at r 1/2, TOL 1/10, and a corner at r 1/4, TOL 1/20.
 fn set() -> &'static Value {

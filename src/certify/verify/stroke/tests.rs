@@ -61,7 +61,7 @@ fn fixture(k: usize) -> &'static Fixture {
     })
 }
 
-fn q(s: &str) -> Rational {
+pub(super) fn q(s: &str) -> Rational {
     crate::parse_rational(s).unwrap()
 }
 /// A canonical number of the document, read.
@@ -70,17 +70,17 @@ fn num(v: &Value) -> Rational {
     assert_eq!(rational_to_string(&q(s)), s, "not canonical in the writer");
     q(s)
 }
-fn qv(r: &Rational) -> Value {
+pub(super) fn qv(r: &Rational) -> Value {
     Value::String(rational_to_string(r))
 }
 fn arr(v: &mut Value) -> &mut Vec<Value> {
     v.as_array_mut().expect("a list")
 }
-fn check(doc: &Value) -> Result<Valid, Invalid> {
+pub(super) fn check(doc: &Value) -> Result<Valid, Invalid> {
     verify(&doc.to_string())
 }
 #[track_caller]
-fn refused(doc: &Value) -> Invalid {
+pub(super) fn refused(doc: &Value) -> Invalid {
     match check(doc) {
         Ok(v) => panic!("a forgery was accepted: {}", v.statement()),
         Err(e) => e,
