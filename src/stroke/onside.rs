@@ -619,25 +619,38 @@ impl Input {
     }
 
     /// `K1 ∧ K2` for `t ∈ [t0, t1]` of piece `i` (see the module docs): the
-    /// widest own window first, then narrower ones (a window that reaches a
-    /// concave joint fails where a narrower one does not).
-    fn holds(&self, i: usize, d: Interval, t0: f64, t1: f64) -> Option<f64> {
-        let (e, arc) = self.offset_box(i, d, t0, t1)?;
+    /// widest own window from `start` down first, then narrower ones (a
+    /// window that reaches a concave joint fails where a narrower one does
+    /// not). Returns the arc length bound when it holds, and the margin `w`
+    /// of the first convex window tried (`0` when there was none): a hint
+    /// for the halves of `[t0, t1]` (where to start their window search;
+    /// any window is proven before it is used, so only the work depends on
+    /// the hint).
+    fn holds(&self, i: usize, d: Interval, (t0, t1): (f64, f64), start: f64) -> (Option<f64>, f64) {
+        let Some((e, arc)) = self.offset_box(i, d, t0, t1) else {
+            return (None, 0.0);
+        };
         let min_w = (t1 - t0) / 4.0;
-        let mut w_max = MAX_WINDOW;
+        let mut w_max = start.max(min_w);
+        let mut found = 0.0;
         while w_max >= min_w {
-            let (w0, w1) = self.window(i, &e, (t0, t1), w_max, min_w)?;
+            let Some((w0, w1)) = self.window(i, &e, (t0, t1), w_max, min_w) else {
+                return (None, found);
+            };
+            if found == 0.0 {
+                found = (t0 - w0).max(w1 - t1);
+            }
             if self.holds_with(i, &e, w0, w1) {
-                return Some(arc);
+                return (Some(arc), found);
             }
             // a narrower window helps only where this one reached a piece end
             // that the interval does not touch
             if !((w0 == 0.0 && t0 > 0.0) || (w1 == 1.0 && t1 < 1.0)) {
-                return None;
+                return (None, found);
             }
             w_max = ((t0 - w0).max(w1 - t1)) * 0.5;
         }
-        None
+        (None, found)
     }
 
     /// The windows beyond the joint at the start (`forward = false`) or end
@@ -904,18 +917,24 @@ impl Input {
         let di = interval_from_rational(d);
         // leaves in order: (t0, t1, proven, arc)
         let mut leaves: Vec<(bool, f64)> = Vec::new();
-        let mut todo = vec![(t0, t1)];
+        // (a, b, where the window search starts)
+        let mut todo = vec![(t0, t1, MAX_WINDOW)];
         let mut nodes = 0;
-        while let Some((a, b)) = todo.pop() {
+        while let Some((a, b, start)) = todo.pop() {
             nodes += 1;
             if nodes > max_nodes {
                 log::trace!("onside: piece {i}: more than {max_nodes} nodes");
                 return None;
             }
-            if let Some(arc) = self.holds(i, di, a, b) {
+            let (held, found) = self.holds(i, di, (a, b), start);
+            if let Some(arc) = held {
                 leaves.push((true, arc));
                 continue;
             }
+            // the halves' windows start one doubling above this node's first
+            // convex window (their boxes are smaller, so at least as wide a
+            // window is usually convex), or at this node's width without one
+            let next = if found > 0.0 { 2.0 * found } else { b - a }.min(MAX_WINDOW);
             let arc = self
                 .offset_box(i, di, a, b)
                 .map(|x| x.1)
@@ -929,8 +948,8 @@ impl Input {
                 }
                 continue;
             }
-            todo.push((m, b));
-            todo.push((a, m));
+            todo.push((m, b, next));
+            todo.push((a, m, next));
         }
         log::trace!(
             "onside: piece {i} [{t0}, {t1}] floor {floor}: {nodes} nodes, {} leaves, {} unproven",
