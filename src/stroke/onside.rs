@@ -874,11 +874,17 @@ impl Input {
                 _ => {
                     leaves.push((false, len));
                     if run_over(&leaves, budget) {
+                        log::trace!("onside: arc: unproven run over {budget} ({nodes} nodes)");
                         return None;
                     }
                 }
             }
         }
+        log::trace!(
+            "onside: arc floor {floor}: {nodes} nodes, {} leaves, {} unproven",
+            leaves.len(),
+            leaves.iter().filter(|l| !l.0).count()
+        );
         charge(&leaves, budget)
     }
 
