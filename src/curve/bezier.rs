@@ -61,6 +61,25 @@ impl<S: Scalar> Bezier<S> {
         }
         p.swap_remove(0)
     }
+    /// `[b′(0), b′(1)]` exactly: the end points of [`Bezier::hodograph`]
+    /// (`n·(P₁ − P₀)`, `n·(Pₙ − Pₙ₋₁)`), without the rest of it.
+    ///
+    /// ```
+    /// use lncert::curve::{Bezier, V2};
+    /// let b = Bezier::new(vec![V2::new(0.0, 0.0), V2::new(1.0, 2.0), V2::new(3.0, 2.0)]);
+    /// let h = b.hodograph();
+    /// assert_eq!(b.end_derivatives(), [h.points()[0], h.points()[1]]);
+    /// ```
+    pub fn end_derivatives(&self) -> [V2<S>; 2] {
+        let n = self.degree();
+        if n == 0 {
+            return [V2::zero(), V2::zero()];
+        }
+        let k = S::from_i64(n as i64);
+        let p = &self.pts;
+        [p[1].sub(&p[0]).scale(&k), p[n].sub(&p[n - 1]).scale(&k)]
+    }
+
     /// The derivative curve `b'(t)`, of degree `n - 1` (a single zero point for
     /// a constant curve).
     pub fn hodograph(&self) -> Bezier<S> {
@@ -297,6 +316,27 @@ pub fn bernstein_halves<S: Scalar>(g: &[S]) -> (Vec<S>, Vec<S>) {
     (left, right)
 }
 
+impl Bezier<Rational> {
+    /// The first nonzero difference of consecutive control points from the
+    /// start (`from_end = false`, `P_{k+1} − P_k`) or from the end
+    /// (`P_{k−1} − P_k`, pointing back into the curve): a positive multiple of
+    /// the first nonzero hodograph control point from that end, so the
+    /// direction in which the curve leaves it; `None` for a point.
+    pub fn leaving_direction(&self, from_end: bool) -> Option<V2<Rational>> {
+        let p = &self.pts;
+        let n = p.len();
+        (0..n.saturating_sub(1))
+            .map(|k| {
+                if from_end {
+                    p[n - 2 - k].sub(&p[n - 1 - k])
+                } else {
+                    p[k + 1].sub(&p[k])
+                }
+            })
+            .find(|v| !num_traits::Zero::is_zero(&v.x) || !num_traits::Zero::is_zero(&v.y))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -337,6 +377,55 @@ mod tests {
             assert_eq!(r.eval(&s), c.eval(&(&a + (&b - &a) * &s)));
             assert_eq!(e.eval(&s), c.eval(&s));
         }
+    }
+
+    /// The end derivatives are the hodograph's end points, and the leaving
+    /// direction a positive multiple of its first nonzero control point from
+    /// that end (negated at the end), on pieces with repeated control points.
+    #[test]
+    fn end_derivatives_and_leaving_directions_match_the_hodograph() {
+        use num_traits::{Signed, Zero};
+        let qq = |n: i64, d: i64| Rational::new(n.into(), d.into());
+        let mut rng = crate::test_util::TestRng::new(0x5eed_0f_d1ec);
+        let mut checked = 0;
+        for case in 0..300 {
+            let deg = 1 + case % 4;
+            let mut pts: Vec<V2<Rational>> = (0..=deg)
+                .map(|_| V2::new(qq(rng.int(3), 2), qq(rng.int(3), 2)))
+                .collect();
+            if case % 3 == 0 {
+                pts[1] = pts[0].clone(); // a repeated end point
+            }
+            let b = Bezier::new(pts);
+            let h = b.hodograph();
+            let hp = h.points();
+            assert_eq!(
+                b.end_derivatives(),
+                [hp[0].clone(), hp[hp.len() - 1].clone()]
+            );
+            for from_end in [false, true] {
+                let want = if from_end {
+                    hp.iter()
+                        .rev()
+                        .find(|v| !v.x.is_zero() || !v.y.is_zero())
+                        .map(|v| v.scale(&qq(-1, 1)))
+                } else {
+                    hp.iter()
+                        .find(|v| !v.x.is_zero() || !v.y.is_zero())
+                        .cloned()
+                };
+                let got = b.leaving_direction(from_end);
+                match (got, want) {
+                    (Some(g), Some(w)) => {
+                        assert!(g.cross(&w).is_zero() && g.dot(&w).is_positive(), "{b:?}");
+                        checked += 1;
+                    }
+                    (None, None) => {}
+                    (g, w) => panic!("{b:?}: {g:?} vs {w:?}"),
+                }
+            }
+        }
+        assert!(checked > 400, "{checked}");
     }
 
     #[test]

@@ -450,9 +450,8 @@ pub fn junction(a: &Bezier<Rational>, b: &Bezier<Rational>, d: &Rational) -> Jun
     if end != b.points()[0] {
         return Junction::Gap;
     }
-    let ha = a.hodograph();
-    let ta = ha.points()[ha.points().len() - 1].clone();
-    let tb = b.hodograph().points()[0].clone();
+    let [_, ta] = a.end_derivatives();
+    let [tb, _] = b.end_derivatives();
     let cross = ta.cross(&tb);
     let dot = ta.dot(&tb);
     if cross.is_zero() && dot.is_positive() {

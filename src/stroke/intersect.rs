@@ -225,20 +225,11 @@ fn corner_range(e: u8, eps: &Rational) -> (Rational, Rational) {
 
 /// The direction leaving the end `e` of `b` into the piece (`±b′` there), in floats.
 fn away(b: &Bezier<Rational>, e: u8) -> Option<V2<f64>> {
-    let h = b.hodograph();
-    let hp = h.points();
-    // the first nonzero control point of the hodograph from that end
-    let it: Box<dyn Iterator<Item = &V2<Rational>>> = if e == 0 {
-        Box::new(hp.iter())
-    } else {
-        Box::new(hp.iter().rev())
-    };
-    let v = it
-        .map(|v| v.map(Scalar::approx))
-        .find(|v| v.norm2() > 0.0)?;
+    // the first nonzero control point difference from that end, pointing
+    // into the piece (a positive multiple of ±b′ there)
+    let v = b.leaving_direction(e == 1)?.map(Scalar::approx);
     let l = v.norm2().sqrt();
-    let v = V2::new(v.x / l, v.y / l);
-    Some(if e == 0 { v } else { V2::new(-v.x, -v.y) })
+    (l > 0.0 && l.is_finite()).then(|| V2::new(v.x / l, v.y / l))
 }
 
 /// Proves that on the corner `e`-range of width `eps` the derivative of
@@ -390,15 +381,9 @@ fn isolate_tangential_joint(
     min_eps: &Rational,
 ) -> Option<Rational> {
     let (fa, fb) = (from_end(a, ea), from_end(b, eb));
-    // the directions leaving the joint, exactly
-    let first = |c: &Bezier<Rational>| {
-        c.hodograph()
-            .points()
-            .iter()
-            .find(|v| !v.x.is_zero() || !v.y.is_zero())
-            .cloned()
-    };
-    let (ta, tb) = (first(&fa)?, first(&fb)?);
+    // the directions leaving the joint, exactly (positive multiples of the
+    // first nonzero hodograph control points: slopes and signs are the same)
+    let (ta, tb) = (fa.leaving_direction(false)?, fb.leaving_direction(false)?);
     if !ta.dot(&tb).is_positive() {
         return None;
     }
