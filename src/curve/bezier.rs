@@ -386,7 +386,7 @@ mod tests {
     fn end_derivatives_and_leaving_directions_match_the_hodograph() {
         use num_traits::{Signed, Zero};
         let qq = |n: i64, d: i64| Rational::new(n.into(), d.into());
-        let mut rng = crate::test_util::TestRng::new(0x5eed_0f_d1ec);
+        let mut rng = crate::test_util::TestRng::new(0x005e_ed0f_d1ec);
         let mut checked = 0;
         for case in 0..300 {
             let deg = 1 + case % 4;
