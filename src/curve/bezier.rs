@@ -68,7 +68,7 @@ impl<S: Scalar> Bezier<S> {
     /// use lncert::curve::{Bezier, V2};
     /// let b = Bezier::new(vec![V2::new(0.0, 0.0), V2::new(1.0, 2.0), V2::new(3.0, 2.0)]);
     /// let h = b.hodograph();
-    /// assert_eq!(b.end_derivatives(), [h.points()[0], h.points()[1]]);
+    /// assert_eq!(b.end_derivatives(), [h.points()[0].clone(), h.points()[1].clone()]);
     /// ```
     pub fn end_derivatives(&self) -> [V2<S>; 2] {
         let n = self.degree();
