@@ -153,6 +153,29 @@ fn power(b: &Bezier<Rational>) -> (Vec<Rational>, Vec<Rational>) {
     (x.coeffs().to_vec(), y.coeffs().to_vec())
 }
 
+/// The power-basis coordinates of each piece, computed when first needed
+/// (most pairs are decided by boxes, joints or the direction test and never
+/// build a polynomial system; the conversion of 70-digit control points is
+/// not free).
+struct Powers<'a> {
+    pieces: &'a [Bezier<Rational>],
+    cache: Vec<std::sync::OnceLock<(Vec<Rational>, Vec<Rational>)>>,
+}
+
+impl<'a> Powers<'a> {
+    fn new(pieces: &'a [Bezier<Rational>]) -> Self {
+        Powers {
+            pieces,
+            cache: (0..pieces.len())
+                .map(|_| std::sync::OnceLock::new())
+                .collect(),
+        }
+    }
+    fn get(&self, i: usize) -> &(Vec<Rational>, Vec<Rational>) {
+        self.cache[i].get_or_init(|| power(&self.pieces[i]))
+    }
+}
+
 /// `a(s) − b(t)` as a bivariate polynomial (`x = s`, `y = t`).
 fn difference(a: &[Rational], b: &[Rational]) -> Poly2<Rational> {
     let (da, db) = (a.len().max(1) - 1, b.len().max(1) - 1);
@@ -538,7 +561,7 @@ fn minus_corners(corners: &[((u8, u8), Rational)]) -> Vec<RationalBox> {
 /// ```
 pub fn intersections(pieces: &[Bezier<Rational>], opts: &IntersectOptions) -> Intersections {
     let mut out = Intersections::default();
-    let powers: Vec<_> = pieces.iter().map(power).collect();
+    let powers = Powers::new(pieces);
     let boxes: Vec<_> = pieces.iter().map(bbox).collect();
     let sopts = SolveOptions {
         max_boxes: opts.max_boxes_per_pair,
@@ -618,7 +641,7 @@ fn crossing_of(pieces: &[Bezier<Rational>], i: usize, j: usize, e: &IBox) -> Cro
 /// Two different pieces, by the box search.
 fn pair_boxes(
     pieces: &[Bezier<Rational>],
-    powers: &[(Vec<Rational>, Vec<Rational>)],
+    powers: &Powers,
     i: usize,
     j: usize,
     sopts: &SolveOptions,
@@ -663,8 +686,8 @@ fn pair_boxes(
         return out; // the joints' corners are the whole domain
     }
     let sys = System2::new(
-        &difference(&powers[i].0, &powers[j].0),
-        &difference(&powers[i].1, &powers[j].1),
+        &difference(&powers.get(i).0, &powers.get(j).0),
+        &difference(&powers.get(i).1, &powers.get(j).1),
     );
     for dom in doms {
         let sol = solve(&sys, &dom, sopts);
@@ -972,7 +995,7 @@ fn injective(b: &Bezier<Rational>) -> bool {
 /// diagonal that cannot be excluded is a possible singular point.
 fn self_pair(
     pieces: &[Bezier<Rational>],
-    powers: &[(Vec<Rational>, Vec<Rational>)],
+    powers: &Powers,
     i: usize,
     sopts: &SolveOptions,
 ) -> Intersections {
@@ -989,7 +1012,7 @@ fn self_pair(
 /// [`self_pair`] by the complete solver alone (no direction test).
 fn self_solve(
     pieces: &[Bezier<Rational>],
-    powers: &[(Vec<Rational>, Vec<Rational>)],
+    powers: &Powers,
     i: usize,
     sopts: &SolveOptions,
 ) -> Intersections {
@@ -998,8 +1021,8 @@ fn self_solve(
         ..Intersections::default()
     };
     let sys = System2::new(
-        &divided_difference(&powers[i].0),
-        &divided_difference(&powers[i].1),
+        &divided_difference(&powers.get(i).0),
+        &divided_difference(&powers.get(i).1),
     );
     let dom = RationalBox {
         x: (<Rational as Zero>::zero(), <Rational as One>::one()),
@@ -1158,7 +1181,7 @@ mod tests {
             }
             let other = Bezier::new(pts);
             let pieces = [seg, other];
-            let powers: Vec<_> = pieces.iter().map(power).collect();
+            let powers = Powers::new(&pieces);
             let Some(fast) = segment_pair(&pieces, 0, 1) else {
                 continue;
             };
@@ -1203,7 +1226,7 @@ mod tests {
                 .map(|_| V2::new(q(next(6), 1), q(next(6), 1)))
                 .collect();
             let pieces = [Bezier::new(pts)];
-            let powers: Vec<_> = pieces.iter().map(power).collect();
+            let powers = Powers::new(&pieces);
             let solved = self_solve(&pieces, &powers, 0, &sopts);
             if !solved.crossings.is_empty() {
                 loops += 1;
