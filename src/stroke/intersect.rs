@@ -344,15 +344,11 @@ fn mul_range(a: &(Rational, Rational), b: &(Rational, Rational)) -> (Rational, R
     )
 }
 
-/// Bounds of the second derivative `y″(x)` of the piece as a graph over the
-/// direction `w` (`x = w·(p − P)`, `y = w⊥·(p − P)`) on `[0, eps]` from the
-/// end at parameter 0; `None` unless `x′ > 0` there.
-fn graph_curvature(
-    b: &Bezier<Rational>,
-    eps: &Rational,
-    w: &V2<Rational>,
-) -> Option<(Rational, Rational)> {
-    let part = b.restrict(&<Rational as Zero>::zero(), eps);
+/// Bounds of the second derivative `y″(x)` of a part of a piece (its
+/// restriction to `[0, eps]` from the end at parameter 0) as a graph over
+/// the direction `w` (`x = w·(p − P)`, `y = w⊥·(p − P)`); `None` unless
+/// `x′ > 0` there.
+fn graph_curvature(part: &Bezier<Rational>, w: &V2<Rational>) -> Option<(Rational, Rational)> {
     let h = part.hodograph();
     let h2 = h.hodograph();
     let n = w.rot90();
@@ -433,15 +429,17 @@ fn isolate_tangential_joint(
         if eps < *min_eps {
             break;
         }
-        if let (Some(ka), Some(kb)) = (
-            graph_curvature(&fa, &eps, &dir),
-            graph_curvature(&fb, &eps, &dir),
-        ) {
+        let zero_eps = (<Rational as Zero>::zero(), eps.clone());
+        let (pa, pb) = (
+            fa.restrict(&zero_eps.0, &zero_eps.1),
+            fb.restrict(&zero_eps.0, &zero_eps.1),
+        );
+        if let (Some(ka), Some(kb)) = (graph_curvature(&pa, &dir), graph_curvature(&pb, &dir)) {
             let (klo, khi) = (&ka.0 - &kb.1, &ka.1 - &kb.0);
             let separated = if d.is_zero() {
                 klo.is_positive() || khi.is_negative()
             } else {
-                let x = x_extent(&fa, &eps, &dir).min(x_extent(&fb, &eps, &dir));
+                let x = x_extent(&pa, &dir).min(x_extent(&pb, &dir));
                 if d.is_positive() {
                     (&d + klo.min(zero.clone()) * &x * &half).is_positive()
                 } else {
@@ -457,16 +455,10 @@ fn isolate_tangential_joint(
     None
 }
 
-/// An upper bound of `(c(t) − c(0)) · w` over `t ∈ [0, eps]` (the control
-/// points of the restriction, exactly).
-fn x_extent(c: &Bezier<Rational>, eps: &Rational, w: &V2<Rational>) -> Rational {
-    let part = c.restrict(&<Rational as Zero>::zero(), eps);
-    let p0 = part.points()[0].clone();
-    part.points()
-        .iter()
-        .map(|p| p.sub(&p0).dot(w))
-        .max()
-        .unwrap_or_default()
+/// An upper bound of `(c(t) − c(0)) · w` over a part `c` (its control
+/// points, exactly).
+fn x_extent(part: &Bezier<Rational>, w: &V2<Rational>) -> Rational {
+    dot_range(part.points(), w).1 - part.points()[0].dot(w)
 }
 
 fn reason_name(r: UndecidedReason) -> &'static str {

@@ -110,12 +110,9 @@ fn stroke_at(
     // arc–arc crossings are split this far (arc length) from the crossing:
     // far beyond the enclosures' widths, well inside λ ≥ TOL/2
     let bridge_mu = opts.tol.value() / 1024.0;
-    // the raw search gives up on a piece's self-intersections at parameter
-    // width RAW_SELF_MIN_WIDTH: a raw offset piece through a cusp of the
-    // exact offset has a singular diagonal there, refined to 1e-10 for
-    // nothing (no claim needs this search complete, proofs/trimming.md,
-    // "Classification"; a self-crossing that close is reported undecided and
-    // left unsplit)
+    // the raw search gives up sooner near cusps (the constants' docs); no
+    // claim needs it complete (proofs/trimming.md, "Classification"), and
+    // what it gives up on is reported undecided and left unsplit
     let raw_iopts = IntersectOptions {
         self_min_width: RAW_SELF_MIN_WIDTH,
         joint_min_width: RAW_JOINT_MIN_WIDTH,
