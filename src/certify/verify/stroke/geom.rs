@@ -79,10 +79,13 @@ fn casteljau(p: &[P], t: Interval) -> P {
         return [ic(0.0), ic(0.0)];
     }
     let mut b = p.to_vec();
-    let u = ic(1.0) - t;
+    // `b_i + t (b_{i+1} − b_i)`, not `(1 − t) b_i + t b_{i+1}`: the same
+    // number for each real `t`, but over a parameter box of width `w` its
+    // enclosure grows by `w |b_{i+1} − b_i|` instead of `w (|b_i| + |b_{i+1}|)`
+    // (control points far from the origin made boxes 10× narrower)
     for k in (1..b.len()).rev() {
         for i in 0..k {
-            b[i] = add(scale(b[i], u), scale(b[i + 1], t));
+            b[i] = add(b[i], scale(sub(b[i + 1], b[i]), t));
         }
     }
     b[0]

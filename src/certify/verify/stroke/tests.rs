@@ -1532,3 +1532,70 @@ fn an_arc_part_turning_the_wrong_way_is_refused() {
     }
     assert!(tried >= 3, "the fixture has arc parts");
 }
+
+/// The checker's interval evaluation of a Bézier and its hodograph over a
+/// parameter box encloses every exact point (rational evaluation at rational
+/// parameters of the box), and its width depends on the control polygon's
+/// shape, not on how far the curve lies from the origin: the same cubic
+/// moved by (1000, −700) gets an enclosure at most a rounding wider (the form
+/// `(1 − t) b_i + t b_{i+1}` made it ~100× wider there, so boxes far from the
+/// origin had to be ~10× narrower).
+#[test]
+fn box_evaluation_encloses_exact_points_and_ignores_translation() {
+    use super::geom::{ip, Bez};
+    use crate::scalar::Interval;
+    let mut rng: u64 = 0x9e37_79b9_7f4a_7c15;
+    let mut next = move || {
+        rng ^= rng << 13;
+        rng ^= rng >> 7;
+        rng ^= rng << 17;
+        (rng >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let width = |p: [Interval; 2]| (p[0].wid()).max(p[1].wid());
+    for _ in 0..200 {
+        let pts: Vec<[Rational; 2]> = (0..4)
+            .map(|_| {
+                [
+                    crate::scalar::rational_from_f64(4.0 * next() - 2.0).unwrap(),
+                    crate::scalar::rational_from_f64(4.0 * next() - 2.0).unwrap(),
+                ]
+            })
+            .collect();
+        let (dx, dy) = (q("1000"), q("-700"));
+        let moved: Vec<[Rational; 2]> = pts
+            .iter()
+            .map(|p| [&p[0] + &dx, &p[1] + &dy])
+            .collect();
+        let b = Bez::new(pts.iter().map(ip).collect());
+        let m = Bez::new(moved.iter().map(ip).collect());
+        let t0 = (next() * 64.0).floor() / 64.0;
+        let w = 1.0 / 8.0;
+        let t1 = (t0 + w).min(1.0);
+        let box_t = Interval::try_from((t0, t1)).unwrap();
+        // translation invariance of the enclosure's width (up to rounding at 1000)
+        assert!(
+            width(m.at(box_t)) <= width(b.at(box_t)) + 1e-9,
+            "moved: {} vs {}",
+            width(m.at(box_t)),
+            width(b.at(box_t))
+        );
+        assert!(width(m.d_at(box_t)) <= width(b.d_at(box_t)) + 1e-9);
+        // soundness: exact points of the box inside the enclosures
+        let exact = Bezier::new(
+            moved
+                .iter()
+                .map(|p| crate::curve::V2::new(p[0].clone(), p[1].clone()))
+                .collect(),
+        );
+        let hodo = exact.hodograph();
+        let (e, d) = (m.at(box_t), m.d_at(box_t));
+        for k in 0..=16 {
+            let t = crate::scalar::rational_from_f64(t0).unwrap()
+                + crate::scalar::rational_from_f64(t1 - t0).unwrap() * Rational::new(k.into(), 16.into());
+            let (p, v) = (exact.eval(&t), hodo.eval(&t));
+            use crate::scalar::IntervalExt;
+            assert!(e[0].contains_rational(&p.x) && e[1].contains_rational(&p.y));
+            assert!(d[0].contains_rational(&v.x) && d[1].contains_rational(&v.y));
+        }
+    }
+}
