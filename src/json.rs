@@ -15,8 +15,11 @@
 //!   characters in strings, no lone surrogates, no text after the value.
 //!
 //! Work and memory are linear in the input: every byte is looked at a bounded
-//! number of times, and a node costs at most a few dozen bytes besides its text.
+//! number of times, and a node costs at most a few dozen bytes. Numbers, keys
+//! and strings without escapes are slices of the text (no copy); each array
+//! and object is allocated once, at its exact size.
 
+use std::borrow::Cow;
 use std::fmt;
 
 /// Limits of the reader, checked while parsing.
@@ -52,26 +55,28 @@ impl Default for Limits {
     }
 }
 
-/// A JSON value; object members keep their order and are unique.
+/// A JSON value, borrowing its numbers, keys and strings from the document's
+/// text (only a string with an escape is copied); object members keep their
+/// order and are unique.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub enum Json {
+pub enum Json<'a> {
     /// `null`
     Null,
     /// `true` / `false`
     Bool(bool),
     /// A number, as its exact text (`-0.5e3`).
-    Number(Box<str>),
+    Number(&'a str),
     /// A string, unescaped.
-    String(Box<str>),
+    String(Cow<'a, str>),
     /// An array.
-    Array(Vec<Json>),
+    Array(Vec<Json<'a>>),
     /// An object: its members in document order, keys unique.
-    Object(Vec<(Box<str>, Json)>),
+    Object(Vec<(Cow<'a, str>, Json<'a>)>),
 }
 
-impl Json {
+impl<'a> Json<'a> {
     /// The member `key` of an object.
-    pub fn get(&self, key: &str) -> Option<&Json> {
+    pub fn get(&self, key: &str) -> Option<&Json<'a>> {
         match self {
             Json::Object(m) => m.iter().find(|(k, _)| &**k == key).map(|(_, v)| v),
             _ => None,
@@ -85,14 +90,14 @@ impl Json {
         }
     }
     /// The elements, if this is an array.
-    pub fn as_array(&self) -> Option<&[Json]> {
+    pub fn as_array(&self) -> Option<&[Json<'a>]> {
         match self {
             Json::Array(a) => Some(a),
             _ => None,
         }
     }
     /// The members, if this is an object.
-    pub fn as_object(&self) -> Option<&[(Box<str>, Json)]> {
+    pub fn as_object(&self) -> Option<&[(Cow<'a, str>, Json<'a>)]> {
         match self {
             Json::Object(m) => Some(m),
             _ => None,
@@ -179,10 +184,15 @@ struct Parser<'a> {
     nodes: usize,
     lim: Limits,
     path: Vec<Seg<'a>>,
+    /// The elements of the arrays and members of the objects being read,
+    /// innermost last: each array or object is moved out in one allocation
+    /// of its exact size when it closes (no growth, no shrinking).
+    items: Vec<Json<'a>>,
+    members: Vec<(Cow<'a, str>, Json<'a>)>,
 }
 
 /// Reads one JSON document under `limits`.
-pub fn parse(text: &str, limits: &Limits) -> Result<Json, JsonError> {
+pub fn parse<'a>(text: &'a str, limits: &Limits) -> Result<Json<'a>, JsonError> {
     let mut p = Parser {
         text,
         b: text.as_bytes(),
@@ -190,6 +200,8 @@ pub fn parse(text: &str, limits: &Limits) -> Result<Json, JsonError> {
         nodes: 0,
         lim: *limits,
         path: Vec::new(),
+        items: Vec::new(),
+        members: Vec::new(),
     };
     if text.len() > limits.max_bytes {
         return Err(p.limit(format!(
@@ -275,13 +287,13 @@ impl<'a> Parser<'a> {
         Ok(())
     }
 
-    fn value(&mut self, depth: usize) -> Result<Json, JsonError> {
+    fn value(&mut self, depth: usize) -> Result<Json<'a>, JsonError> {
         self.node()?;
         match self.peek() {
             None => Err(self.err("unexpected end of the document")),
             Some(b'{') => self.object(depth + 1),
             Some(b'[') => self.array(depth + 1),
-            Some(b'"') => Ok(Json::String(self.string()?.into_boxed_str())),
+            Some(b'"') => Ok(Json::String(self.string()?)),
             Some(b'-' | b'0'..=b'9') => self.number(),
             Some(b't') => self.literal("true", Json::Bool(true)),
             Some(b'f') => self.literal("false", Json::Bool(false)),
@@ -298,7 +310,7 @@ impl<'a> Parser<'a> {
             .unwrap_or_else(|| format!("\\x{c:02x}"))
     }
 
-    fn literal(&mut self, word: &str, v: Json) -> Result<Json, JsonError> {
+    fn literal(&mut self, word: &str, v: Json<'a>) -> Result<Json<'a>, JsonError> {
         if self.b[self.pos..].starts_with(word.as_bytes()) {
             self.pos += word.len();
             Ok(v)
@@ -317,44 +329,43 @@ impl<'a> Parser<'a> {
         Ok(())
     }
 
-    fn array(&mut self, depth: usize) -> Result<Json, JsonError> {
+    fn array(&mut self, depth: usize) -> Result<Json<'a>, JsonError> {
         self.enter(depth)?;
         self.pos += 1;
-        let mut items = Vec::new();
         self.ws();
         if self.peek() == Some(b']') {
             self.pos += 1;
-            return Ok(Json::Array(items));
+            return Ok(Json::Array(Vec::new()));
         }
+        let base = self.items.len();
         loop {
             self.ws();
-            self.path.push(Seg::Index(items.len()));
+            self.path.push(Seg::Index(self.items.len() - base));
             let v = self.value(depth)?;
             self.path.pop();
-            items.push(v);
+            self.items.push(v);
             self.ws();
             match self.peek() {
                 Some(b',') => self.pos += 1,
                 Some(b']') => {
                     self.pos += 1;
-                    items.shrink_to_fit();
-                    return Ok(Json::Array(items));
+                    return Ok(Json::Array(self.items.drain(base..).collect()));
                 }
                 _ => return Err(self.err("expected `,` or `]` in an array")),
             }
         }
     }
 
-    fn object(&mut self, depth: usize) -> Result<Json, JsonError> {
+    fn object(&mut self, depth: usize) -> Result<Json<'a>, JsonError> {
         self.enter(depth)?;
         self.pos += 1;
-        let mut members: Vec<(Box<str>, Json)> = Vec::new();
-        let mut seen: std::collections::HashSet<Box<str>> = std::collections::HashSet::new();
+        let mut seen: std::collections::HashSet<Cow<'a, str>> = std::collections::HashSet::new();
         self.ws();
         if self.peek() == Some(b'}') {
             self.pos += 1;
-            return Ok(Json::Object(members));
+            return Ok(Json::Object(Vec::new()));
         }
+        let base = self.members.len();
         loop {
             self.ws();
             if self.peek() != Some(b'"') {
@@ -363,20 +374,21 @@ impl<'a> Parser<'a> {
             let key_start = self.pos;
             let key = self.string()?;
             // the key's own text for the path: escaped keys are shown unescaped
-            let key_ref: &'a str = match self.text.get(key_start + 1..self.pos - 1) {
-                Some(raw) if raw == key => raw,
-                _ => "(escaped key)",
+            let key_ref: &'a str = match &key {
+                Cow::Borrowed(raw) => raw,
+                Cow::Owned(_) => "(escaped key)",
             };
             self.path.push(Seg::Key(key_ref));
             // a linear scan while the object is small (every lncert format has
             // a handful of members), a hash set beyond: linear overall
+            let members = &self.members[base..];
             let dup = if members.len() < 16 {
-                members.iter().any(|(k, _)| **k == *key)
+                members.iter().any(|(k, _)| *k == key)
             } else {
                 if seen.is_empty() {
                     seen.extend(members.iter().map(|(k, _)| k.clone()));
                 }
-                !seen.insert(key.clone().into_boxed_str())
+                !seen.insert(key.clone())
             };
             if dup {
                 self.pos = key_start;
@@ -393,22 +405,40 @@ impl<'a> Parser<'a> {
             self.ws();
             let v = self.value(depth)?;
             self.path.pop();
-            members.push((key.into_boxed_str(), v));
+            self.members.push((key, v));
             self.ws();
             match self.peek() {
                 Some(b',') => self.pos += 1,
                 Some(b'}') => {
                     self.pos += 1;
-                    members.shrink_to_fit();
-                    return Ok(Json::Object(members));
+                    return Ok(Json::Object(self.members.drain(base..).collect()));
                 }
                 _ => return Err(self.err("expected `,` or `}` in an object")),
             }
         }
     }
 
-    fn string(&mut self) -> Result<String, JsonError> {
+    fn string(&mut self) -> Result<Cow<'a, str>, JsonError> {
         self.pos += 1; // opening quote
+        // without an escape, the string is a slice of the text
+        let first = self.pos;
+        while let Some(c) = self.peek() {
+            if c == b'"' || c == b'\\' || c < 0x20 {
+                break;
+            }
+            self.pos += 1;
+        }
+        if self.peek() == Some(b'"') {
+            if self.pos - first > self.lim.max_string_bytes {
+                return Err(self.limit(format!(
+                    "a string longer than the limit of {} bytes",
+                    self.lim.max_string_bytes
+                )));
+            }
+            self.pos += 1;
+            return Ok(Cow::Borrowed(&self.text[first..self.pos - 1]));
+        }
+        self.pos = first;
         let mut out = String::new();
         loop {
             let start = self.pos;
@@ -429,7 +459,7 @@ impl<'a> Parser<'a> {
                 None => return Err(self.err("unterminated string")),
                 Some(b'"') => {
                     self.pos += 1;
-                    return Ok(out);
+                    return Ok(Cow::Owned(out));
                 }
                 Some(b'\\') => {
                     self.pos += 1;
@@ -483,7 +513,7 @@ impl<'a> Parser<'a> {
         char::from_u32(code).ok_or_else(|| self.err("lone surrogate in a \\u escape"))
     }
 
-    fn number(&mut self) -> Result<Json, JsonError> {
+    fn number(&mut self) -> Result<Json<'a>, JsonError> {
         let start = self.pos;
         let digits = |p: &mut Self| {
             let s = p.pos;
@@ -524,7 +554,7 @@ impl<'a> Parser<'a> {
                 self.lim.max_number_bytes
             )));
         }
-        Ok(Json::Number(self.text[start..self.pos].into()))
+        Ok(Json::Number(&self.text[start..self.pos]))
     }
 }
 
@@ -532,7 +562,7 @@ impl<'a> Parser<'a> {
 mod tests {
     use super::*;
 
-    fn p(s: &str) -> Result<Json, JsonError> {
+    fn p(s: &str) -> Result<Json<'_>, JsonError> {
         parse(s, &Limits::DEFAULT)
     }
 
@@ -543,6 +573,10 @@ mod tests {
         let a = v.get("a").unwrap().as_array().unwrap();
         assert_eq!(a[1], Json::Number("-0.5e+3".into()));
         assert_eq!(a[5].as_str(), Some("x\"é😀"));
+        // borrowed from the text unless an escape had to be decoded
+        assert!(matches!(a[5], Json::String(Cow::Owned(_))));
+        let plain = p(r#"{"key": "a/b"}"#).unwrap();
+        assert!(matches!(plain.get("key"), Some(Json::String(Cow::Borrowed("a/b")))));
         assert_eq!(v.get("b"), Some(&Json::Object(vec![])));
         let serde: serde_json::Value = serde_json::from_str(text).unwrap();
         assert_eq!(v.to_value(), serde);

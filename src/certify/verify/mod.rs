@@ -410,11 +410,11 @@ fn check_document(doc: &Json) -> Result<Valid, Invalid> {
 /// The head of a map: source shape and piece, target shape and piece (in
 /// range), and its boxes.
 #[allow(clippy::type_complexity)]
-fn map_head<'j>(
-    m: &'j Json,
+fn map_head<'j, 'a>(
+    m: &'j Json<'a>,
     at: &str,
     shapes: &[VShape; 2],
-) -> Result<((usize, usize), (usize, usize), &'j Json), Invalid> {
+) -> Result<((usize, usize), (usize, usize), &'j Json<'a>), Invalid> {
     let names = ["a", "b"];
     let [from, piece, to, target, boxes] =
         exact_object(m, at, ["from", "piece", "to", "target", "boxes"])?;

@@ -113,11 +113,11 @@ pub(crate) fn canonical_index(v: &Json, at: &str) -> Result<usize, Invalid> {
 }
 
 /// The members of an object with exactly the keys `keys` (all required).
-pub(crate) fn exact_object<'j, const N: usize>(
-    v: &'j Json,
+pub(crate) fn exact_object<'j, 'a, const N: usize>(
+    v: &'j Json<'a>,
     at: &str,
     keys: [&str; N],
-) -> Result<[&'j Json; N], Invalid> {
+) -> Result<[&'j Json<'a>; N], Invalid> {
     let m = v.as_object().ok_or_else(|| {
         inv(
             at,
@@ -379,8 +379,8 @@ fn read_member(v: &Json, at: &str) -> Result<VShape, Invalid> {
                 ));
             }
             let sigma = match side {
-                Json::Number(t) if &**t == "1" => 1,
-                Json::Number(t) if &**t == "-1" => -1,
+                Json::Number(t) if *t == "1" => 1,
+                Json::Number(t) if *t == "-1" => -1,
                 other => {
                     return Err(inv(
                         join(&at, "side"),

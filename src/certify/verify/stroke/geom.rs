@@ -79,13 +79,21 @@ fn casteljau(p: &[P], t: Interval) -> P {
         return [ic(0.0), ic(0.0)];
     }
     let mut b = p.to_vec();
-    // `b_i + t (b_{i+1} − b_i)`, not `(1 − t) b_i + t b_{i+1}`: the same
-    // number for each real `t`, but over a parameter box of width `w` its
-    // enclosure grows by `w |b_{i+1} − b_i|` instead of `w (|b_i| + |b_{i+1}|)`
-    // (control points far from the origin made boxes 10× narrower)
+    // Over a parameter box of width `w`, `b_i + t (b_{i+1} − b_i)`: its
+    // enclosure grows by `w |b_{i+1} − b_i|` where the convex form's grows by
+    // `w (|b_i| + |b_{i+1}|)` (control points far from the origin made boxes
+    // 10× narrower). At a point parameter the convex form `(1 − t) b_i +
+    // t b_{i+1}`, which does not multiply the control points' own widths by
+    // `1 + 2t` per level (as `certify::verify::eval` explains).
+    let thin = t.inf() == t.sup();
+    let u = ic(1.0) - t;
     for k in (1..b.len()).rev() {
         for i in 0..k {
-            b[i] = add(b[i], scale(sub(b[i + 1], b[i]), t));
+            b[i] = if thin {
+                add(scale(b[i], u), scale(b[i + 1], t))
+            } else {
+                add(b[i], scale(sub(b[i + 1], b[i]), t))
+            };
         }
     }
     b[0]

@@ -131,7 +131,7 @@ pub const MAX_SET_MEMBERS: usize = 4096;
 pub(crate) fn check_set(doc: &Json) -> Result<Valid, Invalid> {
     let [_f, version, claim, members] =
         exact_object(doc, "", ["format", "version", "claim", "members"])?;
-    if !matches!(version, Json::Number(v) if **v == *VERSION.to_string()) {
+    if !matches!(version, Json::Number(v) if *v == VERSION.to_string()) {
         return Err(inv(
             "version",
             format!("this verifier reads version {VERSION} of {SET_FORMAT}"),
@@ -213,7 +213,7 @@ pub const DISTANCE_KEYS: [&str; 6] = [
 /// outline, tolerances adding up to at most `tol`.
 pub(crate) fn check_distance(doc: &Json) -> Result<Valid, Invalid> {
     let [_f, version, claim, tol, h, st] = exact_object(doc, "", DISTANCE_KEYS)?;
-    if !matches!(version, Json::Number(v) if **v == *VERSION.to_string()) {
+    if !matches!(version, Json::Number(v) if *v == VERSION.to_string()) {
         return Err(inv(
             "version",
             format!("this verifier reads version {VERSION} of {DISTANCE_FORMAT}"),
@@ -703,7 +703,7 @@ impl OPiece {
     }
 }
 
-fn arr<'j>(v: &'j Json, at: &str, what: &str) -> Result<&'j [Json], Invalid> {
+fn arr<'j, 'a>(v: &'j Json<'a>, at: &str, what: &str) -> Result<&'j [Json<'a>], Invalid> {
     v.as_array().ok_or_else(|| {
         inv(
             at,
@@ -1249,7 +1249,7 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
         } else {
             exact_object(doc, "", KEYS)?
         };
-    if !matches!(version, Json::Number(v) if **v == *VERSION.to_string()) {
+    if !matches!(version, Json::Number(v) if *v == VERSION.to_string()) {
         return Err(inv(
             "version",
             format!("this verifier reads version {VERSION} of {FORMAT}"),
