@@ -420,7 +420,7 @@ impl<'a> Parser<'a> {
 
     fn string(&mut self) -> Result<Cow<'a, str>, JsonError> {
         self.pos += 1; // opening quote
-        // without an escape, the string is a slice of the text
+                       // without an escape, the string is a slice of the text
         let first = self.pos;
         while let Some(c) = self.peek() {
             if c == b'"' || c == b'\\' || c < 0x20 {
@@ -576,7 +576,10 @@ mod tests {
         // borrowed from the text unless an escape had to be decoded
         assert!(matches!(a[5], Json::String(Cow::Owned(_))));
         let plain = p(r#"{"key": "a/b"}"#).unwrap();
-        assert!(matches!(plain.get("key"), Some(Json::String(Cow::Borrowed("a/b")))));
+        assert!(matches!(
+            plain.get("key"),
+            Some(Json::String(Cow::Borrowed("a/b")))
+        ));
         assert_eq!(v.get("b"), Some(&Json::Object(vec![])));
         let serde: serde_json::Value = serde_json::from_str(text).unwrap();
         assert_eq!(v.to_value(), serde);

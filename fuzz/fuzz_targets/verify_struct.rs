@@ -63,14 +63,14 @@ fn seeds() -> &'static [Value] {
 
 /// Keys a forger may add: every key of the formats, and the classic extras.
 #[rustfmt::skip]
-const KEYS: [&str; 48] = [
+const KEYS: [&str; 49] = [
     "clockwise", "bounds", "bound", "digest", "beziers", "bezier", "arc", "offset",
     "convolution", "side", "ellipse", "curve", "distance", "radius", "center", "from", "to",
     "piece", "target", "s", "t", "k", "tol", "claim", "extra", "format", "version", "directions",
     "maps", "phi", "union",
     // stroke and stroke distance certificates
     "outline", "cover", "boundary", "of", "boxes", "near", "inside", "contour", "u", "o", "w",
-    "mu", "dirs", "at", "pen", "members", "certificate",
+    "mu", "dirs", "at", "pen", "members", "certificate", "segment",
 ];
 
 /// A value to put somewhere.

@@ -10,8 +10,8 @@
 use super::{Piece, Stroke};
 use crate::certify::verify::stroke::geom::{arc_hull, ip, iq, BoxT, Path};
 use crate::certify::verify::stroke::{
-    check_bbox, check_part, exact_points, BBox, Input, OPiece, PenMap, Span, CLAIM, CLAIM_ELLIPSE,
-    FORMAT, Q2, VERSION,
+    check_bbox, check_part, exact_points, BBox, Input, Inside, OPiece, PenMap, Span, CLAIM,
+    CLAIM_ELLIPSE, FORMAT, Q2, VERSION,
 };
 use crate::curve::Bezier;
 use crate::scalar::{rational_from_f64, rational_to_string, Interval, Rational, Scalar};
@@ -219,11 +219,13 @@ impl Ctx<'_> {
         all
     }
 
-    /// Candidate disks for a part whose middle is `m`: the input point `y`
-    /// nearest to `m` (the disk `B(y, r)`), and disks `B(w, μ)` outside `S`
+    /// Candidate sets for a part whose middle is `m`: the input point `y`
+    /// nearest to `m` (the disk `B(y, r)`; first the capsule about the whole
+    /// piece when that piece is straight, with larger disks outside, since a
+    /// capsule's gap does not grow along it), and disks `B(w, μ)` outside `S`
     /// along the normal through `m`, largest first; then points (`μ = 0`)
     /// around `m` for a corner of `∂S`.
-    fn witnesses(&self, m: DVec2) -> Vec<((usize, f64), DVec2, f64)> {
+    fn witnesses(&self, m: DVec2) -> Vec<(Inside, DVec2, f64)> {
         let (j, u, d) = nearest_input(&self.fin, m);
         let y = bez_at(&self.fin[j].p, u);
         if d <= 0.0 {
@@ -232,6 +234,27 @@ impl Ctx<'_> {
         let n = (m - y) / d;
         let gap = self.tol / 64.0;
         let mut ws = Vec::new();
+        let outside = |mu: f64| {
+            let w = y + n * (self.r + mu + gap);
+            (nearest_input(&self.fin, w).2 > self.r + mu + 0.5 * gap).then_some(w)
+        };
+        if self.input.straight[j] {
+            for mu in [64.0 * self.r, 16.0 * self.r, 4.0 * self.r, self.r] {
+                if let Some(w) = outside(mu) {
+                    ws.push((Inside::Segment { piece: j }, w, mu));
+                }
+            }
+        }
+        let disk = |w, mu| {
+            (
+                Inside::Disk {
+                    piece: j,
+                    u: q(u).unwrap_or_default(),
+                },
+                w,
+                mu,
+            )
+        };
         for mu in [
             self.r,
             self.r / 4.0,
@@ -239,9 +262,8 @@ impl Ctx<'_> {
             4.0 * self.tol,
             self.tol / 4.0,
         ] {
-            let w = y + n * (self.r + mu + gap);
-            if nearest_input(&self.fin, w).2 > self.r + mu + 0.5 * gap {
-                ws.push((w, mu));
+            if let Some(w) = outside(mu) {
+                ws.push(disk(w, mu));
             }
         }
         for rho in [self.tol / 16.0, self.tol / 4.0] {
@@ -249,11 +271,11 @@ impl Ctx<'_> {
                 let a = k as f64 * std::f64::consts::TAU / 16.0;
                 let w = m + DVec2::new(a.cos(), a.sin()) * rho;
                 if nearest_input(&self.fin, w).2 > self.r + 0.25 * gap {
-                    ws.push((w, 0.0));
+                    ws.push(disk(w, 0.0));
                 }
             }
         }
-        ws.into_iter().map(|(w, mu)| ((j, u), w, mu)).collect()
+        ws
     }
 
     /// One part (hull given): tries the disks; the JSON part on success.
@@ -263,13 +285,16 @@ impl Ctx<'_> {
         m: DVec2,
         key: (&str, Value),
     ) -> Result<Option<Value>, Error> {
-        for ((j, u), w, mu) in self.witnesses(m).into_iter().take(12) {
-            let uq = q(u)?;
+        for (inside, w, mu) in self.witnesses(m).into_iter().take(16) {
             let (wq, wv) = ptf(w)?;
             let muq = q(mu)?;
-            if check_part(&self.input, hull, j, &uq, &wq, &muq, self.tol_i).is_ok() {
+            if check_part(&self.input, hull, &inside, &wq, &muq, self.tol_i).is_ok() {
+                let o = match &inside {
+                    Inside::Disk { piece, u } => json!({"piece": piece, "u": qs(u)}),
+                    Inside::Segment { piece } => json!({"segment": piece}),
+                };
                 let mut v = json!({
-                    "o": {"piece": j, "u": qs(&uq)},
+                    "o": o,
                     "w": {"at": wv, "mu": qs(&muq)},
                 });
                 v.as_object_mut()
@@ -287,9 +312,20 @@ impl Ctx<'_> {
         f: &FBez,
     ) -> Result<Vec<Value>, Error> {
         let len: f64 = f.p.windows(2).map(|w| (w[1] - w[0]).length()).sum();
-        let n0 = ((len / self.part_len()).ceil().max(1.0) as u64)
-            .next_power_of_two()
-            .min(1 << 20);
+        // a straight piece may be one part (a capsule inside, a large disk
+        // outside); halved where that fails
+        let chord = f.p[f.p.len() - 1] - f.p[0];
+        let straight = chord.length() > 0.0
+            && f.p
+                .iter()
+                .all(|p| (*p - f.p[0]).perp_dot(chord).abs() <= 1e-9 * chord.length_squared());
+        let n0 = if straight {
+            1
+        } else {
+            ((len / self.part_len()).ceil().max(1.0) as u64)
+                .next_power_of_two()
+                .min(1 << 20)
+        };
         let mut out = Vec::new();
         let mut stack: Vec<(f64, f64, u32)> = (0..n0)
             .rev()

@@ -49,7 +49,7 @@ pub(crate) fn canonical_rational(v: &Json, at: &str) -> Result<Rational, Invalid
             format!("{s:?} is not a canonical rational (\"p\" or \"p/q\", digits only)"),
         ));
     }
-    let n: BigInt = num.parse().map_err(|_| inv(at, "unreadable integer"))?;
+    let n: BigInt = int(num).ok_or_else(|| inv(at, "unreadable integer"))?;
     let noncanonical = |r: &Rational| {
         inv(
             at,
@@ -66,7 +66,7 @@ pub(crate) fn canonical_rational(v: &Json, at: &str) -> Result<Rational, Invalid
         None if num == "-0" => return Err(noncanonical(&Rational::zero())),
         None => Rational::from_integer(n),
         Some(d) => {
-            let d: BigInt = d.parse().map_err(|_| inv(at, "unreadable integer"))?;
+            let d: BigInt = int(d).ok_or_else(|| inv(at, "unreadable integer"))?;
             if d.is_zero() {
                 return Err(inv(at, "zero denominator"));
             }
@@ -86,6 +86,17 @@ pub(crate) fn canonical_rational(v: &Json, at: &str) -> Result<Rational, Invalid
         return Err(inv(at, "magnitude above the limit 1e100"));
     }
     Ok(r)
+}
+
+/// A decimal integer (optional `-`, digits checked by the caller): through
+/// `i64` when it has at most 18 digits (every number lncert writes but the
+/// long ones), which is several times faster than the general reader.
+fn int(s: &str) -> Option<BigInt> {
+    if s.len() <= 18 {
+        s.parse::<i64>().ok().map(BigInt::from)
+    } else {
+        s.parse().ok()
+    }
 }
 
 /// A canonical non-negative integer (a JSON number token such as `0` or `17`).

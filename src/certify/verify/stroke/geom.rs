@@ -541,16 +541,50 @@ pub(crate) fn arc_hull(c: P, rho: Interval, d0: P, d1: P) -> Option<Hull> {
 /// segment between their points nearest to `q` meets `∂S`, within that
 /// distance of `q`; both terms are convex in `q`, so their maximum over the
 /// part is at a hull point.
-pub(crate) fn part_bound(hull: &Hull, y: P, r: Interval, w: P, mu: Interval) -> f64 {
+pub(crate) fn part_bound(hull: &Hull, inside: Core, r: Interval, w: P, mu: Interval) -> f64 {
     let mut m = 0.0f64;
     for q in hull {
-        for (z, rad) in [(y, r), (w, mu)] {
+        for (z, rad) in [(inside.near(*q), r), (w, mu)] {
             let e = sub(*q, z);
             let d = (e[0].sqr() + e[1].sqr()).sqrt() - rad;
             m = m.max(if finite(d) { d.sup() } else { f64::INFINITY });
         }
     }
     m
+}
+
+/// The core of a part's set in `S`: a point `y` of the curve (the set is the
+/// disk `B(y, r)`) or a segment `[a, b]` of a straight input piece (the
+/// capsule of radius `r` about it).
+#[derive(Clone, Copy)]
+pub(crate) enum Core {
+    Point(P),
+    Segment(P, P),
+}
+
+impl Core {
+    /// An enclosure of one point of the core (the one nearest to `q`, up to
+    /// rounding): `|q − z| ≥ dist(q, core)` for the exact point `z` inside.
+    fn near(&self, q: P) -> P {
+        match *self {
+            Core::Point(y) => y,
+            Core::Segment(a, b) => {
+                let d = sub(b, a);
+                let (dx, dy) = (d[0].mid(), d[1].mid());
+                let l2 = dx * dx + dy * dy;
+                // any t in [0, 1] names a point of the segment; the float
+                // projection only chooses which
+                let t = if l2 > 0.0 && l2.is_finite() {
+                    (((q[0].mid() - a[0].mid()) * dx + (q[1].mid() - a[1].mid()) * dy) / l2)
+                        .clamp(0.0, 1.0)
+                } else {
+                    0.0
+                };
+                let t = if t.is_finite() { t } else { 0.0 };
+                add(a, scale(d, ic(t)))
+            }
+        }
+    }
 }
 
 /// `√x` rounded up (for reporting a bound from its square's sup).

@@ -35,6 +35,8 @@
 //! PART  = {"s": [Q, Q], "o": IN, "w": OUT}             (a Bézier's parameter range)
 //!       | {"dirs": [[Q, Q], [Q, Q]], "o": IN, "w": OUT}  (an arc's radius directions)
 //! IN    = {"piece": j, "u": Q}                          the disk B(x_j(u), r) ⊆ S
+//!       | {"segment": j}                                the capsule of radius r about the
+//!                                              segment x_j(0) x_j(1), piece j straight
 //! OUT   = {"at": [Q, Q], "mu": Q}                       the disk B(at, mu) outside S
 //! BOX   = {"t": [Q, Q], "near": {"contour": c, "piece": i, "s": Q, "k": Q}}   (a Bézier)
 //!       | {"t": [Q, Q], "near": {"contour": c, "piece": i}}                   (an arc)
@@ -43,7 +45,10 @@
 //!
 //! **(a) every point of `L` is within `tol` of `∂S`.** Each part of a piece
 //! (a parameter range, or a counter-clockwise sub-arc of less than `π/2`)
-//! carries a disk in `S` (`B(y, r)`, `y = x_j(u)` a point of the curve) and a
+//! carries a set in `S` (the disk `B(y, r)`, `y = x_j(u)` a point of the
+//! curve; or, for a straight input piece — control points exactly on the line
+//! through its end points — the capsule of radius `r` about the segment
+//! between its end points, which its image holds) and a
 //! disk outside `S` (`B(w, μ)`: `|w − x(u)|² − (r + μ)² > 0` on every input
 //! piece, Bernstein signs). For a point `q`, the segment between the two
 //! disks' points nearest to `q` meets `∂S`, so `q` is within
@@ -83,7 +88,7 @@ use crate::scalar::Rational;
 use crate::shape::io::{MAX_CONTROL_POINTS, MAX_SEGMENTS};
 use geom::{
     arc_hull, inside, ip, iq, near_arc, near_bezier, outside_near, part_bound, ArcT, Bez, BoxT,
-    ConeArc, Path, Side, P,
+    ConeArc, Core, Path, Side, P,
 };
 use num_traits::{Signed, ToPrimitive, Zero};
 use rayon::prelude::*;
@@ -444,6 +449,9 @@ pub(crate) struct Input {
     /// `M⁻¹`, and the near tests of claim (b) measure `|M (F′ − L′)| = |F − L|`
     /// in the stated coordinates.
     pub(crate) metric: Option<[[crate::scalar::Interval; 2]; 2]>,
+    /// Per piece: its control points all lie on the line through its end
+    /// points (exactly), so its image holds the segment between them.
+    pub(crate) straight: Vec<bool>,
 }
 
 impl Input {
@@ -475,11 +483,19 @@ impl Input {
             .iter()
             .map(|p| Bez::new(p.iter().map(ip).collect()))
             .collect();
+        let straight = exact
+            .iter()
+            .map(|p| {
+                let d = subq(&p[p.len() - 1], &p[0]);
+                p.iter().all(|q| cross(&subq(q, &p[0]), &d).is_zero())
+            })
+            .collect();
         Ok(Input {
             exact,
             iv,
             r,
             metric: None,
+            straight,
         })
     }
 
@@ -840,37 +856,72 @@ pub(crate) fn check_closed(pieces: &[OPiece]) -> Result<(), usize> {
 /// The verifier's count of what it checked: `(max bound, boxes)`.
 type Tally = (f64, usize);
 
-/// A part of the cover checked: the disk `B(x_j(u), r)` in `S`, the disk
+/// A part's set in `S` (its `"o"`): the disk `B(x_j(u), r)`, or the capsule
+/// of radius `r` about the segment between the end points of a straight
+/// input piece `j` (`{"segment": j}`), which lies in `S` since the piece's
+/// image holds that segment.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) enum Inside {
+    Disk { piece: usize, u: Rational },
+    Segment { piece: usize },
+}
+
+/// A part of the cover checked: a set in `S` ([`Inside`]), the disk
 /// `B(w, μ)` outside `S`, and the bound over the hull `≤ tol`. Returns the
 /// bound (sup).
-#[allow(clippy::too_many_arguments)]
 pub(crate) fn check_part(
     input: &Input,
     hull: &geom::Hull,
-    o_piece: usize,
-    o_u: &Rational,
+    o: &Inside,
     w: &Q2,
     mu: &Rational,
     tol: crate::scalar::Interval,
 ) -> Result<f64, String> {
-    let bez = input
-        .iv
-        .get(o_piece)
-        .ok_or_else(|| format!("o.piece {o_piece}: the curve has {} pieces", input.iv.len()))?;
-    if o_u.is_negative() || o_u > &Rational::from_integer(1.into()) {
-        return Err("o.u: outside [0, 1]".into());
-    }
+    let (r, mu_i) = (iq(&input.r), iq(mu));
+    let wi = ip(w);
     if mu.is_negative() {
         return Err("w.mu: negative".into());
     }
-    let y = bez.at(iq(o_u));
-    let (r, mu_i) = (iq(&input.r), iq(mu));
-    let wi = ip(w);
-    // the disk's centre lies along the normal at the witness point `x_j(u)`
-    // in certificates lncert writes: `u` hints where the distance is least
-    let hint = (o_piece, o_u.to_f64().unwrap_or(0.5));
+    let (core, hint) = match o {
+        Inside::Disk { piece, u } => {
+            let bez = input.iv.get(*piece).ok_or_else(|| {
+                format!("o.piece {piece}: the curve has {} pieces", input.iv.len())
+            })?;
+            if u.is_negative() || u > &Rational::from_integer(1.into()) {
+                return Err("o.u: outside [0, 1]".into());
+            }
+            // the disk's centre lies along the normal at the witness point
+            // `x_j(u)` in certificates lncert writes: `u` hints where the
+            // distance is least
+            (
+                Core::Point(bez.at(iq(u))),
+                (*piece, u.to_f64().unwrap_or(0.5)),
+            )
+        }
+        Inside::Segment { piece } => {
+            let bez = input.iv.get(*piece).ok_or_else(|| {
+                format!("o.segment {piece}: the curve has {} pieces", input.iv.len())
+            })?;
+            if !input.straight[*piece] {
+                return Err(format!(
+                    "o.segment {piece}: the piece is not straight (its control points are not all on the line through its end points)"
+                ));
+            }
+            let (a, b) = (bez.pts[0], bez.pts[bez.pts.len() - 1]);
+            // where `w` projects on the segment (a hint only)
+            let (dx, dy) = (b[0].mid() - a[0].mid(), b[1].mid() - a[1].mid());
+            let t = ((wi[0].mid() - a[0].mid()) * dx + (wi[1].mid() - a[1].mid()) * dy)
+                / (dx * dx + dy * dy);
+            let t = if t.is_finite() {
+                t.clamp(0.0, 1.0)
+            } else {
+                0.5
+            };
+            (Core::Segment(a, b), (*piece, t))
+        }
+    };
     outside_near(wi, &input.iv, (r + mu_i).sqr(), Some(hint)).map_err(|e| format!("w: {e}"))?;
-    let b = part_bound(hull, y, r, wi, mu_i);
+    let b = part_bound(hull, core, r, wi, mu_i);
     if b > tol.inf() {
         return Err(format!(
             "the part is only proven within {b:e} of the boundary, above the tolerance"
@@ -879,12 +930,18 @@ pub(crate) fn check_part(
     Ok(b)
 }
 
-fn read_witness(v: &Json, at: At) -> Result<(usize, Rational), Invalid> {
+fn read_witness(v: &Json, at: At) -> Result<Inside, Invalid> {
+    if v.get("segment").is_some() {
+        let [p] = named(exact_object(v, "", ["segment"]), at)?;
+        return Ok(Inside::Segment {
+            piece: named(canonical_index(p, ""), || join(&at(), "segment"))?,
+        });
+    }
     let [p, u] = named(exact_object(v, "", ["piece", "u"]), at)?;
-    Ok((
-        named(canonical_index(p, ""), || join(&at(), "piece"))?,
-        rational_at(u, &|| join(&at(), "u"))?,
-    ))
+    Ok(Inside::Disk {
+        piece: named(canonical_index(p, ""), || join(&at(), "piece"))?,
+        u: rational_at(u, &|| join(&at(), "u"))?,
+    })
 }
 
 fn read_outside(v: &Json, at: At) -> Result<(Q2, Rational), Invalid> {
@@ -971,9 +1028,9 @@ fn check_cover_piece(
                 (h, o, w)
             }
         };
-        let (oj, ou) = read_witness(o, &|| join(&atk(), "o"))?;
+        let inside = read_witness(o, &|| join(&atk(), "o"))?;
         let (w, mu) = read_outside(w, &|| join(&atk(), "w"))?;
-        let b = check_part(input, &hull, oj, &ou, &w, &mu, tol).map_err(|e| inv(atk(), e))?;
+        let b = check_part(input, &hull, &inside, &w, &mu, tol).map_err(|e| inv(atk(), e))?;
         max = max.max(b);
     }
     let end_ok = match piece {

@@ -607,8 +607,11 @@ fn an_outside_disk_on_the_curve_is_refused() {
             // — exactly representable for the segment and the polyline
             if k != CUBIC {
                 let o = &f.cert["cover"][c][i][0]["o"];
-                let j = o["piece"].as_u64().unwrap() as usize;
-                let u = num(&o["u"]);
+                // a disk's centre, or the middle of a capsule's segment
+                let (j, u) = match o.get("segment") {
+                    Some(j) => (j.as_u64().unwrap() as usize, q("1/2")),
+                    None => (o["piece"].as_u64().unwrap() as usize, num(&o["u"])),
+                };
                 let pts = f.curve[j].points();
                 let one = Rational::from_integer(1.into());
                 let y = [
@@ -628,10 +631,10 @@ fn an_outside_disk_on_the_curve_is_refused() {
 fn an_enlarged_outside_disk_is_refused() {
     for k in [SEGMENT, CORNER, CUBIC, SQUARE, TWO] {
         let f = fixture(k);
-        let big = &f.r * Rational::from_integer(10.into());
         for (c, i, _) in kinds(&f.cert) {
             let at = format!("cover[{c}][{i}][0]");
             let mut doc = f.cert.clone();
+            let big = num(&f.cert["cover"][c][i][0]["w"]["mu"]) + &f.r;
             doc["cover"][c][i][0]["w"]["mu"] = qv(&big);
             let e = refused_exactly(&doc, &at);
             assert!(e.reason.starts_with("w:"), "{e}");
@@ -673,7 +676,42 @@ fn a_moved_inside_disk_is_refused() {
         let f = fixture(k);
         for (c, i, _) in kinds(&f.cert) {
             let at = format!("cover[{c}][{i}][0]");
-            let u = num(&f.cert["cover"][c][i][0]["o"]["u"]);
+            let o = &f.cert["cover"][c][i][0]["o"];
+            if let Some(j) = o.get("segment") {
+                // a disk at the end of the straight piece farther from the
+                // part leaves the part far from the disk
+                let ju = j.as_u64().unwrap() as usize;
+                let fin = fpts(&f.curve[ju]);
+                // (the outside disk's centre lies off the part's middle)
+                let w = &f.cert["cover"][c][i][0]["w"]["at"];
+                let m = (num(&w[0]).approx(), num(&w[1]).approx());
+                let far = if dist(m, fin[0]) > dist(m, fin[fin.len() - 1]) {
+                    "0"
+                } else {
+                    "1"
+                };
+                let mut doc = f.cert.clone();
+                doc["cover"][c][i][0]["o"] = json!({"piece": j, "u": far});
+                let e = refused_exactly(&doc, &at);
+                assert!(e.reason.contains("above the tolerance"), "{e}");
+                let mut doc = f.cert.clone();
+                doc["cover"][c][i][0]["o"] = json!({"segment": 7});
+                let e = refused_exactly(&doc, &at);
+                assert!(e.reason.contains("o.segment"), "{e}");
+                continue;
+            }
+            // the capsule about a curved piece's chord is not in S: refused
+            // for the piece, whatever the part
+            let mut doc = f.cert.clone();
+            doc["cover"][c][i][0]["o"] = json!({"segment": o["piece"]});
+            let e = refused_exactly(&doc, &at);
+            assert_eq!(
+                e.reason.contains("not straight"),
+                k == CUBIC,
+                "{}: {e}",
+                f.name
+            );
+            let u = num(&o["u"]);
             // to the far end of the piece: the part is then far from B(y, r)
             let far = if u.approx() < 0.5 { "1" } else { "0" };
             let mut doc = f.cert.clone();
@@ -1141,8 +1179,8 @@ fn the_families_hold_the_sampled_stroke_boundary() {
 
 mod geom_edges {
     use super::super::geom::{
-        inside, ip, iq, near_arc, near_bezier, outside_near, part_bound, Bez, BoxT, ConeArc, Path,
-        P,
+        inside, ip, iq, near_arc, near_bezier, outside_near, part_bound, Bez, BoxT, ConeArc, Core,
+        Path, P,
     };
     use super::super::OPiece;
     use super::q;
@@ -1401,17 +1439,54 @@ mod geom_edges {
         let (y, w) = (pt("0", "0"), pt("0", "3"));
         let (r, mu) = (iq(&q("1")), iq(&q("1/2")));
         // q = (0, 2): 2 − 1 = 1 from B(y, 1), 1 − 1/2 from B(w, 1/2)
-        let b = part_bound(&vec![pt("0", "2")], y, r, w, mu);
+        let b = part_bound(&vec![pt("0", "2")], Core::Point(y), r, w, mu);
         assert!((1.0..1.0 + 1e-12).contains(&b), "{b}");
         // the worst hull point counts; a hull point inside both disks gives 0
-        let b = part_bound(&vec![pt("0", "1"), pt("3", "3")], y, r, w, mu);
+        let b = part_bound(&vec![pt("0", "1"), pt("3", "3")], Core::Point(y), r, w, mu);
         assert!(b >= 10f64.sqrt() - 0.5 - 1e-12 && b >= 3.0 - 0.5, "{b}");
-        let b = part_bound(&vec![pt("0", "1")], pt("0", "0"), r, pt("0", "3/2"), mu);
+        let b = part_bound(
+            &vec![pt("0", "1")],
+            Core::Point(pt("0", "0")),
+            r,
+            pt("0", "3/2"),
+            mu,
+        );
         assert!((0.0..1e-12).contains(&b), "{b}");
         // q = y: deep inside B(y, r), 3 − 1/2 from B(w, 1/2): the outside
         // disk's gap counts as much as the inside one's
-        let b = part_bound(&vec![pt("0", "0")], y, r, w, mu);
+        let b = part_bound(&vec![pt("0", "0")], Core::Point(y), r, w, mu);
         assert!((2.5..2.5 + 1e-12).contains(&b), "{b}");
+    }
+
+    #[test]
+    fn a_segment_core_measures_to_its_nearest_point() {
+        // the capsule of radius 1 about [(0, 0), (4, 0)]; a disk outside far away
+        let seg = Core::Segment(pt("0", "0"), pt("4", "0"));
+        let (r, mu) = (iq(&q("1")), iq(&q("1000")));
+        let w = pt("2", "1002");
+        // along the segment the gap to the capsule is the height − 1 (not the
+        // distance to one end point): 1/4 over the whole length
+        // (the outside disk through the hull point itself: its gap is 0)
+        for x in ["0", "1", "7/3", "4"] {
+            let h = pt(x, "5/4");
+            let b = part_bound(&vec![h], seg, r, h, iq(&q("0")));
+            assert!((0.25..0.25 + 1e-9).contains(&b), "{x}: {b}");
+        }
+        // beyond an end the nearest point is the end point: 5 − 1
+        let h = pt("7", "4");
+        let b = part_bound(&vec![h], seg, r, h, iq(&q("0")));
+        assert!((4.0..4.0 + 1e-9).contains(&b), "{b}");
+        // a degenerate segment is a point
+        let h = pt("3", "4");
+        let b = part_bound(
+            &vec![h],
+            Core::Segment(pt("0", "0"), pt("0", "0")),
+            r,
+            h,
+            iq(&q("0")),
+        );
+        assert!((4.0..4.0 + 1e-9).contains(&b), "{b}");
+        let _ = (w, mu);
     }
 }
 
@@ -1426,13 +1501,18 @@ fn malformed_part_and_box_fields_are_named_exactly() {
         for (c, i, is_arc) in kinds(&f.cert) {
             let part = format!("cover[{c}][{i}][0]");
             let span = if is_arc { "dirs" } else { "s" };
+            let o_key = if f.cert["cover"][c][i][0]["o"].get("segment").is_some() {
+                "segment"
+            } else {
+                "u"
+            };
             let mut fields: Vec<(Vec<Value>, String)> = vec![
                 (vec![json!("w"), json!("mu")], format!("{part}.w.mu")),
                 (
                     vec![json!("w"), json!("at"), json!(1)],
                     format!("{part}.w.at[1]"),
                 ),
-                (vec![json!("o"), json!("u")], format!("{part}.o.u")),
+                (vec![json!("o"), json!(o_key)], format!("{part}.o.{o_key}")),
             ];
             if is_arc {
                 fields.push((
@@ -1462,8 +1542,11 @@ fn malformed_part_and_box_fields_are_named_exactly() {
             doc["cover"][c][i][0]["o"]
                 .as_object_mut()
                 .unwrap()
-                .remove("u");
-            refused_exactly(&doc, &format!("{part}.o.u"));
+                .remove(o_key);
+            refused_exactly(
+                &doc,
+                &format!("{part}.o.{}", if o_key == "u" { "u" } else { "piece" }),
+            );
             let mut doc = f.cert.clone();
             doc["cover"][c][i][0]["w"]["extra"] = json!(1);
             refused_exactly(&doc, &format!("{part}.w.extra"));
@@ -1562,10 +1645,7 @@ fn box_evaluation_encloses_exact_points_and_ignores_translation() {
             })
             .collect();
         let (dx, dy) = (q("1000"), q("-700"));
-        let moved: Vec<[Rational; 2]> = pts
-            .iter()
-            .map(|p| [&p[0] + &dx, &p[1] + &dy])
-            .collect();
+        let moved: Vec<[Rational; 2]> = pts.iter().map(|p| [&p[0] + &dx, &p[1] + &dy]).collect();
         let b = Bez::new(pts.iter().map(ip).collect());
         let m = Bez::new(moved.iter().map(ip).collect());
         let t0 = (next() * 64.0).floor() / 64.0;
@@ -1591,7 +1671,8 @@ fn box_evaluation_encloses_exact_points_and_ignores_translation() {
         let (e, d) = (m.at(box_t), m.d_at(box_t));
         for k in 0..=16 {
             let t = crate::scalar::rational_from_f64(t0).unwrap()
-                + crate::scalar::rational_from_f64(t1 - t0).unwrap() * Rational::new(k.into(), 16.into());
+                + crate::scalar::rational_from_f64(t1 - t0).unwrap()
+                    * Rational::new(k.into(), 16.into());
             let (p, v) = (exact.eval(&t), hodo.eval(&t));
             use crate::scalar::IntervalExt;
             assert!(e[0].contains_rational(&p.x) && e[1].contains_rational(&p.y));
