@@ -571,7 +571,7 @@ mod tests {
         let text = r#" {"a": [1, -0.5e+3, true, false, null, "x\"\u00e9\ud83d\ude00"], "b": {}} "#;
         let v = p(text).unwrap();
         let a = v.get("a").unwrap().as_array().unwrap();
-        assert_eq!(a[1], Json::Number("-0.5e+3".into()));
+        assert_eq!(a[1], Json::Number("-0.5e+3"));
         assert_eq!(a[5].as_str(), Some("x\"é😀"));
         // borrowed from the text unless an escape had to be decoded
         assert!(matches!(a[5], Json::String(Cow::Owned(_))));
