@@ -245,11 +245,13 @@ impl Ctx<'_> {
                 }
             }
         }
+        // (the nearest point's parameter is a finite float in [0, 1])
+        let Ok(uq) = q(u) else { return ws };
         let disk = |w, mu| {
             (
                 Inside::Disk {
                     piece: j,
-                    u: q(u).unwrap_or_default(),
+                    u: uq.clone(),
                 },
                 w,
                 mu,

@@ -568,22 +568,23 @@ impl Core {
     fn near(&self, q: P) -> P {
         match *self {
             Core::Point(y) => y,
-            Core::Segment(a, b) => {
-                let d = sub(b, a);
-                let (dx, dy) = (d[0].mid(), d[1].mid());
-                let l2 = dx * dx + dy * dy;
-                // any t in [0, 1] names a point of the segment; the float
-                // projection only chooses which
-                let t = if l2 > 0.0 && l2.is_finite() {
-                    (((q[0].mid() - a[0].mid()) * dx + (q[1].mid() - a[1].mid()) * dy) / l2)
-                        .clamp(0.0, 1.0)
-                } else {
-                    0.0
-                };
-                let t = if t.is_finite() { t } else { 0.0 };
-                add(a, scale(d, ic(t)))
-            }
+            // any t in [0, 1] names a point of the segment; the float
+            // projection only chooses which
+            Core::Segment(a, b) => add(a, scale(sub(b, a), ic(segment_param(a, b, q)))),
         }
+    }
+}
+
+/// The float parameter in `[0, 1]` of the point of the segment `[a, b]`
+/// nearest to `q` (from the enclosures' midpoints; 0 when undefined). It only
+/// chooses a point or orders work: every use is sound for any value in `[0, 1]`.
+pub(crate) fn segment_param(a: P, b: P, q: P) -> f64 {
+    let (dx, dy) = (b[0].mid() - a[0].mid(), b[1].mid() - a[1].mid());
+    let t = ((q[0].mid() - a[0].mid()) * dx + (q[1].mid() - a[1].mid()) * dy) / (dx * dx + dy * dy);
+    if t.is_finite() {
+        t.clamp(0.0, 1.0)
+    } else {
+        0.0
     }
 }
 

@@ -909,15 +909,7 @@ pub(crate) fn check_part(
             }
             let (a, b) = (bez.pts[0], bez.pts[bez.pts.len() - 1]);
             // where `w` projects on the segment (a hint only)
-            let (dx, dy) = (b[0].mid() - a[0].mid(), b[1].mid() - a[1].mid());
-            let t = ((wi[0].mid() - a[0].mid()) * dx + (wi[1].mid() - a[1].mid()) * dy)
-                / (dx * dx + dy * dy);
-            let t = if t.is_finite() {
-                t.clamp(0.0, 1.0)
-            } else {
-                0.5
-            };
-            (Core::Segment(a, b), (*piece, t))
+            (Core::Segment(a, b), (*piece, geom::segment_param(a, b, wi)))
         }
     };
     outside_near(wi, &input.iv, (r + mu_i).sqr(), Some(hint)).map_err(|e| format!("w: {e}"))?;
