@@ -41,6 +41,29 @@ fn ptf(p: DVec2) -> Result<(Q2, Value), Error> {
     let v = pt(&e);
     Ok((e, v))
 }
+/// `x` rounded to a multiple of the power of two `g` (unchanged where that
+/// multiple is not exact): witnesses need only be about right, and short
+/// rationals read faster.
+fn snap(x: f64, g: f64) -> f64 {
+    if g > 0.0 && (x / g).abs() < 2f64.powi(52) {
+        (x / g).round() * g
+    } else {
+        x
+    }
+}
+
+/// A power of two about `tol / 1024`: the grid of witness coordinates.
+fn coord_grid(tol: f64) -> f64 {
+    2f64.powi((tol / 1024.0).log2().floor().clamp(-1000.0, 1000.0) as i32)
+}
+
+/// The grid of a witness parameter on a piece whose control polygon is `p`
+/// (a step moves the point by less than `tol / 1024`, and by at most 2⁻¹⁶).
+fn param_grid(p: &[DVec2], tol: f64) -> f64 {
+    let len: f64 = p.windows(2).map(|w| (w[1] - w[0]).length()).sum();
+    coord_grid(tol / len.max(tol)).min(2f64.powi(-16))
+}
+
 fn mid(x: Interval) -> f64 {
     0.5 * (x.inf() + x.sup())
 }
@@ -177,6 +200,66 @@ fn v2(p: &Q2) -> DVec2 {
     DVec2::new(p[0].approx(), p[1].approx())
 }
 
+/// Why [`adaptive`] stopped: a step it could not shorten further (its
+/// parameters), or an error of the step's test.
+enum Stuck {
+    At(f64, f64),
+    Err(Error),
+}
+
+/// Covers `[0, 1]` by consecutive steps `[s0, s1]`, each accepted by `step`
+/// (which returns the accepted step's bound, or `None`): the first about
+/// `h0` long (at most `h_max`), each next one scaled by `√(0.8·tol / bound)`
+/// of the last (between 0.7× and 2×), halved on a refusal, at most
+/// `halvings` times in a row. Steps end on a dyadic grid about 1/8 of their
+/// length (short rationals in the certificate), the last at exactly 1. Only
+/// the choice of the steps is here; every step is proven by `step`.
+fn adaptive(
+    h0: f64,
+    h_max: f64,
+    halvings: u32,
+    tol: f64,
+    mut step: impl FnMut(f64, f64) -> Result<Option<f64>, Error>,
+) -> Result<(), Stuck> {
+    let (mut s, mut h, mut fails) = (0.0f64, h0.clamp(f64::MIN_POSITIVE, h_max), 0u32);
+    while s < 1.0 {
+        let rem = 1.0 - s;
+        // equal steps over what remains, so the last one is not a sliver
+        let n = (rem / h).ceil().max(1.0);
+        let len = rem / n;
+        let s1 = if n <= 1.0 {
+            1.0
+        } else {
+            let g = (2.0f64).powi(len.log2().floor() as i32 - 3);
+            let t = ((s + len) / g).round() * g;
+            if t > s && t < 1.0 {
+                t
+            } else {
+                s + len
+            }
+        };
+        if !(s1 > s) || s1 > 1.0 {
+            return Err(Stuck::At(s, s + len));
+        }
+        match step(s, s1).map_err(Stuck::Err)? {
+            Some(b) => {
+                let f = if b > 0.0 { (0.8 * tol / b).sqrt() } else { 2.0 };
+                h = ((s1 - s) * f.clamp(0.7, 2.0)).min(h_max);
+                s = s1;
+                fails = 0;
+            }
+            None => {
+                fails += 1;
+                if fails > halvings {
+                    return Err(Stuck::At(s, s1));
+                }
+                h = 0.5 * (s1 - s);
+            }
+        }
+    }
+    Ok(())
+}
+
 struct Ctx<'a> {
     input: Input,
     fin: Vec<FBez>,
@@ -246,7 +329,9 @@ impl Ctx<'_> {
             }
         }
         // (the nearest point's parameter is a finite float in [0, 1])
-        let Ok(uq) = q(u) else { return ws };
+        let Ok(uq) = q(snap(u, param_grid(&self.fin[j].p, self.tol))) else {
+            return ws;
+        };
         let disk = |w, mu| {
             (
                 Inside::Disk {
@@ -257,15 +342,38 @@ impl Ctx<'_> {
                 mu,
             )
         };
-        for mu in [
+        // the largest disk outside first (its gap to a curved `∂S` shrinks
+        // as μ grows): the largest of a ladder that the float test accepts,
+        // raised by bisection towards the next one, rounded down to 6 bits
+        let ladder = [
+            4.0 * self.r,
             self.r,
             self.r / 4.0,
             self.r / 16.0,
             4.0 * self.tol,
             self.tol / 4.0,
-        ] {
-            if let Some(w) = outside(mu) {
-                ws.push(disk(w, mu));
+        ];
+        if let Some(k) = ladder.iter().position(|mu| outside(*mu).is_some()) {
+            let (mut lo, mut hi) = (ladder[k], if k > 0 { ladder[k - 1] } else { ladder[0] });
+            for _ in 0..6 {
+                let m = 0.5 * (lo + hi);
+                if outside(m).is_some() {
+                    lo = m;
+                } else {
+                    hi = m;
+                }
+            }
+            let e = (2.0f64).powi(lo.log2().floor() as i32 - 5);
+            let mu = (lo / e).floor() * e;
+            if mu > ladder[k] {
+                if let Some(w) = outside(mu) {
+                    ws.push(disk(w, mu));
+                }
+            }
+            for mu in &ladder[k..] {
+                if let Some(w) = outside(*mu) {
+                    ws.push(disk(w, *mu));
+                }
             }
         }
         for rho in [self.tol / 16.0, self.tol / 4.0] {
@@ -286,11 +394,12 @@ impl Ctx<'_> {
         hull: &crate::certify::verify::stroke::geom::Hull,
         m: DVec2,
         key: (&str, Value),
-    ) -> Result<Option<Value>, Error> {
+    ) -> Result<Option<(Value, f64)>, Error> {
         for (inside, w, mu) in self.witnesses(m).into_iter().take(16) {
-            let (wq, wv) = ptf(w)?;
+            let g = coord_grid(self.tol);
+            let (wq, wv) = ptf(DVec2::new(snap(w.x, g), snap(w.y, g)))?;
             let muq = q(mu)?;
-            if check_part(&self.input, hull, &inside, &wq, &muq, self.tol_i).is_ok() {
+            if let Ok(b) = check_part(&self.input, hull, &inside, &wq, &muq, self.tol_i) {
                 let o = match &inside {
                     Inside::Disk { piece, u } => json!({"piece": piece, "u": qs(u)}),
                     Inside::Segment { piece } => json!({"segment": piece}),
@@ -302,7 +411,7 @@ impl Ctx<'_> {
                 v.as_object_mut()
                     .expect("object")
                     .insert(key.0.into(), key.1);
-                return Ok(Some(v));
+                return Ok(Some((v, b)));
             }
         }
         Ok(None)
@@ -321,37 +430,31 @@ impl Ctx<'_> {
             && f.p
                 .iter()
                 .all(|p| (*p - f.p[0]).perp_dot(chord).abs() <= 1e-9 * chord.length_squared());
-        let n0 = if straight {
-            1
+        let h0 = if straight {
+            1.0
         } else {
-            ((len / self.part_len()).ceil().max(1.0) as u64)
-                .next_power_of_two()
-                .min(1 << 20)
+            (self.part_len() / len).min(1.0)
         };
         let mut out = Vec::new();
-        let mut stack: Vec<(f64, f64, u32)> = (0..n0)
-            .rev()
-            .map(|k| (k as f64 / n0 as f64, (k + 1) as f64 / n0 as f64, 0))
-            .collect();
-        while let Some((s0, s1, depth)) = stack.pop() {
+        adaptive(h0, 1.0, 24, self.tol, |s0, s1| {
             let hull = iv.restrict(point_iv(s0), point_iv(s1));
             let m = bez_at(&f.p, 0.5 * (s0 + s1));
             let s = json!([qs(&q(s0)?), qs(&q(s1)?)]);
-            match self.try_part(&hull, m, ("s", s))? {
-                Some(v) => out.push(v),
-                None if depth < 24 => {
-                    let sm = 0.5 * (s0 + s1);
-                    stack.push((sm, s1, depth + 1));
-                    stack.push((s0, sm, depth + 1));
-                }
-                None => {
-                    return Err(err(format!(
-                        "no witnesses for the outline part [{s0}, {s1}] near ({}, {})",
-                        m.x, m.y
-                    )))
-                }
+            Ok(self.try_part(&hull, m, ("s", s))?.map(|(v, b)| {
+                out.push(v);
+                b
+            }))
+        })
+        .map_err(|e| match e {
+            Stuck::At(s0, s1) => {
+                let m = bez_at(&f.p, 0.5 * (s0 + s1));
+                err(format!(
+                    "no witnesses for the outline part [{s0}, {s1}] near ({}, {})",
+                    m.x, m.y
+                ))
             }
-        }
+            Stuck::Err(e) => e,
+        })?;
         Ok(out)
     }
 
@@ -371,50 +474,46 @@ impl Ctx<'_> {
         if full || sweep == 0.0 {
             sweep = std::f64::consts::TAU;
         }
-        let n0 = ((sweep / (std::f64::consts::PI / 4.0)).ceil())
-            .max((sweep * rho / self.part_len()).ceil())
-            .max(1.0) as u64;
-        let n0 = n0.next_power_of_two().min(1 << 20);
+        // a part turns by less than π/2 (checked): at most π/2.2 here
+        let h_max = (std::f64::consts::PI / 2.2 / sweep).min(1.0);
+        let h0 = (self.part_len() / (sweep * rho)).min(h_max);
         // directions: the exact ends, floats between
-        let dir = |k: u64, n: u64| -> Result<Q2, Error> {
-            if k == 0 {
+        let dir = |s: f64| -> Result<Q2, Error> {
+            if s == 0.0 {
                 return Ok(u.clone());
             }
-            if k == n {
+            if s == 1.0 {
                 return Ok(v.clone());
             }
-            let a = a0 + sweep * k as f64 / n as f64;
+            let a = a0 + sweep * s;
             Ok([q(a.cos())?, q(a.sin())?])
         };
         let mut out = Vec::new();
-        let mut stack: Vec<(Q2, Q2, f64, f64, u32)> = Vec::new();
-        for k in (0..n0).rev() {
-            let (s0, s1) = (k as f64 / n0 as f64, (k + 1) as f64 / n0 as f64);
-            stack.push((dir(k, n0)?, dir(k + 1, n0)?, s0, s1, 0));
-        }
-        while let Some((d0, d1, s0, s1, depth)) = stack.pop() {
+        let mut d0 = u.clone();
+        adaptive(h0, h_max, 24, self.tol, |s0, s1| {
+            let d1 = dir(s1)?;
             let hull = arc_hull(t.c, rho_i, ip(&d0), ip(&d1))
                 .ok_or_else(|| err("an arc part's hull is not finite"))?;
             let am = a0 + sweep * 0.5 * (s0 + s1);
             let m = c + DVec2::new(am.cos(), am.sin()) * rho;
             let dv = json!([pt(&d0), pt(&d1)]);
-            match self.try_part(&hull, m, ("dirs", dv))? {
-                Some(v) => out.push(v),
-                None if depth < 24 => {
-                    let sm = 0.5 * (s0 + s1);
-                    let a = a0 + sweep * sm;
-                    let dm = [q(a.cos())?, q(a.sin())?];
-                    stack.push((dm.clone(), d1, sm, s1, depth + 1));
-                    stack.push((d0, dm, s0, sm, depth + 1));
-                }
-                None => {
-                    return Err(err(format!(
-                        "no witnesses for an arc part near ({}, {})",
-                        m.x, m.y
-                    )))
-                }
+            Ok(self.try_part(&hull, m, ("dirs", dv))?.map(|(v, b)| {
+                out.push(v);
+                d0 = d1;
+                b
+            }))
+        })
+        .map_err(|e| match e {
+            Stuck::At(s0, s1) => {
+                let am = a0 + sweep * 0.5 * (s0 + s1);
+                let m = c + DVec2::new(am.cos(), am.sin()) * rho;
+                err(format!(
+                    "no witnesses for an arc part near ({}, {})",
+                    m.x, m.y
+                ))
             }
-        }
+            Stuck::Err(e) => e,
+        })?;
         Ok(out)
     }
 
@@ -434,43 +533,37 @@ impl Ctx<'_> {
             len += (p - prev).length();
             prev = p;
         }
-        let n0 = ((len / (256.0 * self.tol)).ceil().max(2.0) as u64)
-            .next_power_of_two()
-            .min(1 << 16);
+        // boxes start about 32·tol long and then follow the bounds
+        let h0 = (32.0 * self.tol / len).min(0.5);
         let mut out = Vec::new();
-        let mut stack: Vec<(f64, f64, u32)> = (0..n0)
-            .rev()
-            .map(|k| (k as f64 / n0 as f64, (k + 1) as f64 / n0 as f64, 0))
-            .collect();
-        while let Some((t0, t1, depth)) = stack.pop() {
+        adaptive(h0, 1.0, 44, self.tol, |t0, t1| {
             let (q0, q1) = (q(t0)?, q(t1)?);
             let bx = BoxT::new(&q0, &q1);
             let tv = json!([qs(&q0), qs(&q1)]);
-            match self.one_box(path, &bx, 0.5 * (t0 + t1), fval(0.5 * (t0 + t1)))? {
-                Some(mut v) => {
+            Ok(self
+                .one_box(path, &bx, 0.5 * (t0 + t1), fval(0.5 * (t0 + t1)))?
+                .map(|(mut v, b)| {
                     v.as_object_mut().expect("object").insert("t".into(), tv);
                     out.push(v);
-                }
-                None if depth < 44 => {
-                    let tm = 0.5 * (t0 + t1);
-                    stack.push((tm, t1, depth + 1));
-                    stack.push((t0, tm, depth + 1));
-                }
-                None => {
-                    let p = fval(t0).unwrap_or(DVec2::NAN);
-                    let near = self.near_outline(p, f64::INFINITY);
-                    let (_, _, d_in) = nearest_input(&self.fin, p);
-                    return Err(err(format!(
-                        "the boundary near parameter {t0}, at ({:.6}, {:.6}), is neither proven near the outline nor inside the stroke (outline {:.3e} away, input {:.6e} for r {})",
-                        p.x,
-                        p.y,
-                        near.first().map_or(f64::INFINITY, |n| n.3),
-                        d_in,
-                        self.r
-                    )));
-                }
+                    b
+                }))
+        })
+        .map_err(|e| match e {
+            Stuck::At(t0, _) => {
+                let p = fval(t0).unwrap_or(DVec2::NAN);
+                let near = self.near_outline(p, f64::INFINITY);
+                let (_, _, d_in) = nearest_input(&self.fin, p);
+                err(format!(
+                    "the boundary near parameter {t0}, at ({:.6}, {:.6}), is neither proven near the outline nor inside the stroke (outline {:.3e} away, input {:.6e} for r {})",
+                    p.x,
+                    p.y,
+                    near.first().map_or(f64::INFINITY, |n| n.3),
+                    d_in,
+                    self.r
+                ))
             }
-        }
+            Stuck::Err(e) => e,
+        })?;
         Ok(out)
     }
 
@@ -480,7 +573,7 @@ impl Ctx<'_> {
         bx: &BoxT,
         tm: f64,
         p: Option<DVec2>,
-    ) -> Result<Option<Value>, Error> {
+    ) -> Result<Option<(Value, f64)>, Error> {
         let Some(p) = p else { return Ok(None) };
         let mut tries: Vec<(BBox, Value)> = Vec::new();
         let near = self.near_outline(p, self.near_tol);
@@ -489,7 +582,7 @@ impl Ctx<'_> {
             d_in < self.r * (1.0 - 1e-12) && near.first().is_none_or(|n| n.3 > 0.5 * self.near_tol);
         let mut inside_try = Vec::new();
         if d_in < self.r {
-            let uq = q(u)?;
+            let uq = q(snap(u, param_grid(&self.fin[j].p, self.tol)))?;
             inside_try.push((
                 BBox::Inside {
                     piece: j,
@@ -531,7 +624,8 @@ impl Ctx<'_> {
                         } else {
                             s
                         };
-                        let (sq, kq) = (q(s)?, q(k)?);
+                        let g = param_grid(&f.p, self.tol);
+                        let (sq, kq) = (q(snap(s, g))?, q(snap(k, g))?);
                         near_try.push((
                             BBox::NearBezier {
                                 contour: c,
@@ -560,8 +654,8 @@ impl Ctx<'_> {
             tries.extend(inside_try);
         }
         for (what, v) in tries {
-            if check_bbox(path, bx, &what, &self.outline, &self.input, self.tol_b_i).is_ok() {
-                return Ok(Some(v));
+            if let Ok(b) = check_bbox(path, bx, &what, &self.outline, &self.input, self.tol_b_i) {
+                return Ok(Some((v, b)));
             }
         }
         Ok(None)
