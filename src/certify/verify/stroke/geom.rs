@@ -63,8 +63,9 @@ pub(crate) struct Bez {
     /// points raised to degree `2n`.
     sq: Vec<Interval>,
     elev: Vec<P>,
-    /// The control polygon's box `[lo, hi]` (`None` if not finite).
-    bbox: Option<(P, P)>,
+    /// The control polygon's box `[lo, hi]`, its ends rounded outward
+    /// (`None` if not finite).
+    bbox: Option<([f64; 2], [f64; 2])>,
 }
 
 fn hodograph(p: &[P]) -> Vec<P> {
@@ -129,7 +130,7 @@ impl Bez {
                 Some([lo, hi])
             },
         );
-        let bbox = bbox.map(|[lo, hi]| ([ic(lo[0]), ic(lo[1])], [ic(hi[0]), ic(hi[1])]));
+        let bbox = bbox.map(|[lo, hi]| (lo, hi));
         Bez {
             pts,
             d,
@@ -421,13 +422,7 @@ pub(crate) fn outside_near(
     for (j, b) in input.iter().enumerate() {
         // the control polygon's box: farther than r from p ⇒ the piece is
         if let Some((lo, hi)) = b.bbox {
-            let gap = |i: usize| {
-                let below = lo[i] - p[i];
-                let above = p[i] - hi[i];
-                let g = below.inf().max(above.inf()).max(0.0);
-                ic(g).sqr()
-            };
-            if (gap(0) + gap(1)).inf() > r2.sup() {
+            if box_farther(lo, hi, p, r2) {
                 continue;
             }
         }
@@ -452,6 +447,23 @@ pub(crate) fn outside_near(
         split(g, j)?;
     }
     Ok(())
+}
+
+/// The box `[lo, hi]` is farther than `√r2` from every point of `p`: its
+/// squared distance, bounded below in floats (each rounded result stepped
+/// down once, which is below the exact value under rounding to nearest),
+/// exceeds `r2`. `false` when `p` or `r2` is empty or not finite.
+pub(crate) fn box_farther(lo: [f64; 2], hi: [f64; 2], p: P, r2: Interval) -> bool {
+    if !(finite(p[0]) && finite(p[1]) && finite(r2)) {
+        return false;
+    }
+    let gap = |i: usize| {
+        let below = (lo[i] - p[i].sup()).next_down();
+        let above = (p[i].inf() - hi[i]).next_down();
+        below.max(above).max(0.0)
+    };
+    let (g0, g1) = (gap(0), gap(1));
+    ((g0 * g0).next_down() + (g1 * g1).next_down()).next_down() > r2.sup()
 }
 
 /// The Bernstein coefficients of `g` restricted to `[0, t]` and `[t, 1]`

@@ -951,7 +951,7 @@ fn check_cover_piece(
     piece: &OPiece,
     input: &Input,
     tol: crate::scalar::Interval,
-) -> Result<(Tally, Vec<simple::Span>), Invalid> {
+) -> Result<(Tally, Vec<simple::Span>, Vec<Vec<P>>), Invalid> {
     let parts = arr(v, at, "parts")?;
     if parts.is_empty() {
         return Err(inv(at, "no parts: the piece is not covered"));
@@ -960,6 +960,7 @@ fn check_cover_piece(
     let one = Rational::from_integer(1.into());
     let mut max = 0.0f64;
     let mut spans = Vec::with_capacity(parts.len());
+    let mut hulls = Vec::with_capacity(parts.len());
     let mut prev: Option<Q2> = None;
     let mut prev_s: Rational = zero.clone();
     for (k, p) in parts.iter().enumerate() {
@@ -1024,6 +1025,7 @@ fn check_cover_piece(
         let (w, mu) = read_outside(w, &|| join(&atk(), "w"))?;
         let b = check_part(input, &hull, &inside, &w, &mu, tol).map_err(|e| inv(atk(), e))?;
         max = max.max(b);
+        hulls.push(hull);
     }
     let end_ok = match piece {
         OPiece::Bezier { .. } => prev_s == one,
@@ -1034,7 +1036,7 @@ fn check_cover_piece(
     if !end_ok {
         return Err(inv(at, "the parts stop before the end of the piece"));
     }
-    Ok(((max, parts.len()), spans))
+    Ok(((max, parts.len()), spans, hulls))
 }
 
 /// One box of the cover of `∂S`.
@@ -1390,20 +1392,17 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
         .collect();
     let (mut max, mut count) = (0.0f64, 0usize);
     let mut spans: Vec<Vec<Vec<simple::Span>>> = outline.iter().map(|_| Vec::new()).collect();
+    let mut hulls: Vec<Vec<Vec<Vec<P>>>> = outline.iter().map(|_| Vec::new()).collect();
     for (t, (c, _)) in a.into_iter().zip(&contour_of) {
-        let ((m, n), sp) = t?;
+        let ((m, n), sp, h) = t?;
         max = max.max(m);
         count += n;
         spans[*c].push(sp);
+        hulls[*c].push(h);
     }
     log::debug!("stroke certificate: (a) checked at {:?}", t0.elapsed());
-    // (c): simple, disjoint contours and their orientations, when claimed
-    let orient = match simple_claim {
-        Json::Bool(true) => Some(
-            simple::simple(&outline, &spans)
-                .map_err(|e| inv("simple", format!("claimed, but {e}")))?,
-        ),
-        Json::Bool(false) => None,
+    let simple_claimed = match simple_claim {
+        Json::Bool(b) => *b,
         o => {
             return Err(inv(
                 "simple",
@@ -1411,8 +1410,6 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
             ))
         }
     };
-    log::debug!("stroke certificate: (c) checked at {:?}", t0.elapsed());
-    // (b): every family of ∂S's cover
     let fams = input.families();
     let bd = arr(boundary, "boundary", "families")?;
     if bd.len() != fams.len() {
@@ -1426,19 +1423,36 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
             ),
         ));
     }
+    // (c), when claimed: simple, disjoint contours and their orientations
+    // (the hulls of (a)'s parts reused), beside (b): every family of ∂S's
+    // cover
+    let (orient, b) = rayon::join(
+        || {
+            simple_claimed
+                .then(|| {
+                    simple::simple_with(&outline, &spans, Some(&hulls))
+                        .map_err(|e| inv("simple", format!("claimed, but {e}")))
+                })
+                .transpose()
+        },
+        || {
+            bd.par_iter()
+                .zip(fams.par_iter())
+                .enumerate()
+                .map(|(k, (v, f))| {
+                    check_family(v, &format!("boundary[{k}]"), f, &outline, &input, tol_b)
+                })
+                .collect::<Vec<Result<Tally, Invalid>>>()
+        },
+    );
+    let orient = orient?;
     let mut max_b = 0.0f64;
-    let b: Vec<Result<Tally, Invalid>> = bd
-        .par_iter()
-        .zip(fams.par_iter())
-        .enumerate()
-        .map(|(k, (v, f))| check_family(v, &format!("boundary[{k}]"), f, &outline, &input, tol_b))
-        .collect();
     for t in b {
         let (m, n) = t?;
         max_b = max_b.max(m);
         count += n;
     }
-    log::debug!("stroke certificate: (b) checked at {:?}", t0.elapsed());
+    log::debug!("stroke certificate: (b), (c) checked at {:?}", t0.elapsed());
     let n_pieces: usize = outline.iter().map(|c| c.len()).sum();
     // a linear map with det M < 0 reverses every contour's orientation
     let orient = orient.map(|o| {

@@ -47,8 +47,11 @@ fn hull_of(piece: &OPiece, span: &Span) -> Option<Vec<P>> {
     }
 }
 
-fn seg<'a>(piece: &'a OPiece, span: Span) -> Option<Seg<'a>> {
-    let hull = hull_of(piece, &span)?;
+fn seg<'a>(piece: &'a OPiece, span: Span, hull: Option<Vec<P>>) -> Option<Seg<'a>> {
+    let hull = match hull {
+        Some(h) => h,
+        None => hull_of(piece, &span)?,
+    };
     let mut lo = [f64::INFINITY; 2];
     let mut hi = [f64::NEG_INFINITY; 2];
     for p in &hull {
@@ -81,7 +84,7 @@ fn halves<'a>(s: &Seg<'a>) -> Option<(Seg<'a>, Seg<'a>)> {
             (Span::Arc(d0.clone(), m.clone()), Span::Arc(m, d1.clone()))
         }
     };
-    Some((seg(s.piece, a)?, seg(s.piece, b)?))
+    Some((seg(s.piece, a, None)?, seg(s.piece, b, None)?))
 }
 
 fn mid(x: Interval) -> f64 {
@@ -200,14 +203,26 @@ pub(crate) fn simple(
     outline: &[Vec<OPiece>],
     spans: &[Vec<Vec<Span>>],
 ) -> Result<Vec<bool>, String> {
+    simple_with(outline, spans, None)
+}
+
+/// [`simple`] with the parts' hulls when the caller has them already
+/// (`hulls[c][i][k]`: part `k` of piece `i` of contour `c`, as `hull_of`
+/// computes it from the same span — claim (a) does).
+pub(crate) fn simple_with(
+    outline: &[Vec<OPiece>],
+    spans: &[Vec<Vec<Span>>],
+    hulls: Option<&[Vec<Vec<Vec<P>>>]>,
+) -> Result<Vec<bool>, String> {
     // the segments in travel order per contour: (contour, index in contour)
-    let mut flat: Vec<(usize, usize, &OPiece, &Span)> = Vec::new();
+    let mut flat: Vec<(usize, usize, &OPiece, &Span, Option<&Vec<P>>)> = Vec::new();
     let mut count = Vec::new();
     for (c, (pieces, sp)) in outline.iter().zip(spans).enumerate() {
         let mut k = 0;
-        for (piece, parts) in pieces.iter().zip(sp) {
-            for s in parts {
-                flat.push((c, k, piece, s));
+        for (i, (piece, parts)) in pieces.iter().zip(sp).enumerate() {
+            for (l, s) in parts.iter().enumerate() {
+                let h = hulls.and_then(|h| h.get(c)?.get(i)?.get(l));
+                flat.push((c, k, piece, s, h));
                 k += 1;
             }
         }
@@ -218,8 +233,8 @@ pub(crate) fn simple(
     }
     let segs: Vec<(usize, usize, Seg)> = flat
         .into_par_iter()
-        .map(|(c, k, piece, s)| {
-            let sg = seg(piece, s.clone()).ok_or("a part's hull is not finite")?;
+        .map(|(c, k, piece, s, h)| {
+            let sg = seg(piece, s.clone(), h.cloned()).ok_or("a part's hull is not finite")?;
             if !injective(&sg) {
                 return Err(format!("part {k} of contour {c} is not proven injective"));
             }

@@ -1680,3 +1680,60 @@ fn box_evaluation_encloses_exact_points_and_ignores_translation() {
         }
     }
 }
+
+/// The outside test's float box filter (`geom::box_farther`) never calls a
+/// box farther than `√r2` when its exact squared distance from some point
+/// of `p` is at most `r2` — here `r2` is the tightest enclosure of that exact
+/// distance, the hardest case for rounding — and does call it farther when
+/// `r2` is a little smaller (so the filter is not vacuous).
+#[test]
+fn box_filter_is_sound_at_the_exact_distance() {
+    use super::geom::box_farther;
+    use crate::scalar::{interval_from_rational, rational_from_f64, Interval};
+    let mut rng: u64 = 0x2545_f491_4f6c_dd1d;
+    let mut next = move || {
+        rng ^= rng << 13;
+        rng ^= rng >> 7;
+        rng ^= rng << 17;
+        (rng >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let rq = |x: f64| rational_from_f64(x).unwrap();
+    let mut farther = 0;
+    for k in 0..4000 {
+        let scale = [1e-3, 1.0, 1e3, 1e6][k % 4];
+        let c = [1000.0 * (next() - 0.5), 1000.0 * (next() - 0.5)];
+        let lo = [c[0] + scale * next(), c[1] + scale * next()];
+        let hi = [lo[0] + scale * next(), lo[1] + scale * next()];
+        // a point interval or a short one, on either side of the box
+        let pt = |i: usize, u: f64, w: f64| {
+            let a = c[i] + scale * 4.0 * (u - 0.5);
+            Interval::try_from((a, a + w)).unwrap()
+        };
+        let w = if k % 3 == 0 {
+            0.0
+        } else {
+            scale * 1e-3 * next()
+        };
+        let p = [pt(0, next(), w), pt(1, next(), w)];
+        // the exact squared distance from the nearest point of p to the box
+        let gap = |i: usize| {
+            let below = rq(lo[i]) - rq(p[i].sup());
+            let above = rq(p[i].inf()) - rq(hi[i]);
+            let z = Rational::from_integer(0.into());
+            below.max(above).max(z)
+        };
+        let e = gap(0) * gap(0) + gap(1) * gap(1);
+        let r2 = interval_from_rational(&e);
+        assert!(
+            !box_farther(lo, hi, p, r2),
+            "box {lo:?}–{hi:?} called farther than its exact distance from {p:?}"
+        );
+        if e > Rational::from_integer(0.into()) {
+            let smaller = interval_from_rational(&(e * Rational::new(999.into(), 1000.into())));
+            if box_farther(lo, hi, p, smaller) {
+                farther += 1;
+            }
+        }
+    }
+    assert!(farther > 1000, "the filter decided only {farther} boxes");
+}
