@@ -210,7 +210,8 @@ enum Stuck {
 /// Covers `[0, 1]` by consecutive steps `[s0, s1]`, each accepted by `step`
 /// (which returns the accepted step's bound, or `None`): the first about
 /// `h0` long (at most `h_max`), each next one scaled by `√(0.8·tol / bound)`
-/// of the last (between 0.7× and 2×), halved on a refusal, at most
+/// of the last (between 0.7× and 2×; always 2× when `tol` is 0: the bound
+/// does not tell how long a step may be), halved on a refusal, at most
 /// `halvings` times in a row. Steps end on a dyadic grid about 1/8 of their
 /// length (short rationals in the certificate), the last at exactly 1. Only
 /// the choice of the steps is here; every step is proven by `step`.
@@ -243,7 +244,11 @@ fn adaptive(
         }
         match step(s, s1).map_err(Stuck::Err)? {
             Some(b) => {
-                let f = if b > 0.0 { (0.8 * tol / b).sqrt() } else { 2.0 };
+                let f = if b > 0.0 && tol > 0.0 {
+                    (0.8 * tol / b).sqrt()
+                } else {
+                    2.0
+                };
                 h = ((s1 - s) * f.clamp(0.7, 2.0)).min(h_max);
                 s = s1;
                 fails = 0;
@@ -533,10 +538,12 @@ impl Ctx<'_> {
             len += (p - prev).length();
             prev = p;
         }
-        // boxes start about 32·tol long and then follow the bounds
-        let h0 = (32.0 * self.tol / len).min(0.5);
+        // boxes start about 128·tol long, double after each success and
+        // halve after a refusal (a box's bound does not grow with its length
+        // as a part's does)
+        let h0 = (128.0 * self.tol / len).min(0.5);
         let mut out = Vec::new();
-        adaptive(h0, 1.0, 44, self.tol, |t0, t1| {
+        adaptive(h0, 1.0, 44, 0.0, |t0, t1| {
             let (q0, q1) = (q(t0)?, q(t1)?);
             let bx = BoxT::new(&q0, &q1);
             let tv = json!([qs(&q0), qs(&q1)]);
@@ -624,8 +631,9 @@ impl Ctx<'_> {
                         } else {
                             s
                         };
-                        let g = param_grid(&f.p, self.tol);
-                        let (sq, kq) = (q(snap(s, g))?, q(snap(k, g))?);
+                        // (not rounded: the clamp above keeps the foot map
+                        // in [0, 1])
+                        let (sq, kq) = (q(s)?, q(k)?);
                         near_try.push((
                             BBox::NearBezier {
                                 contour: c,
