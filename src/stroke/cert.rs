@@ -71,9 +71,17 @@ fn point_iv(t: f64) -> Interval {
     Interval::try_from((t, t)).expect("finite parameter")
 }
 
-/// Float Bézier evaluation.
+/// Float Bézier evaluation (on the stack up to degree 15).
 fn bez_at(p: &[DVec2], t: f64) -> DVec2 {
-    let mut b = p.to_vec();
+    let mut buf = [DVec2::ZERO; 16];
+    let mut heap;
+    let b: &mut [DVec2] = if p.len() <= buf.len() {
+        buf[..p.len()].copy_from_slice(p);
+        &mut buf[..p.len()]
+    } else {
+        heap = p.to_vec();
+        &mut heap
+    };
     for k in (1..b.len()).rev() {
         for i in 0..k {
             b[i] = b[i] * (1.0 - t) + b[i + 1] * t;
@@ -161,6 +169,14 @@ fn nearest_input(input: &[FBez], p: DVec2) -> (usize, f64, f64) {
         }
     }
     best
+}
+
+/// Every input piece is farther than `d` from `p` (floats: it only chooses
+/// which witnesses are tried).
+fn clear_of(input: &[FBez], p: DVec2, d: f64) -> bool {
+    input
+        .iter()
+        .all(|b| b.box_dist(p) > d || b.nearest(p).1 > d)
 }
 
 /// A float outline piece.
@@ -311,9 +327,10 @@ impl Ctx<'_> {
     /// nearest to `m` (the disk `B(y, r)`; first the capsule about the whole
     /// piece when that piece is straight, with larger disks outside, since a
     /// capsule's gap does not grow along it), and disks `B(w, μ)` outside `S`
-    /// along the normal through `m`, largest first; then points (`μ = 0`)
-    /// around `m` for a corner of `∂S`.
-    fn witnesses(&self, m: DVec2) -> Vec<(Inside, DVec2, f64)> {
+    /// along the normal through `m`, largest first; with `corners`, only
+    /// points (`μ = 0`) around `m`, for a corner of `∂S` (tried when the
+    /// others fail).
+    fn witnesses(&self, m: DVec2, corners: bool) -> Vec<(Inside, DVec2, f64)> {
         let (j, u, d) = nearest_input(&self.fin, m);
         let y = bez_at(&self.fin[j].p, u);
         if d <= 0.0 {
@@ -324,9 +341,9 @@ impl Ctx<'_> {
         let mut ws = Vec::new();
         let outside = |mu: f64| {
             let w = y + n * (self.r + mu + gap);
-            (nearest_input(&self.fin, w).2 > self.r + mu + 0.5 * gap).then_some(w)
+            clear_of(&self.fin, w, self.r + mu + 0.5 * gap).then_some(w)
         };
-        if self.input.straight[j] {
+        if self.input.straight[j] && !corners {
             for mu in [64.0 * self.r, 16.0 * self.r, 4.0 * self.r, self.r] {
                 if let Some(w) = outside(mu) {
                     ws.push((Inside::Segment { piece: j }, w, mu));
@@ -358,6 +375,18 @@ impl Ctx<'_> {
             4.0 * self.tol,
             self.tol / 4.0,
         ];
+        if corners {
+            for rho in [self.tol / 16.0, self.tol / 4.0] {
+                for k in 0..16 {
+                    let a = k as f64 * std::f64::consts::TAU / 16.0;
+                    let w = m + DVec2::new(a.cos(), a.sin()) * rho;
+                    if clear_of(&self.fin, w, self.r + 0.25 * gap) {
+                        ws.push(disk(w, 0.0));
+                    }
+                }
+            }
+            return ws;
+        }
         if let Some(k) = ladder.iter().position(|mu| outside(*mu).is_some()) {
             let (mut lo, mut hi) = (ladder[k], if k > 0 { ladder[k - 1] } else { ladder[0] });
             for _ in 0..6 {
@@ -381,15 +410,6 @@ impl Ctx<'_> {
                 }
             }
         }
-        for rho in [self.tol / 16.0, self.tol / 4.0] {
-            for k in 0..16 {
-                let a = k as f64 * std::f64::consts::TAU / 16.0;
-                let w = m + DVec2::new(a.cos(), a.sin()) * rho;
-                if nearest_input(&self.fin, w).2 > self.r + 0.25 * gap {
-                    ws.push(disk(w, 0.0));
-                }
-            }
-        }
         ws
     }
 
@@ -400,7 +420,15 @@ impl Ctx<'_> {
         m: DVec2,
         key: (&str, Value),
     ) -> Result<Option<(Value, f64)>, Error> {
-        for (inside, w, mu) in self.witnesses(m).into_iter().take(16) {
+        // at most 16 tries: the disks first, then the corner points
+        let first = self.witnesses(m, false);
+        let n = first.len().min(16);
+        let rest = || self.witnesses(m, true).into_iter().take(16 - n);
+        for (inside, w, mu) in first
+            .into_iter()
+            .take(16)
+            .chain(std::iter::once(()).flat_map(|()| rest()))
+        {
             let g = coord_grid(self.tol);
             let (wq, wv) = ptf(DVec2::new(snap(w.x, g), snap(w.y, g)))?;
             let muq = q(mu)?;
