@@ -1386,10 +1386,15 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
             contour_of.push((ci, i));
         }
     }
-    let a: Vec<_> = jobs
-        .par_iter()
-        .map(|(at, v, p)| check_cover_piece(v, at, p, &input, tol_i))
-        .collect();
+    // (the families of ∂S, exact joints included, are built meanwhile)
+    let (a, fams): (Vec<_>, _) = rayon::join(
+        || {
+            jobs.par_iter()
+                .map(|(at, v, p)| check_cover_piece(v, at, p, &input, tol_i))
+                .collect()
+        },
+        || input.families(),
+    );
     let (mut max, mut count) = (0.0f64, 0usize);
     let mut spans: Vec<Vec<Vec<simple::Span>>> = outline.iter().map(|_| Vec::new()).collect();
     let mut hulls: Vec<Vec<Vec<Vec<P>>>> = outline.iter().map(|_| Vec::new()).collect();
@@ -1410,7 +1415,6 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
             ))
         }
     };
-    let fams = input.families();
     let bd = arr(boundary, "boundary", "families")?;
     if bd.len() != fams.len() {
         return Err(inv(
