@@ -147,22 +147,35 @@ impl Bez {
         casteljau(&self.d, t)
     }
     /// The control points of the restriction to `[a, b]` (blossom values
-    /// `B(a, …, a, b, …, b)`), each enclosed.
+    /// `B(a, …, a, b, …, b)`), each enclosed: the left part at `b` (the
+    /// curve on `[0, b]`), then that part's right part at `a / b` (its
+    /// blossom values `B(a^{n−k} b^k)`), each de Casteljau step in interval
+    /// arithmetic, so with `a / b` enclosed the exact points are inside.
     pub(crate) fn restrict(&self, a: Interval, b: Interval) -> Vec<P> {
         let n = self.pts.len() - 1;
-        (0..=n)
-            .map(|k| {
-                let mut q = self.pts.clone();
-                for level in 0..n {
-                    let t = if level < n - k { a } else { b };
-                    let u = ic(1.0) - t;
-                    for i in 0..(n - level) {
-                        q[i] = add(scale(q[i], u), scale(q[i + 1], t));
-                    }
-                }
-                q[0]
-            })
-            .collect()
+        let step = |q: &mut [P], t: Interval, level: usize| {
+            let u = ic(1.0) - t;
+            for i in 0..=(n - level) {
+                q[i] = add(scale(q[i], u), scale(q[i + 1], t));
+            }
+        };
+        let mut q = self.pts.clone();
+        let mut left = Vec::with_capacity(n + 1);
+        left.push(q[0]);
+        for level in 1..=n {
+            step(&mut q, b, level);
+            left.push(q[0]);
+        }
+        if a.inf() == 0.0 && a.sup() == 0.0 {
+            return left;
+        }
+        let t = a / b;
+        let mut right = left.clone();
+        for level in 1..=n {
+            step(&mut left, t, level);
+            right[n - level] = left[n - level];
+        }
+        right
     }
 }
 

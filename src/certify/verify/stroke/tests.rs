@@ -1737,3 +1737,65 @@ fn box_filter_is_sound_at_the_exact_distance() {
     }
     assert!(farther > 1000, "the filter decided only {farther} boxes");
 }
+
+/// The verifier's restriction of a Bézier to `[a, b]` (two de Casteljau
+/// splits, the second at `a / b`) encloses the exact restricted control
+/// points, computed here independently as the blossom values
+/// `B(a^{n−k} b^k)` (each its own de Casteljau run with `n − k` steps at `a`
+/// and `k` at `b`, in exact rationals), for degrees 1 to 5 and rational ends
+/// that are not floats (`a`, `b` with denominators 3, 7).
+#[test]
+fn restriction_encloses_the_exact_blossom_values() {
+    use super::geom::{ip, iq, Bez};
+    use crate::scalar::IntervalExt;
+    let mut rng: u64 = 0x9e37_79b9_7f4a_7c15;
+    let mut next = move |m: u64| {
+        rng ^= rng << 13;
+        rng ^= rng >> 7;
+        rng ^= rng << 17;
+        rng % m
+    };
+    let r = |n: i64, d: i64| Rational::new(n.into(), d.into());
+    for case in 0..300 {
+        let deg = 1 + (case % 5);
+        let pts: Vec<[Rational; 2]> = (0..=deg)
+            .map(|_| {
+                [
+                    r(next(20001) as i64 - 10000, 1 + next(997) as i64),
+                    r(next(20001) as i64 - 10000 + 3000, 1 + next(997) as i64),
+                ]
+            })
+            .collect();
+        let (d1, d2) = (3 * (1 + next(50) as i64), 7 * (1 + next(50) as i64));
+        let (x, y) = (r(next(d1 as u64) as i64, d1), r(next(d2 as u64) as i64, d2));
+        let (a, b) = if x < y {
+            (x, y)
+        } else if y < x {
+            (y, x)
+        } else {
+            continue;
+        };
+        let b_iv = Bez::new(pts.iter().map(ip).collect());
+        let hull = b_iv.restrict(iq(&a), iq(&b));
+        for k in 0..=deg {
+            let mut q = pts.clone();
+            for level in 0..deg {
+                let t = if level < deg - k { &a } else { &b };
+                let u = r(1, 1) - t;
+                for i in 0..(deg - level) {
+                    q[i] = [
+                        &q[i][0] * &u + &q[i + 1][0] * t,
+                        &q[i][1] * &u + &q[i + 1][1] * t,
+                    ];
+                }
+            }
+            assert!(
+                hull[k][0].contains_rational(&q[0][0]) && hull[k][1].contains_rational(&q[0][1]),
+                "degree {deg}, [{a}, {b}], control point {k}: {:?} misses ({}, {})",
+                hull[k],
+                q[0][0],
+                q[0][1]
+            );
+        }
+    }
+}
