@@ -255,7 +255,7 @@ fn adaptive(
                 s + len
             }
         };
-        if !(s1 > s) || s1 > 1.0 {
+        if s1.partial_cmp(&s) != Some(std::cmp::Ordering::Greater) || s1 > 1.0 {
             return Err(Stuck::At(s, s + len));
         }
         match step(s, s1).map_err(Stuck::Err)? {

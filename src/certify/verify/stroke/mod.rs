@@ -951,7 +951,7 @@ fn check_cover_piece(
     piece: &OPiece,
     input: &Input,
     tol: crate::scalar::Interval,
-) -> Result<(Tally, Vec<simple::Span>, Vec<Vec<P>>), Invalid> {
+) -> Result<(Tally, Vec<simple::Span>, Vec<geom::Hull>), Invalid> {
     let parts = arr(v, at, "parts")?;
     if parts.is_empty() {
         return Err(inv(at, "no parts: the piece is not covered"));
@@ -1397,7 +1397,7 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
     );
     let (mut max, mut count) = (0.0f64, 0usize);
     let mut spans: Vec<Vec<Vec<simple::Span>>> = outline.iter().map(|_| Vec::new()).collect();
-    let mut hulls: Vec<Vec<Vec<Vec<P>>>> = outline.iter().map(|_| Vec::new()).collect();
+    let mut hulls: Vec<Vec<Vec<geom::Hull>>> = outline.iter().map(|_| Vec::new()).collect();
     for (t, (c, _)) in a.into_iter().zip(&contour_of) {
         let ((m, n), sp, h) = t?;
         max = max.max(m);

@@ -215,7 +215,9 @@ pub(crate) fn simple_with(
     hulls: Option<&[Vec<Vec<Vec<P>>>]>,
 ) -> Result<Vec<bool>, String> {
     // the segments in travel order per contour: (contour, index in contour)
-    let mut flat: Vec<(usize, usize, &OPiece, &Span, Option<&Vec<P>>)> = Vec::new();
+    // (contour, index in contour, piece, span, its hull if given)
+    type Flat<'a> = (usize, usize, &'a OPiece, &'a Span, Option<&'a Vec<P>>);
+    let mut flat: Vec<Flat> = Vec::new();
     let mut count = Vec::new();
     for (c, (pieces, sp)) in outline.iter().zip(spans).enumerate() {
         let mut k = 0;
