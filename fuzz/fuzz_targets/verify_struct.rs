@@ -3,8 +3,8 @@
 //!
 //! The bytes are *choices* (read with `arbitrary::Unstructured`): one of the
 //! seed certificates of fuzz/seeds/verify/ (embedded; version 2 with box
-//! covers, version 3 with parametric maps, stroke certificates (a disk pen and
-//! an elliptical one), a stroke distance certificate and a certificate set), then
+//! covers, version 3 with parametric maps, stroke certificates (a disk pen on
+//! segments and on a quadratic, and an elliptical one), a stroke distance certificate and a certificate set), then
 //! 1 to 4 mutations of
 //! its JSON tree ([`Mutation`]): add a key (from the keys of the certificate and
 //! shape formats, plus `clockwise`, `bounds`, `bound`, `digest`, `extra`) with a
@@ -32,7 +32,7 @@ use serde_json::Value;
 use std::fmt::Write;
 use std::sync::OnceLock;
 
-const SEED_TEXTS: [&str; 16] = [
+const SEED_TEXTS: [&str; 17] = [
     include_str!("../seeds/verify/cert_quad_seg.json"),
     include_str!("../seeds/verify/cert_quad_seg_tol1.json"),
     include_str!("../seeds/verify/cert_box_deleted.json"),
@@ -49,6 +49,7 @@ const SEED_TEXTS: [&str; 16] = [
     include_str!("../seeds/verify/stroke_distance_rect.json"),
     include_str!("../seeds/verify/stroke_ellipse_segment.json"),
     include_str!("../seeds/verify/stroke_set_two.json"),
+    include_str!("../seeds/verify/stroke_curve.json"),
 ];
 
 fn seeds() -> &'static [Value] {
