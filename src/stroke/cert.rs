@@ -226,9 +226,10 @@ enum Stuck {
 /// Covers `[0, 1]` by consecutive steps `[s0, s1]`, each accepted by `step`
 /// (which returns the accepted step's bound, or `None`): the first about
 /// `h0` long (at most `h_max`), each next one scaled by `√(0.8·tol / bound)`
-/// of the last (between 0.7× and 2×; always 2× when `tol` is 0: the bound
+/// of the last (between 1× and 2×; always 2× when `tol` is 0: the bound
 /// does not tell how long a step may be), halved on a refusal, at most
-/// `halvings` times in a row. Steps end on a dyadic grid about 1/8 of their
+/// `halvings` times in a row and never below `halvings` halvings of the
+/// first. Steps end on a dyadic grid about 1/8 of their
 /// length (short rationals in the certificate), the last at exactly 1. Only
 /// the choice of the steps is here; every step is proven by `step`.
 fn adaptive(
@@ -239,6 +240,8 @@ fn adaptive(
     mut step: impl FnMut(f64, f64) -> Result<Option<f64>, Error>,
 ) -> Result<(), Stuck> {
     let (mut s, mut h, mut fails) = (0.0f64, h0.clamp(f64::MIN_POSITIVE, h_max), 0u32);
+    // no step shorter than `halvings` halvings of the first
+    let h_min = h * 0.5f64.powi(halvings as i32);
     while s < 1.0 {
         let rem = 1.0 - s;
         // equal steps over what remains, so the last one is not a sliver
@@ -255,7 +258,10 @@ fn adaptive(
                 s + len
             }
         };
-        if s1.partial_cmp(&s) != Some(std::cmp::Ordering::Greater) || s1 > 1.0 {
+        if (n > 1.0 && len < h_min)
+            || s1.partial_cmp(&s) != Some(std::cmp::Ordering::Greater)
+            || s1 > 1.0
+        {
             return Err(Stuck::At(s, s + len));
         }
         match step(s, s1).map_err(Stuck::Err)? {
@@ -265,7 +271,10 @@ fn adaptive(
                 } else {
                     2.0
                 };
-                h = ((s1 - s) * f.clamp(0.7, 2.0)).min(h_max);
+                // never shorter after a success: where the bound is mostly
+                // not the step's (an outline farther than 0.8·tol from ∂S)
+                // shrinking would go on and never reach 1
+                h = ((s1 - s) * f.clamp(1.0, 2.0)).min(h_max);
                 s = s1;
                 fails = 0;
             }
@@ -1079,4 +1088,84 @@ pub fn distance_certificate(
         "shape_to_outline": ch.doc,
         "outline_to_stroke": cs,
     }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{adaptive, Stuck};
+
+    /// The steps of `adaptive`, or where it stopped.
+    fn run(
+        h0: f64,
+        tol: f64,
+        mut step: impl FnMut(f64, f64) -> Option<f64>,
+    ) -> Result<Vec<(f64, f64)>, (f64, f64)> {
+        let mut out = Vec::new();
+        adaptive(h0, 1.0, 24, tol, |a, b| {
+            let r = step(a, b);
+            if r.is_some() {
+                out.push((a, b));
+            }
+            Ok(r)
+        })
+        .map_err(|e| match e {
+            Stuck::At(a, b) => (a, b),
+            Stuck::Err(_) => unreachable!(),
+        })?;
+        Ok(out)
+    }
+
+    fn chained(steps: &[(f64, f64)]) -> bool {
+        steps.first().is_some_and(|s| s.0 == 0.0)
+            && steps.last().is_some_and(|s| s.1 == 1.0)
+            && steps
+                .windows(2)
+                .all(|w| w[0].1 == w[1].0 && w[0].0 < w[0].1)
+    }
+
+    /// A bound that grows like the step's square: the steps chain from 0 to
+    /// exactly 1, each accepted one within the test's limit, and they come
+    /// within a factor of two of the fewest that limit allows.
+    #[test]
+    fn steps_chain_over_the_unit_interval_and_grow_to_the_limit() {
+        let tol = 1e-2;
+        for h0 in [1e-3, 0.01, 0.3] {
+            let steps = run(h0, tol, |a, b| {
+                let bound = 4.0 * (b - a) * (b - a);
+                (bound <= tol).then_some(bound)
+            })
+            .expect("covered");
+            assert!(chained(&steps), "h0 {h0}: {steps:?}");
+            // bound ≤ tol ⇔ step ≤ 0.05: at least 20 steps, not many more
+            assert!(
+                steps.len() >= 20 && steps.len() <= 40,
+                "h0 {h0}: {} steps",
+                steps.len()
+            );
+        }
+    }
+
+    /// A bound that does not depend on the step (an outline at 0.9·tol from
+    /// ∂S everywhere): the steps must not shrink after each success, which
+    /// never reaches 1 (the step sizes then sum to a finite limit).
+    #[test]
+    fn a_bound_that_does_not_shrink_with_the_step_still_covers() {
+        let steps = run(0.01, 1.0, |a, b| (b - a <= 0.25).then_some(0.9)).expect("covered");
+        assert!(chained(&steps));
+        // the first step's length kept: about 1/h0 steps
+        assert!(steps.len() <= 110, "{} steps", steps.len());
+    }
+
+    /// A point no step may touch: `adaptive` closes in on it, down to
+    /// `h0·2⁻²⁴`, and stops there, naming where.
+    #[test]
+    fn an_undecidable_point_stops_the_steps_there() {
+        let p = 0.3 + 1e-7;
+        let r = run(0.1, 1e-2, |a, b| (!(a <= p && b >= p)).then_some(1e-3));
+        let (a, b) = r.expect_err("p is never covered");
+        assert!(
+            a <= p && (a - p).abs() < 1e-6 && (b - p).abs() < 1e-6,
+            "[{a}, {b}]"
+        );
+    }
 }
