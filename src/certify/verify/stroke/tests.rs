@@ -1616,6 +1616,21 @@ fn an_arc_part_turning_the_wrong_way_is_refused() {
     assert!(tried >= 3, "the fixture has arc parts");
 }
 
+/// A xorshift generator (deterministic test data without a dependency).
+fn xorshift(mut state: u64) -> impl FnMut() -> u64 {
+    move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        state
+    }
+}
+
+/// The top 53 bits of `x` as a float in `[0, 1)`.
+fn unit(x: u64) -> f64 {
+    (x >> 11) as f64 / (1u64 << 53) as f64
+}
+
 /// The checker's interval evaluation of a Bézier and its hodograph over a
 /// parameter box encloses every exact point (rational evaluation at rational
 /// parameters of the box), and its width depends on the control polygon's
@@ -1627,13 +1642,8 @@ fn an_arc_part_turning_the_wrong_way_is_refused() {
 fn box_evaluation_encloses_exact_points_and_ignores_translation() {
     use super::geom::{ip, Bez};
     use crate::scalar::Interval;
-    let mut rng: u64 = 0x9e37_79b9_7f4a_7c15;
-    let mut next = move || {
-        rng ^= rng << 13;
-        rng ^= rng >> 7;
-        rng ^= rng << 17;
-        (rng >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut bits = xorshift(0x9e37_79b9_7f4a_7c15);
+    let mut next = move || unit(bits());
     let width = |p: [Interval; 2]| (p[0].wid()).max(p[1].wid());
     for _ in 0..200 {
         let pts: Vec<[Rational; 2]> = (0..4)
@@ -1690,13 +1700,8 @@ fn box_evaluation_encloses_exact_points_and_ignores_translation() {
 fn box_filter_is_sound_at_the_exact_distance() {
     use super::geom::box_farther;
     use crate::scalar::{interval_from_rational, rational_from_f64, Interval};
-    let mut rng: u64 = 0x2545_f491_4f6c_dd1d;
-    let mut next = move || {
-        rng ^= rng << 13;
-        rng ^= rng >> 7;
-        rng ^= rng << 17;
-        (rng >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut bits = xorshift(0x2545_f491_4f6c_dd1d);
+    let mut next = move || unit(bits());
     let rq = |x: f64| rational_from_f64(x).unwrap();
     let mut farther = 0;
     for k in 0..4000 {
@@ -1748,13 +1753,8 @@ fn box_filter_is_sound_at_the_exact_distance() {
 fn restriction_encloses_the_exact_blossom_values() {
     use super::geom::{ip, iq, Bez};
     use crate::scalar::IntervalExt;
-    let mut rng: u64 = 0x9e37_79b9_7f4a_7c15;
-    let mut next = move |m: u64| {
-        rng ^= rng << 13;
-        rng ^= rng >> 7;
-        rng ^= rng << 17;
-        rng % m
-    };
+    let mut bits = xorshift(0x9e37_79b9_7f4a_7c15);
+    let mut next = move |m: u64| bits() % m;
     let r = |n: i64, d: i64| Rational::new(n.into(), d.into());
     for case in 0..300 {
         let deg = 1 + (case % 5);
