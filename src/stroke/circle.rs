@@ -714,6 +714,19 @@ fn control_box(b: &Bezier<Rational>) -> [Interval; 2] {
 /// rounded, so the skip is exact: the piece lies in its control box, the arc
 /// in its circle's box); [`bezier_arc`] then finds nothing either.
 pub fn bezier_arc_all(bez: &[&Bezier<Rational>], arcs: &[&Arc]) -> Vec<(usize, usize, ArcMeet)> {
+    bezier_arc_all_skipping(bez, arcs, |_, _| false)
+}
+
+/// [`bezier_arc_all`] without the pairs `(i, j)` for which `known(i, j)`
+/// holds (neither solved nor returned; the caller answers for them).
+pub fn bezier_arc_all_skipping<F>(
+    bez: &[&Bezier<Rational>],
+    arcs: &[&Arc],
+    known: F,
+) -> Vec<(usize, usize, ArcMeet)>
+where
+    F: Fn(usize, usize) -> bool + Sync,
+{
     use rayon::prelude::*;
     let bb: Vec<[Interval; 2]> = bez.iter().map(|b| control_box(b)).collect();
     let cb: Vec<[Interval; 2]> = arcs
@@ -737,7 +750,7 @@ pub fn bezier_arc_all(bez: &[&Bezier<Rational>], arcs: &[&Arc]) -> Vec<(usize, u
     };
     let pairs: Vec<(usize, usize)> = (0..bez.len())
         .flat_map(|i| (0..arcs.len()).map(move |j| (i, j)))
-        .filter(|&(i, j)| !apart(&bb[i], &cb[j]))
+        .filter(|&(i, j)| !apart(&bb[i], &cb[j]) && !known(i, j))
         .collect();
     pairs
         .into_par_iter()

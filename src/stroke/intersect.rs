@@ -101,6 +101,9 @@ pub struct Intersections {
     pub pairs_solved: usize,
     /// Pairs excluded by their control-point boxes.
     pub pairs_excluded: usize,
+    /// Pairs (and single pieces) not examined because the caller already
+    /// knows how they meet ([`intersections_skipping`]).
+    pub pairs_known: usize,
     /// Solver boxes processed in all.
     pub boxes: usize,
 }
@@ -552,6 +555,22 @@ fn minus_corners(corners: &[((u8, u8), Rational)]) -> Vec<RationalBox> {
 /// assert_eq!(r.crossings.iter().filter(|c| c.pieces == (0, 1)).count(), 2);
 /// ```
 pub fn intersections(pieces: &[Bezier<Rational>], opts: &IntersectOptions) -> Intersections {
+    intersections_skipping(pieces, opts, |_, _| false)
+}
+
+/// [`intersections`] without the pairs `(i, j)` (`i < j`) and single pieces
+/// `(i, i)` for which `known(i, j)` holds: they are neither solved nor
+/// reported, and `complete` then speaks only of the others. The caller
+/// answers for the skipped pairs (e.g. from an earlier complete search over
+/// the same exact pieces).
+pub fn intersections_skipping<F>(
+    pieces: &[Bezier<Rational>],
+    opts: &IntersectOptions,
+    known: F,
+) -> Intersections
+where
+    F: Fn(usize, usize) -> bool + Sync,
+{
     let mut out = Intersections::default();
     let powers = Powers::new(pieces);
     let boxes: Vec<_> = pieces.iter().map(bbox).collect();
@@ -579,6 +598,8 @@ pub fn intersections(pieces: &[Bezier<Rational>], opts: &IntersectOptions) -> In
             }
             if boxes_disjoint(&boxes[i], &boxes[j]) {
                 out.pairs_excluded += 1;
+            } else if known(i.min(j), i.max(j)) {
+                out.pairs_known += 1;
             } else {
                 pairs.push((i.min(j), i.max(j)));
             }
@@ -586,7 +607,18 @@ pub fn intersections(pieces: &[Bezier<Rational>], opts: &IntersectOptions) -> In
     }
     let n_active = order.len();
     out.pairs_excluded += (n_active * n_active.saturating_sub(1) / 2)
-        .saturating_sub(pairs.len() + out.pairs_excluded);
+        .saturating_sub(pairs.len() + out.pairs_excluded + out.pairs_known);
+    let singles: Vec<usize> = order
+        .iter()
+        .copied()
+        .filter(|_| opts.self_intersections)
+        .filter(|&i| !known(i, i))
+        .collect();
+    out.pairs_known += if opts.self_intersections {
+        order.len() - singles.len()
+    } else {
+        0
+    };
     pairs.sort();
     use rayon::prelude::*;
     let results: Vec<Intersections> = pairs
@@ -598,9 +630,8 @@ pub fn intersections(pieces: &[Bezier<Rational>], opts: &IntersectOptions) -> In
                 .unwrap_or_else(|| pair_boxes(pieces, &powers, i, j, &sopts, &joint_min))
         })
         .chain(
-            order
+            singles
                 .par_iter()
-                .filter(|_| opts.self_intersections)
                 .map(|&i| self_pair(pieces, &powers, i, &self_opts)),
         )
         .collect();

@@ -7,7 +7,7 @@
 //! | task | entry points |
 //! |---|---|
 //! | stroke a curve with a circular or elliptical pen | [`stroke()`], [`StrokeOptions`], [`PenShape`], [`Cap`], [`Stroke`], [`Claim`], [`Contour`], [`Piece`], [`Orientation`] |
-//! | certified crossings of polynomial pieces (complete: every crossing proven, none missed, or undecided) | [`intersections`], [`IntersectOptions`], [`Intersections`], [`Crossing`], [`Joint`], [`Undecided`] |
+//! | certified crossings of polynomial pieces (complete: every crossing proven, none missed, or undecided) | [`intersections`], [`intersections_skipping`], [`IntersectOptions`], [`Intersections`], [`Crossing`], [`Joint`], [`Undecided`] |
 //! | exact circular arcs and their crossings with Bézier pieces | [`Arc`], [`bezier_arc`], [`ArcHit`], [`arcs_meet`], [`ArcMeet`] |
 //! | the referee: certified `d_H(X, ∂S)` for any outline `X` (kurbo's, Skia's, yours) and the exact stroke boundary | [`referee`], [`distance_to_stroke`], [`StrokeShape`], [`StrokeDistance`], [`StrokeVerdict`] |
 //! | the elliptical pen's quadratic form and its round caps | [`Form`], [`outside_of`], [`half_ellipse_cap`], [`EllipseCap`] |
@@ -41,7 +41,10 @@ pub(crate) mod trim;
 pub use cert::{certificate, certificate_set, distance_certificate};
 pub use circle::{arcs_meet, bezier_arc, Arc, ArcHit, ArcMeet};
 pub use ellipse::{half_ellipse_cap, outside_of, EllipseCap, Form};
-pub use intersect::{intersections, Crossing, IntersectOptions, Intersections, Joint, Undecided};
+pub use intersect::{
+    intersections, intersections_skipping, Crossing, IntersectOptions, Intersections, Joint,
+    Undecided,
+};
 pub use referee::{
     distance_through, distance_to_stroke, referee, StrokeDistance, StrokeShape, StrokeVerdict,
 };

@@ -4,21 +4,48 @@
 use super::types::{Contour, Orientation, Piece};
 use crate::curve::Bezier;
 use crate::scalar::{Interval, Rational};
-use crate::stroke::circle::{arcs_meet, bezier_arc_all, Arc};
-use crate::stroke::intersect::{intersections, IntersectOptions};
+use crate::stroke::circle::{arcs_meet, bezier_arc_all_skipping, Arc};
+use crate::stroke::intersect::{intersections_skipping, IntersectOptions};
 use num_traits::{One, Zero};
 
-/// Chains pieces into contours by exact shared end points.
-pub(super) fn chain(pieces: Vec<Piece>) -> Vec<Contour> {
+/// What the raw crossing search proved about the output's pieces, for claim
+/// (c) to reuse instead of solving those pairs again.
+///
+/// A piece whose `origin` is `Some(i)` **is** raw piece `i`, exactly (an
+/// unsplit raw piece, its control points unmoved). For two such pieces from
+/// raw pieces `i ≠ j` (or one piece, `i = j`) whose pair is not `unsure`, the
+/// raw search proved that they meet exactly at the end points they share and
+/// nowhere else: in the pair's solved domain every box was excluded (no
+/// crossing, nothing undecided), and each shared end point was proven the
+/// only contact in a corner around it. The output pieces are the same point
+/// sets, so the same holds for them, and (c) only has to check that pieces
+/// sharing an end point are consecutive in their contour.
+pub(super) struct Known<'a> {
+    /// Per contour, per piece (as [`chain`] returns them).
+    pub(super) origin: Vec<Vec<Option<usize>>>,
+    /// The raw pairs `(i, j)`, `i ≤ j`, not proven to meet only at shared
+    /// end points (see [`super::split::Crossings::unsure`]).
+    pub(super) unsure: &'a std::collections::HashSet<(usize, usize)>,
+}
+
+/// Chains pieces into contours by exact shared end points; each piece's
+/// tag (the raw piece it is exactly, if any) is returned beside the
+/// contours, in the same order.
+pub(super) fn chain(
+    tagged: Vec<(Piece, Option<usize>)>,
+) -> (Vec<Contour>, Vec<Vec<Option<usize>>>) {
+    let (pieces, tags): (Vec<Piece>, Vec<Option<usize>>) = tagged.into_iter().unzip();
     let n = pieces.len();
     let mut used = vec![false; n];
     let mut out = Vec::new();
+    let mut out_tags = Vec::new();
     for s in 0..n {
         if used[s] {
             continue;
         }
         used[s] = true;
         let mut cur = vec![pieces[s].clone()];
+        let mut cur_tags = vec![tags[s]];
         loop {
             let end = cur.last().expect("nonempty").end().clone();
             if &end == cur[0].start() {
@@ -29,6 +56,7 @@ pub(super) fn chain(pieces: Vec<Piece>) -> Vec<Contour> {
                 Some(k) => {
                     used[k] = true;
                     cur.push(pieces[k].clone());
+                    cur_tags.push(tags[k]);
                 }
                 None => break,
             }
@@ -52,13 +80,20 @@ pub(super) fn chain(pieces: Vec<Piece>) -> Vec<Contour> {
             orientation,
             area,
         });
+        out_tags.push(cur_tags);
     }
-    out
+    (out, out_tags)
 }
 
 /// Claim (c): closed, oriented, and no contact besides consecutive joints.
-/// Returns (proven, complete, note).
-pub(super) fn check_simple(contours: &[Contour], iopts: &IntersectOptions) -> (bool, bool, String) {
+/// Pairs that `known` answers for (see [`Known`]) are not solved again: they
+/// meet exactly at their shared end points, which must then be joints of
+/// consecutive pieces. Returns (proven, complete, note).
+pub(super) fn check_simple(
+    contours: &[Contour],
+    iopts: &IntersectOptions,
+    known: Option<&Known>,
+) -> (bool, bool, String) {
     // flat list with (contour, position)
     let mut flat: Vec<(&Piece, usize, usize)> = Vec::new();
     for (ci, c) in contours.iter().enumerate() {
@@ -66,6 +101,16 @@ pub(super) fn check_simple(contours: &[Contour], iopts: &IntersectOptions) -> (b
             flat.push((p, ci, k));
         }
     }
+    let origin = |i: usize| known.and_then(|k| k.origin.get(flat[i].1)?.get(flat[i].2).copied()?);
+    // flat pieces i, j (i = j: one piece alone) whose contacts the raw search
+    // already proved to be their shared end points
+    let is_known = |i: usize, j: usize| match (known, origin(i), origin(j)) {
+        (Some(k), Some(a), Some(b)) => {
+            (a != b || i == j) && !k.unsure.contains(&(a.min(b), a.max(b)))
+        }
+        _ => false,
+    };
+    let mut known_pairs = 0usize;
     let consecutive = |i: usize, j: usize| -> bool {
         let (a, b) = (&flat[i], &flat[j]);
         if a.1 != b.1 {
@@ -99,7 +144,14 @@ pub(super) fn check_simple(contours: &[Contour], iopts: &IntersectOptions) -> (b
             Piece::Arc(_) => unreachable!(),
         })
         .collect();
-    let r = intersections(&bz, iopts);
+    let r = intersections_skipping(&bz, iopts, |i, j| is_known(bez[i], bez[j]));
+    log::debug!(
+        "(c) Bézier pairs: {} solved, {} known from the raw search, {} excluded by boxes",
+        r.pairs_solved,
+        r.pairs_known,
+        r.pairs_excluded
+    );
+    known_pairs += r.pairs_known;
     let mut complete = r.complete;
     if !r.crossings.is_empty() {
         problems.push(format!("{} crossings left", r.crossings.len()));
@@ -121,7 +173,7 @@ pub(super) fn check_simple(contours: &[Contour], iopts: &IntersectOptions) -> (b
         })
         .collect();
     let bz_refs: Vec<&Bezier<Rational>> = bz.iter().collect();
-    let mut meets = bezier_arc_all(&bz_refs, &arc_refs);
+    let mut meets = bezier_arc_all_skipping(&bz_refs, &arc_refs, |i, j| is_known(bez[i], arcs[j]));
     meets.sort_by_key(|m| (m.1, m.0));
     for (i, j, m) in meets {
         let (bi, ai, b, arc) = (bez[i], arcs[j], bz_refs[i], arc_refs[j]);
@@ -150,6 +202,9 @@ pub(super) fn check_simple(contours: &[Contour], iopts: &IntersectOptions) -> (b
             let (Piece::Arc(a), Piece::Arc(b)) = (flat[ai].0, flat[aj].0) else {
                 continue;
             };
+            if is_known(ai, aj) {
+                continue;
+            }
             let shared = if consecutive(ai, aj) {
                 [&a.from, &a.to]
                     .into_iter()
@@ -167,16 +222,36 @@ pub(super) fn check_simple(contours: &[Contour], iopts: &IntersectOptions) -> (b
             }
         }
     }
+    // the known pairs: their only contacts are shared end points, which
+    // must be joints of consecutive pieces
+    for i in 0..flat.len() {
+        for j in i + 1..flat.len() {
+            if is_known(i, j) && shares_an_end(flat[i].0, flat[j].0) && !consecutive(i, j) {
+                problems.push(format!("pieces {i} and {j} touch but are not consecutive"));
+            }
+        }
+    }
     let ok = problems.is_empty();
     let note = if ok {
         format!(
-            "{} closed contours, {} pieces: no crossing, only joints of consecutive pieces (certified), orientation from the area sign",
+            "{} closed contours, {} pieces: no crossing, only joints of consecutive pieces (certified{}), orientation from the area sign",
             contours.len(),
-            flat.len()
+            flat.len(),
+            if known.is_some() {
+                format!("; {known_pairs} Bézier pairs known from the raw search")
+            } else {
+                String::new()
+            }
         )
     } else {
         problems.truncate(10);
         problems.join("; ")
     };
     (ok, complete, note)
+}
+
+/// The two pieces have an end point in common (exactly).
+fn shares_an_end(a: &Piece, b: &Piece) -> bool {
+    let (a0, a1) = (a.start(), a.end());
+    [b.start(), b.end()].into_iter().any(|p| p == a0 || p == a1)
 }

@@ -1,7 +1,7 @@
 //! The driver: [`stroke`] and its phases.
 
 use super::add_note;
-use super::chain::{chain, check_simple};
+use super::chain::{chain, check_simple, Known};
 use super::classify::{foot, prove_kept, prove_removed, Part, KEPT_MAX_PARTS};
 use super::pinch::pinched_loops;
 use super::sides::{check, dist_hi, raw_contours, Kind, Raw};
@@ -143,17 +143,37 @@ fn stroke_at(
         tally.a_bound = tally.a_bound.max(b.bound);
     }
     drop_pinched(&run, &subs, &mut tally, &mut bridges, &mut notes);
+    log::debug!("pinched: {:?}", t0.elapsed());
 
     // --- chain, and claim (c)
-    let out_pieces: Vec<Piece> = subs
+    // a kept sub-piece that is its whole raw piece, unmoved, is tagged with
+    // it: (c) reuses the raw search's answers for such pieces (`Known`)
+    let out_pieces: Vec<(Piece, Option<usize>)> = subs
         .iter()
         .zip(&tally.keep)
         .filter(|(_, k)| **k)
-        .map(|(s, _)| s.post.clone())
-        .chain(bridges.into_iter().filter(|b| b.keep).map(|b| b.piece))
+        .map(|(s, _)| {
+            let whole = s.end_splits == [false, false] && s.post == raws[s.raw].piece;
+            (s.post.clone(), whole.then_some(s.raw))
+        })
+        .chain(
+            bridges
+                .into_iter()
+                .filter(|b| b.keep)
+                .map(|b| (b.piece, None)),
+        )
         .collect();
-    let contours = chain(out_pieces);
-    let (c_ok, c_complete, c_note) = check_simple(&contours, &iopts);
+    let (contours, origin) = chain(out_pieces);
+    log::debug!("chained: {:?}", t0.elapsed());
+    let known = Known {
+        origin,
+        unsure: &found.unsure,
+    };
+    #[cfg(test)]
+    let reuse = REUSE_RAW.with(std::cell::Cell::get);
+    #[cfg(not(test))]
+    let reuse = true;
+    let (c_ok, c_complete, c_note) = check_simple(&contours, &iopts, reuse.then_some(&known));
     log::debug!("checked: {:?}", t0.elapsed());
     if log::log_enabled!(log::Level::Trace) {
         for (k, s) in subs.iter().enumerate() {
@@ -210,6 +230,13 @@ fn build_raw(
     }
     let raws: Vec<Raw> = raw_contours_all.into_iter().flatten().collect();
     Ok((raws, notes, caps))
+}
+
+#[cfg(test)]
+thread_local! {
+    /// Claim (c) reuses the raw search's answers (`Known`); tests turn this
+    /// off on their thread to compare with the full search.
+    pub(super) static REUSE_RAW: std::cell::Cell<bool> = const { std::cell::Cell::new(true) };
 }
 
 /// What the classification phases share: the input, the pen and the raw

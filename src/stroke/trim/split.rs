@@ -164,6 +164,12 @@ pub(super) struct Crossings {
     pub(super) crossings: Vec<RawCrossing>,
     /// Nothing of the raw arrangement was left undecided.
     pub(super) complete: bool,
+    /// The raw pairs `(i, j)`, `i ≤ j`, that the search did not prove to meet
+    /// only at shared end points: a crossing, an undecided region or range,
+    /// a tangential contact, a crossing left unsplit. Every other pair of raw
+    /// pieces (and single piece, `i = j`) meets exactly at the end points
+    /// the two share, which claim (c) reuses ([`super::chain::Known`]).
+    pub(super) unsure: std::collections::HashSet<(usize, usize)>,
     /// The split points of arc–arc crossings, one per arc (see
     /// [`arc_arc_crossings`]).
     pub(super) bridges: Vec<Bridge>,
@@ -198,6 +204,7 @@ pub(super) fn find_crossings(
         crossings: Vec::new(),
         complete: true,
         bridges: Vec::new(),
+        unsure: std::collections::HashSet::new(),
     };
     bezier_crossings(raws, &bez_idx, iopts, notes, &mut found, t0);
     let bez: Vec<&Bezier<Rational>> = bez_idx
@@ -275,6 +282,13 @@ fn bezier_crossings(
         }
     }
     found.complete = inter.complete;
+    let pair = |i: usize, j: usize| (bez_idx[i].min(bez_idx[j]), bez_idx[i].max(bez_idx[j]));
+    found
+        .unsure
+        .extend(inter.undecided.iter().map(|u| pair(u.pieces.0, u.pieces.1)));
+    found
+        .unsure
+        .extend(inter.crossings.iter().map(|c| pair(c.pieces.0, c.pieces.1)));
     for u in &inter.undecided {
         add_note(
             notes,
@@ -357,7 +371,9 @@ fn bezier_arc_crossings(
     if !m.hits.is_empty() || !m.undecided.is_empty() {
         log::trace!("bez {bi} arc {ai}: {:?}", m);
     }
+    let pair = (bi.min(ai), bi.max(ai));
     if !m.undecided.is_empty() {
+        found.unsure.insert(pair);
         found.complete = false;
         add_note(
             notes,
@@ -382,6 +398,7 @@ fn bezier_arc_crossings(
                 }
             }
         }
+        found.unsure.insert(pair);
         if h.multiple {
             found.complete = false;
             add_note(
@@ -450,8 +467,12 @@ fn arc_arc_crossings(
             let shared = [&a.from, &a.to]
                 .into_iter()
                 .find(|p| **p == b.from || **p == b.to);
-            let points = match arc_meetings(a, b, shared) {
-                Some(Meetings::Apart) => continue,
+            let meetings = arc_meetings(a, b, shared);
+            if matches!(meetings, Some(Meetings::Apart)) {
+                continue;
+            }
+            found.unsure.insert((ai.min(aj), ai.max(aj)));
+            let points = match meetings {
                 Some(Meetings::Points(ps)) if ps.len() == 1 || disjoint(&ps[0], &ps[1]) => ps,
                 _ => {
                     found.complete = false;

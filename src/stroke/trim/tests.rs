@@ -1,5 +1,6 @@
 //! Unit tests of the certified reach, the spur drop and the interval areas.
 
+use super::chain::{chain, check_simple, Known};
 use super::pinch::{pinched_loops, reach_hi};
 use super::types::{bezier_area_iv, Piece};
 use crate::curve::{Bezier, V2};
@@ -228,4 +229,116 @@ fn a_second_path_near_the_first_is_dropped_a_distant_one_is_kept() {
     // a cap below the gap, or a path 2 units away: both stay
     assert!(run(&near, 0.005).is_empty());
     assert!(run(&path(q(4, 1)), 0.5).is_empty());
+}
+
+/// Closed squares of segments, tagged as raw pieces `first, first + 1, …`.
+fn tagged_square(x0: i64, y0: i64, side: i64, first: usize) -> Vec<(Piece, Option<usize>)> {
+    let q = |n: i64| Rational::from_integer(n.into());
+    let p = |x: i64, y: i64| V2::new(q(x), q(y));
+    let c = [
+        p(x0, y0),
+        p(x0 + side, y0),
+        p(x0 + side, y0 + side),
+        p(x0, y0 + side),
+    ];
+    (0..4)
+        .map(|k| {
+            let seg = Bezier::new(vec![c[k].clone(), c[(k + 1) % 4].clone()]);
+            (Piece::Bezier(seg), Some(first + k))
+        })
+        .collect()
+}
+
+/// Claim (c) with the raw search's answers reused, and without.
+fn check_both(
+    pieces: Vec<(Piece, Option<usize>)>,
+    unsure: &[(usize, usize)],
+) -> [(bool, String); 2] {
+    let (contours, origin) = chain(pieces);
+    let unsure = unsure.iter().copied().collect();
+    let known = Known {
+        origin,
+        unsure: &unsure,
+    };
+    let iopts = crate::stroke::IntersectOptions::default();
+    let (a, _, na) = check_simple(&contours, &iopts, Some(&known));
+    let (b, _, nb) = check_simple(&contours, &iopts, None);
+    [(a, na), (b, nb)]
+}
+
+#[test]
+fn claim_c_with_the_raw_search_reused_still_refuses_touching_and_crossing_contours() {
+    // two squares apart: simple either way, and the reuse skips every pair
+    let mut apart = tagged_square(0, 0, 10, 0);
+    apart.extend(tagged_square(20, 0, 10, 4));
+    let [(with, note), (without, _)] = check_both(apart, &[]);
+    assert!(with && without, "{note}");
+    assert!(note.contains("known from the raw search"), "{note}");
+    // two squares touching at one corner (10, 10): the raw search proves
+    // the touching pieces meet only there, a shared end point, but they are
+    // not consecutive, so (c) must fail with the reuse as without it
+    let mut touch = tagged_square(0, 0, 10, 0);
+    touch.extend(tagged_square(10, 10, 10, 4));
+    let [(with, note), (without, note_full)] = check_both(touch, &[]);
+    assert!(!with, "reuse accepted a touching pair: {note}");
+    assert!(!without, "{note_full}");
+    assert!(note.contains("touch but are not consecutive"), "{note}");
+    // two crossing squares: the crossing pairs are unsure in the raw search,
+    // so (c) solves them again and finds the crossings
+    let mut cross = tagged_square(0, 0, 10, 0);
+    cross.extend(tagged_square(5, 5, 10, 4));
+    let unsure = [(1, 4), (1, 7), (2, 4), (2, 7)];
+    let [(with, note), (without, _)] = check_both(cross, &unsure);
+    assert!(!with && !without, "{note}");
+    assert!(note.contains("crossings left"), "{note}");
+    // a piece that is not a whole raw piece (no tag) is always solved
+    let mut untagged = tagged_square(0, 0, 10, 0);
+    untagged.extend(
+        tagged_square(5, 5, 10, 4)
+            .into_iter()
+            .map(|(p, _)| (p, None)),
+    );
+    let [(with, note), _] = check_both(untagged, &[]);
+    assert!(!with && note.contains("crossings left"), "{note}");
+}
+
+#[test]
+fn claim_c_reusing_the_raw_search_agrees_with_the_full_search_on_strokes() {
+    use crate::offset::Output;
+    use crate::stroke::{stroke, StrokeOptions};
+    let docs = [
+        r#"<svg viewBox="0 0 24 24"><circle cx="12" cy="12" r="3"/></svg>"#,
+        r#"<svg viewBox="0 0 24 24"><rect x="3" y="3" width="18" height="18" rx="1.5"/></svg>"#,
+        r#"<svg viewBox="0 0 24 24"><path d="M12 2a10 10 0 1 0 10 10h-4a6 6 0 1 1-6-6z"/></svg>"#,
+        r#"<svg viewBox="0 0 24 24"><path d="M20.84 4.61a5.5 5.5 0 0 0-7.78 0L12 5.67l-1.06-1.06a5.5 5.5 0 0 0-7.78 7.78l1.06 1.06L12 21.23l7.78-7.78 1.06-1.06a5.5 5.5 0 0 0 0-7.78z"/></svg>"#,
+        r#"<svg viewBox="0 0 24 24"><path d="M3 12c3-6 6-6 9 0s6 6 9 0"/></svg>"#,
+        r#"<svg viewBox="0 0 24 24"><path d="M4 8 C16 16 0 16 12 8"/></svg>"#,
+    ];
+    let mut reused = 0;
+    for doc in docs {
+        let curve = crate::shape::parse_svg_document(doc).expect("parses");
+        let mut opts = StrokeOptions::new(
+            Rational::from_integer(1.into()),
+            crate::Tolerance::from_f64(1e-2).expect("tolerance"),
+        );
+        opts.output = Output::Cubic;
+        let with = stroke(&curve, &opts).expect("strokes");
+        super::driver::REUSE_RAW.with(|c| c.set(false));
+        let without = stroke(&curve, &opts).expect("strokes");
+        super::driver::REUSE_RAW.with(|c| c.set(true));
+        assert_eq!(
+            with.c.proven, without.c.proven,
+            "{doc}: {} / {}",
+            with.c.note, without.c.note
+        );
+        let pieces = |s: &crate::stroke::Stroke| -> Vec<Vec<Piece>> {
+            s.contours.iter().map(|c| c.pieces.clone()).collect()
+        };
+        assert_eq!(pieces(&with), pieces(&without), "{doc}");
+        assert!(with.c.proven, "{doc}: {}", with.c.note);
+        if with.c.note.contains("known from the raw search") {
+            reused += 1;
+        }
+    }
+    assert_eq!(reused, docs.len());
 }
