@@ -20,6 +20,7 @@ mod float;
 mod interval;
 mod rational;
 mod surd;
+pub mod ulp;
 
 pub use ferr::FloatErr;
 pub use filter::{filter_stats, filtered, reset_filter_stats, Decision, FilterStats, Predicate};

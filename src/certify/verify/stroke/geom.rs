@@ -7,7 +7,7 @@
 //! the stroke engine. The writer ([`crate::stroke::certificate`]) calls the same
 //! tests to choose its boxes, so what it writes is what this code accepts.
 
-use crate::scalar::{interval_from_rational, Interval, Rational};
+use crate::scalar::{interval_from_rational, ulp, Interval, Rational};
 
 /// A point or vector of intervals.
 pub(crate) type P = [Interval; 2];
@@ -24,17 +24,20 @@ pub(crate) fn ip(p: &[Rational; 2]) -> P {
     [iq(&p[0]), iq(&p[1])]
 }
 
+// The vector helpers use the one-ulp-widened sums and products of
+// `scalar::ulp` (outward enclosures without rounding-mode switches; the
+// argument is in that module).
 fn sub(a: P, b: P) -> P {
-    [a[0] - b[0], a[1] - b[1]]
+    [ulp::sub(a[0], b[0]), ulp::sub(a[1], b[1])]
 }
 fn add(a: P, b: P) -> P {
-    [a[0] + b[0], a[1] + b[1]]
+    [ulp::add(a[0], b[0]), ulp::add(a[1], b[1])]
 }
 fn scale(a: P, k: Interval) -> P {
-    [a[0] * k, a[1] * k]
+    [ulp::mul(a[0], k), ulp::mul(a[1], k)]
 }
 fn dot(a: P, b: P) -> Interval {
-    a[0] * b[0] + a[1] * b[1]
+    ulp::add(ulp::mul(a[0], b[0]), ulp::mul(a[1], b[1]))
 }
 /// The left normal `J v = (−v.y, v.x)`.
 fn perp(v: P) -> P {
@@ -87,7 +90,7 @@ fn casteljau(p: &[P], t: Interval) -> P {
     // t b_{i+1}`, which does not multiply the control points' own widths by
     // `1 + 2t` per level (as `certify::verify::eval` explains).
     let thin = t.inf() == t.sup();
-    let u = ic(1.0) - t;
+    let u = ulp::sub(ic(1.0), t);
     for k in (1..b.len()).rev() {
         for i in 0..k {
             b[i] = if thin {
@@ -154,7 +157,7 @@ impl Bez {
     pub(crate) fn restrict(&self, a: Interval, b: Interval) -> Vec<P> {
         let n = self.pts.len() - 1;
         let step = |q: &mut [P], t: Interval, level: usize| {
-            let u = ic(1.0) - t;
+            let u = ulp::sub(ic(1.0), t);
             for i in 0..=(n - level) {
                 q[i] = add(scale(q[i], u), scale(q[i + 1], t));
             }
@@ -445,17 +448,20 @@ pub(crate) fn outside_near(
         let g: Vec<Interval> =
             b.sq.iter()
                 .zip(&b.elev)
-                .map(|(s, e)| *s - ic(2.0) * dot(p, *e) + p2 - r2)
+                .map(|(s, e)| {
+                    let two_pe = ulp::mul(ic(2.0), dot(p, *e));
+                    ulp::sub(ulp::add(ulp::sub(*s, two_pe), p2), r2)
+                })
                 .collect();
         if split(g, j).is_ok() {
             continue;
         }
-        let xs: Vec<Interval> = b.pts.iter().map(|q| q[0] - p[0]).collect();
-        let ys: Vec<Interval> = b.pts.iter().map(|q| q[1] - p[1]).collect();
+        let xs: Vec<Interval> = b.pts.iter().map(|q| ulp::sub(q[0], p[0])).collect();
+        let ys: Vec<Interval> = b.pts.iter().map(|q| ulp::sub(q[1], p[1])).collect();
         let g: Vec<Interval> = bprod(&xs, &xs)
             .iter()
             .zip(bprod(&ys, &ys))
-            .map(|(a, c)| *a + c - r2)
+            .map(|(a, c)| ulp::sub(ulp::add(*a, c), r2))
             .collect();
         split(g, j)?;
     }
@@ -484,14 +490,14 @@ pub(crate) fn box_farther(lo: [f64; 2], hi: [f64; 2], p: P, r2: Interval) -> boo
 fn split_at(g: &[Interval], t: Interval) -> (Vec<Interval>, Vec<Interval>) {
     let mut w = g.to_vec();
     let n = w.len();
-    let u = ic(1.0) - t;
+    let u = ulp::sub(ic(1.0), t);
     let mut left = Vec::with_capacity(n);
     let mut right = Vec::with_capacity(n);
     for k in 0..n {
         left.push(w[0]);
         right.push(w[n - 1 - k]);
         for i in 0..(n - 1 - k) {
-            w[i] = w[i] * u + w[i + 1] * t;
+            w[i] = ulp::add(ulp::mul(w[i], u), ulp::mul(w[i + 1], t));
         }
     }
     right.reverse();
@@ -537,7 +543,8 @@ pub(crate) fn bprod(a: &[Interval], b: &[Interval]) -> Vec<Interval> {
     let mut out = vec![ic(0.0); m + n + 1];
     for i in 0..=m {
         for j in 0..=n {
-            out[i + j] += bm[i] * bn[j] * a[i] * b[j];
+            let c = ulp::mul(ulp::mul(bm[i], bn[j]), ulp::mul(a[i], b[j]));
+            out[i + j] = ulp::add(out[i + j], c);
         }
     }
     for (k, o) in out.iter_mut().enumerate() {
@@ -571,7 +578,7 @@ pub(crate) fn part_bound(hull: &Hull, inside: Core, r: Interval, w: P, mu: Inter
     for q in hull {
         for (z, rad) in [(inside.near(*q), r), (w, mu)] {
             let e = sub(*q, z);
-            let d = (e[0].sqr() + e[1].sqr()).sqrt() - rad;
+            let d = ulp::sub(ulp::add(ulp::sqr(e[0]), ulp::sqr(e[1])).sqrt(), rad);
             m = m.max(if finite(d) { d.sup() } else { f64::INFINITY });
         }
     }
