@@ -1386,36 +1386,73 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
             contour_of.push((ci, i));
         }
     }
-    // (the families of ∂S, exact joints included, are built meanwhile)
-    let (a, fams): (Vec<_>, _) = rayon::join(
+    let simple_claimed = match simple_claim {
+        Json::Bool(b) => Ok(*b),
+        o => Err(inv(
+            "simple",
+            format!("expected true or false, found {}", o.describe()),
+        )),
+    };
+    let bd = arr(boundary, "boundary", "families");
+    // Two strands at once (each parallel inside): (a), every piece's parts,
+    // then (c) when claimed, reusing (a)'s hulls; and the families of ∂S
+    // (exact joints included), then (b), every family's cover. The errors
+    // are reported in the order of the claims, (a) first, whichever strand
+    // finishes first.
+    type StrandA = (
+        Vec<Result<(f64, usize), Invalid>>,
+        Option<Result<Vec<bool>, Invalid>>,
+    );
+    let ((a, orient), (fams, b)): (StrandA, _) = rayon::join(
         || {
-            jobs.par_iter()
+            let parts: Vec<_> = jobs
+                .par_iter()
                 .map(|(at, v, p)| check_cover_piece(v, at, p, &input, tol_i))
-                .collect()
+                .collect();
+            let mut spans: Vec<Vec<Vec<simple::Span>>> =
+                outline.iter().map(|_| Vec::new()).collect();
+            let mut hulls: Vec<Vec<Vec<geom::Hull>>> = outline.iter().map(|_| Vec::new()).collect();
+            let mut a = Vec::with_capacity(parts.len());
+            for (t, (c, _)) in parts.into_iter().zip(&contour_of) {
+                a.push(t.map(|(mn, sp, h)| {
+                    spans[*c].push(sp);
+                    hulls[*c].push(h);
+                    mn
+                }));
+            }
+            if !matches!(simple_claimed, Ok(true)) || a.iter().any(|t| t.is_err()) {
+                return (a, None);
+            }
+            let orient = simple::simple_with(&outline, &spans, Some(&hulls))
+                .map_err(|e| inv("simple", format!("claimed, but {e}")));
+            (a, Some(orient))
         },
-        || input.families(),
+        || {
+            let fams = input.families();
+            let b = match &bd {
+                Ok(bd) if bd.len() == fams.len() => Some(
+                    bd.par_iter()
+                        .zip(fams.par_iter())
+                        .enumerate()
+                        .map(|(k, (v, f))| {
+                            check_family(v, &format!("boundary[{k}]"), f, &outline, &input, tol_b)
+                        })
+                        .collect::<Vec<Result<Tally, Invalid>>>(),
+                ),
+                _ => None,
+            };
+            (fams, b)
+        },
     );
     let (mut max, mut count) = (0.0f64, 0usize);
-    let mut spans: Vec<Vec<Vec<simple::Span>>> = outline.iter().map(|_| Vec::new()).collect();
-    let mut hulls: Vec<Vec<Vec<geom::Hull>>> = outline.iter().map(|_| Vec::new()).collect();
-    for (t, (c, _)) in a.into_iter().zip(&contour_of) {
-        let ((m, n), sp, h) = t?;
+    for t in a {
+        let (m, n) = t?;
         max = max.max(m);
         count += n;
-        spans[*c].push(sp);
-        hulls[*c].push(h);
     }
     log::debug!("stroke certificate: (a) checked at {:?}", t0.elapsed());
-    let simple_claimed = match simple_claim {
-        Json::Bool(b) => *b,
-        o => {
-            return Err(inv(
-                "simple",
-                format!("expected true or false, found {}", o.describe()),
-            ))
-        }
-    };
-    let bd = arr(boundary, "boundary", "families")?;
+    let simple_claimed = simple_claimed?;
+    let bd = bd?;
     if bd.len() != fams.len() {
         return Err(inv(
             "boundary",
@@ -1427,31 +1464,13 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
             ),
         ));
     }
-    // (c), when claimed: simple, disjoint contours and their orientations
-    // (the hulls of (a)'s parts reused), beside (b): every family of ∂S's
-    // cover
-    let (orient, b) = rayon::join(
-        || {
-            simple_claimed
-                .then(|| {
-                    simple::simple_with(&outline, &spans, Some(&hulls))
-                        .map_err(|e| inv("simple", format!("claimed, but {e}")))
-                })
-                .transpose()
-        },
-        || {
-            bd.par_iter()
-                .zip(fams.par_iter())
-                .enumerate()
-                .map(|(k, (v, f))| {
-                    check_family(v, &format!("boundary[{k}]"), f, &outline, &input, tol_b)
-                })
-                .collect::<Vec<Result<Tally, Invalid>>>()
-        },
-    );
-    let orient = orient?;
+    let orient = if simple_claimed {
+        Some(orient.expect("(c) ran: (a) passed and simplicity is claimed")?)
+    } else {
+        None
+    };
     let mut max_b = 0.0f64;
-    for t in b {
+    for t in b.expect("(b) ran: the family counts agree") {
         let (m, n) = t?;
         max_b = max_b.max(m);
         count += n;
