@@ -661,25 +661,52 @@ impl Ctx<'_> {
                         };
                         // the foot map must stay in [0, 1] over the box
                         // (with room for the enclosure's rounding)
-                        let reach =
-                            k.abs() * 0.5 * (bx.all.sup() - bx.all.inf()) * (1.0 + 1e-9) + 1e-15;
-                        let s = if reach < 0.5 {
-                            s.clamp(reach, 1.0 - reach)
-                        } else {
-                            s
+                        let width = bx.all.sup() - bx.all.inf();
+                        let reach = |k: f64| k.abs() * 0.5 * width * (1.0 + 1e-9) + 1e-15;
+                        let clamp = |s: f64, k: f64| {
+                            let r = reach(k);
+                            if r < 0.5 {
+                                s.clamp(r, 1.0 - r)
+                            } else {
+                                s
+                            }
                         };
-                        // (not rounded: the clamp above keeps the foot map
-                        // in [0, 1])
-                        let (sq, kq) = (q(s)?, q(k)?);
-                        near_try.push((
-                            BBox::NearBezier {
-                                contour: c,
-                                piece: i,
-                                s: sq.clone(),
-                                k: kq.clone(),
-                            },
-                            json!({"near": {"contour": c, "piece": i, "s": qs(&sq), "k": qs(&kq)}}),
-                        ));
+                        // first short numbers: `k` to 20 bits, `s` to the
+                        // piece's parameter grid, moved inward by whole
+                        // steps where the clamp needs it (fewer digits to
+                        // write and read); then the full floats, which the
+                        // clamp alone keeps in [0, 1]
+                        let g = param_grid(&f.p, self.tol);
+                        let kr = snap(k, 2f64.powi(k.abs().log2().floor() as i32 - 20));
+                        let sr = {
+                            let (r, x) = (reach(kr), snap(s, g));
+                            if r >= 0.5 {
+                                x
+                            } else if x < r {
+                                (r / g).ceil() * g
+                            } else if x > 1.0 - r {
+                                ((1.0 - r) / g).floor() * g
+                            } else {
+                                x
+                            }
+                        };
+                        let full = (clamp(s, k), k);
+                        let short = (sr, if kr.is_finite() { kr } else { k });
+                        for (s, k) in [short, full] {
+                            if (s, k) != short && short == full {
+                                continue;
+                            }
+                            let (sq, kq) = (q(s)?, q(k)?);
+                            near_try.push((
+                                BBox::NearBezier {
+                                    contour: c,
+                                    piece: i,
+                                    s: sq.clone(),
+                                    k: kq.clone(),
+                                },
+                                json!({"near": {"contour": c, "piece": i, "s": qs(&sq), "k": qs(&kq)}}),
+                            ));
+                        }
                     }
                     OPiece::Arc { .. } => near_try.push((
                         BBox::NearArc {
