@@ -575,7 +575,17 @@ fn end_roots_only(
         }
         s
     };
-    let mult = |rev: bool| (0..3).take_while(|&k| coeff(k, rev).is_zero()).count();
+    // g_k is nonzero where its enclosure `gi` (the same Bernstein coefficient,
+    // from the enclosed control points) excludes 0: exact only otherwise
+    let excludes_zero = |k: usize, rev: bool| {
+        let e = gi[if rev { big_n - k } else { k }];
+        e.inf() > 0.0 || e.sup() < 0.0
+    };
+    let mult = |rev: bool| {
+        (0..3)
+            .take_while(|&k| !excludes_zero(k, rev) && coeff(k, rev).is_zero())
+            .count()
+    };
     let (at0, at1) = (mult(false), mult(true));
     if at0 + at1 == 0 {
         return None;
