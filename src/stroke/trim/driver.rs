@@ -173,6 +173,8 @@ fn stroke_at(
     let reuse = REUSE_RAW.with(std::cell::Cell::get);
     #[cfg(not(test))]
     let reuse = true;
+    // (the raw search answers for single pieces only if it solved them)
+    let reuse = reuse && raw_iopts.self_intersections;
     let (c_ok, c_complete, c_note) = check_simple(&contours, &iopts, reuse.then_some(&known));
     log::debug!("checked: {:?}", t0.elapsed());
     if log::log_enabled!(log::Level::Trace) {
