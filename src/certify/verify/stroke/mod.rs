@@ -1403,11 +1403,21 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
         Vec<Result<(f64, usize), Invalid>>,
         Option<Result<Vec<bool>, Invalid>>,
     );
+    // a failure of (a) is reported before anything of (b): (b) stops once
+    // one is seen (its results are then never read)
+    let a_failed = std::sync::atomic::AtomicBool::new(false);
+    let relaxed = std::sync::atomic::Ordering::Relaxed;
     let ((a, orient), (fams, b)): (StrandA, _) = rayon::join(
         || {
             let parts: Vec<_> = jobs
                 .par_iter()
-                .map(|(at, v, p)| check_cover_piece(v, at, p, &input, tol_i))
+                .map(|(at, v, p)| {
+                    let r = check_cover_piece(v, at, p, &input, tol_i);
+                    if r.is_err() {
+                        a_failed.store(true, relaxed);
+                    }
+                    r
+                })
                 .collect();
             let mut spans: Vec<Vec<Vec<simple::Span>>> =
                 outline.iter().map(|_| Vec::new()).collect();
@@ -1435,7 +1445,11 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
                         .zip(fams.par_iter())
                         .enumerate()
                         .map(|(k, (v, f))| {
-                            check_family(v, &format!("boundary[{k}]"), f, &outline, &input, tol_b)
+                            let at = format!("boundary[{k}]");
+                            if a_failed.load(relaxed) {
+                                return Err(inv(at, "not checked: claim (a) failed"));
+                            }
+                            check_family(v, &at, f, &outline, &input, tol_b)
                         })
                         .collect::<Vec<Result<Tally, Invalid>>>(),
                 ),
