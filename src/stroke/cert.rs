@@ -52,6 +52,22 @@ fn snap(x: f64, g: f64) -> f64 {
     }
 }
 
+/// `x` rounded to `bits` significant bits (a short number to write); `x`
+/// itself when it is 0, not finite or beyond the normal range.
+fn round_bits(x: f64, bits: i32) -> f64 {
+    if x == 0.0 || !x.is_normal() {
+        return x;
+    }
+    // |x| ∈ [2^e, 2^(e+1)), e ∈ [−1022, 1023]
+    let e = x.abs().log2().floor() as i32;
+    let r = snap(x, 2f64.powi(e - bits));
+    if r.is_finite() {
+        r
+    } else {
+        x
+    }
+}
+
 /// A power of two about `tol / 1024`: the grid of witness coordinates.
 fn coord_grid(tol: f64) -> f64 {
     2f64.powi((tol / 1024.0).log2().floor().clamp(-1000.0, 1000.0) as i32)
@@ -677,7 +693,7 @@ impl Ctx<'_> {
                         // write and read); then the full floats, which the
                         // clamp alone keeps in [0, 1]
                         let g = param_grid(&f.p, self.tol);
-                        let kr = snap(k, 2f64.powi(k.abs().log2().floor() as i32 - 20));
+                        let kr = round_bits(k, 20);
                         let sr = {
                             let (r, x) = (reach(kr), snap(s, g));
                             if r >= 0.5 {
@@ -691,11 +707,13 @@ impl Ctx<'_> {
                             }
                         };
                         let full = (clamp(s, k), k);
-                        let short = (sr, if kr.is_finite() { kr } else { k });
-                        for (s, k) in [short, full] {
-                            if (s, k) != short && short == full {
-                                continue;
-                            }
+                        let short = (sr, kr);
+                        let tries = if short == full {
+                            vec![full]
+                        } else {
+                            vec![short, full]
+                        };
+                        for (s, k) in tries {
                             let (sq, kq) = (q(s)?, q(k)?);
                             near_try.push((
                                 BBox::NearBezier {
@@ -1119,6 +1137,21 @@ pub fn distance_certificate(
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn short_numbers_keep_twenty_bits_and_leave_zero_alone() {
+        use super::round_bits;
+        for x in [0.0, -0.0, f64::MIN_POSITIVE / 4.0, f64::INFINITY, f64::NAN] {
+            assert!(round_bits(x, 20).to_bits() == x.to_bits() || x.is_nan());
+        }
+        for x in [1.0 / 3.0, -1.000_001_7, 12_345.678_9, 3e-300, 1.7e308] {
+            let r = round_bits(x, 20);
+            assert!(((r - x) / x).abs() <= 2f64.powi(-20), "{x} -> {r}");
+            // a multiple of 2^(e − 20): at most 21 significant bits
+            let m = r / 2f64.powi(x.abs().log2().floor() as i32 - 20);
+            assert_eq!(m, m.round(), "{x} -> {r}");
+        }
+    }
+
     use super::{adaptive, Stuck};
 
     /// The steps of `adaptive`, or where it stopped.

@@ -608,17 +608,14 @@ where
     let n_active = order.len();
     out.pairs_excluded += (n_active * n_active.saturating_sub(1) / 2)
         .saturating_sub(pairs.len() + out.pairs_excluded + out.pairs_known);
-    let singles: Vec<usize> = order
-        .iter()
-        .copied()
-        .filter(|_| opts.self_intersections)
-        .filter(|&i| !known(i, i))
-        .collect();
-    out.pairs_known += if opts.self_intersections {
-        order.len() - singles.len()
+    let singles: Vec<usize> = if opts.self_intersections {
+        order.iter().copied().filter(|&i| !known(i, i)).collect()
     } else {
-        0
+        Vec::new()
     };
+    if opts.self_intersections {
+        out.pairs_known += order.len() - singles.len();
+    }
     pairs.sort();
     use rayon::prelude::*;
     let results: Vec<Intersections> = pairs
