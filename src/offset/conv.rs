@@ -58,7 +58,7 @@
 
 use super::prep;
 use crate::curve::{Bezier, V2};
-use crate::poly::{certify_no_root, has_root_in, Poly, Span};
+use crate::poly::{has_root_in, Poly, Span};
 use crate::scalar::{
     interval_from_rational, parse_rational, rational_from_f64, sin_cos_enclosure, Interval,
     Rational, Scalar,
@@ -495,94 +495,6 @@ pub fn convolution_approximant_f64(
         .then(|| (Bezier::new(pts), alpha))
 }
 
-/// The roots of the cusp polynomial in `[0, 1]`, isolated and refined to
-/// width 2⁻⁴⁰: first from its exact Bernstein coefficients, each enclosed once
-/// (well conditioned where the power basis of a degree-48 polynomial with
-/// large coefficients is not), then exact bisection; the exact Sturm path when
-/// that leaves something undecided.
-fn cusp_roots(p: &Poly<Rational>, span: &Span) -> Vec<crate::poly::RealRoot> {
-    let n = p.coeffs().len().saturating_sub(1);
-    if let Some(b) = p.to_bernstein(n) {
-        let bi: Vec<Interval> = b.iter().map(interval_from_rational).collect();
-        if let Some(pieces) = crate::poly::isolate_simple_roots_bernstein(&bi, 4_000) {
-            let rs: Option<Vec<_>> = pieces
-                .into_iter()
-                .map(|(a, b)| refine(p, &bi, a, b, 40))
-                .collect();
-            if let Some(rs) = rs {
-                return rs;
-            }
-        }
-    }
-    prep::roots_refined(p, span, 40)
-}
-
-/// The sign of `p(t)` at a dyadic `t`: de Casteljau on the enclosed Bernstein
-/// coefficients first (well conditioned), exactly when that is undecided.
-fn sign_at(p: &Poly<Rational>, bern: &[Interval], t: f64) -> Option<i8> {
-    let ti = Interval::try_from((t, t)).ok()?;
-    let one = Interval::try_from((1.0, 1.0)).ok()?;
-    let mut w = bern.to_vec();
-    for level in 1..w.len() {
-        for i in 0..w.len() - level {
-            w[i] = w[i] * (one - ti) + w[i + 1] * ti;
-        }
-    }
-    let v = *w.first()?;
-    if v.inf() > 0.0 {
-        return Some(1);
-    }
-    if v.sup() < 0.0 {
-        return Some(-1);
-    }
-    let e = p.eval(&rational_from_f64(t)?);
-    Some(if e.is_positive() {
-        1
-    } else if e.is_negative() {
-        -1
-    } else {
-        0
-    })
-}
-
-/// Bisects a piece `[a, b]` holding exactly one (simple) root of `p`, with
-/// strict opposite signs at its ends, to width `2^-bits` (or to an exact root).
-fn refine(
-    p: &Poly<Rational>,
-    bern: &[Interval],
-    a: f64,
-    b: f64,
-    bits: u32,
-) -> Option<crate::poly::RealRoot> {
-    let (mut lo, mut hi) = (a, b);
-    let s_lo = sign_at(p, bern, lo)?;
-    if s_lo == 0 || sign_at(p, bern, hi)? != -s_lo {
-        return None;
-    }
-    let width = (0.5f64).powi(bits as i32);
-    while hi - lo > width {
-        let m = 0.5 * lo + 0.5 * hi;
-        if !(lo < m && m < hi) {
-            break;
-        }
-        match sign_at(p, bern, m)? {
-            0 => {
-                let r = rational_from_f64(m)?;
-                return Some(crate::poly::RealRoot {
-                    lo: r.clone(),
-                    hi: r,
-                });
-            }
-            s if s == s_lo => lo = m,
-            _ => hi = m,
-        }
-    }
-    Some(crate::poly::RealRoot {
-        lo: rational_from_f64(lo)?,
-        hi: rational_from_f64(hi)?,
-    })
-}
-
 /// A cusp of the exact convolution curve `x ∗ e_σ`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ConvCusp {
@@ -597,7 +509,7 @@ pub struct ConvCusp {
 }
 
 /// `(det Q)² k² − (nᵀQn)³` with `k = x′ × x″`, `nᵀQn = q₁₁ y′² − 2 q₁₂ x′y′ + q₂₂ x′²`.
-fn conv_cusp_polynomial<S: Scalar>(x: &Bezier<S>, q: &[S; 3]) -> (Poly<S>, Poly<S>) {
+pub(super) fn conv_cusp_polynomial<S: Scalar>(x: &Bezier<S>, q: &[S; 3]) -> (Poly<S>, Poly<S>) {
     let (dx, dy) = x.hodograph().power_coords();
     let (ddx, ddy) = (dx.derivative(), dy.derivative());
     let k = dx.mul(&ddy).sub(&dy.mul(&ddx));
@@ -633,39 +545,46 @@ fn conv_cusp_polynomial<S: Scalar>(x: &Bezier<S>, q: &[S; 3]) -> (Poly<S>, Poly<
 /// assert!(conv_cusps(0, &x, &pen, -1).is_empty());
 /// ```
 pub fn conv_cusps(piece: usize, x: &Bezier<Rational>, pen: &Pen, sigma: i8) -> Vec<ConvCusp> {
-    let xi = x.map(interval_from_rational);
-    let qi = [
-        interval_from_rational(&pen.q[0]),
-        interval_from_rational(&pen.q[1]),
-        interval_from_rational(&pen.q[2]),
-    ];
-    let (pi, _) = conv_cusp_polynomial(&xi, &qi);
-    if certify_no_root(&pi, 0.0, 1.0) == Some(true) {
+    // the filter first, in intervals (most pieces have no cusp): the scaled
+    // Bernstein coefficients of the cusp polynomial all of one strict sign
+    let Some(fi) = super::cuspform::conv_form_iv(x, &pen.q) else {
+        return Vec::new(); // degree below 2: k ≡ 0
+    };
+    if fi.p.strict_sign().is_some() {
         return Vec::new();
     }
-    let (p, k) = conv_cusp_polynomial(x, &pen.q);
-    let (p, k) = (p.trimmed(), k.trimmed());
-    if p.coeffs().iter().all(Zero::is_zero) || k.coeffs().iter().all(Zero::is_zero) {
+    // exactly, in integers (a positive multiple of the cusp polynomial)
+    let Some(f) = super::cuspform::conv_form(x, &pen.q) else {
+        return Vec::new();
+    };
+    if f.p.is_zero() || f.k.is_zero() {
         return Vec::new();
     }
     let span = Span::closed(<Rational as Zero>::zero(), <Rational as One>::one());
+    let roots = f.p.simple_roots(40, 4_000).unwrap_or_else(|| {
+        // a multiple root or a root on a split point: the exact Sturm path
+        let (p, _) = conv_cusp_polynomial(x, &pen.q);
+        prep::roots_refined(&p.trimmed(), &span, 40)
+    });
     let qf = pen.q_f64();
+    let mut k_exact: Option<Poly<Rational>> = None;
     let mut out = Vec::new();
-    for r in cusp_roots(&p, &span) {
+    for r in roots {
         let m = r.midpoint();
-        let s = Rational::from_integer(sigma.into()) * k.eval(&m);
+        let s = f.k.sign_at(&m).map(|k| k * sigma);
         // k has no root on the isolating interval: by an interval enclosure of
         // k over it (k is far from 0 at a cusp: |det Q · k| = (nᵀQn)^{3/2}),
         // else exactly (Sturm)
-        let t_iv = Interval::try_from((
+        let (lo, hi) = (
             interval_from_rational(&r.lo).inf(),
             interval_from_rational(&r.hi).sup(),
-        ))
-        .ok();
-        let k_iv = t_iv.map(|t| k.map(interval_from_rational).eval(&t));
-        let decided = k_iv.is_some_and(|v| v.inf() > 0.0 || v.sup() < 0.0)
-            || !has_root_in(&k, &Span::closed(r.lo.clone(), r.hi.clone()));
-        if decided && !s.is_positive() {
+        );
+        let k_iv = fi.k.range(lo, hi);
+        let decided = k_iv.inf() > 0.0 || k_iv.sup() < 0.0 || {
+            let k = k_exact.get_or_insert_with(|| prep::curvature_numerator(x));
+            !has_root_in(k, &Span::closed(r.lo.clone(), r.hi.clone()))
+        };
+        if decided && s.is_some_and(|s| s <= 0) {
             continue;
         }
         let ta = m.approx();

@@ -54,6 +54,7 @@
 
 pub(crate) mod arc;
 pub(crate) mod conv;
+mod cuspform;
 pub(crate) mod fit;
 pub(crate) mod g2;
 pub(crate) mod gridfit;

@@ -23,7 +23,11 @@ fn curvature_numerator_in<S: crate::scalar::Scalar>(x: &Bezier<S>) -> Poly<S> {
 }
 
 /// `d² (x′ × x″)² − |x′|⁶`, whose roots are the cusps of the offset at distance `d`.
-fn cusp_polynomial<S: crate::scalar::Scalar>(x: &Bezier<S>, k: &Poly<S>, d: &S) -> Poly<S> {
+pub(super) fn cusp_polynomial<S: crate::scalar::Scalar>(
+    x: &Bezier<S>,
+    k: &Poly<S>,
+    d: &S,
+) -> Poly<S> {
     let (dx, dy) = x.hodograph().power_coords();
     let speed2 = dx.mul(&dx).add(&dy.mul(&dy));
     Poly::constant(d.clone() * d.clone())
@@ -364,33 +368,48 @@ pub struct OffsetCusp {
 /// which `d (x′ × x″) > 0` (Sturm isolation; the sign is decided on an
 /// isolating interval on which `x′ × x″` has no root, checked by Sturm).
 pub fn offset_cusps(piece: usize, x: &Bezier<Rational>, d: &Rational) -> Vec<OffsetCusp> {
-    // the filter first, on interval enclosures of the control points: building the
-    // exact polynomial alone costs more than deciding most pieces here
-    let xi = x.map(interval_from_rational);
-    let ki = curvature_numerator_in(&xi);
-    let pi = cusp_polynomial(&xi, &ki, &interval_from_rational(d));
-    if certify_no_root(&pi, 0.0, 1.0) == Some(true) {
+    // the filter first, in intervals (most pieces have no cusp): the scaled
+    // Bernstein coefficients of the cusp polynomial all of one strict sign
+    let Some(fi) = super::cuspform::offset_form_iv(x, d) else {
+        return Vec::new(); // degree below 2: k ≡ 0
+    };
+    if fi.p.strict_sign().is_some() {
         return Vec::new();
     }
-    let k = curvature_numerator(x);
-    if is_zero_poly(&k) {
+    // exactly, in integers (a positive multiple of the cusp polynomial)
+    let Some(f) = super::cuspform::offset_form(x, d) else {
         return Vec::new();
-    }
-    let p = cusp_polynomial(x, &k, d).trimmed();
-    if is_zero_poly(&p) {
+    };
+    if f.p.is_zero() || f.k.is_zero() {
         return Vec::new();
     }
     let span = Span::closed(Rational::zero(), Rational::from_integer(1.into()));
+    let mut k_exact: Option<Poly<Rational>> = None;
+    let roots = f.p.simple_roots(40, 4_000).unwrap_or_else(|| {
+        // a multiple root or a root on a split point: the exact Sturm path
+        let k = k_exact.get_or_insert_with(|| curvature_numerator(x));
+        roots_refined(&cusp_polynomial(x, k, d).trimmed(), &span, 40)
+    });
+    let d_sign: i8 = if d.is_positive() { 1 } else { -1 };
     let mut out = Vec::new();
-    for r in roots_refined(&p, &span, 40) {
+    for r in roots {
         // The sign of d·(x′ × x″) at the root: at a root of `p`, |d (x′×x″)| = |x′|³ > 0,
         // so the sign is that of d·k on the isolating interval when k has no root
-        // there (decided by Sturm). If it has one (never seen: the interval is
-        // 2⁻⁴⁰ wide), the root is kept — a possible cusp is reported, not dropped.
+        // there (an interval enclosure of k over it, else Sturm). If it has one
+        // (never seen: the interval is 2⁻⁴⁰ wide), the root is kept — a possible
+        // cusp is reported, not dropped.
         let m = r.midpoint();
-        let s = d * k.eval(&m);
-        let decided = !has_root_in(&k, &Span::closed(r.lo.clone(), r.hi.clone()));
-        if decided && !s.is_positive() {
+        let s = f.k.sign_at(&m).map(|k| k * d_sign);
+        let (lo, hi) = (
+            interval_from_rational(&r.lo).inf(),
+            interval_from_rational(&r.hi).sup(),
+        );
+        let k_iv = fi.k.range(lo, hi);
+        let decided = k_iv.inf() > 0.0 || k_iv.sup() < 0.0 || {
+            let k = k_exact.get_or_insert_with(|| curvature_numerator(x));
+            !has_root_in(k, &Span::closed(r.lo.clone(), r.hi.clone()))
+        };
+        if decided && s.is_some_and(|s| s <= 0) {
             continue;
         }
         let ta = crate::scalar::Scalar::approx(&m);

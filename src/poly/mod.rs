@@ -9,6 +9,7 @@ pub use univariate::{binomial, binomial_big, Poly};
 mod enclose;
 mod multi;
 mod roots;
+pub(crate) mod scaled;
 pub use enclose::{
     certify_no_root, enclose_roots, isolate_simple_roots, isolate_simple_roots_bernstein,
     RootEnclosure,
