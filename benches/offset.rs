@@ -2,7 +2,8 @@
 //! test cubic (`data/offset_test_curves.json`, d = 0.5) per method at TOL = 1e-2
 //! and 1e-3 (criterion), the float construction alone per segment (what the
 //! certification costs on top), and one-shot figures printed first: the
-//! certified offset at TOL = 1e-5 with its time per certified search.
+//! certified offset at TOL = 1e-5 with its time per certified search; then
+//! the exact cusps of offsets and convolutions (group `cusps`).
 //!
 //! Run: `cargo bench --bench offset`. The peer comparison with kurbo is
 //! `cargo run --release --example offset_compare`.
@@ -12,7 +13,8 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use lncert::curve::{Bezier, V2};
-use lncert::offset::kernels::{ln_pair, offset_approximant_f64};
+use lncert::offset::kernels::{conv_cusps, ln_pair, offset_approximant_f64, offset_cusps};
+use lncert::offset::{Angle, Pen};
 use lncert::offset::{offset, OffsetMethod, OffsetOptions};
 use lncert::scalar::{parse_rational, Scalar};
 use lncert::shape::parse_curve;
@@ -68,7 +70,38 @@ fn bench(c: &mut Criterion) {
         b.iter(|| ln_pair(black_box(&x), &n0, &n1, 0.5))
     });
     g.finish();
+
+    // the exact cusps (scaled Bernstein integers): the test cubic's offset at
+    // d = 0.5 (inner side) and seed 000's nonic ∗ ellipse (0.7, 0.3, π/6),
+    // whose cusp polynomial has degree 48
+    let mut g = c.benchmark_group("cusps");
+    g.sample_size(20);
+    let d = parse_rational("0.5").unwrap();
+    g.bench_function("offset_cubic_both_sides", |b| {
+        b.iter(|| {
+            offset_cusps(0, black_box(&curve[0]), &d).len()
+                + offset_cusps(0, &curve[0], &-d.clone()).len()
+        })
+    });
+    let nonic = parse_curve(NONIC).unwrap();
+    let pen = Pen::ellipse(
+        &parse_rational("0.7").unwrap(),
+        &parse_rational("0.3").unwrap(),
+        &Angle::parse("pi/6").unwrap(),
+    )
+    .unwrap();
+    g.bench_function("convolution_nonic_both_sides", |b| {
+        b.iter(|| {
+            conv_cusps(0, black_box(&nonic[0]), &pen, 1).len()
+                + conv_cusps(0, &nonic[0], &pen, -1).len()
+        })
+    });
+    g.finish();
 }
+
+/// Seed 000 §5's degree-9 skeleton (`data/seed000_nonic_ellipse.json`).
+const NONIC: &str = r#"{"bezier": [[0.2, 6.6], [8.9, -1.8], [7.2, -15.8], [-43.4, 41.8], [70.8, -41.3],
+    [-29.6, 30.4], [20.9, 20.0], [-6.1, 4.1], [8.2, -7.8], [9.1, 3.8]]}"#;
 
 criterion_group!(benches, bench);
 criterion_main!(benches);

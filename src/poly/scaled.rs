@@ -196,25 +196,33 @@ impl Scaled<BigInt> {
         Some(sign_of(&v))
     }
 
-    /// Enclosures of the Bernstein coefficients `c_k / C(n, k)`, all divided
-    /// by one power of two `2^s ≥ 1` so that the largest stays far inside the
-    /// float range (a positive factor: the same signs and roots).
-    pub(crate) fn bernstein_enclosure(&self) -> Vec<Interval> {
+    /// Enclosures of the coefficients `c_k / 2^s`, one power of two `2^s ≥ 1`
+    /// for all, so that the largest stays far inside the float range (a
+    /// positive factor: the same signs and roots).
+    fn scaled_enclosure(&self) -> Vec<Interval> {
         let bits = self.0.iter().map(BigInt::bits).max().unwrap_or(0);
         let shift = bits.saturating_sub(900);
         let den = BigInt::one() << shift;
-        let row = pascal_row(self.degree());
         self.0
             .iter()
-            .zip(&row)
-            .map(|(c, b)| {
-                let c = if shift == 0 {
+            .map(|c| {
+                if shift == 0 {
                     Interval::from_int(c)
                 } else {
                     interval_from_rational(&Rational::new(c.clone(), den.clone()))
-                };
-                c / Interval::from_int(b)
+                }
             })
+            .collect()
+    }
+
+    /// Enclosures of the Bernstein coefficients `c_k / C(n, k)`, all divided
+    /// by the power of two of [`Scaled::scaled_enclosure`].
+    pub(crate) fn bernstein_enclosure(&self) -> Vec<Interval> {
+        let row = pascal_row(self.degree());
+        self.scaled_enclosure()
+            .into_iter()
+            .zip(&row)
+            .map(|(c, b)| c / Interval::from_int(b))
             .collect()
     }
 
@@ -232,26 +240,32 @@ impl Scaled<BigInt> {
         if self.is_zero() {
             return None;
         }
-        let bern = self.bernstein_enclosure();
-        let pieces = super::isolate_simple_roots_bernstein(&bern, max_pieces)?;
+        let pieces =
+            super::isolate_simple_roots_bernstein(&self.bernstein_enclosure(), max_pieces)?;
+        let scaled = self.scaled_enclosure();
         pieces
             .into_iter()
-            .map(|(a, b)| self.bisect(&bern, a, b, bits))
+            .map(|(a, b)| self.bisect(&scaled, a, b, bits))
             .collect()
     }
 
-    /// The sign at the float `t ∈ [0, 1]`: the enclosure first, exactly when
-    /// it holds 0.
-    fn sign_at_f64(&self, bern: &[Interval], t: f64) -> Option<i8> {
+    /// The sign at the float `t ∈ [0, 1]` from the enclosed scaled
+    /// coefficients `c` (Bernstein–Horner, O(n)): for `t ≤ 1/2`,
+    /// `p(t) = (1 − t)^n Σ c_k s^k` with `s = t/(1 − t) ∈ [0, 1]`, else
+    /// `p(t) = t^n Σ c_k u^(n−k)` with `u = (1 − t)/t`; the positive power
+    /// aside, Horner in interval arithmetic with `s` (`u`) enclosed. Exactly
+    /// ([`Scaled::sign_at`]) when the enclosure holds 0.
+    fn sign_at_f64(&self, c: &[Interval], t: f64) -> Option<i8> {
         let ti = Interval::try_from((t, t)).ok()?;
         let one = Interval::try_from((1.0, 1.0)).ok()?;
-        let mut w = bern.to_vec();
-        for level in 1..w.len() {
-            for i in 0..w.len() - level {
-                w[i] = w[i] * (one - ti) + w[i + 1] * ti;
-            }
-        }
-        let v = *w.first()?;
+        let horner = |x: Interval, coefs: &mut dyn Iterator<Item = &Interval>| {
+            coefs.fold(Interval::zero(), |acc, ck| acc * x + *ck)
+        };
+        let v = if t <= 0.5 {
+            horner(ti / (one - ti), &mut c.iter().rev())
+        } else {
+            horner((one - ti) / ti, &mut c.iter())
+        };
         if v.inf() > 0.0 {
             return Some(1);
         }
@@ -264,10 +278,10 @@ impl Scaled<BigInt> {
     /// Bisects `[a, b]` (strict opposite signs at its ends, so a root inside;
     /// one root by the isolation) to float width at most `2^-bits`, or to an
     /// exact root at a float midpoint.
-    fn bisect(&self, bern: &[Interval], a: f64, b: f64, bits: u32) -> Option<RealRoot> {
+    fn bisect(&self, scaled: &[Interval], a: f64, b: f64, bits: u32) -> Option<RealRoot> {
         let (mut lo, mut hi) = (a, b);
-        let s_lo = self.sign_at_f64(bern, lo)?;
-        if s_lo == 0 || self.sign_at_f64(bern, hi)? != -s_lo {
+        let s_lo = self.sign_at_f64(scaled, lo)?;
+        if s_lo == 0 || self.sign_at_f64(scaled, hi)? != -s_lo {
             return None;
         }
         let width = 0.5f64.powi(bits as i32);
@@ -276,7 +290,7 @@ impl Scaled<BigInt> {
             if !(lo < m && m < hi) {
                 break;
             }
-            match self.sign_at_f64(bern, m)? {
+            match self.sign_at_f64(scaled, m)? {
                 0 => {
                     let r = rational_from_f64(m)?;
                     return Some(RealRoot {
