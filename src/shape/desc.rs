@@ -627,11 +627,24 @@ fn check_pieces(c: &[Bezier<Rational>], field: &str) -> Result<(), ShapeError> {
 /// nonnegative and sum to 1), so `x′` has no zero there. The common case,
 /// decided without the polynomial gcd.
 fn one_sided(h: &Bezier<Rational>) -> bool {
+    use crate::scalar::{interval_from_rational, Interval};
     let p = h.points();
-    let (first, last) = (&p[0], &p[p.len() - 1]);
-    [first.clone(), last.clone(), first.add(last)]
+    let pi: Vec<(Interval, Interval)> = p
         .iter()
-        .any(|v| p.iter().all(|q| v.dot(q).is_positive()))
+        .map(|q| (interval_from_rational(&q.x), interval_from_rational(&q.y)))
+        .collect();
+    let (first, last) = (&p[0], &p[p.len() - 1]);
+    let (fi, li) = (pi[0], pi[p.len() - 1]);
+    let sum = first.add(last);
+    let sum_i = (fi.0 + li.0, fi.1 + li.1);
+    // each sign by the enclosure of the dot product, exactly only where it
+    // holds 0 (the control points of an exact span have long numerators)
+    [(first, fi), (last, li), (&sum, sum_i)].iter().any(|(v, vi)| {
+        p.iter().zip(&pi).all(|(q, qi)| {
+            let d = vi.0 * qi.0 + vi.1 * qi.1;
+            d.inf() > 0.0 || (d.sup() > 0.0 && v.dot(q).is_positive())
+        })
+    })
 }
 
 /// The offset and the convolution need a normal everywhere: `x′(t) ≠ 0` on `[0, 1]`,

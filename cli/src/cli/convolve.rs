@@ -300,6 +300,7 @@ fn write_certificate(
     results: &[(&str, OffsetResult, f64)],
 ) -> Result<Vec<String>, CliError> {
     let mut cert_notes = Vec::new();
+    let t0 = std::time::Instant::now();
     let claim = results
         .iter()
         .map(|(_, r, _)| r.certified_tol())
@@ -323,8 +324,9 @@ fn write_certificate(
             std::fs::write(path, c.to_json_string())
                 .map_err(|e| bad("--certificate", format!("{}: {e}", path.display())))?;
             cert_notes.push(format!(
-                "side {names}: written to {} (d_H ≤ {claim})",
-                path.display()
+                "side {names}: written to {} (d_H ≤ {claim}) in {:.1} ms",
+                path.display(),
+                1e3 * t0.elapsed().as_secs_f64()
             ));
         }
         None => cert_notes.push(format!(
