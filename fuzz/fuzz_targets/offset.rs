@@ -53,7 +53,9 @@
 //!   centre = the shared point) and equal `lncert::offset::corners`;
 //!   `join_arcs` has one arc of radius `|d|` per `Join` corner; cusps lie on
 //!   existing pieces with `lo <= hi` in `[0, 1]`;
-//! * with one more input byte: the grid path (`check_grid`).
+//! * when one more input byte is 7 modulo 8 (one input in 8; it was one in
+//!   2 when the target ran at ~140 runs/s): the grid path (`check_grid`,
+//!   with at most 2 splits).
 
 use libfuzzer_sys::arbitrary::{Result, Unstructured};
 use libfuzzer_sys::{fuzz_target, Corpus};
@@ -191,7 +193,8 @@ fn check_ok(inp: &Input, r: &OffsetResult) {
 }
 
 /// The grid path ([`offset_on_grid`], cubics on the 1/16 grid the inputs
-/// live on): no panic; an error names a field; every control point is a grid
+/// live on, `max_segments` capped at 2: the fit of every split runs a
+/// Nelder-Mead search, the most expensive part of an input): no panic; an error names a field; every control point is a grid
 /// multiple; contours close exactly; `unreached` is exactly the segments whose
 /// `hi > tol`; a certificate exists iff every segment is proven, and it
 /// verifies.
@@ -199,6 +202,7 @@ fn check_grid(inp: &Input) {
     let mut o = inp.opts.clone();
     o.output = lncert::offset::Output::Cubic;
     o.grid = Some(q(1, 16));
+    o.max_segments = o.max_segments.min(2);
     let r = match offset_on_grid(&inp.curve, &o) {
         Err(e) => {
             check_error(&e, inp);
@@ -249,7 +253,10 @@ fuzz_target!(|data: &[u8]| -> Corpus {
     let Ok(inp) = input(&mut u) else {
         return Corpus::Reject;
     };
-    if u.arbitrary::<bool>().unwrap_or(false) {
+    // one input in 8 (was 1 in 2): the grid fit costs several times the
+    // plain offset (a Nelder-Mead search per segment), so its absolute rate
+    // stays about what it was while the rest runs four times as often
+    if u.int_in_range(0..=7u8).unwrap_or(0) == 7 {
         check_grid(&inp);
     }
     let tol = inp.opts.tol.value();
