@@ -2,7 +2,8 @@
 //! Fuzz target `offset`: a small curve, distance, tolerance and budget built
 //! from the input -> `lncert::offset::offset`, and the result's contract.
 //!
-//! Input: 1-2 Bézier pieces of degree 1-4 (coordinates `k/16`, `k` an `i8`);
+//! Input: 1-2 Bézier pieces of degree 1-4 (degree 4 on one piece in 8, see
+//! `offset_oracle::curve`; coordinates `k/16`, `k` an `i8`);
 //! the second piece is free, starts at the first's end point (a junction:
 //! corners), or also ends at the first's start point (a closed curve). A
 //! distance `num/den`, `num` in `-16..=16` (0 included), `den` in `1..=16`; a
