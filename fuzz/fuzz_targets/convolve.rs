@@ -6,7 +6,7 @@
 //! input costs a few ms to a few tens of ms).
 //!
 //! Input (one byte per choice, see [`input`]): 1-2 Bézier pieces of degree
-//! 1-4 (coordinates `k/16`, `k` an `i8`; the second piece free, joined, or
+//! 1-4 (degree 4 on one piece in 8, see `offset_oracle::curve`; coordinates `k/16`, `k` an `i8`; the second piece free, joined, or
 //! closing the curve, as in `offset.rs`). A pen, either
 //! * by its matrix `M` (entries `num/den`, `num` in `-4..=4`, `den` in `1..=4`;
 //!   singular matrices included: `Pen::from_matrix` must refuse them naming

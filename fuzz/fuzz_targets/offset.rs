@@ -2,7 +2,8 @@
 //! Fuzz target `offset`: a small curve, distance, tolerance and budget built
 //! from the input -> `lncert::offset::offset`, and the result's contract.
 //!
-//! Input: 1-2 Bézier pieces of degree 1-4 (coordinates `k/16`, `k` an `i8`);
+//! Input: 1-2 Bézier pieces of degree 1-4 (degree 4 on one piece in 8, see
+//! `offset_oracle::curve`; coordinates `k/16`, `k` an `i8`);
 //! the second piece is free, starts at the first's end point (a junction:
 //! corners), or also ends at the first's start point (a closed curve). A
 //! distance `num/den`, `num` in `-16..=16` (0 included), `den` in `1..=16`; a
@@ -53,7 +54,9 @@
 //!   centre = the shared point) and equal `lncert::offset::corners`;
 //!   `join_arcs` has one arc of radius `|d|` per `Join` corner; cusps lie on
 //!   existing pieces with `lo <= hi` in `[0, 1]`;
-//! * with one more input byte: the grid path (`check_grid`).
+//! * when one more input byte is 7 modulo 8 (one input in 8; it was one in
+//!   2 when the target ran at ~140 runs/s): the grid path (`check_grid`,
+//!   with at most 2 splits).
 
 use libfuzzer_sys::arbitrary::{Result, Unstructured};
 use libfuzzer_sys::{fuzz_target, Corpus};
@@ -191,7 +194,8 @@ fn check_ok(inp: &Input, r: &OffsetResult) {
 }
 
 /// The grid path ([`offset_on_grid`], cubics on the 1/16 grid the inputs
-/// live on): no panic; an error names a field; every control point is a grid
+/// live on, `max_segments` capped at 2: the fit of every split runs a
+/// Nelder-Mead search, the most expensive part of an input): no panic; an error names a field; every control point is a grid
 /// multiple; contours close exactly; `unreached` is exactly the segments whose
 /// `hi > tol`; a certificate exists iff every segment is proven, and it
 /// verifies.
@@ -199,6 +203,7 @@ fn check_grid(inp: &Input) {
     let mut o = inp.opts.clone();
     o.output = lncert::offset::Output::Cubic;
     o.grid = Some(q(1, 16));
+    o.max_segments = o.max_segments.min(2);
     let r = match offset_on_grid(&inp.curve, &o) {
         Err(e) => {
             check_error(&e, inp);
@@ -249,7 +254,10 @@ fuzz_target!(|data: &[u8]| -> Corpus {
     let Ok(inp) = input(&mut u) else {
         return Corpus::Reject;
     };
-    if u.arbitrary::<bool>().unwrap_or(false) {
+    // one input in 8 (was 1 in 2): the grid fit costs several times the
+    // plain offset (a Nelder-Mead search per segment), so its absolute rate
+    // stays about what it was while the rest runs four times as often
+    if u.int_in_range(0..=7u8).unwrap_or(0) == 7 {
         check_grid(&inp);
     }
     let tol = inp.opts.tol.value();

@@ -233,6 +233,14 @@ struct HermiteIn3<'a> {
 /// Seed 003 Props 2.1, 3.1/3.2 (corrected for `x1 < 0`), 3.3: decisions,
 /// coefficients, and the direct checks by root isolation of `f''`.
 pub fn check_hermite(c: &HermiteCase, st: &mut KernelStats) {
+    check_hermite_with(c, st, true);
+}
+
+/// [`check_hermite`], with the two comparisons against exact root isolation
+/// (Props 2.1 and 3.2 against Sturm counts of the cubic and quartic normal
+/// forms, the most expensive part) only when `isolate`: the fuzz target
+/// `hermite` runs them on a sample of its inputs chosen by an input byte.
+pub fn check_hermite_with(c: &HermiteCase, st: &mut KernelStats, isolate: bool) {
     let Some([_, _, _, a2, m, b]) = exact([c.x1, c.y1, c.u, c.a2, c.m, c.b]) else {
         st.rejected += 1;
         return;
@@ -251,7 +259,7 @@ pub fn check_hermite(c: &HermiteCase, st: &mut KernelStats) {
         hf: &hf,
     };
     let (du, da) = hermite_degeneracy(c, &h);
-    hermite_decisions(c, st, &h, [&a2, &m, &b], (du, da));
+    hermite_decisions(c, st, &h, [&a2, &m, &b], (du, da), isolate);
     hermite_values(c, st, &h, &a2);
 }
 
@@ -278,19 +286,21 @@ fn hermite_degeneracy(c: &HermiteCase, h: &HermiteIn3) -> (f64, f64) {
 }
 
 /// The decisions of Props 2.1, 3.1, 3.2 and 3.3 in the three arithmetics, and
-/// Props 2.1 and 3.2 against root isolation.
+/// (if `isolate`) Props 2.1 and 3.2 against root isolation.
 fn hermite_decisions(
     c: &HermiteCase,
     st: &mut KernelStats,
     h: &HermiteIn3,
     [a2, m, b]: [&Rational; 3],
     (du, da): (f64, f64),
+    isolate: bool,
 ) {
     let HermiteIn3 { he, hi, hf } = *h;
     let (ia2, im, ib) = (iv(c.a2), iv(c.m), iv(c.b));
+    let e21 = he.prop_2_1();
     st.decision(
         "hermite: Prop 2.1",
-        he.prop_2_1(),
+        e21,
         hi.as_ref().and_then(|h| h.prop_2_1()),
         hf.as_ref().and_then(|h| h.prop_2_1()),
         du,
@@ -318,16 +328,18 @@ fn hermite_decisions(
         hf.as_ref().and_then(|h| h.valid_intercept(&c.m, &c.b)),
         da,
     );
-    st.direct(
-        "hermite: Prop 2.1 vs root isolation",
-        he.prop_2_1(),
-        normal_form_regular(&he.cubic_f(), &he.u),
-    );
-    st.direct(
-        "hermite: Prop 3.2 vs root isolation",
-        ea,
-        normal_form_regular(&he.quartic_f(a2), &he.u),
-    );
+    if isolate {
+        st.direct(
+            "hermite: Prop 2.1 vs root isolation",
+            e21,
+            normal_form_regular(&he.cubic_f(), &he.u),
+        );
+        st.direct(
+            "hermite: Prop 3.2 vs root isolation",
+            ea,
+            normal_form_regular(&he.quartic_f(a2), &he.u),
+        );
+    }
 }
 
 /// The coefficients, α2 and D(a2) in the three arithmetics.
@@ -335,27 +347,17 @@ fn hermite_values(c: &HermiteCase, st: &mut KernelStats, h: &HermiteIn3, a2: &Ra
     let HermiteIn3 { he, hi, hf } = *h;
     let ia2 = iv(c.a2);
     if let (Some(hi), Some(hf)) = (hi, hf) {
-        let e = [
-            he.cubic_coefficients().0,
-            he.cubic_coefficients().1,
-            he.quartic_coefficients(a2).0,
-            he.quartic_coefficients(a2).1,
-            he.alpha2(),
-            he.discriminant_d(a2),
-        ];
-        let i = [
-            hi.cubic_coefficients().0,
-            hi.cubic_coefficients().1,
-            hi.quartic_coefficients(&ia2).0,
-            hi.quartic_coefficients(&ia2).1,
-            hi.alpha2(),
-            hi.discriminant_d(&ia2),
-        ];
+        // each coefficient pair computed once per arithmetic
+        let (ec, eq) = (he.cubic_coefficients(), he.quartic_coefficients(a2));
+        let e = [ec.0, ec.1, eq.0, eq.1, he.alpha2(), he.discriminant_d(a2)];
+        let (ic, iq) = (hi.cubic_coefficients(), hi.quartic_coefficients(&ia2));
+        let i = [ic.0, ic.1, iq.0, iq.1, hi.alpha2(), hi.discriminant_d(&ia2)];
+        let (fc, fq) = (hf.cubic_coefficients(), hf.quartic_coefficients(&c.a2));
         let f = [
-            hf.cubic_coefficients().0,
-            hf.cubic_coefficients().1,
-            hf.quartic_coefficients(&c.a2).0,
-            hf.quartic_coefficients(&c.a2).1,
+            fc.0,
+            fc.1,
+            fq.0,
+            fq.1,
             hf.alpha2(),
             hf.discriminant_d(&c.a2),
         ];

@@ -35,7 +35,9 @@ pub const F64_DECISION_BAND: f64 = 1e-6;
 mod checks;
 pub mod fuzz;
 
-pub use checks::{check_arc, check_bezier, check_frame, check_hermite, check_pair, check_tau};
+pub use checks::{
+    check_arc, check_bezier, check_frame, check_hermite, check_hermite_with, check_pair, check_tau,
+};
 
 use lncert::scalar::{rational_from_f64, Interval, IntervalExt, Rational};
 use serde::Serialize;
