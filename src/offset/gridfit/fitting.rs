@@ -439,21 +439,36 @@ pub(super) fn two_sided_capped(exact: &[DVec2], c: &Bezier<f64>, cap: f64) -> f6
     let mut ba = 0.0f64;
     let q = c.points();
     let cp = [dv(&q[0]), dv(&q[1]), dv(&q[2]), dv(&q[3])];
+    let segs = exact.len().saturating_sub(1);
+    // the segment nearest to the previous sample first (the samples follow
+    // the curve), and a sample's scan stopped once its distance is below the
+    // maximum so far: it cannot raise it. The minimum over segments does not
+    // depend on their order (and `sqrt` is monotone), so the value is the
+    // full scan's, bit for bit; only the work is less.
+    let mut start = 0usize;
     for i in 0..=32 {
         let p = fit::casteljau4(&cp, i as f64 / 32.0);
-        let d = exact
-            .windows(2)
-            .map(|w| {
-                let d = w[1] - w[0];
-                let l2 = d.length_squared();
-                let s = if l2 > 0.0 {
-                    ((p - w[0]).dot(d) / l2).clamp(0.0, 1.0)
-                } else {
-                    0.0
-                };
-                (w[0] + d * s - p).length()
-            })
-            .fold(f64::INFINITY, f64::min);
+        let mut best = (f64::INFINITY, start);
+        for k in 0..segs {
+            let j = (start + k) % segs;
+            let (a, b) = (exact[j], exact[j + 1]);
+            let d = b - a;
+            let l2 = d.length_squared();
+            let s = if l2 > 0.0 {
+                ((p - a).dot(d) / l2).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            let e = (a + d * s - p).length_squared();
+            if e < best.0 {
+                best = (e, j);
+                if e.sqrt() < ba {
+                    break;
+                }
+            }
+        }
+        start = best.1;
+        let d = if segs == 0 { f64::INFINITY } else { best.0.sqrt() };
         if d >= cap {
             return if ab.is_finite() && d.is_finite() {
                 d
