@@ -14,8 +14,8 @@
 use criterion::{criterion_group, criterion_main, Criterion};
 use lncert::curve::{Bezier, V2};
 use lncert::offset::kernels::{conv_cusps, ln_pair, offset_approximant_f64, offset_cusps};
-use lncert::offset::{Angle, Pen};
 use lncert::offset::{offset, OffsetMethod, OffsetOptions};
+use lncert::offset::{Angle, Pen};
 use lncert::scalar::{parse_rational, Scalar};
 use lncert::shape::parse_curve;
 use std::hint::black_box;

@@ -639,12 +639,14 @@ fn one_sided(h: &Bezier<Rational>) -> bool {
     let sum_i = (fi.0 + li.0, fi.1 + li.1);
     // each sign by the enclosure of the dot product, exactly only where it
     // holds 0 (the control points of an exact span have long numerators)
-    [(first, fi), (last, li), (&sum, sum_i)].iter().any(|(v, vi)| {
-        p.iter().zip(&pi).all(|(q, qi)| {
-            let d = vi.0 * qi.0 + vi.1 * qi.1;
-            d.inf() > 0.0 || (d.sup() > 0.0 && v.dot(q).is_positive())
+    [(first, fi), (last, li), (&sum, sum_i)]
+        .iter()
+        .any(|(v, vi)| {
+            p.iter().zip(&pi).all(|(q, qi)| {
+                let d = vi.0 * qi.0 + vi.1 * qi.1;
+                d.inf() > 0.0 || (d.sup() > 0.0 && v.dot(q).is_positive())
+            })
         })
-    })
 }
 
 /// The offset and the convolution need a normal everywhere: `x′(t) ≠ 0` on `[0, 1]`,

@@ -468,7 +468,11 @@ pub(super) fn two_sided_capped(exact: &[DVec2], c: &Bezier<f64>, cap: f64) -> f6
             }
         }
         start = best.1;
-        let d = if segs == 0 { f64::INFINITY } else { best.0.sqrt() };
+        let d = if segs == 0 {
+            f64::INFINITY
+        } else {
+            best.0.sqrt()
+        };
         if d >= cap {
             return if ab.is_finite() && d.is_finite() {
                 d
