@@ -58,7 +58,7 @@
 
 use super::prep;
 use crate::curve::{Bezier, V2};
-use crate::poly::{has_root_in, Poly, Span};
+use crate::poly::Poly;
 use crate::scalar::{
     interval_from_rational, parse_rational, rational_from_f64, sin_cos_enclosure, Interval,
     Rational, Scalar,
@@ -545,59 +545,30 @@ pub(super) fn conv_cusp_polynomial<S: Scalar>(x: &Bezier<S>, q: &[S; 3]) -> (Pol
 /// assert!(conv_cusps(0, &x, &pen, -1).is_empty());
 /// ```
 pub fn conv_cusps(piece: usize, x: &Bezier<Rational>, pen: &Pen, sigma: i8) -> Vec<ConvCusp> {
-    // the filter first, in intervals (most pieces have no cusp): the scaled
-    // Bernstein coefficients of the cusp polynomial all of one strict sign
-    let Some(fi) = super::cuspform::conv_form_iv(x, &pen.q) else {
-        return Vec::new(); // degree below 2: k ≡ 0
-    };
-    if fi.p.strict_sign().is_some() {
-        return Vec::new();
-    }
-    // exactly, in integers (a positive multiple of the cusp polynomial)
-    let Some(f) = super::cuspform::conv_form(x, &pen.q) else {
-        return Vec::new();
-    };
-    if f.p.is_zero() || f.k.is_zero() {
-        return Vec::new();
-    }
-    let span = Span::closed(<Rational as Zero>::zero(), <Rational as One>::one());
-    let roots = f.p.simple_roots(40, 4_000).unwrap_or_else(|| {
-        // a multiple root or a root on a split point: the exact Sturm path
-        let (p, _) = conv_cusp_polynomial(x, &pen.q);
-        prep::roots_refined(&p.trimmed(), &span, 40)
-    });
+    use super::cuspform::{conv_form, conv_form_iv, cusp_params};
+    let roots = cusp_params(
+        x,
+        conv_form_iv(x, &pen.q),
+        || conv_form(x, &pen.q),
+        sigma,
+        || conv_cusp_polynomial(x, &pen.q).0,
+    );
     let qf = pen.q_f64();
-    let mut k_exact: Option<Poly<Rational>> = None;
-    let mut out = Vec::new();
-    for r in roots {
-        let m = r.midpoint();
-        let s = f.k.sign_at(&m).map(|k| k * sigma);
-        // k has no root on the isolating interval: by an interval enclosure of
-        // k over it (k is far from 0 at a cusp: |det Q · k| = (nᵀQn)^{3/2}),
-        // else exactly (Sturm)
-        let (lo, hi) = (
-            interval_from_rational(&r.lo).inf(),
-            interval_from_rational(&r.hi).sup(),
-        );
-        let k_iv = fi.k.range(lo, hi);
-        let decided = k_iv.inf() > 0.0 || k_iv.sup() < 0.0 || {
-            let k = k_exact.get_or_insert_with(|| prep::curvature_numerator(x));
-            !has_root_in(k, &Span::closed(r.lo.clone(), r.hi.clone()))
-        };
-        if decided && s.is_some_and(|s| s <= 0) {
-            continue;
-        }
-        let ta = m.approx();
-        let pt = x.eval(&m);
-        let e = pen_point_at(x, ta, qf, sigma).unwrap_or(V2::new(0.0, 0.0));
-        out.push(ConvCusp {
-            piece,
-            t: (r.lo.clone(), r.hi.clone()),
-            t_approx: ta,
-            point: (pt.x.approx() + e.x, pt.y.approx() + e.y),
-        });
-    }
-    out
+    roots
+        .into_iter()
+        .map(|r| {
+            let m = r.midpoint();
+            let ta = m.approx();
+            let pt = x.eval(&m);
+            let e = pen_point_at(x, ta, qf, sigma).unwrap_or(V2::new(0.0, 0.0));
+            ConvCusp {
+                piece,
+                t: (r.lo, r.hi),
+                t_approx: ta,
+                point: (pt.x.approx() + e.x, pt.y.approx() + e.y),
+            }
+        })
+        .collect()
 }
 
 #[cfg(test)]

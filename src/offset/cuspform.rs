@@ -22,9 +22,10 @@
 
 use crate::curve::Bezier;
 use crate::poly::scaled::{Ring, Scaled};
+use crate::poly::{has_root_in, Poly, RealRoot, Span};
 use crate::scalar::{interval_from_rational, Interval, Rational};
 use num_bigint::BigInt;
-use num_traits::One;
+use num_traits::{One, Zero};
 
 /// The cusp polynomial `P` and `K = U × V` (see the module docs).
 pub(crate) struct CuspForm<T> {
@@ -138,15 +139,67 @@ pub(crate) fn conv_form(x: &Bezier<Rational>, q: &[Rational; 3]) -> Option<CuspF
     form(&pts, &den, &w, &(&det * &det), &e)
 }
 
+/// The cusp parameters of piece `x`: isolating intervals (width ≤ 2⁻⁴⁰) of
+/// the roots in `[0, 1]` of the cusp polynomial at which `side · k > 0`,
+/// shared by offsets and convolutions. `iv` is the interval form (the filter:
+/// one strict sign, no cusp), `exact` the integer form; `power` the
+/// power-basis polynomial, built only for the exact Sturm path when the
+/// isolation leaves a piece undecided (a multiple root, a root on a split
+/// point). `k` is proven root-free on a root's interval by an enclosure (else
+/// Sturm) and its sign taken exactly at the midpoint; if `k` may vanish
+/// there, the root is kept: a possible cusp is reported, never dropped.
+pub(crate) fn cusp_params(
+    x: &Bezier<Rational>,
+    iv: Option<CuspForm<Interval>>,
+    exact: impl FnOnce() -> Option<CuspForm<BigInt>>,
+    side: i8,
+    power: impl FnOnce() -> Poly<Rational>,
+) -> Vec<RealRoot> {
+    // degree below 2: k ≡ 0, no cusp
+    let Some(fi) = iv else {
+        return Vec::new();
+    };
+    if fi.p.strict_sign().is_some() {
+        return Vec::new();
+    }
+    let Some(f) = exact() else {
+        return Vec::new();
+    };
+    if f.p.is_zero() || f.k.is_zero() {
+        return Vec::new();
+    }
+    let span = Span::closed(Rational::zero(), Rational::one());
+    let roots =
+        f.p.simple_roots(40, 4_000)
+            .unwrap_or_else(|| super::prep::roots_refined(&power().trimmed(), &span, 40));
+    let mut k_exact: Option<Poly<Rational>> = None;
+    roots
+        .into_iter()
+        .filter(|r| {
+            let s = f.k.sign_at(&r.midpoint()).map(|k| k * side);
+            let (lo, hi) = (
+                interval_from_rational(&r.lo).inf(),
+                interval_from_rational(&r.hi).sup(),
+            );
+            let k_iv = fi.k.range(lo, hi);
+            let decided = k_iv.inf() > 0.0 || k_iv.sup() < 0.0 || {
+                let k = k_exact.get_or_insert_with(|| super::prep::curvature_numerator(x));
+                !has_root_in(k, &Span::closed(r.lo.clone(), r.hi.clone()))
+            };
+            !(decided && s.is_some_and(|s| s <= 0))
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::curve::V2;
     use crate::offset::conv::{conv_cusp_polynomial, conv_cusps, Pen};
     use crate::offset::prep::{curvature_numerator, cusp_polynomial, offset_cusps};
-    use crate::poly::{isolate_roots, refine_root, square_free, Poly, RealRoot, Span};
+    use crate::poly::{isolate_roots, refine_root, square_free};
     use crate::scalar::IntervalExt;
-    use num_traits::{Signed, Zero};
+    use num_traits::Signed;
 
     /// A small xorshift generator (deterministic cases).
     struct Gen(u64);
@@ -180,35 +233,22 @@ mod tests {
         }
     }
 
-    /// `Σ c_k t^k (1 − t)^{n−k}`, exactly.
-    fn value(p: &Scaled<BigInt>, t: &Rational) -> Rational {
-        let n = p.degree();
-        let one = Rational::one();
-        p.0.iter()
-            .enumerate()
-            .fold(Rational::zero(), |acc, (k, c)| {
-                acc + Rational::from_integer(c.clone())
-                    * num_traits::pow(t.clone(), k)
-                    * num_traits::pow(&one - t, n - k)
-            })
-    }
-
     /// `a` is `c · b` at every sample for one constant `c > 0`.
     fn positive_multiple(a: &Scaled<BigInt>, b: &Poly<Rational>, what: &str) {
         let ts: Vec<Rational> = (0..=12)
             .map(|k| Rational::new(k.into(), 12.into()))
             .collect();
         let Some(t0) = ts.iter().find(|t| !b.eval(t).is_zero()) else {
-            assert!(ts.iter().all(|t| value(a, t).is_zero()), "{what}");
+            assert!(ts.iter().all(|t| a.value(t).is_zero()), "{what}");
             return;
         };
-        let (a0, b0) = (value(a, t0), b.eval(t0));
+        let (a0, b0) = (a.value(t0), b.eval(t0));
         assert!(
             (&a0 / &b0).is_positive(),
             "{what}: the factor is not positive"
         );
         for t in &ts {
-            assert_eq!(value(a, t) * &b0, b.eval(t) * &a0, "{what} at {t}");
+            assert_eq!(a.value(t) * &b0, b.eval(t) * &a0, "{what} at {t}");
         }
     }
 

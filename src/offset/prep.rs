@@ -4,8 +4,7 @@
 
 use crate::curve::{Bezier, V2};
 use crate::poly::{
-    certify_no_root, has_root_in, isolate_roots, isolate_simple_roots, square_free, Poly, RealRoot,
-    Span,
+    certify_no_root, isolate_roots, isolate_simple_roots, square_free, Poly, RealRoot, Span,
 };
 use crate::scalar::{interval_from_rational, rational_from_f64, Interval, Rational};
 use num_traits::{Signed, Zero};
@@ -368,65 +367,35 @@ pub struct OffsetCusp {
 /// which `d (x′ × x″) > 0` (Sturm isolation; the sign is decided on an
 /// isolating interval on which `x′ × x″` has no root, checked by Sturm).
 pub fn offset_cusps(piece: usize, x: &Bezier<Rational>, d: &Rational) -> Vec<OffsetCusp> {
-    // the filter first, in intervals (most pieces have no cusp): the scaled
-    // Bernstein coefficients of the cusp polynomial all of one strict sign
-    let Some(fi) = super::cuspform::offset_form_iv(x, d) else {
-        return Vec::new(); // degree below 2: k ≡ 0
-    };
-    if fi.p.strict_sign().is_some() {
-        return Vec::new();
-    }
-    // exactly, in integers (a positive multiple of the cusp polynomial)
-    let Some(f) = super::cuspform::offset_form(x, d) else {
-        return Vec::new();
-    };
-    if f.p.is_zero() || f.k.is_zero() {
-        return Vec::new();
-    }
-    let span = Span::closed(Rational::zero(), Rational::from_integer(1.into()));
-    let mut k_exact: Option<Poly<Rational>> = None;
-    let roots = f.p.simple_roots(40, 4_000).unwrap_or_else(|| {
-        // a multiple root or a root on a split point: the exact Sturm path
-        let k = k_exact.get_or_insert_with(|| curvature_numerator(x));
-        roots_refined(&cusp_polynomial(x, k, d).trimmed(), &span, 40)
-    });
-    let d_sign: i8 = if d.is_positive() { 1 } else { -1 };
-    let mut out = Vec::new();
-    for r in roots {
-        // The sign of d·(x′ × x″) at the root: at a root of `p`, |d (x′×x″)| = |x′|³ > 0,
-        // so the sign is that of d·k on the isolating interval when k has no root
-        // there (an interval enclosure of k over it, else Sturm). If it has one
-        // (never seen: the interval is 2⁻⁴⁰ wide), the root is kept — a possible
-        // cusp is reported, not dropped.
-        let m = r.midpoint();
-        let s = f.k.sign_at(&m).map(|k| k * d_sign);
-        let (lo, hi) = (
-            interval_from_rational(&r.lo).inf(),
-            interval_from_rational(&r.hi).sup(),
-        );
-        let k_iv = fi.k.range(lo, hi);
-        let decided = k_iv.inf() > 0.0 || k_iv.sup() < 0.0 || {
-            let k = k_exact.get_or_insert_with(|| curvature_numerator(x));
-            !has_root_in(k, &Span::closed(r.lo.clone(), r.hi.clone()))
-        };
-        if decided && s.is_some_and(|s| s <= 0) {
-            continue;
-        }
-        let ta = crate::scalar::Scalar::approx(&m);
-        let pt = x.eval(&m);
-        let n = unit_left_normal(x, ta).unwrap_or(V2::new(0.0, 0.0));
-        let df = crate::scalar::Scalar::approx(d);
-        out.push(OffsetCusp {
-            piece,
-            t: (r.lo.clone(), r.hi.clone()),
-            t_approx: ta,
-            point: (
-                crate::scalar::Scalar::approx(&pt.x) + df * n.x,
-                crate::scalar::Scalar::approx(&pt.y) + df * n.y,
-            ),
-        });
-    }
-    out
+    use super::cuspform::{cusp_params, offset_form, offset_form_iv};
+    // at a root of `p`, |d (x′×x″)| = |x′|³ > 0: the side is the sign of d·k
+    let side = if d.is_positive() { 1 } else { -1 };
+    let roots = cusp_params(
+        x,
+        offset_form_iv(x, d),
+        || offset_form(x, d),
+        side,
+        || cusp_polynomial(x, &curvature_numerator(x), d),
+    );
+    let df = crate::scalar::Scalar::approx(d);
+    roots
+        .into_iter()
+        .map(|r| {
+            let m = r.midpoint();
+            let ta = crate::scalar::Scalar::approx(&m);
+            let pt = x.eval(&m);
+            let n = unit_left_normal(x, ta).unwrap_or(V2::new(0.0, 0.0));
+            OffsetCusp {
+                piece,
+                t: (r.lo, r.hi),
+                t_approx: ta,
+                point: (
+                    crate::scalar::Scalar::approx(&pt.x) + df * n.x,
+                    crate::scalar::Scalar::approx(&pt.y) + df * n.y,
+                ),
+            }
+        })
+        .collect()
 }
 
 /// What happens at the junction of two consecutive input pieces.

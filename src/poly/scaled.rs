@@ -172,6 +172,21 @@ impl Scaled<BigInt> {
         (s != 0 && self.0.iter().all(|c| sign_of(c) == s)).then_some(s)
     }
 
+    /// `Σ c_k t^k (1 − t)^(n−k)`, exactly (for tests).
+    #[cfg(test)]
+    pub(crate) fn value(&self, t: &Rational) -> Rational {
+        let n = self.degree();
+        let one = Rational::one();
+        self.0
+            .iter()
+            .enumerate()
+            .fold(Rational::zero(), |acc, (k, c)| {
+                acc + Rational::from_integer(c.clone())
+                    * num_traits::pow(t.clone(), k)
+                    * num_traits::pow(&one - t, n - k)
+            })
+    }
+
     /// Whether every coefficient is zero (the zero polynomial).
     pub(crate) fn is_zero(&self) -> bool {
         self.0.iter().all(Zero::is_zero)
@@ -320,18 +335,6 @@ mod tests {
     #[test]
     fn scaled_arithmetic_matches_the_power_basis() {
         let big = |v: &[i64]| Scaled(v.iter().map(|&x| BigInt::from(x)).collect::<Vec<_>>());
-        // the scaled value Σ c_k t^k (1 − t)^{n−k}, exactly
-        let value = |p: &Scaled<BigInt>, t: &Rational| {
-            let n = p.degree();
-            let one = Rational::one();
-            p.0.iter()
-                .enumerate()
-                .fold(Rational::zero(), |acc, (k, c)| {
-                    acc + Rational::from_integer(c.clone())
-                        * num_traits::pow(t.clone(), k)
-                        * num_traits::pow(&one - t, n - k)
-                })
-        };
         let a = big(&[3, -7, 2]);
         let b = big(&[-1, 4, 0, 5]);
         let ab = a.mul(&b);
@@ -339,10 +342,10 @@ mod tests {
         let d = b.sub(&a);
         for k in 0..=20 {
             let t = Rational::new(BigInt::from(k), BigInt::from(20));
-            assert_eq!(value(&ab, &t), value(&a, &t) * value(&b, &t));
-            assert_eq!(value(&e, &t), value(&a, &t));
-            assert_eq!(value(&d, &t), value(&b, &t) - value(&a, &t));
-            let s = value(&ab, &t);
+            assert_eq!(ab.value(&t), a.value(&t) * b.value(&t));
+            assert_eq!(e.value(&t), a.value(&t));
+            assert_eq!(d.value(&t), b.value(&t) - a.value(&t));
+            let s = ab.value(&t);
             let want = if s.is_zero() {
                 0
             } else if s > Rational::zero() {
