@@ -280,24 +280,35 @@ fn against_findings_of_issue_24() {
     // ... and the plain segment is still recognised
     let (code, out) = lncert_against("2-user-dot", "a.json", "a.json", false);
     assert_eq!(code, Some(0), "{out}");
-    // 3. SVG arcs: the certificate is about their cubic approximation, and
-    // says so, with what it proves for the exact arcs (tol + both bounds)
+    // 3. SVG arcs: the certificate is about their cubic approximation. The
+    // quarter arc of the finding has a rational centre: it now reads as the
+    // exact arc, which the certificate's cubics are not
     let (code, out) = lncert_against("3-svg-arc", "a.svg", "b.svg", false);
+    assert_eq!(code, Some(1), "{out}");
+    assert!(
+        out.contains("invalid: a: the certificate is about another shape than --against A: different kinds of shape"),
+        "{out}"
+    );
+    // an arc with an irrational centre is still approximated: the
+    // certificate says so, with what it proves for the exact arcs (tol +
+    // both reported bounds)
+    let (code, out) = lncert_against("3b-svg-arc-irrational", "a.svg", "b.svg", false);
     assert_eq!(code, Some(1), "{out}");
     assert!(
         out.starts_with("valid certificate, not about the exact shapes"),
         "{out}"
     );
     assert!(!out.contains("exactly the shapes given"), "{out}");
-    let (code, out) = lncert_against("3-svg-arc", "a.svg", "b.svg", true);
+    let (code, out) = lncert_against("3b-svg-arc-irrational", "a.svg", "b.svg", true);
     assert_eq!(code, Some(1), "{out}");
     let doc: serde_json::Value = serde_json::from_str(&out).unwrap();
     assert_eq!(doc["valid"], false);
     assert_eq!(doc["certificate_valid"], true);
-    // the exact arc is ≥ 1.7386e-8 from the cubics (the issue's search): the
-    // bound for the exact shapes must exceed tol by at least that
+    let text = std::fs::read_to_string(against_dir("3b-svg-arc-irrational").join("a.svg")).unwrap();
+    let (_, approx) = lncert::shape::parse_curve_reported(&text).unwrap();
+    assert!(approx.bound() > 0.0);
     let for_exact = doc["tol_for_exact_shapes"].as_f64().unwrap();
-    assert!(for_exact >= 1e-8 + 1.7386e-8, "{out}");
+    assert!(for_exact >= 1e-8 + 2.0 * approx.bound(), "{out}");
     // 4. degree 63, split at 8-digit rationals: recognised, and fast (below)
     let (code, out) = lncert_against("4-elevated-63-split", "a.json", "b.json", false);
     assert_eq!(code, Some(0), "{out}");

@@ -5,6 +5,7 @@
 //! `certify::piece`.
 
 use super::io::{describe, json_coordinate, json_point, parse_curve, parse_svg_path_reported};
+use super::svgarc::exact_mixed;
 use super::{InputApprox, ShapeError};
 use crate::curve::{Bezier, V2};
 use crate::poly::{has_common_root_in, Span};
@@ -86,6 +87,15 @@ pub(crate) fn checked_arc(a: ArcDesc, name: &str) -> Result<ArcDesc, ShapeError>
         ));
     }
     Ok(a)
+}
+
+/// [`ShapeDesc::curve`]'s checks, errors naming `{field}[i]`.
+pub(crate) fn checked_curve(
+    pieces: Vec<Bezier<Rational>>,
+    field: &str,
+) -> Result<ShapeDesc, ShapeError> {
+    check_pieces(&pieces, field)?;
+    Ok(ShapeDesc::Curve(pieces))
 }
 
 /// [`ShapeDesc::offset`]'s checks, errors naming the fields as given.
@@ -219,12 +229,12 @@ impl ShapeDesc {
         if trimmed.starts_with('<') {
             let (pieces, approx) = crate::shape::parse_svg_document_reported(trimmed)
                 .map_err(|e| err("svg", e.to_string()))?;
-            return Ok((ShapeDesc::curve(pieces)?, approx));
+            return exact_mixed(pieces, approx);
         }
         if !trimmed.starts_with('{') {
             let (pieces, approx) =
                 parse_svg_path_reported(trimmed).map_err(|e| err("path", e.to_string()))?;
-            return Ok((ShapeDesc::curve(pieces)?, approx));
+            return exact_mixed(pieces, approx);
         }
         Self::from_value_reported(&parse_json_value(trimmed)?)
     }
@@ -408,8 +418,7 @@ impl ShapeDesc {
     /// A curve shape, with the checks of the canonical form: 2 to 64 control
     /// points per piece, coordinates within [`MAX_COORDINATE`].
     pub fn curve(pieces: Vec<Bezier<Rational>>) -> Result<ShapeDesc, ShapeError> {
-        check_pieces(&pieces, "curve")?;
-        Ok(ShapeDesc::Curve(pieces))
+        checked_curve(pieces, "curve")
     }
 
     /// An arc: `radius > 0`, nonzero directions, a nonzero sweep (`from` and `to`

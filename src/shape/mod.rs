@@ -27,7 +27,11 @@
 //! readers, a [`CurveParseError`]) naming the field and the reason, and every
 //! limit is one of the constants below, shared by all subcommands.
 //!
-//! Everything is read exactly except elliptical arcs (SVG `A`/`a`, `<circle>`,
+//! The shape readers ([`ShapeDesc::parse_reported`]) read circles with a
+//! rational centre and radius (`<circle>`, rounded `<rect>`s with equal
+//! radii, SVG arcs `A r r …` whose centre is rational) as exact `{"arc"}`
+//! members ([`svgarc::ExactElement`]). The curve readers, and the shape
+//! readers for everything else, read exactly except elliptical arcs (SVG `A`/`a`, `<circle>`,
 //! `<ellipse>`, rounded `<rect>`), which are not polynomial curves: they are
 //! approximated within a certified bound, and the `*_reported` readers
 //! ([`parse_curve_reported`], [`parse_svg_path_reported`],

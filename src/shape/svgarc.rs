@@ -46,6 +46,9 @@ use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 use std::f64::consts::{FRAC_PI_2, TAU};
 
+pub(crate) use exact::{circle, circular_svg_arc, exact_mixed, quarter_circle, rational_sqrt};
+pub use exact::{ExactElement, ExactPiece};
+
 /// Target of the approximation of an elliptical arc, relative to its larger
 /// radius (after the F.6.6 correction): the construction aims at a certified
 /// Hausdorff distance `≤ 1e-7 · max(rx, ry)`.
@@ -119,6 +122,11 @@ pub struct ApproxElement {
     /// chain (the exact rational rotation or skew and its certified error);
     /// empty for arcs.
     pub detail: String,
+    /// The element exactly, as circular arcs (and lines), when its circle
+    /// has a rational centre and radius: the shape readers put it in place
+    /// of the pieces (see [`ExactElement`]). `None` for ellipses, arcs with
+    /// an irrational centre and for [`ApproxKind::Rotation`]/[`ApproxKind::Skew`].
+    pub exact: Option<ExactElement>,
 }
 
 /// The report of a curve reader: every input element that was *approximated*
@@ -234,6 +242,13 @@ impl InputApprox {
     }
     pub(crate) fn push(&mut self, e: ApproxElement) {
         self.elements.push(e);
+    }
+    /// The exact elements' piece indices moved by `by` (their pieces were
+    /// appended after `by` others).
+    pub(crate) fn shift(&mut self, by: usize) {
+        for x in self.elements.iter_mut().filter_map(|e| e.exact.as_mut()) {
+            x.first += by;
+        }
     }
     /// Appends `other`'s elements, their places prefixed (`{prefix}, byte 12`)
     /// and their bounds multiplied by `factor` (rounded up).
@@ -1137,5 +1152,6 @@ fn certify_chain(fr: &Frame, offs: &[[IV; 4]], goal: f64) -> Result<f64, String>
     Ok(sup)
 }
 
+mod exact;
 #[cfg(test)]
 mod tests;

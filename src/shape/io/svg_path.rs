@@ -4,7 +4,11 @@
 use super::{exact_number, CurveParseError, MAX_SEGMENTS, MAX_SVG_BYTES};
 use crate::curve::{Bezier, V2};
 use crate::scalar::Rational;
-use crate::shape::svgarc::{svg_arc, ApproxElement, ApproxKind, InputApprox, SvgArc};
+use crate::shape::svgarc::{
+    circular_svg_arc, svg_arc, ApproxElement, ApproxKind, ExactElement, ExactPiece, InputApprox,
+    SvgArc,
+};
+use num_traits::Signed;
 
 /// The exact path-data state machine: scanner plus current point, subpath
 /// start and the control points that `S` and `T` reflect.
@@ -321,16 +325,26 @@ impl<'a> SvgParser<'a> {
             SvgArc::Omitted => {}
             SvgArc::Line => self.line_to(p.clone(), at)?,
             SvgArc::Cubics { pieces, bound } => {
-                let n = pieces.len();
+                let (n, first) = (pieces.len(), self.out.len());
                 for b in pieces {
                     self.push_bezier(b, at)?;
                 }
+                // a circle's arc, exactly, when its centre is rational
+                let exact = (rx.abs() == ry.abs())
+                    .then(|| circular_svg_arc(&self.cur, &p, rx, large, sweep))
+                    .flatten()
+                    .map(|arc| ExactElement {
+                        first,
+                        count: n,
+                        pieces: vec![ExactPiece::Arc(Box::new(arc))],
+                    });
                 self.approx.push(ApproxElement {
                     kind: ApproxKind::Arc,
                     at: format!("byte {at}"),
                     pieces: n,
                     bound,
                     detail: String::new(),
+                    exact,
                 });
             }
         }

@@ -6,7 +6,10 @@ use super::{err, CurveParseError};
 use crate::curve::{Bezier, V2};
 use crate::scalar::Rational;
 use crate::shape::io::{parse_svg_path_reported, svg_number_list};
-use crate::shape::svgarc::{axis_arc, ApproxElement, ApproxKind, InputApprox};
+use crate::shape::svgarc::{
+    axis_arc, circle, quarter_circle, ApproxElement, ApproxKind, ExactElement, ExactPiece,
+    InputApprox,
+};
 use num_traits::{Signed, Zero};
 
 /// A plain coordinate attribute (no unit suffix), exactly; a missing one is 0.
@@ -126,12 +129,15 @@ pub(super) fn element_pieces(
 
 /// Reports the element at `at` as approximated within `bound` by the cubics
 /// among `pieces`.
+/// `exact`: the element's exact pieces (circular arcs and lines), which
+/// replace all of `pieces`.
 fn approximated(
     approx: &mut InputApprox,
     kind: ApproxKind,
     at: &str,
     pieces: &[Bezier<Rational>],
     bound: f64,
+    exact: Option<Vec<ExactPiece>>,
 ) {
     approx.push(ApproxElement {
         kind,
@@ -139,6 +145,11 @@ fn approximated(
         pieces: pieces.iter().filter(|b| b.degree() == 3).count(),
         bound,
         detail: String::new(),
+        exact: exact.map(|x| ExactElement {
+            first: 0,
+            count: pieces.len(),
+            pieces: x,
+        }),
     })
 }
 
@@ -197,6 +208,8 @@ fn rect_pieces(
     }
     let (x1, y1, x2, y2) = (&x + &rx, &y + &ry, &x + &w - &rx, &y + &h - &ry);
     let mut out = Vec::new();
+    // the same pieces exactly, when the corners are circular
+    let mut exact = Vec::new();
     let mut bound = 0.0f64;
     // SVG 2's path: M (x+rx, y) H (x+w−rx) A … (x+w, y+ry) V … Z
     for (corner, start, line_to) in [
@@ -224,17 +237,22 @@ fn rect_pieces(
         let (pieces, b, end) =
             axis_arc(&corner, &rx, &ry, start, 1).map_err(|reason| err(at, reason))?;
         out.extend(pieces);
+        exact.push(quarter_circle(&corner, &rx, start));
         bound = bound.max(b);
         if end != line_to {
-            out.push(Bezier::new(vec![end, line_to]));
+            let line = Bezier::new(vec![end, line_to]);
+            out.push(line.clone());
+            exact.push(ExactPiece::Bezier(line));
         }
     }
     // start at (x + rx, y): the last line (into it) first
     if let Some(last) = out.last().filter(|b| b.degree() == 1).cloned() {
         out.pop();
         out.insert(0, last);
+        exact.rotate_right(1);
     }
-    approximated(approx, ApproxKind::RoundedRect, at, &out, bound);
+    let exact = (rx == ry).then_some(exact);
+    approximated(approx, ApproxKind::RoundedRect, at, &out, bound, exact);
     Ok(out)
 }
 
@@ -262,6 +280,7 @@ fn ellipse_pieces(
     } else {
         ApproxKind::Ellipse
     };
-    approximated(approx, kind, at, &pieces, bound);
+    let exact = (rx == ry).then(|| circle(&c, &rx));
+    approximated(approx, kind, at, &pieces, bound, exact);
     Ok(pieces)
 }

@@ -6,7 +6,7 @@ use super::{err, CurveParseError, TRANSFORM_TARGET};
 use crate::curve::{Bezier, V2};
 use crate::scalar::{interval_from_rational, rational_from_f64, Interval, Rational};
 use crate::shape::io::svg_number_list;
-use crate::shape::svgarc::{format_up, ApproxKind};
+use crate::shape::svgarc::{format_up, rational_sqrt, ApproxKind};
 use num_traits::{One, Signed, Zero};
 
 /// An affine map `(x, y) ↦ (a x + c y + e, b x + d y + f)`, SVG's
@@ -67,15 +67,6 @@ impl Affine {
         }
         rational_sqrt(&(a * a + b * b))
     }
-}
-
-/// The exact square root of a rational, when it is one.
-fn rational_sqrt(x: &Rational) -> Option<Rational> {
-    if x.is_negative() {
-        return None;
-    }
-    let (n, d) = (x.numer().sqrt(), x.denom().sqrt());
-    (&n * &n == *x.numer() && &d * &d == *x.denom()).then(|| Rational::new(n, d))
 }
 
 /// `(cos, sin)` of a multiple of 90°, exactly; `None` for any other angle.

@@ -37,7 +37,8 @@ pub fn parse_svg_document_reported(
     let elements = parse_svg_document_elements(text)?;
     let mut out = Vec::new();
     let mut approx = InputApprox::default();
-    for e in elements {
+    for mut e in elements {
+        e.approx.shift(out.len());
         out.extend(e.pieces);
         approx.extend_scaled(e.approx, "", 1.0);
     }
@@ -282,6 +283,15 @@ impl<'a, 'input> Walker<'a, 'input> {
     ) -> Result<(), CurveParseError> {
         let mut approx = InputApprox::default();
         let own = a.bound();
+        let scale = ctx.m.similarity_scale();
+        let mut a = a;
+        for e in &mut a.elements {
+            // circular arcs stay exact under a similarity with a rational scale
+            e.exact = match (&e.exact, &scale) {
+                (Some(x), Some(k)) => x.mapped(&ctx.m.0, k),
+                _ => None,
+            };
+        }
         if !a.is_empty() {
             approx.extend_scaled(a, "", ctx.m.norm_sup());
         }
@@ -301,6 +311,7 @@ impl<'a, 'input> Walker<'a, 'input> {
                 at: at.clone(),
                 pieces: pieces.len(),
                 bound: delta,
+                exact: None,
                 detail: inexact
                     .iter()
                     .map(|f| f.detail.clone())
@@ -320,7 +331,7 @@ impl<'a, 'input> Walker<'a, 'input> {
             .map(|b| Bezier::new(b.points().iter().map(|p| ctx.m.apply(p)).collect()))
             .collect();
         let two = Rational::from_integer(2.into());
-        let pen_radius = match ctx.m.similarity_scale() {
+        let pen_radius = match scale {
             Some(k) => Ok(&ctx.stroke_width / &two * k),
             None => Err(format!(
                 "{at}: its transform is not a similarity with a rational scale (the pen of its stroke-width would be an ellipse)"
