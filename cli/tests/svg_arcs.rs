@@ -235,3 +235,69 @@ fn read_shapes_round_trip() {
         assert_eq!(ShapeDesc::parse(text).unwrap(), shape);
     }
 }
+
+/// An `<ellipse>` is read as two exact elliptic arcs: `hausdorff` certifies
+/// its distance from the cubics that approximate it (the bound the reader
+/// reports for them), `verify` re-checks the certificate, `--against` the
+/// same document recognises it, and a forged matrix is refused.
+#[test]
+fn ellipses_are_exact_and_their_certificates_verify() {
+    let svg = r#"<svg><ellipse cx="12" cy="12" rx="8" ry="4"/></svg>"#;
+    let doc = tmp("ellipse.svg", svg);
+    let (pieces, approx) = parse_curve_reported(svg).unwrap();
+    let cubics = tmp(
+        "ellipse-cubics.json",
+        &ShapeDesc::curve(pieces).unwrap().to_json().to_string(),
+    );
+    let cert = tmp("ellipse-cert.json", "");
+    let (a, b, c) = (
+        doc.to_str().unwrap(),
+        cubics.to_str().unwrap(),
+        cert.to_str().unwrap(),
+    );
+    let tol = format!("{:e}", 2.0 * approx.bound());
+    let o = lncert(&[
+        "hausdorff",
+        a,
+        b,
+        "--tol",
+        &tol,
+        "--certificate",
+        c,
+        "--json",
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let d = json_of(&o);
+    assert!(d["input_approximation"]["a"].is_null(), "{d}");
+    assert!(d["lo"].as_f64().unwrap() <= approx.bound(), "{d}");
+    let o = lncert(&["verify", c, "--against", a, b]);
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{text}");
+    assert!(text.contains("the elliptic arc c + M·u"), "{text}");
+    assert!(
+        text.contains("A and B are exactly the shapes given"),
+        "{text}"
+    );
+    // forged: the ellipse's matrix entry 8 → 81/10 (the bounds no longer hold)
+    let good = std::fs::read_to_string(&cert).unwrap();
+    assert!(good.contains(r#""matrix":[["8","0"],["0","4"]]"#), "{good}");
+    for (forged, field) in [
+        (r#""matrix":[["81/10","0"],["0","4"]]"#, ""),
+        (r#""matrix":[["8","4"],["16","8"]]"#, "ellipse_arc.matrix"),
+    ] {
+        let f = tmp(
+            "ellipse-forged.json",
+            &good.replacen(r#""matrix":[["8","0"],["0","4"]]"#, forged, 1),
+        );
+        let o = lncert(&["verify", f.to_str().unwrap()]);
+        let text = String::from_utf8_lossy(&o.stdout);
+        assert_eq!(o.status.code(), Some(1), "{forged}: {text}");
+        assert!(text.starts_with("invalid"), "{forged}: {text}");
+        assert!(text.contains(field), "{forged}: {text}");
+    }
+}

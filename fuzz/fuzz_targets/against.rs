@@ -647,6 +647,28 @@ fn samples(s: &ShapeDesc, n: usize, out: &mut Vec<Vec<(f64, f64)>>) {
                 .collect(),
             );
         }
+        ShapeDesc::EllipseArc(a) => {
+            let (cx, cy) = (f(&a.center.x), f(&a.center.y));
+            let m = [
+                [f(&a.matrix[0][0]), f(&a.matrix[0][1])],
+                [f(&a.matrix[1][0]), f(&a.matrix[1][1])],
+            ];
+            let t0 = f(&a.from.y).atan2(f(&a.from.x));
+            let mut sweep = f(&a.to.y).atan2(f(&a.to.x)) - t0;
+            if sweep <= 0.0 {
+                sweep += std::f64::consts::TAU;
+            }
+            out.push(
+                ts.map(|t| {
+                    let (u, v) = ((t0 + sweep * t).cos(), (t0 + sweep * t).sin());
+                    (
+                        cx + m[0][0] * u + m[0][1] * v,
+                        cy + m[1][0] * u + m[1][1] * v,
+                    )
+                })
+                .collect(),
+            );
+        }
         ShapeDesc::Offset { .. } | ShapeDesc::Convolution { .. } => {
             // an offset at distance d is the convolution with Q = d² I on the
             // side of sign d: x + side · Q n / √(nᵀQn), n = x′⊥

@@ -27,10 +27,10 @@ use lncert::scalar::{parse_rational, Rational};
 
 #[path = "common/verify_oracle.rs"]
 mod verify_oracle;
-use verify_oracle::check_accepted;
 use serde_json::Value;
 use std::fmt::Write;
 use std::sync::OnceLock;
+use verify_oracle::check_accepted;
 
 const SEED_TEXTS: [&str; 17] = [
     include_str!("../seeds/verify/cert_quad_seg.json"),
@@ -64,8 +64,8 @@ fn seeds() -> &'static [Value] {
 
 /// Keys a forger may add: every key of the formats, and the classic extras.
 #[rustfmt::skip]
-const KEYS: [&str; 49] = [
-    "clockwise", "bounds", "bound", "digest", "beziers", "bezier", "arc", "offset",
+const KEYS: [&str; 51] = [
+    "clockwise", "bounds", "bound", "digest", "beziers", "bezier", "arc", "ellipse_arc", "matrix", "offset",
     "convolution", "side", "ellipse", "curve", "distance", "radius", "center", "from", "to",
     "piece", "target", "s", "t", "k", "tol", "claim", "extra", "format", "version", "directions",
     "maps", "phi", "union",
@@ -426,7 +426,6 @@ fn serialize(doc: &Value, dups: &[(usize, String)]) -> String {
     }
     text
 }
-
 
 /// `VERIFY_STRUCT_PRINT=1`: print every forged text and its verdict (to
 /// replay an input: `cargo fuzz run verify_struct FILE`).

@@ -491,6 +491,9 @@ impl Pieces for ShapeDesc {
         match self {
             ShapeDesc::Curve(c) => Ok(c.iter().map(Piece::bezier).collect()),
             ShapeDesc::Arc(a) => Ok(vec![Piece::arc(a)?]),
+            ShapeDesc::EllipseArc(a) => Ok(vec![Piece::ellipse_arc(
+                &a.center, &a.matrix, &a.from, &a.to,
+            )?]),
             ShapeDesc::Offset { curve, distance } => {
                 let r2 = distance * distance;
                 let z = <Rational as Zero>::zero();

@@ -22,7 +22,7 @@ use crate::curve::{Bezier, V2};
 use crate::json::{parse, Limits};
 use crate::poly::binomial_big;
 use crate::scalar::Rational;
-use crate::shape::{ArcDesc, ShapeDesc};
+use crate::shape::{ArcDesc, EllipseArcDesc, ShapeDesc};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 
@@ -85,6 +85,7 @@ impl ShapeDesc {
                 same_curve(x, &rev).map_err(|_| e)
             }),
             (ShapeDesc::Arc(a), ShapeDesc::Arc(b)) => same_arc(a, b),
+            (ShapeDesc::EllipseArc(a), ShapeDesc::EllipseArc(b)) => same_ellipse_arc(a, b),
             // a union of one member is that member's point set
             (ShapeDesc::Union(x), y) if x.len() == 1 && !matches!(y, ShapeDesc::Union(_)) => {
                 x[0].same_as(y)
@@ -140,6 +141,25 @@ fn same_arc(a: &ArcDesc, b: &ArcDesc) -> Result<(), String> {
     if !positively_parallel(&a.from, &b.from) || !positively_parallel(&a.to, &b.to) {
         return Err(
             "arcs with different end directions (the counter-clockwise sweep differs)".into(),
+        );
+    }
+    Ok(())
+}
+
+/// The same description up to the lengths of the directions (an ellipse
+/// written with another matrix `M R`, `R` a rotation, is reported as
+/// different: never the same by mistake).
+fn same_ellipse_arc(a: &EllipseArcDesc, b: &EllipseArcDesc) -> Result<(), String> {
+    if a.center != b.center {
+        return Err("elliptic arcs with different centres".into());
+    }
+    if a.matrix != b.matrix {
+        return Err("elliptic arcs with different matrices".into());
+    }
+    if !positively_parallel(&a.from, &b.from) || !positively_parallel(&a.to, &b.to) {
+        return Err(
+            "elliptic arcs with different end directions (the counter-clockwise sweep differs)"
+                .into(),
         );
     }
     Ok(())

@@ -31,6 +31,23 @@ pub struct ArcDesc {
     pub to: V2<Rational>,
 }
 
+/// An arc of an ellipse: `center + M u` for `u` on the unit circle,
+/// counter-clockwise from the direction `from` to the direction `to` (both
+/// directions of the pre-image `u`, any nonzero length). `M` is any
+/// nonsingular matrix: a circle of radius `r` is `M = r I`; an SVG ellipse
+/// with radii `rx`, `ry` rotated by `φ` is `M = R(φ) diag(rx, ry)`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EllipseArcDesc {
+    /// Centre of the ellipse.
+    pub center: V2<Rational>,
+    /// `M` by rows, `[[m11, m12], [m21, m22]]` (`det M ≠ 0`).
+    pub matrix: [[Rational; 2]; 2],
+    /// Direction of the pre-image from the centre to the start point.
+    pub from: V2<Rational>,
+    /// Direction of the pre-image from the centre to the end point.
+    pub to: V2<Rational>,
+}
+
 /// An exactly described shape.
 #[derive(Clone, Debug, PartialEq)]
 pub enum ShapeDesc {
@@ -38,6 +55,8 @@ pub enum ShapeDesc {
     Curve(Vec<Bezier<Rational>>),
     /// A circular arc.
     Arc(ArcDesc),
+    /// An arc of an ellipse (the image of a unit-circle arc by an affine map).
+    EllipseArc(Box<EllipseArcDesc>),
     /// The exact offset `x + r N` (left unit normal `N`, signed distance `r`) of
     /// each piece of a regular polynomial curve.
     Offset {
@@ -84,6 +103,42 @@ pub(crate) fn checked_arc(a: ArcDesc, name: &str) -> Result<ArcDesc, ShapeError>
         return Err(err(
             format!("{name}.to"),
             format!("same direction as {name}.from: zero sweep (full circles are not supported)"),
+        ));
+    }
+    Ok(a)
+}
+
+/// [`ShapeDesc::ellipse_arc`]'s checks, errors naming `{name}.matrix`, `{name}.from`, ….
+pub(crate) fn checked_ellipse_arc(
+    a: EllipseArcDesc,
+    name: &str,
+) -> Result<EllipseArcDesc, ShapeError> {
+    check_magnitude(&a.center.x, &format!("{name}.center[0]"))?;
+    check_magnitude(&a.center.y, &format!("{name}.center[1]"))?;
+    for (i, row) in a.matrix.iter().enumerate() {
+        for (j, x) in row.iter().enumerate() {
+            check_magnitude(x, &format!("{name}.matrix[{i}][{j}]"))?;
+        }
+    }
+    let m = &a.matrix;
+    if (&m[0][0] * &m[1][1] - &m[0][1] * &m[1][0]).is_zero() {
+        return Err(err(
+            format!("{name}.matrix"),
+            "the matrix is singular (the ellipse is degenerate)",
+        ));
+    }
+    for (v, f) in [(&a.from, "from"), (&a.to, "to")] {
+        let f = &format!("{name}.{f}");
+        check_magnitude(&v.x, f)?;
+        check_magnitude(&v.y, f)?;
+        if v.x.is_zero() && v.y.is_zero() {
+            return Err(err(f, "the direction vector is zero"));
+        }
+    }
+    if a.from.cross(&a.to).is_zero() && a.from.dot(&a.to).is_positive() {
+        return Err(err(
+            format!("{name}.to"),
+            format!("same direction as {name}.from: zero sweep (full ellipses are not supported)"),
         ));
     }
     Ok(a)
@@ -194,6 +249,8 @@ impl ShapeDesc {
     /// Reads a shape: a curve (`{"bezier": ...}`, `{"beziers": ...}` or SVG path
     /// data), `{"arc": {"center": [x, y], "radius": r, "from": [dx, dy], "to": [dx, dy]}}`
     /// (counter-clockwise; add `"clockwise": true` to go the other way),
+    /// `{"ellipse_arc": {"center": [x, y], "matrix": [[m11, m12], [m21, m22]], "from": [dx, dy], "to": [dx, dy]}}`
+    /// (the image `center + M u` of the unit-circle arc from `from` to `to`),
     /// `{"offset": {"curve": CURVE, "distance": r}}` or
     /// `{"convolution": {"curve": CURVE, "ellipse": [[m11, m12], [m21, m22]], "side": 1}}`.
     /// Numbers are read exactly (JSON numbers by their digits, or strings like `"1/3"`).
@@ -261,6 +318,7 @@ impl ShapeDesc {
         };
         let kinds = [
             "arc",
+            "ellipse_arc",
             "offset",
             "convolution",
             "union",
@@ -353,6 +411,54 @@ impl ShapeDesc {
             };
             return ShapeDesc::arc(arc);
         }
+        if let Some(a) = map.get("ellipse_arc") {
+            check_keys(map, "(top level)", &["ellipse_arc"])?;
+            let Value::Object(m) = a else {
+                return Err(err(
+                    "ellipse_arc",
+                    format!("expected an object, found {}", describe(a)),
+                ));
+            };
+            check_keys(
+                m,
+                "ellipse_arc",
+                &["center", "matrix", "from", "to", "clockwise"],
+            )?;
+            let clockwise = match m.get("clockwise") {
+                None => false,
+                Some(Value::Bool(b)) => *b,
+                Some(v) => {
+                    return Err(err(
+                        "ellipse_arc.clockwise",
+                        format!("expected true or false, found {}", describe(v)),
+                    ))
+                }
+            };
+            let (mut from, mut to) = (
+                point(m.get("from"), "ellipse_arc.from")?,
+                point(m.get("to"), "ellipse_arc.to")?,
+            );
+            if clockwise {
+                std::mem::swap(&mut from, &mut to);
+            }
+            let rows = match m.get("matrix") {
+                Some(Value::Array(rows)) if rows.len() == 2 => rows,
+                _ => {
+                    return Err(err(
+                        "ellipse_arc.matrix",
+                        "expected the 2×2 matrix [[m11, m12], [m21, m22]]",
+                    ))
+                }
+            };
+            let r0 = point(rows.first(), "ellipse_arc.matrix[0]")?;
+            let r1 = point(rows.get(1), "ellipse_arc.matrix[1]")?;
+            return ShapeDesc::ellipse_arc(EllipseArcDesc {
+                center: point(m.get("center"), "ellipse_arc.center")?,
+                matrix: [[r0.x, r0.y], [r1.x, r1.y]],
+                from,
+                to,
+            });
+        }
         if let Some(o) = map.get("offset") {
             check_keys(map, "(top level)", &["offset"])?;
             let Value::Object(m) = o else {
@@ -425,6 +531,25 @@ impl ShapeDesc {
     /// not the same direction; full circles are not supported).
     pub fn arc(a: ArcDesc) -> Result<ShapeDesc, ShapeError> {
         checked_arc(a, "arc").map(ShapeDesc::Arc)
+    }
+
+    /// An elliptic arc: a nonsingular matrix, nonzero directions, a nonzero
+    /// sweep (full ellipses are not supported).
+    ///
+    /// # Examples
+    /// ```
+    /// use lncert::shape::ShapeDesc;
+    /// let half = ShapeDesc::parse(
+    ///     r#"{"ellipse_arc": {"center": [0, 0], "matrix": [[2, 0], [0, 1]], "from": [1, 0], "to": [-1, 0]}}"#,
+    /// ).unwrap();
+    /// assert_eq!(half.summary(), "elliptic arc");
+    /// let e = ShapeDesc::parse(
+    ///     r#"{"ellipse_arc": {"center": [0, 0], "matrix": [[2, 4], [1, 2]], "from": [1, 0], "to": [-1, 0]}}"#,
+    /// ).unwrap_err();
+    /// assert_eq!(e.field, "ellipse_arc.matrix");
+    /// ```
+    pub fn ellipse_arc(a: EllipseArcDesc) -> Result<ShapeDesc, ShapeError> {
+        checked_ellipse_arc(a, "ellipse_arc").map(|a| ShapeDesc::EllipseArc(Box::new(a)))
     }
 
     /// An offset at signed distance `distance ≠ 0` of a regular curve.
@@ -503,7 +628,7 @@ impl ShapeDesc {
     pub fn piece_count(&self) -> usize {
         match self {
             ShapeDesc::Curve(c) => c.len(),
-            ShapeDesc::Arc(_) => 1,
+            ShapeDesc::Arc(_) | ShapeDesc::EllipseArc(_) => 1,
             ShapeDesc::Offset { curve, .. } | ShapeDesc::Convolution { curve, .. } => curve.len(),
             ShapeDesc::Union(m) => m.iter().map(ShapeDesc::piece_count).sum(),
         }
@@ -524,6 +649,12 @@ impl ShapeDesc {
             ShapeDesc::Curve(c) => curve(c),
             ShapeDesc::Arc(a) => {
                 json!({"arc": {"center": p(&a.center), "radius": q(&a.radius), "from": p(&a.from), "to": p(&a.to)}})
+            }
+            ShapeDesc::EllipseArc(a) => {
+                let m = &a.matrix;
+                json!({"ellipse_arc": {"center": p(&a.center),
+                    "matrix": [[q(&m[0][0]), q(&m[0][1])], [q(&m[1][0]), q(&m[1][1])]],
+                    "from": p(&a.from), "to": p(&a.to)}})
             }
             ShapeDesc::Offset { curve: c, distance } => {
                 json!({"offset": {"curve": curve(c), "distance": q(distance)}})
@@ -551,19 +682,51 @@ impl ShapeDesc {
                 c.iter().map(|b| b.degree()).max().unwrap_or(0)
             ),
             ShapeDesc::Arc(a) => format!("arc of radius {}", a.radius),
+            ShapeDesc::EllipseArc(_) => "elliptic arc".to_string(),
             ShapeDesc::Offset { curve, distance } => {
                 format!("offset at {} of {} piece(s)", distance, curve.len())
             }
             ShapeDesc::Convolution { curve, .. } => {
                 format!("convolution of {} piece(s) with an ellipse", curve.len())
             }
-            ShapeDesc::Union(m) => format!(
+            ShapeDesc::Union(m) if m.len() <= 3 => format!(
                 "union of {}",
                 m.iter()
                     .map(ShapeDesc::summary)
                     .collect::<Vec<_>>()
                     .join(" and ")
             ),
+            ShapeDesc::Union(m) => {
+                // many members (an SVG document): counted by kind
+                let count = |f: fn(&ShapeDesc) -> bool| m.iter().filter(|s| f(s)).count();
+                let kinds = [
+                    (count(|s| matches!(s, ShapeDesc::Curve(_))), "curve(s)"),
+                    (count(|s| matches!(s, ShapeDesc::Arc(_))), "circular arc(s)"),
+                    (
+                        count(|s| matches!(s, ShapeDesc::EllipseArc(_))),
+                        "elliptic arc(s)",
+                    ),
+                    (
+                        count(|s| matches!(s, ShapeDesc::Offset { .. })),
+                        "offset(s)",
+                    ),
+                    (
+                        count(|s| matches!(s, ShapeDesc::Convolution { .. })),
+                        "convolution(s)",
+                    ),
+                ];
+                let parts: Vec<String> = kinds
+                    .iter()
+                    .filter(|(n, _)| *n > 0)
+                    .map(|(n, what)| format!("{n} {what}"))
+                    .collect();
+                format!(
+                    "union of {} shapes ({} pieces): {}",
+                    m.len(),
+                    self.piece_count(),
+                    parts.join(", ")
+                )
+            }
         }
     }
 
@@ -579,6 +742,14 @@ impl ShapeDesc {
             ShapeDesc::Curve(c) => pts_scale(c),
             ShapeDesc::Arc(a) => {
                 a.center.x.approx().abs().max(a.center.y.approx().abs()) + a.radius.approx()
+            }
+            ShapeDesc::EllipseArc(a) => {
+                a.center.x.approx().abs().max(a.center.y.approx().abs())
+                    + a.matrix
+                        .iter()
+                        .flatten()
+                        .map(|x| x.approx().abs())
+                        .sum::<f64>()
             }
             ShapeDesc::Offset { curve, distance } => pts_scale(curve) + distance.approx().abs(),
             ShapeDesc::Convolution { curve, ellipse, .. } => {

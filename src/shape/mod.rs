@@ -16,7 +16,7 @@
 //!
 //! | what | where |
 //! |---|---|
-//! | exact shapes: curve, arc, offset, convolution ([`ShapeDesc`], [`ArcDesc`]); their checks and canonical JSON | `desc` |
+//! | exact shapes: curve, arc, elliptic arc, offset, convolution ([`ShapeDesc`], [`ArcDesc`], [`EllipseArcDesc`]); their checks and canonical JSON | `desc` |
 //! | arcs as travelled ([`TravelledArc`]) and the `{"arc"}` / `{"circle"}` documents of `offset` | `arc` |
 //! | curves from JSON (`bezier`, `beziers`, `bspline`) and SVG path data, every number exact ([`parse_curve`]) | `io` |
 //! | whole SVG documents ([`parse_svg_document`]) | `svgdoc` |
@@ -27,11 +27,11 @@
 //! readers, a [`CurveParseError`]) naming the field and the reason, and every
 //! limit is one of the constants below, shared by all subcommands.
 //!
-//! The shape readers ([`ShapeDesc::parse_reported`]) read circles with a
-//! rational centre and radius (`<circle>`, rounded `<rect>`s with equal
-//! radii, SVG arcs `A r r …` whose centre is rational) as exact `{"arc"}`
-//! members ([`svgarc::ExactElement`]). The curve readers, and the shape
-//! readers for everything else, read exactly except elliptical arcs (SVG `A`/`a`, `<circle>`,
+//! The shape readers ([`ShapeDesc::parse_reported`]) read `<circle>`,
+//! `<ellipse>`, rounded `<rect>`s and SVG arcs whose centre is rational as
+//! exact `{"arc"}` and `{"ellipse_arc"}` members ([`svgarc::ExactElement`]).
+//! The curve readers, and the shape readers for the other arcs, read
+//! exactly except elliptical arcs (SVG `A`/`a`, `<circle>`,
 //! `<ellipse>`, rounded `<rect>`), which are not polynomial curves: they are
 //! approximated within a certified bound, and the `*_reported` readers
 //! ([`parse_curve_reported`], [`parse_svg_path_reported`],
@@ -73,7 +73,7 @@ mod winding;
 
 pub use arc::{parse_arc_input, TravelledArc};
 pub(crate) use desc::{check_keys, checked_offset, curve_value, number, parse_json_value, point};
-pub use desc::{ArcDesc, ShapeDesc, MAX_COORDINATE};
+pub use desc::{ArcDesc, EllipseArcDesc, ShapeDesc, MAX_COORDINATE};
 #[cfg(feature = "font")]
 pub use font::{
     font_info, glyph_id_by_char, glyph_id_by_name, glyph_outline, glyph_outline_by_id, regularize,

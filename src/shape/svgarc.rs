@@ -46,7 +46,7 @@ use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 use std::f64::consts::{FRAC_PI_2, TAU};
 
-pub(crate) use exact::{circle, circular_svg_arc, exact_mixed, quarter_circle, rational_sqrt};
+pub(crate) use exact::{axis_ellipse_arc, ellipse, exact_mixed, rational_sqrt, svg_exact_arc};
 pub use exact::{ExactElement, ExactPiece};
 
 /// Target of the approximation of an elliptical arc, relative to its larger

@@ -60,9 +60,11 @@ pub(crate) enum VPiece {
     /// A Bézier piece: its control points and those of its first and second
     /// derivatives (`[pts, x′, x″]`).
     Poly([Vec<[Interval; 2]>; 3]),
+    /// `c + M (cos φ e0 + sin φ e0⊥)`, `M = [[m0, m1], [m2, m3]]` (`r I` for
+    /// a circle of radius `r`), in the rational parameter `t = tan(φ/4)`.
     Arc {
         c: [Interval; 2],
-        r: Interval,
+        m: [Interval; 4],
         e0: [Interval; 2],
     },
     /// An offset or convolution piece: the curve's control points and those of
@@ -187,7 +189,7 @@ impl VPiece {
     fn at(&self, t: T3) -> Option<[T3; 2]> {
         match self {
             VPiece::Poly(p) => Some(poly_at(p, t)),
-            VPiece::Arc { c, r, e0 } => {
+            VPiece::Arc { c, m, e0 } => {
                 let one = T3::c(ic(1));
                 let t2 = t.mul(t);
                 let a = one.sub(t2);
@@ -195,9 +197,12 @@ impl VPiece {
                 let inv = d.mul(d).inv()?;
                 let cs = a.mul(a).sub(t2.k(ic(4))).mul(inv);
                 let sn = t.mul(a).k(ic(4)).mul(inv);
+                // the pre-image point u = cos φ e0 + sin φ e0⊥, e0⊥ = (−e0y, e0x)
+                let u = cs.k(e0[0]).sub(sn.k(e0[1]));
+                let v = cs.k(e0[1]).add(sn.k(e0[0]));
                 Some([
-                    T3::c(c[0]).add(cs.k(e0[0]).sub(sn.k(e0[1])).k(*r)),
-                    T3::c(c[1]).add(cs.k(e0[1]).add(sn.k(e0[0])).k(*r)),
+                    T3::c(c[0]).add(u.k(m[0])).add(v.k(m[1])),
+                    T3::c(c[1]).add(u.k(m[2])).add(v.k(m[3])),
                 ])
             }
             VPiece::Conv { pts, q, sigma } => {

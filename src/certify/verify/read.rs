@@ -312,7 +312,7 @@ pub(crate) fn read_shape(v: &Json, at: &str) -> Result<VShape, Invalid> {
 
 /// One shape of the four kinds (not a union).
 fn read_member(v: &Json, at: &str) -> Result<VShape, Invalid> {
-    let kinds = ["beziers", "arc", "offset", "convolution"];
+    let kinds = ["beziers", "arc", "ellipse_arc", "offset", "convolution"];
     let m = v.as_object().ok_or_else(|| {
         inv(
             at,
@@ -349,7 +349,8 @@ fn read_member(v: &Json, at: &str) -> Result<VShape, Invalid> {
                 text: format!("the curve of {}", describe_curve(&bs)),
             })
         }
-        "arc" => read_arc(&m[0].1, &join(at, "arc")),
+        "arc" => read_arc(&m[0].1, &join(at, "arc"), false),
+        "ellipse_arc" => read_arc(&m[0].1, &join(at, "ellipse_arc"), true),
         "offset" => {
             let at = join(at, "offset");
             let [curve, distance] = exact_object(&m[0].1, &at, ["curve", "distance"])?;
@@ -414,15 +415,58 @@ fn read_member(v: &Json, at: &str) -> Result<VShape, Invalid> {
     }
 }
 
-fn read_arc(v: &Json, at: &str) -> Result<VShape, Invalid> {
-    let [center, radius, from, to] = exact_object(v, at, ["center", "radius", "from", "to"])?;
-    let c = point(center, &join(at, "center"))?;
-    let r = canonical_rational(radius, &join(at, "radius"))?;
-    let d0 = point(from, &join(at, "from"))?;
-    let d1 = point(to, &join(at, "to"))?;
-    if !r.is_positive() {
-        return Err(inv(join(at, "radius"), "must be > 0"));
-    }
+/// A circular arc (`{"center", "radius", "from", "to"}`) or, with
+/// `elliptic`, an elliptic one (`{"center", "from", "matrix", "to"}`): both
+/// `c + M u`, `u` on the unit-circle arc, `M = r I` for the circle.
+fn read_arc(v: &Json, at: &str, elliptic: bool) -> Result<VShape, Invalid> {
+    let (c, d0, d1, m, what) = if elliptic {
+        let [center, from, matrix, to] = exact_object(v, at, ["center", "from", "matrix", "to"])?;
+        let at_m = join(at, "matrix");
+        let rows = matrix
+            .as_array()
+            .filter(|r| r.len() == 2)
+            .ok_or_else(|| inv(&at_m, "expected the 2×2 matrix [[m11, m12], [m21, m22]]"))?;
+        let r0 = point(&rows[0], &format!("{at_m}[0]"))?;
+        let r1 = point(&rows[1], &format!("{at_m}[1]"))?;
+        if (&r0[0] * &r1[1] - &r0[1] * &r1[0]).is_zero() {
+            return Err(inv(
+                at_m,
+                "the matrix is singular (the ellipse is degenerate)",
+            ));
+        }
+        let what = format!(
+            "the elliptic arc c + M·u of centre c = {} and M = [[{}, {}], [{}, {}]], u",
+            fmt_pt(&point(center, &join(at, "center"))?),
+            r0[0],
+            r0[1],
+            r1[0],
+            r1[1]
+        );
+        let m = [&r0[0], &r0[1], &r1[0], &r1[1]].map(interval_from_rational);
+        (
+            point(center, &join(at, "center"))?,
+            point(from, &join(at, "from"))?,
+            point(to, &join(at, "to"))?,
+            m,
+            what,
+        )
+    } else {
+        let [center, radius, from, to] = exact_object(v, at, ["center", "radius", "from", "to"])?;
+        let c = point(center, &join(at, "center"))?;
+        let r = canonical_rational(radius, &join(at, "radius"))?;
+        if !r.is_positive() {
+            return Err(inv(join(at, "radius"), "must be > 0"));
+        }
+        let what = format!("the circular arc of centre {} and radius {r},", fmt_pt(&c));
+        let ri = interval_from_rational(&r);
+        (
+            c,
+            point(from, &join(at, "from"))?,
+            point(to, &join(at, "to"))?,
+            [ri, ic(0), ic(0), ri],
+            what,
+        )
+    };
     for (d, key) in [(&d0, "from"), (&d1, "to")] {
         if d[0].is_zero() && d[1].is_zero() {
             return Err(inv(join(at, key), "the direction vector is zero"));
@@ -470,17 +514,12 @@ fn read_arc(v: &Json, at: &str) -> Result<VShape, Invalid> {
         ));
     }
     let text = format!(
-        "the circular arc of centre {} and radius {r}, counter-clockwise from direction {} to direction {}",
-        fmt_pt(&c),
+        "{what} counter-clockwise from direction {} to direction {}",
         fmt_pt(&d0),
         fmt_pt(&d1)
     );
     Ok(VShape {
-        pieces: vec![VPiece::Arc {
-            c: ivp(&c),
-            r: interval_from_rational(&r),
-            e0,
-        }],
+        pieces: vec![VPiece::Arc { c: ivp(&c), m, e0 }],
         ends: vec![u],
         text,
     })

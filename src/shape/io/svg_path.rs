@@ -5,10 +5,8 @@ use super::{exact_number, CurveParseError, MAX_SEGMENTS, MAX_SVG_BYTES};
 use crate::curve::{Bezier, V2};
 use crate::scalar::Rational;
 use crate::shape::svgarc::{
-    circular_svg_arc, svg_arc, ApproxElement, ApproxKind, ExactElement, ExactPiece, InputApprox,
-    SvgArc,
+    svg_arc, svg_exact_arc, ApproxElement, ApproxKind, ExactElement, InputApprox, SvgArc,
 };
-use num_traits::Signed;
 
 /// The exact path-data state machine: scanner plus current point, subpath
 /// start and the control points that `S` and `T` reflect.
@@ -329,14 +327,14 @@ impl<'a> SvgParser<'a> {
                 for b in pieces {
                     self.push_bezier(b, at)?;
                 }
-                // a circle's arc, exactly, when its centre is rational
-                let exact = (rx.abs() == ry.abs())
-                    .then(|| circular_svg_arc(&self.cur, &p, rx, large, sweep))
-                    .flatten()
-                    .map(|arc| ExactElement {
-                        first,
-                        count: n,
-                        pieces: vec![ExactPiece::Arc(Box::new(arc))],
+                // the arc exactly, when its (pre-image) centre is rational
+                let exact =
+                    svg_exact_arc(&self.cur, &p, [rx, ry, rotation], large, sweep).map(|arc| {
+                        ExactElement {
+                            first,
+                            count: n,
+                            pieces: vec![arc],
+                        }
                     });
                 self.approx.push(ApproxElement {
                     kind: ApproxKind::Arc,

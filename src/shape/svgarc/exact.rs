@@ -1,38 +1,44 @@
-//! Circular SVG elements read **exactly**: the circular arcs and the lines
-//! that an approximated element *is*, when its circle has a rational centre
-//! and a rational radius.
+//! SVG arcs, circles, ellipses and rounded rectangles read **exactly**: the
+//! circular and elliptic arcs (and lines) that an approximated element *is*,
+//! when its centre and radii are rational.
 //!
 //! The curve readers still return cubic pieces (the offset and stroke
 //! engines take polynomial curves); each approximated element of their
 //! [`InputApprox`] report may carry an [`ExactElement`]: the same point set
-//! as exact [`ArcDesc`] arcs and line pieces, and the range of the reader's
-//! pieces it replaces. The shape readers ([`crate::shape::ShapeDesc::parse_reported`])
-//! put them in place ([`exact_mixed`]), so `hausdorff`, certificates and
-//! `verify --against` compare with the exact circle, with nothing to add
-//! for it.
+//! as exact [`ArcDesc`]/[`EllipseArcDesc`] arcs and line pieces, and the
+//! range of the reader's pieces it replaces. The shape readers
+//! ([`crate::shape::ShapeDesc::parse_reported`]) put them in place
+//! ([`exact_mixed`]), so `hausdorff`, certificates and `verify --against`
+//! compare with the exact element, with nothing to add for it.
 //!
 //! Which elements are exact:
 //!
-//! * `<circle>`, and `<ellipse>` with `rx = ry`: two half circles;
-//! * `<rect>` whose corner radii are equal after SVG's clamping: its lines
-//!   and four quarter circles;
-//! * path data `A r r φ large sweep p1` (any `φ`: a circle has no axis)
-//!   whose centre is rational: the centre is
-//!   `m ± h (−d_y, d_x)` with `d = p1 − p0`, `m` the chord's midpoint and
-//!   `h = √(r²/|d|² − 1/4)` (SVG F.6.5 with `rx = ry`), rational exactly when
+//! * `<circle>` and `<ellipse>`: two halves;
+//! * rounded `<rect>`: its lines and four quarter arcs (circular when the
+//!   radii are equal after SVG's clamping, elliptic otherwise);
+//! * path data `A rx ry φ large sweep p1` from `p0` whose centre is
+//!   rational. With `rx = ry = r` (any `φ`: a circle has no axis) the
+//!   centre is `m ± h (−d_y, d_x)`, `d = p1 − p0`, `m` the chord's
+//!   midpoint, `h = √(r²/|d|² − 1/4)` (SVG F.6.5), rational exactly when
 //!   `r²/|d|² − 1/4` is the square of a rational — quarter and half circles
-//!   between rational points are. A radius below half the chord is enlarged
-//!   to it (F.6.6): exact when `|d|` is rational.
+//!   between rational points are; a radius below half the chord is enlarged
+//!   to it (F.6.6), exact when `|d|` is rational. With `rx ≠ ry`, `φ` must be
+//!   a multiple of 90° (the only angles in degrees with rational cosine and
+//!   sine) and the same test applies to the pre-image `A⁻¹ p`,
+//!   `A = R(φ) diag(rx, ry)`, whose arc is circular.
 //!
-//! Under an SVG transform, the arcs are mapped when the transform is a
-//! similarity with a rational scale (a rotation by a rational
-//! cosine–sine pair, mirrors, uniform scales, translations); otherwise the
-//! element stays approximated.
+//! Under an SVG transform `x ↦ L x + t` (rational), every arc stays exact:
+//! an elliptic arc `c + M u` becomes `L c + t + (L M) u`; a circle stays a
+//! circle when `L` is a similarity with a rational scale, and becomes an
+//! elliptic arc otherwise. An irrational `rotate(θ)` is replaced by a
+//! rational rotation as before (its displacement stays reported).
 
 use super::InputApprox;
 use crate::curve::{Bezier, V2};
 use crate::scalar::Rational;
-use crate::shape::desc::{checked_arc, checked_curve, err, ArcDesc, ShapeDesc};
+use crate::shape::desc::{
+    checked_arc, checked_curve, checked_ellipse_arc, err, ArcDesc, EllipseArcDesc, ShapeDesc,
+};
 use crate::shape::ShapeError;
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
@@ -44,6 +50,8 @@ pub enum ExactPiece {
     Bezier(Bezier<Rational>),
     /// A circular arc.
     Arc(Box<ArcDesc>),
+    /// An elliptic arc.
+    EllipseArc(Box<EllipseArcDesc>),
 }
 
 /// The exact form of an approximated element: its pieces are the reader's
@@ -63,20 +71,27 @@ pub struct ExactElement {
 
 impl ExactElement {
     /// The element mapped by `x ↦ L x + t`, `L = [[a, c], [b, d]]` (SVG's
-    /// `matrix(a b c d e f)`), or `None` unless `L` is a similarity with a
-    /// rational scale `k` (`Lᵀ L = k² I`). A mirror (`det L < 0`) reverses
-    /// the arcs' orientation: `from` and `to` swap.
-    pub(crate) fn mapped(&self, m: &[Rational; 6], k: &Rational) -> Option<ExactElement> {
+    /// `matrix(a b c d e f)`). A circle stays a circle when `L` is a
+    /// similarity with the rational scale `k` (`Lᵀ L = k² I`; a mirror,
+    /// `det L < 0`, reverses the arc: `from` and `to` swap); otherwise it
+    /// becomes the elliptic arc `L c + t + (r L) u` over the same pre-image
+    /// directions, as every elliptic arc does (`M ↦ L M`).
+    pub(crate) fn mapped(&self, m: &[Rational; 6], k: Option<&Rational>) -> ExactElement {
         let [a, b, c, d, e, f] = m;
         let lin = |p: &V2<Rational>| V2::new(a * &p.x + c * &p.y, b * &p.x + d * &p.y);
         let aff = |p: &V2<Rational>| {
             let q = lin(p);
             V2::new(q.x + e, q.y + f)
         };
+        // L M, M by rows
+        let times = |mm: &[[Rational; 2]; 2]| {
+            [
+                [a * &mm[0][0] + c * &mm[1][0], a * &mm[0][1] + c * &mm[1][1]],
+                [b * &mm[0][0] + d * &mm[1][0], b * &mm[0][1] + d * &mm[1][1]],
+            ]
+        };
         let mirror = (a * d - b * c).is_negative();
-        if !k.is_positive() {
-            return None;
-        }
+        let k = k.filter(|k| k.is_positive());
         let pieces = self
             .pieces
             .iter()
@@ -84,23 +99,40 @@ impl ExactElement {
                 ExactPiece::Bezier(bz) => {
                     ExactPiece::Bezier(Bezier::new(bz.points().iter().map(aff).collect()))
                 }
-                ExactPiece::Arc(arc) => {
-                    let (from, to) = (lin(&arc.from), lin(&arc.to));
-                    let (from, to) = if mirror { (to, from) } else { (from, to) };
-                    ExactPiece::Arc(Box::new(ArcDesc {
-                        center: aff(&arc.center),
-                        radius: &arc.radius * k,
-                        from,
-                        to,
-                    }))
-                }
+                ExactPiece::Arc(arc) => match k {
+                    Some(k) => {
+                        let (from, to) = (lin(&arc.from), lin(&arc.to));
+                        let (from, to) = if mirror { (to, from) } else { (from, to) };
+                        ExactPiece::Arc(Box::new(ArcDesc {
+                            center: aff(&arc.center),
+                            radius: &arc.radius * k,
+                            from,
+                            to,
+                        }))
+                    }
+                    None => {
+                        let (r, z) = (arc.radius.clone(), Rational::zero());
+                        ExactPiece::EllipseArc(Box::new(EllipseArcDesc {
+                            center: aff(&arc.center),
+                            matrix: times(&[[r.clone(), z.clone()], [z, r]]),
+                            from: arc.from.clone(),
+                            to: arc.to.clone(),
+                        }))
+                    }
+                },
+                ExactPiece::EllipseArc(arc) => ExactPiece::EllipseArc(Box::new(EllipseArcDesc {
+                    center: aff(&arc.center),
+                    matrix: times(&arc.matrix),
+                    from: arc.from.clone(),
+                    to: arc.to.clone(),
+                })),
             })
             .collect();
-        Some(ExactElement {
+        ExactElement {
             first: self.first,
             count: self.count,
             pieces,
-        })
+        }
     }
 }
 
@@ -158,49 +190,107 @@ pub(crate) fn circular_svg_arc(
     })
 }
 
-/// The full circle about `c` of radius `r > 0` as two half circles from
-/// `(cx + r, cy)` (counter-clockwise in the coordinates as given).
-pub(crate) fn circle(c: &V2<Rational>, r: &Rational) -> Vec<ExactPiece> {
-    let (o, z) = (Rational::one(), Rational::zero());
-    let e = V2::new(o.clone(), z.clone());
-    let w = V2::new(-o, z);
+/// The axis direction `k` (0: +x, 1: +y, 2: −x, 3: −y).
+fn axis(k: u8) -> V2<Rational> {
+    let (x, y) = match k % 4 {
+        0 => (1, 0),
+        1 => (0, 1),
+        2 => (-1, 0),
+        _ => (0, -1),
+    };
+    V2::new(
+        Rational::from_integer(x.into()),
+        Rational::from_integer(y.into()),
+    )
+}
+
+/// The arc of the axis-aligned ellipse about `c` with radii `rx`, `ry > 0`
+/// from the axis direction `start` through `quarters` quarter turns
+/// counter-clockwise: a circular arc when `rx = ry`.
+pub(crate) fn axis_ellipse_arc(
+    c: &V2<Rational>,
+    rx: &Rational,
+    ry: &Rational,
+    start: u8,
+    quarters: u8,
+) -> ExactPiece {
+    let (from, to) = (axis(start), axis(start + quarters));
+    if rx == ry {
+        ExactPiece::Arc(Box::new(ArcDesc {
+            center: c.clone(),
+            radius: rx.clone(),
+            from,
+            to,
+        }))
+    } else {
+        let z = Rational::zero();
+        ExactPiece::EllipseArc(Box::new(EllipseArcDesc {
+            center: c.clone(),
+            matrix: [[rx.clone(), z.clone()], [z, ry.clone()]],
+            from,
+            to,
+        }))
+    }
+}
+
+/// The whole axis-aligned ellipse (a circle when `rx = ry`) as two halves
+/// from `(cx + rx, cy)`.
+pub(crate) fn ellipse(c: &V2<Rational>, rx: &Rational, ry: &Rational) -> Vec<ExactPiece> {
     vec![
-        ExactPiece::Arc(Box::new(ArcDesc {
-            center: c.clone(),
-            radius: r.clone(),
-            from: e.clone(),
-            to: w.clone(),
-        })),
-        ExactPiece::Arc(Box::new(ArcDesc {
-            center: c.clone(),
-            radius: r.clone(),
-            from: w,
-            to: e,
-        })),
+        axis_ellipse_arc(c, rx, ry, 0, 2),
+        axis_ellipse_arc(c, rx, ry, 2, 2),
     ]
 }
 
-/// The quarter circle about `c` of radius `r` from the axis direction
-/// `start` (0: +x, 1: +y, 2: −x, 3: −y) counter-clockwise.
-pub(crate) fn quarter_circle(c: &V2<Rational>, r: &Rational, start: u8) -> ExactPiece {
-    let unit = |k: u8| -> V2<Rational> {
-        let (x, y) = match k % 4 {
-            0 => (1, 0),
-            1 => (0, 1),
-            2 => (-1, 0),
-            _ => (0, -1),
-        };
+/// The exact arc of SVG's `A rx ry φ large sweep p1` from `p0` (`p0 ≠ p1`,
+/// `rx, ry ≠ 0`), when it has one: a circular arc when `|rx| = |ry|` and
+/// its centre is rational ([`circular_svg_arc`]); an elliptic arc when `φ`
+/// is a multiple of 90° (exact cosine and sine) and the centre of the
+/// pre-image circle is rational: with `A = R(φ) diag(|rx|, |ry|)`, the
+/// pre-image `A⁻¹ p` of the arc is the circular arc of radius 1 (or, by
+/// F.6.6, larger) from `A⁻¹ p0` to `A⁻¹ p1` with the same flags.
+pub(crate) fn svg_exact_arc(
+    p0: &V2<Rational>,
+    p1: &V2<Rational>,
+    [rx, ry, phi]: [&Rational; 3],
+    large: bool,
+    sweep: bool,
+) -> Option<ExactPiece> {
+    let (rx, ry) = (rx.abs(), ry.abs());
+    if rx == ry {
+        return circular_svg_arc(p0, p1, &rx, large, sweep).map(|a| ExactPiece::Arc(Box::new(a)));
+    }
+    if !rx.is_positive() || !ry.is_positive() {
+        return None;
+    }
+    let turn = Rational::from_integer(360.into());
+    let deg = phi - (phi / &turn).floor() * &turn;
+    let (cs, sn) = super::quarter(&deg)?;
+    // A⁻¹ p = diag(1/rx, 1/ry) R(−φ) p
+    let pre = |p: &V2<Rational>| {
         V2::new(
-            Rational::from_integer(x.into()),
-            Rational::from_integer(y.into()),
+            (&cs * &p.x + &sn * &p.y) / &rx,
+            (&cs * &p.y - &sn * &p.x) / &ry,
         )
     };
-    ExactPiece::Arc(Box::new(ArcDesc {
-        center: c.clone(),
-        radius: r.clone(),
-        from: unit(start),
-        to: unit(start + 1),
-    }))
+    let unit = circular_svg_arc(&pre(p0), &pre(p1), &Rational::one(), large, sweep)?;
+    // A by rows, scaled by the pre-image radius s
+    let s = &unit.radius;
+    let a = [
+        [&cs * &rx * s, -(&sn * &ry) * s],
+        [&sn * &rx * s, &cs * &ry * s],
+    ];
+    let c = &unit.center;
+    let center = V2::new(
+        (&a[0][0] * &c.x + &a[0][1] * &c.y) / s,
+        (&a[1][0] * &c.x + &a[1][1] * &c.y) / s,
+    );
+    Some(ExactPiece::EllipseArc(Box::new(EllipseArcDesc {
+        center,
+        matrix: a,
+        from: unit.from,
+        to: unit.to,
+    })))
 }
 
 /// The shape a reader's `pieces` describe exactly: every approximated
@@ -252,6 +342,13 @@ pub(crate) fn exact_mixed(
                         flush(&mut run, &mut members);
                         let name = format!("union[{}]", members.len());
                         members.push(ShapeDesc::Arc(checked_arc(*a, &name)?));
+                    }
+                    ExactPiece::EllipseArc(a) => {
+                        flush(&mut run, &mut members);
+                        let name = format!("union[{}]", members.len());
+                        members.push(ShapeDesc::EllipseArc(Box::new(checked_ellipse_arc(
+                            *a, &name,
+                        )?)));
                     }
                 }
             }

@@ -7,7 +7,7 @@ use crate::curve::{Bezier, V2};
 use crate::scalar::Rational;
 use crate::shape::io::{parse_svg_path_reported, svg_number_list};
 use crate::shape::svgarc::{
-    axis_arc, circle, quarter_circle, ApproxElement, ApproxKind, ExactElement, ExactPiece,
+    axis_arc, axis_ellipse_arc, ellipse, ApproxElement, ApproxKind, ExactElement, ExactPiece,
     InputApprox,
 };
 use num_traits::{Signed, Zero};
@@ -237,7 +237,7 @@ fn rect_pieces(
         let (pieces, b, end) =
             axis_arc(&corner, &rx, &ry, start, 1).map_err(|reason| err(at, reason))?;
         out.extend(pieces);
-        exact.push(quarter_circle(&corner, &rx, start));
+        exact.push(axis_ellipse_arc(&corner, &rx, &ry, start, 1));
         bound = bound.max(b);
         if end != line_to {
             let line = Bezier::new(vec![end, line_to]);
@@ -251,8 +251,14 @@ fn rect_pieces(
         out.insert(0, last);
         exact.rotate_right(1);
     }
-    let exact = (rx == ry).then_some(exact);
-    approximated(approx, ApproxKind::RoundedRect, at, &out, bound, exact);
+    approximated(
+        approx,
+        ApproxKind::RoundedRect,
+        at,
+        &out,
+        bound,
+        Some(exact),
+    );
     Ok(out)
 }
 
@@ -280,7 +286,7 @@ fn ellipse_pieces(
     } else {
         ApproxKind::Ellipse
     };
-    let exact = (rx == ry).then(|| circle(&c, &rx));
-    approximated(approx, kind, at, &pieces, bound, exact);
+    let exact = ellipse(&c, &rx, &ry);
+    approximated(approx, kind, at, &pieces, bound, Some(exact));
     Ok(pieces)
 }

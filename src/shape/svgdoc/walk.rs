@@ -286,11 +286,9 @@ impl<'a, 'input> Walker<'a, 'input> {
         let scale = ctx.m.similarity_scale();
         let mut a = a;
         for e in &mut a.elements {
-            // circular arcs stay exact under a similarity with a rational scale
-            e.exact = match (&e.exact, &scale) {
-                (Some(x), Some(k)) => x.mapped(&ctx.m.0, k),
-                _ => None,
-            };
+            // arcs stay exact under rational affine maps (circles stay circles
+            // under similarities with a rational scale)
+            e.exact = e.exact.as_ref().map(|x| x.mapped(&ctx.m.0, scale.as_ref()));
         }
         if !a.is_empty() {
             approx.extend_scaled(a, "", ctx.m.norm_sup());

@@ -174,6 +174,13 @@ fn exact_shapes_are_within_the_approximations_bound() {
         r#"<svg><path d="M12 2a10 10 0 1 0 10 10h-4a6 6 0 1 1-6-6z"/></svg>"#,
         r#"<svg><g transform="rotate(90 1 1) scale(-2 2) translate(1 0)"><path d="M 0 0 A 2 2 0 0 1 4 0 L 5 1"/></g></svg>"#,
         r#"<svg><g transform="matrix(0.6 0.8 -0.8 0.6 3 4)"><rect width="4" height="2" rx="1"/><circle r="1"/></g></svg>"#,
+        // ellipses, unequal corners, arcs at 90° and 180°, non-similar maps
+        r#"<svg><ellipse cx="12" cy="12" rx="8" ry="4"/><rect x="1" y="1" width="10" height="6" rx="2" ry="1"/></svg>"#,
+        r#"<svg><path d="M 0 0 A 2 1 90 0 1 0 4 A 3 1 180 1 0 6 4"/></svg>"#,
+        r#"<svg><g transform="scale(2 3) skewX(45)"><circle cx="1" cy="1" r="1"/><path d="M 0 0 A 2 1 0 0 0 4 0"/></g></svg>"#,
+        r#"<svg><g transform="matrix(1 2 -3 1 0 0) rotate(90)"><ellipse rx="2" ry="3"/></g></svg>"#,
+        // a rotated ellipse's arc (M not diagonal) under a shear
+        r#"<svg><g transform="matrix(1 2 -3 1 5 0)"><path d="M 0 0 A 2 1 90 0 1 0 4"/></g></svg>"#,
     ];
     for doc in docs {
         let (pieces, approx) = parse_svg_document_reported(doc).unwrap();
@@ -194,17 +201,16 @@ fn exact_shapes_are_within_the_approximations_bound() {
     }
 }
 
-/// What stays approximated: ellipses, unequal corner radii, transforms that
-/// are not similarities with a rational scale, irrational centres.
+/// What stays approximated: arcs whose (pre-image) centre or enlarged
+/// radius is irrational, rotations `φ` of an ellipse that are not multiples
+/// of 90° (irrational cosine and sine).
 #[test]
-fn non_circles_stay_approximated() {
+fn irrational_arcs_stay_approximated() {
     for doc in [
-        r#"<svg><ellipse rx="2" ry="1"/></svg>"#,
-        r#"<svg><rect width="4" height="2" rx="1" ry="0.5"/></svg>"#,
-        r#"<svg><g transform="scale(2 3)"><circle r="1"/></g></svg>"#,
-        r#"<svg><g transform="skewX(45)"><circle r="1"/></g></svg>"#,
-        r#"<svg><g transform="matrix(1 1 -1 1 0 0)"><circle r="1"/></g></svg>"#,
         r#"<svg><path d="M 0 0 A 1 1 0 0 1 1 0"/></svg>"#,
+        r#"<svg><path d="M 0 0 A 2 1 30 0 1 3 1"/></svg>"#,
+        r#"<svg><path d="M 0 0 A 2 1 0 0 1 1 1"/></svg>"#,
+        r#"<svg><g transform="scale(2 3)"><path d="M 0 0 A 0.1 0.1 0 0 1 1 1"/></g></svg>"#,
     ] {
         let (pieces, approx) = parse_svg_document_reported(doc).unwrap();
         let (shape, rest) = ShapeDesc::parse_reported(doc).unwrap();
@@ -221,6 +227,106 @@ fn non_circles_stay_approximated() {
     assert!(matches!(shape, ShapeDesc::Union(ref m) if m.len() == 2));
     assert_eq!(rest.elements.len(), 1);
     assert_eq!(rest.elements[0].kind, super::super::ApproxKind::Rotation);
+    // a circle under a map that is not a similarity is an elliptic arc
+    let doc = r#"<svg><g transform="scale(2 3)"><circle r="1"/></g></svg>"#;
+    let (shape, rest) = ShapeDesc::parse_reported(doc).unwrap();
+    assert!(rest.is_empty());
+    let ShapeDesc::Union(m) = shape else {
+        panic!("{shape:?}")
+    };
+    let ShapeDesc::EllipseArc(e) = &m[0] else {
+        panic!("{m:?}")
+    };
+    assert_eq!(e.matrix, [[q("2"), q("0")], [q("0"), q("3")]]);
+}
+
+/// Elliptic arcs between rational points of an axis-aligned (up to a
+/// quarter turn) ellipse with a rational centre: the centre, the radii and
+/// the sweep of SVG's construction (in floats), for all four flags.
+#[test]
+fn elliptic_arcs_have_the_centre_and_sweep_of_svg() {
+    let mut seed = 0x9E37_79B9_7F4A_7C15u64;
+    let mut next = |m: i64| {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed % (2 * m as u64 + 1)) as i64 - m
+    };
+    let mut checked = 0;
+    for i in 0..60 {
+        let c = V2::new(
+            Rational::new(next(50).into(), (1 + next(9).abs()).into()),
+            Rational::new(next(50).into(), (1 + next(9).abs()).into()),
+        );
+        let rx = Rational::new((1 + next(40).abs()).into(), (1 + next(6).abs()).into());
+        let ry = Rational::new((1 + next(40).abs()).into(), (1 + next(6).abs()).into());
+        if rx == ry {
+            continue;
+        }
+        let deg = 90 * (i % 4);
+        let (cs, sn) = [(1, 0), (0, 1), (-1, 0), (0, -1)][i as usize % 4];
+        let t0 = Rational::new(next(20).into(), (1 + next(7).abs()).into());
+        let t1 = Rational::new(next(20).into(), (1 + next(7).abs()).into());
+        if t0 == t1 {
+            continue;
+        }
+        // p = c + R(φ) diag(rx, ry) u, u a rational point of the unit circle
+        let z = V2::new(<Rational as Zero>::zero(), <Rational as Zero>::zero());
+        let at = |t: &Rational| {
+            let u = on_circle(&z, &<Rational as One>::one(), t);
+            let (x, y) = (&rx * &u.x, &ry * &u.y);
+            let (cs, sn) = (
+                Rational::from_integer(cs.into()),
+                Rational::from_integer(sn.into()),
+            );
+            V2::new(&c.x + &cs * &x - &sn * &y, &c.y + &sn * &x + &cs * &y)
+        };
+        let (p0, p1) = (at(&t0), at(&t1));
+        let phi = Rational::from_integer((deg as i64 + 360 * next(2)).into());
+        for (large, sweep) in [(false, false), (false, true), (true, false), (true, true)] {
+            let Some(ExactPiece::EllipseArc(a)) =
+                svg_exact_arc(&p0, &p1, [&rx, &ry, &phi], large, sweep)
+            else {
+                panic!("{p0:?} {p1:?} {rx} {ry} {phi}: not exact")
+            };
+            let (centre, rxc, dt) = svg_centre(
+                (f(&p0.x), f(&p0.y)),
+                (f(&p1.x), f(&p1.y)),
+                (f(&rx), f(&ry), f(&phi) * PI / 180.0),
+                large,
+                sweep,
+            );
+            let scale = 1e3 * (1.0 + f(&rx) + f(&ry) + f(&c.x).abs() + f(&c.y).abs());
+            assert!(
+                (f(&a.center.x) - centre.0).abs() < 1e-9 * scale,
+                "{a:?} {centre:?}"
+            );
+            assert!(
+                (f(&a.center.y) - centre.1).abs() < 1e-9 * scale,
+                "{a:?} {centre:?}"
+            );
+            // the first column of M is R(φ) (rx·s, 0): its length is the corrected rx
+            let col = (f(&a.matrix[0][0]).hypot(f(&a.matrix[1][0])) - rxc).abs();
+            assert!(col < 1e-9 * scale, "{a:?} {rxc}");
+            assert!((ccw(&a.from, &a.to) - dt.abs()).abs() < 1e-7, "{a:?} {dt}");
+            // both end points exactly on the arc's ellipse: c + M u / |u| = p
+            let m = &a.matrix;
+            let (s0, s1) = if sweep { (&p0, &p1) } else { (&p1, &p0) };
+            for (p, u) in [(s0, &a.from), (s1, &a.to)] {
+                // M⁻¹ (p − c) is parallel to u, of length 1
+                let d = p.sub(&a.center);
+                let det = &m[0][0] * &m[1][1] - &m[0][1] * &m[1][0];
+                let w = V2::new(
+                    (&m[1][1] * &d.x - &m[0][1] * &d.y) / &det,
+                    (&m[0][0] * &d.y - &m[1][0] * &d.x) / &det,
+                );
+                assert_eq!(w.norm2(), <Rational as One>::one(), "{a:?}");
+                assert!(w.cross(u).is_zero() && w.dot(u).is_positive(), "{a:?}");
+            }
+            checked += 1;
+        }
+    }
+    assert!(checked >= 150, "{checked}");
 }
 
 /// Pieces keep their order: lines before, between and after the arcs, and
