@@ -289,6 +289,7 @@ fn against_findings_of_issue_24() {
         out.contains("invalid: a: the certificate is about another shape than --against A: different kinds of shape"),
         "{out}"
     );
+    assert!(out.contains("certify the exact shapes again"), "{out}");
     // an arc with an irrational centre is still approximated: the
     // certificate says so, with what it proves for the exact arcs (tol +
     // both reported bounds)

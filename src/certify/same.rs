@@ -246,12 +246,26 @@ pub fn verify_against(text: &str, a: &ShapeDesc, b: &ShapeDesc) -> Result<Valid,
         theirs.same_as(mine).map_err(|why| Invalid {
             at: key.into(),
             reason: format!(
-                "the certificate is about another shape than --against {}: {why}",
-                key.to_uppercase()
+                "the certificate is about another shape than --against {}: {why}{}",
+                key.to_uppercase(),
+                if has_arcs(mine) && !has_arcs(&theirs) {
+                    " (circles, ellipses and SVG arcs with a rational centre are read as exact arcs; a certificate has none of them when it is about their cubic approximation, as those written by lncert before they were read exactly: certify the exact shapes again with `lncert hausdorff`)"
+                } else {
+                    ""
+                }
             ),
         })?;
     }
     Ok(valid)
+}
+
+/// The shape has a circular or an elliptic arc.
+fn has_arcs(s: &ShapeDesc) -> bool {
+    match s {
+        ShapeDesc::Arc(_) | ShapeDesc::EllipseArc(_) => true,
+        ShapeDesc::Union(m) => m.iter().any(has_arcs),
+        _ => false,
+    }
 }
 
 /// The exact `k`-th root of a positive rational, if it is rational.
