@@ -74,6 +74,21 @@ fn icon_document_is_stroked_per_element_and_proven() {
     assert!(a["bound"].as_f64().unwrap() < 1e-6, "{a}");
     assert!(els[0]["input_approximation"]["bound"].as_f64().unwrap() > 0.0);
     assert!(els[4]["input_approximation"].is_null(), "the tick is exact");
+    // the circle is stroked exactly: ∂S is the circles of radius 4 ± 3/4,
+    // written as exact arcs, bound 0, nothing approximated
+    assert!(els[2]["input_approximation"].is_null(), "{}", els[2]);
+    let contours = els[2]["outline"]["contours"].as_array().unwrap();
+    for (c, (radius, orientation)) in contours.iter().zip([("19/4", "ccw"), ("13/4", "cw")]) {
+        assert_eq!(c["orientation"], orientation);
+        for p in c["pieces"].as_array().unwrap() {
+            assert_eq!(p["arc"]["center"], serde_json::json!(["12", "12"]), "{p}");
+            assert_eq!(p["arc"]["radius"], radius, "{p}");
+        }
+    }
+    assert_eq!(contours.len(), 2);
+    for claim in ["a", "b"] {
+        assert_eq!(els[2]["outline"]["claims"][claim]["bound"], 0.0);
+    }
     // the picture is drawn as the input: no flip, the viewBox's top is the
     // smallest y (the arc's top at y = 20 − (8 − 4√3)… ≥ 0 − pen)
     let svg = std::fs::read_to_string(&pic).unwrap();

@@ -491,7 +491,7 @@ pub fn circle_stroke(c: &V2<Rational>, rho: &Rational, r: &Rational, tol: Tolera
         classified: Default::default(),
         tol,
         closed_curve: true,
-        notes: vec!["{\"circle\"} input: the stroke is computed exactly (concentric circles), no offset is approximated".to_string()],
+        notes: vec!["a circle ({\"circle\"}, or an SVG <circle> stroked with its stroke-width): the stroke is computed exactly (concentric circles), no offset is approximated".to_string()],
         pen: None,
         caps: Vec::new(),
     }

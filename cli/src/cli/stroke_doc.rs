@@ -11,7 +11,10 @@
 //!
 //! Every element is stroked and proven on its own (claims (a)–(c) of
 //! `lncert stroke`, in parallel); the run is decided (exit 0) when every
-//! element's stroke is. `--svg` draws all outlines (y down, as the input),
+//! element's stroke is. An element that is exactly a circle ([`exact_circle`])
+//! is stroked exactly, as a `{"circle"}` input is (concentric circles, bound
+//! 0, nothing approximated), unless `--certificate` asks for stroke
+//! certificates, which state Bézier curves. `--svg` draws all outlines (y down, as the input),
 //! `--path-out` writes them one after the other (each element's contours
 //! are oriented; their union is the nonzero fill), `--out FILE.svg` writes
 //! an SVG document with the input's `viewBox`, `width` and `height`, y down
@@ -25,10 +28,12 @@
 use super::args::{bad, q};
 use super::stroke::{options, path_data, stroke_err, stroke_json, stroke_text, StrokeArgs};
 use super::{print_out, CliError};
+use lncert::curve::V2;
 use lncert::scalar::Rational;
+use lncert::shape::svgarc::{ApproxKind, ExactPiece};
 use lncert::shape::{parse_svg_document_elements, InputApprox, SvgElement};
 use lncert::stroke::{stroke, PenShape, Stroke};
-use num_traits::Zero;
+use num_traits::{Signed, Zero};
 use rayon::prelude::*;
 use serde_json::json;
 use std::fmt::Write as _;
@@ -65,7 +70,10 @@ pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
     let (strokes, secs) = stroke_all(a, &jobs)?;
     let mut approx = InputApprox::default();
     for (e, _) in &jobs {
-        approx.elements.extend(e.approx.elements.iter().cloned());
+        // a circle stroked exactly approximated nothing
+        if a.certificate.is_some() || exact_circle(e).is_none() {
+            approx.elements.extend(e.approx.elements.iter().cloned());
+        }
     }
     let decided: Vec<bool> = strokes
         .iter()
@@ -153,8 +161,38 @@ fn read_document(a: &StrokeArgs) -> Result<(String, Vec<SvgElement>), CliError> 
     Ok((text, elements))
 }
 
+/// The centre and radius of an element that is exactly one whole circle
+/// (`<circle>`, `<ellipse>` with equal radii, under a similarity with a
+/// rational scale): its one approximated element's exact form is two
+/// complementary half circles that replace all its pieces.
+pub(crate) fn exact_circle(e: &SvgElement) -> Option<(V2<Rational>, Rational)> {
+    let [el] = e.approx.elements.as_slice() else {
+        return None;
+    };
+    let x = el.exact.as_ref()?;
+    if !matches!(el.kind, ApproxKind::Circle | ApproxKind::Ellipse)
+        || x.first != 0
+        || x.count != e.pieces.len()
+    {
+        return None;
+    }
+    let [ExactPiece::Arc(h0), ExactPiece::Arc(h1)] = x.pieces.as_slice() else {
+        return None;
+    };
+    let same = |u: &V2<Rational>, v: &V2<Rational>| u.cross(v).is_zero() && u.dot(v).is_positive();
+    let whole = h0.center == h1.center
+        && h0.radius == h1.radius
+        && same(&h0.from, &h1.to)
+        && same(&h0.to, &h1.from);
+    whole.then(|| (h0.center.clone(), h0.radius.clone()))
+}
+
 /// Every element stroked (in parallel) with its own pen; returns the strokes
-/// with their seconds, and the seconds in all.
+/// with their seconds, and the seconds in all. An element that is exactly a
+/// circle is stroked exactly (concentric circles,
+/// [`super::stroke::circle_stroke`]) unless `--certificate` asks for the
+/// certified general construction (a stroke certificate states Bézier
+/// curves).
 fn stroke_all(
     a: &StrokeArgs,
     jobs: &[(&SvgElement, Rational)],
@@ -167,9 +205,13 @@ fn stroke_all(
         .map(|(e, r)| {
             let t = std::time::Instant::now();
             let opts = options(a, PenShape::Circle(r.clone()))?;
-            let s = stroke(&e.pieces, &opts)
-                .map_err(stroke_err)
-                .map_err(|err| bad("CURVE", format!("{}: {}", e.at, err)))?;
+            let circle = exact_circle(e).filter(|_| a.certificate.is_none());
+            let s = match circle {
+                Some((c, rho)) => super::stroke::circle_stroke(&c, &rho, r, opts.tol.clone()),
+                None => stroke(&e.pieces, &opts)
+                    .map_err(stroke_err)
+                    .map_err(|err| bad("CURVE", format!("{}: {}", e.at, err)))?,
+            };
             Ok((s, t.elapsed().as_secs_f64()))
         })
         .collect::<Result<_, CliError>>()?;
@@ -250,7 +292,11 @@ impl Report<'_> {
                 v["at"] = json!(e.at);
                 v["pen_radius"] = json!(q(r));
                 v["stroke_width"] = json!(q(&e.stroke_width));
-                v["input_approximation"] = e.approx.to_json();
+                v["input_approximation"] = if a.certificate.is_none() && exact_circle(e).is_some() {
+                    serde_json::Value::Null // stroked exactly
+                } else {
+                    e.approx.to_json()
+                };
                 v["seconds"] = json!(t);
                 v["verdict"] = json!(if *d { "proven" } else { "undecided" });
                 v
