@@ -32,11 +32,12 @@ use std::fmt::Write;
 use std::sync::OnceLock;
 use verify_oracle::check_accepted;
 
-const SEED_TEXTS: [&str; 17] = [
+const SEED_TEXTS: [&str; 18] = [
     include_str!("../seeds/verify/cert_quad_seg.json"),
     include_str!("../seeds/verify/cert_quad_seg_tol1.json"),
     include_str!("../seeds/verify/cert_box_deleted.json"),
     include_str!("../seeds/verify/cert_arc_cubic.json"),
+    include_str!("../seeds/verify/cert_ellipse_arc_cubic.json"),
     include_str!("../seeds/verify/cert_offset_quad.json"),
     include_str!("../seeds/verify/cert_convolution_quad.json"),
     include_str!("../seeds/verify/cert_convolution_segment.json"),

@@ -91,7 +91,20 @@ pub(crate) fn checked_arc(a: ArcDesc, name: &str) -> Result<ArcDesc, ShapeError>
     if !a.radius.is_positive() {
         return Err(err(format!("{name}.radius"), "must be > 0"));
     }
-    for (v, f) in [(&a.from, "from"), (&a.to, "to")] {
+    check_sweep(&a.from, &a.to, name, "circles")?;
+    Ok(a)
+}
+
+/// An arc's directions `from`, `to` (named `{name}.from`, `{name}.to`):
+/// nonzero, within the coordinate limit, not the same direction (a zero
+/// sweep; full `what` are not supported).
+fn check_sweep(
+    from: &V2<Rational>,
+    to: &V2<Rational>,
+    name: &str,
+    what: &str,
+) -> Result<(), ShapeError> {
+    for (v, f) in [(from, "from"), (to, "to")] {
         let f = &format!("{name}.{f}");
         check_magnitude(&v.x, f)?;
         check_magnitude(&v.y, f)?;
@@ -99,13 +112,13 @@ pub(crate) fn checked_arc(a: ArcDesc, name: &str) -> Result<ArcDesc, ShapeError>
             return Err(err(f, "the direction vector is zero"));
         }
     }
-    if a.from.cross(&a.to).is_zero() && a.from.dot(&a.to).is_positive() {
+    if from.cross(to).is_zero() && from.dot(to).is_positive() {
         return Err(err(
             format!("{name}.to"),
-            format!("same direction as {name}.from: zero sweep (full circles are not supported)"),
+            format!("same direction as {name}.from: zero sweep (full {what} are not supported)"),
         ));
     }
-    Ok(a)
+    Ok(())
 }
 
 /// [`ShapeDesc::ellipse_arc`]'s checks, errors naming `{name}.matrix`, `{name}.from`, ….
@@ -127,20 +140,7 @@ pub(crate) fn checked_ellipse_arc(
             "the matrix is singular (the ellipse is degenerate)",
         ));
     }
-    for (v, f) in [(&a.from, "from"), (&a.to, "to")] {
-        let f = &format!("{name}.{f}");
-        check_magnitude(&v.x, f)?;
-        check_magnitude(&v.y, f)?;
-        if v.x.is_zero() && v.y.is_zero() {
-            return Err(err(f, "the direction vector is zero"));
-        }
-    }
-    if a.from.cross(&a.to).is_zero() && a.from.dot(&a.to).is_positive() {
-        return Err(err(
-            format!("{name}.to"),
-            format!("same direction as {name}.from: zero sweep (full ellipses are not supported)"),
-        ));
-    }
+    check_sweep(&a.from, &a.to, name, "ellipses")?;
     Ok(a)
 }
 
