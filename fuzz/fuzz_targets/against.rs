@@ -632,29 +632,23 @@ fn samples(s: &ShapeDesc, n: usize, out: &mut Vec<Vec<(f64, f64)>>) {
                 out.push(ts.clone().map(|t| b.eval(&t)).map(|p| (p.x, p.y)).collect());
             }
         }
-        ShapeDesc::Arc(a) => {
-            let (cx, cy, r) = (f(&a.center.x), f(&a.center.y), f(&a.radius));
-            let t0 = f(&a.from.y).atan2(f(&a.from.x));
-            let mut sweep = f(&a.to.y).atan2(f(&a.to.x)) - t0;
-            if sweep <= 0.0 {
-                sweep += std::f64::consts::TAU;
-            }
-            out.push(
-                ts.map(|t| {
-                    let th = t0 + sweep * t;
-                    (cx + r * th.cos(), cy + r * th.sin())
-                })
-                .collect(),
-            );
-        }
-        ShapeDesc::EllipseArc(a) => {
-            let (cx, cy) = (f(&a.center.x), f(&a.center.y));
-            let m = [
-                [f(&a.matrix[0][0]), f(&a.matrix[0][1])],
-                [f(&a.matrix[1][0]), f(&a.matrix[1][1])],
-            ];
-            let t0 = f(&a.from.y).atan2(f(&a.from.x));
-            let mut sweep = f(&a.to.y).atan2(f(&a.to.x)) - t0;
+        ShapeDesc::Arc(_) | ShapeDesc::EllipseArc(_) => {
+            // c + M u, u on the unit circle (M = r I for a circle)
+            let (c, m, from, to) = match s {
+                ShapeDesc::Arc(a) => {
+                    let r = f(&a.radius);
+                    (&a.center, [[r, 0.0], [0.0, r]], &a.from, &a.to)
+                }
+                ShapeDesc::EllipseArc(a) => {
+                    let m = &a.matrix;
+                    let m = [[f(&m[0][0]), f(&m[0][1])], [f(&m[1][0]), f(&m[1][1])]];
+                    (&a.center, m, &a.from, &a.to)
+                }
+                _ => unreachable!(),
+            };
+            let (cx, cy) = (f(&c.x), f(&c.y));
+            let t0 = f(&from.y).atan2(f(&from.x));
+            let mut sweep = f(&to.y).atan2(f(&to.x)) - t0;
             if sweep <= 0.0 {
                 sweep += std::f64::consts::TAU;
             }

@@ -121,6 +121,27 @@ fn check_sweep(
     Ok(())
 }
 
+/// An arc document's `from` and `to`, counter-clockwise: swapped when
+/// `"clockwise": true`.
+fn arc_directions(
+    m: &serde_json::Map<String, Value>,
+    name: &str,
+) -> Result<(V2<Rational>, V2<Rational>), ShapeError> {
+    let clockwise = match m.get("clockwise") {
+        None => false,
+        Some(Value::Bool(b)) => *b,
+        Some(v) => {
+            return Err(err(
+                format!("{name}.clockwise"),
+                format!("expected true or false, found {}", describe(v)),
+            ))
+        }
+    };
+    let from = point(m.get("from"), &format!("{name}.from"))?;
+    let to = point(m.get("to"), &format!("{name}.to"))?;
+    Ok(if clockwise { (to, from) } else { (from, to) })
+}
+
 /// [`ShapeDesc::ellipse_arc`]'s checks, errors naming `{name}.matrix`, `{name}.from`, ….
 pub(crate) fn checked_ellipse_arc(
     a: EllipseArcDesc,
@@ -386,23 +407,7 @@ impl ShapeDesc {
                 ));
             };
             check_keys(m, "arc", &["center", "radius", "from", "to", "clockwise"])?;
-            let clockwise = match m.get("clockwise") {
-                None => false,
-                Some(Value::Bool(b)) => *b,
-                Some(v) => {
-                    return Err(err(
-                        "arc.clockwise",
-                        format!("expected true or false, found {}", describe(v)),
-                    ))
-                }
-            };
-            let (mut from, mut to) = (
-                point(m.get("from"), "arc.from")?,
-                point(m.get("to"), "arc.to")?,
-            );
-            if clockwise {
-                std::mem::swap(&mut from, &mut to);
-            }
+            let (from, to) = arc_directions(m, "arc")?;
             let arc = ArcDesc {
                 center: point(m.get("center"), "arc.center")?,
                 radius: number(m.get("radius"), "arc.radius")?,
@@ -424,23 +429,7 @@ impl ShapeDesc {
                 "ellipse_arc",
                 &["center", "matrix", "from", "to", "clockwise"],
             )?;
-            let clockwise = match m.get("clockwise") {
-                None => false,
-                Some(Value::Bool(b)) => *b,
-                Some(v) => {
-                    return Err(err(
-                        "ellipse_arc.clockwise",
-                        format!("expected true or false, found {}", describe(v)),
-                    ))
-                }
-            };
-            let (mut from, mut to) = (
-                point(m.get("from"), "ellipse_arc.from")?,
-                point(m.get("to"), "ellipse_arc.to")?,
-            );
-            if clockwise {
-                std::mem::swap(&mut from, &mut to);
-            }
+            let (from, to) = arc_directions(m, "ellipse_arc")?;
             let rows = match m.get("matrix") {
                 Some(Value::Array(rows)) if rows.len() == 2 => rows,
                 _ => {

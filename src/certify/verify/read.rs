@@ -377,19 +377,7 @@ fn read_member(v: &Json, at: &str) -> Result<VShape, Invalid> {
             let at = join(at, "convolution");
             let [curve, ellipse, side] = exact_object(&m[0].1, &at, ["curve", "ellipse", "side"])?;
             let bs = beziers(curve, &join(&at, "curve"))?;
-            let at_e = join(&at, "ellipse");
-            let rows = ellipse
-                .as_array()
-                .filter(|r| r.len() == 2)
-                .ok_or_else(|| inv(&at_e, "expected the 2×2 matrix [[m11, m12], [m21, m22]]"))?;
-            let r0 = point(&rows[0], &format!("{at_e}[0]"))?;
-            let r1 = point(&rows[1], &format!("{at_e}[1]"))?;
-            if (&r0[0] * &r1[1] - &r0[1] * &r1[0]).is_zero() {
-                return Err(inv(
-                    at_e,
-                    "the matrix is singular (the ellipse is degenerate)",
-                ));
-            }
+            let [r0, r1] = nonsingular_matrix(ellipse, &join(&at, "ellipse"))?;
             let sigma = match side {
                 Json::Number(t) if *t == "1" => 1,
                 Json::Number(t) if *t == "-1" => -1,
@@ -415,25 +403,30 @@ fn read_member(v: &Json, at: &str) -> Result<VShape, Invalid> {
     }
 }
 
+/// A nonsingular 2×2 matrix `[[m11, m12], [m21, m22]]`, by rows.
+fn nonsingular_matrix(v: &Json, at: &str) -> Result<[[Rational; 2]; 2], Invalid> {
+    let rows = v
+        .as_array()
+        .filter(|r| r.len() == 2)
+        .ok_or_else(|| inv(at, "expected the 2×2 matrix [[m11, m12], [m21, m22]]"))?;
+    let r0 = point(&rows[0], &format!("{at}[0]"))?;
+    let r1 = point(&rows[1], &format!("{at}[1]"))?;
+    if (&r0[0] * &r1[1] - &r0[1] * &r1[0]).is_zero() {
+        return Err(inv(
+            at,
+            "the matrix is singular (the ellipse is degenerate)",
+        ));
+    }
+    Ok([r0, r1])
+}
+
 /// A circular arc (`{"center", "radius", "from", "to"}`) or, with
 /// `elliptic`, an elliptic one (`{"center", "from", "matrix", "to"}`): both
 /// `c + M u`, `u` on the unit-circle arc, `M = r I` for the circle.
 fn read_arc(v: &Json, at: &str, elliptic: bool) -> Result<VShape, Invalid> {
     let (c, d0, d1, m, what) = if elliptic {
         let [center, from, matrix, to] = exact_object(v, at, ["center", "from", "matrix", "to"])?;
-        let at_m = join(at, "matrix");
-        let rows = matrix
-            .as_array()
-            .filter(|r| r.len() == 2)
-            .ok_or_else(|| inv(&at_m, "expected the 2×2 matrix [[m11, m12], [m21, m22]]"))?;
-        let r0 = point(&rows[0], &format!("{at_m}[0]"))?;
-        let r1 = point(&rows[1], &format!("{at_m}[1]"))?;
-        if (&r0[0] * &r1[1] - &r0[1] * &r1[0]).is_zero() {
-            return Err(inv(
-                at_m,
-                "the matrix is singular (the ellipse is degenerate)",
-            ));
-        }
+        let [r0, r1] = nonsingular_matrix(matrix, &join(at, "matrix"))?;
         let what = format!(
             "the elliptic arc c + M·u of centre c = {} and M = [[{}, {}], [{}, {}]], u",
             fmt_pt(&point(center, &join(at, "center"))?),

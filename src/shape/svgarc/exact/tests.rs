@@ -66,6 +66,21 @@ fn ccw(a: &V2<Rational>, b: &V2<Rational>) -> f64 {
     }
 }
 
+/// A deterministic xorshift generator of integers in `[−m, m]`.
+fn xorshift(mut seed: u64) -> impl FnMut(i64) -> i64 {
+    move |m: i64| {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed % (2 * m as u64 + 1)) as i64 - m
+    }
+}
+
+/// A rational `p/q`, `|p| ≤ num`, `1 ≤ q ≤ den + 1`.
+fn ratio(next: &mut impl FnMut(i64) -> i64, num: i64, den: i64) -> Rational {
+    Rational::new(next(num).into(), (1 + next(den).abs()).into())
+}
+
 /// A rational point of the circle about `c` of radius `r`: the direction
 /// `((1 − t²), 2t)/(1 + t²)` (every rational point but `(−1, 0)`).
 fn on_circle(c: &V2<Rational>, r: &Rational, t: &Rational) -> V2<Rational> {
@@ -82,22 +97,12 @@ fn on_circle(c: &V2<Rational>, r: &Rational, t: &Rational) -> V2<Rational> {
 /// own construction (in floats), for any `φ` (a circle has no axis).
 #[test]
 fn circular_arcs_have_the_centre_and_sweep_of_svg() {
-    let mut seed = 0x2545_F491_4F6C_DD1Du64;
-    let mut next = |m: i64| {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed % (2 * m as u64 + 1)) as i64 - m
-    };
+    let mut next = xorshift(0x2545_F491_4F6C_DD1Du64);
     let mut checked = 0;
     for _ in 0..60 {
-        let c = V2::new(
-            Rational::new(next(50).into(), (1 + next(9).abs()).into()),
-            Rational::new(next(50).into(), (1 + next(9).abs()).into()),
-        );
+        let c = V2::new(ratio(&mut next, 50, 9), ratio(&mut next, 50, 9));
         let r = Rational::new((1 + next(40).abs()).into(), (1 + next(6).abs()).into());
-        let t0 = Rational::new(next(20).into(), (1 + next(7).abs()).into());
-        let t1 = Rational::new(next(20).into(), (1 + next(7).abs()).into());
+        let (t0, t1) = (ratio(&mut next, 20, 7), ratio(&mut next, 20, 7));
         if t0 == t1 {
             continue;
         }
@@ -245,19 +250,10 @@ fn irrational_arcs_stay_approximated() {
 /// the sweep of SVG's construction (in floats), for all four flags.
 #[test]
 fn elliptic_arcs_have_the_centre_and_sweep_of_svg() {
-    let mut seed = 0x9E37_79B9_7F4A_7C15u64;
-    let mut next = |m: i64| {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed % (2 * m as u64 + 1)) as i64 - m
-    };
+    let mut next = xorshift(0x9E37_79B9_7F4A_7C15u64);
     let mut checked = 0;
     for i in 0..60 {
-        let c = V2::new(
-            Rational::new(next(50).into(), (1 + next(9).abs()).into()),
-            Rational::new(next(50).into(), (1 + next(9).abs()).into()),
-        );
+        let c = V2::new(ratio(&mut next, 50, 9), ratio(&mut next, 50, 9));
         let rx = Rational::new((1 + next(40).abs()).into(), (1 + next(6).abs()).into());
         let ry = Rational::new((1 + next(40).abs()).into(), (1 + next(6).abs()).into());
         if rx == ry {
@@ -265,8 +261,7 @@ fn elliptic_arcs_have_the_centre_and_sweep_of_svg() {
         }
         let deg = 90 * (i % 4);
         let (cs, sn) = [(1, 0), (0, 1), (-1, 0), (0, -1)][i as usize % 4];
-        let t0 = Rational::new(next(20).into(), (1 + next(7).abs()).into());
-        let t1 = Rational::new(next(20).into(), (1 + next(7).abs()).into());
+        let (t0, t1) = (ratio(&mut next, 20, 7), ratio(&mut next, 20, 7));
         if t0 == t1 {
             continue;
         }
