@@ -373,6 +373,24 @@ fn kept_bound(run: &Run, onside_input: Option<&Input>, s: &Sub, est: f64) -> Opt
                         return Some(b);
                     }
                 }
+                // an exact offset that dips into `S` (by floats: only the
+                // order of the tries depends on it) has no ∂S points there:
+                // witnesses first, the failing ∂S search after them
+                let dips = est < run.form.reach * (1.0 - DIP)
+                    && offset_dips(run, link.piece, link.d.approx(), (t0, t1));
+                if dips {
+                    if let Some(b) = prove_kept(
+                        run.curve,
+                        &run.curve_f,
+                        &s.post,
+                        e_in,
+                        run.form,
+                        tol,
+                        KEPT_MAX_PARTS,
+                    ) {
+                        return Some(b);
+                    }
+                }
                 if let Some(l) = input.prove_interval(link.piece, &link.d, t0, t1, budget, 512) {
                     return Some((e_in + l).next_up());
                 }
@@ -381,8 +399,9 @@ fn kept_bound(run: &Run, onside_input: Option<&Input>, s: &Sub, est: f64) -> Opt
                     s.raw,
                     link.piece
                 );
-                // what failed is usually local (a shallow crossing at one
-                // end): halve, and give witnesses to the failing chunks only
+                // what failed is usually local (a shallow crossing or a
+                // joint at an end): halve, and give witnesses to the failing
+                // chunks only
                 if let Piece::Bezier(pre) = &s.pre {
                     let k = KeptChunks {
                         run,
@@ -411,6 +430,29 @@ fn kept_bound(run: &Run, onside_input: Option<&Input>, s: &Sub, est: f64) -> Opt
         tol,
         KEPT_MAX_PARTS,
     )
+}
+
+/// How far (relative to the pen's reach) a float distance estimate must fall
+/// below the reach to count as a dip into `S`.
+const DIP: f64 = 1e-7;
+
+/// The float exact offset `x_i(t) + d·N(t)` over `[t0, t1]` (9 samples) has a
+/// point whose float distance to the input is below the reach by more than
+/// [`DIP`]: such a point is inside `S`, where the ∂S test cannot prove
+/// anything. A float heuristic that only orders the kept tries.
+fn offset_dips(run: &Run, piece: usize, d: f64, (t0, t1): (f64, f64)) -> bool {
+    let x = &run.curve_f[piece];
+    let h = x.hodograph();
+    (1..10).any(|k| {
+        let t = t0 + (t1 - t0) * k as f64 / 10.0;
+        let (p, v) = (x.eval_fast(t), h.eval_fast(t));
+        let n = v.x.hypot(v.y);
+        if !(n > 0.0) {
+            return false;
+        }
+        let e = (p.x - d * v.y / n, p.y + d * v.x / n);
+        foot(&run.curve_f, run.form, e).0 < run.form.reach * (1.0 - DIP)
+    })
 }
 
 /// The length of a Bézier piece's control polygon in floats (an estimate
@@ -453,31 +495,21 @@ impl KeptChunks<'_, '_> {
     /// A bound of claim (a) over the points of `post` whose parameter `u`
     /// (the parameter of `pre`) is in `[u0, u1]`, or `None`.
     fn bound(&self, u0: f64, u1: f64, depth: u32) -> Option<f64> {
-        let (r0, r1) = (self.s.range.0.approx(), self.s.range.1.approx());
-        // the raw parameters of the chunk, padded so that the exact range
-        // covers every raw point of the chunk whatever the float rounding
-        let pad = 1e-12;
-        let (a, b) = (r0 + u0 * (r1 - r0) - pad, r0 + u1 * (r1 - r0) + pad);
         // (the whole sub-piece's ∂S test has failed before depth 0)
         if depth > 0 {
-            let nodes = (512usize >> depth).max(64);
-            if let Some((t0, t1)) = self.link.exact_range(a.max(0.0), b.min(1.0)) {
-                if let Some(l) = self.input.prove_interval(
-                    self.link.piece,
-                    &self.link.d,
-                    t0,
-                    t1,
-                    self.budget,
-                    nodes,
-                ) {
-                    return Some((self.e_in + l).next_up());
-                }
+            if let Some(b) = self.on_boundary(u0, u1, (512usize >> depth).max(64)) {
+                return Some(b);
             }
         }
         // a few witnesses outside S may cover the chunk (near a corner or a
         // crossing, where the ∂S test proves nothing)
         if let Some(b) = self.witnesses(u0, u1, 4) {
             return Some(b);
+        }
+        if depth == 0 {
+            if let Some(b) = self.ends_apart() {
+                return Some(b);
+            }
         }
         let m = 0.5 * (u0 + u1);
         if depth < KEPT_CHUNK_DEPTH && u0 < m && m < u1 {
@@ -486,6 +518,39 @@ impl KeptChunks<'_, '_> {
             return Some(l.max(r));
         }
         self.witnesses(u0, u1, KEPT_MAX_PARTS)
+    }
+
+    /// The sub-piece with its end sixteenths (the halving's last depth) by
+    /// witnesses and the rest by [`KeptChunks::on_boundary`]: what fails is
+    /// usually at the ends (a crossing or a joint near each).
+    fn ends_apart(&self) -> Option<f64> {
+        let e = 0.5f64.powi(KEPT_CHUNK_DEPTH as i32);
+        let end = |u0, u1| {
+            self.witnesses(u0, u1, 4)
+                .or_else(|| self.witnesses(u0, u1, 64))
+        };
+        let mid = self.on_boundary(e, 1.0 - e, 512)?;
+        Some(mid.max(end(0.0, e)?).max(end(1.0 - e, 1.0)?))
+    }
+
+    /// The chunk `[u0, u1]` by [`Input::prove_interval`] on the exact
+    /// parameters it stands for (at most `nodes` nodes).
+    fn on_boundary(&self, u0: f64, u1: f64, nodes: usize) -> Option<f64> {
+        let (r0, r1) = (self.s.range.0.approx(), self.s.range.1.approx());
+        // the raw parameters of the chunk, padded so that the exact range
+        // covers every raw point of the chunk whatever the float rounding
+        let pad = 1e-12;
+        let (a, b) = (r0 + u0 * (r1 - r0) - pad, r0 + u1 * (r1 - r0) + pad);
+        let (t0, t1) = self.link.exact_range(a.max(0.0), b.min(1.0))?;
+        let l = self.input.prove_interval(
+            self.link.piece,
+            &self.link.d,
+            t0,
+            t1,
+            self.budget,
+            nodes,
+        )?;
+        Some((self.e_in + l).next_up())
     }
 
     /// Witnesses outside `S` for the exact chunk `[u0, u1]` of `pre` (at most
