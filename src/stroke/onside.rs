@@ -39,7 +39,7 @@
 
 use super::circle::{Arc, ArcBox};
 use crate::curve::{Bezier, V2};
-use crate::scalar::{interval_from_rational, Interval, Rational};
+use crate::scalar::{interval_from_rational, ulp, Interval, Rational};
 use num_traits::{Signed, Zero};
 
 type IB = Bezier<Interval>;
@@ -154,6 +154,47 @@ pub(crate) fn bprod(a: &[Interval], b: &[Interval]) -> Vec<Interval> {
             s / binom(m + n, k)
         })
         .collect()
+}
+
+/// Every Bernstein coefficient of `|x − c|²` (degree `2n`) is above `r2`,
+/// so `|x(t) − c|² > r2` on `[0, 1]`: the test of [`bprod`]-built
+/// coefficients, with the division by `C(2n, k)` moved to the other side
+/// (`Σ_{i+j=k} C(n,i) C(n,j) δ_i·δ_j > C(2n, k)·r2`, `δ = x − c`), each
+/// unordered pair once (weight `2 C(n,i) C(n,j)`, exact in `f64` below
+/// [`EXACT_ROWS`]) and each square as a square, in [`ulp`] arithmetic; stops
+/// at the first coefficient that fails.
+fn sq_dist_above(x: &IB, c: &IV, r2: Interval) -> bool {
+    let pts = x.points();
+    let n = pts.len() - 1;
+    if 2 * n >= EXACT_ROWS {
+        // beyond the exact table: the general products
+        let (xs, ys) = coords(x);
+        let dx: Vec<Interval> = xs.iter().map(|v| *v - c.x).collect();
+        let dy: Vec<Interval> = ys.iter().map(|v| *v - c.y).collect();
+        let g = add(&bprod(&dx, &dx), &bprod(&dy, &dy));
+        return g.iter().all(|v| (*v - r2).inf() > 0.0);
+    }
+    let d: Vec<(Interval, Interval)> = pts
+        .iter()
+        .map(|p| (ulp::sub(p.x, c.x), ulp::sub(p.y, c.y)))
+        .collect();
+    let row = &pascal()[n];
+    let row2 = &pascal()[2 * n];
+    (0..=2 * n).all(|k| {
+        let mut sum = point(0.0);
+        for i in k.saturating_sub(n)..=k / 2 {
+            let j = k - i;
+            let term = if i == j {
+                let sq = ulp::add(ulp::sqr(d[i].0), ulp::sqr(d[i].1));
+                ulp::mul(point(row[i] * row[i]), sq)
+            } else {
+                let pr = ulp::add(ulp::mul(d[i].0, d[j].0), ulp::mul(d[i].1, d[j].1));
+                ulp::mul(point(2.0 * row[i] * row[j]), pr)
+            };
+            sum = ulp::add(sum, term);
+        }
+        ulp::sub(sum, ulp::mul(point(row2[k]), r2)).inf() > 0.0
+    })
 }
 
 /// The Bernstein coefficients raised to degree `deg` (`≥` the current one).
@@ -557,12 +598,8 @@ impl Input {
         let (c, eps) = centre(e);
         let (ex, ey) = (point(eps.x.mag()), point(eps.y.mag()));
         let reach = self.r + (ex * ex + ey * ey).sqrt();
-        let (xs, ys) = coords(xr);
-        let dx: Vec<Interval> = xs.iter().map(|v| *v - c.x).collect();
-        let dy: Vec<Interval> = ys.iter().map(|v| *v - c.y).collect();
-        let g = add(&bprod(&dx, &dx), &bprod(&dy, &dy));
         let r2 = reach * reach;
-        if g.iter().all(|v| (*v - r2).inf() > 0.0) {
+        if sq_dist_above(xr, &c, r2) {
             return true;
         }
         if depth == 0 {
@@ -1064,6 +1101,45 @@ mod tests {
             let x = interval_from_rational(e);
             assert!(i.inf() <= x.inf() && x.sup() <= i.sup(), "{e} not in {i:?}");
         }
+    }
+
+    /// The far form against the exact coefficients of `|x − c|²` (rational
+    /// Bernstein products): it never claims "above" where an exact
+    /// coefficient is not, and claims it wherever every exact coefficient
+    /// is above by a relative hair (degrees 1–5, both outcomes many times).
+    #[test]
+    fn far_form_matches_the_exact_coefficients() {
+        let mut rng = crate::test_util::TestRng::new(0x243f_6a88_85a3_08d3);
+        let (mut above, mut not) = (0, 0);
+        for case in 0..600 {
+            let n = 1 + case % 5;
+            let mut r = |m: i64| Rational::new(rng.int(m).into(), 64.into());
+            let pts: Vec<V2<Rational>> = (0..=n).map(|_| V2::new(r(640), r(640))).collect();
+            let c = V2::new(r(640), r(640));
+            let r2 = r(6400).abs();
+            let dx: Vec<Rational> = pts.iter().map(|p| &p.x - &c.x).collect();
+            let dy: Vec<Rational> = pts.iter().map(|p| &p.y - &c.y).collect();
+            let g: Vec<Rational> = crate::curve::bernstein_product(&dx, &dx)
+                .iter()
+                .zip(crate::curve::bernstein_product(&dy, &dy))
+                .map(|(a, b)| a + b)
+                .collect();
+            let x = Bezier::new(pts.clone()).map(interval_from_rational);
+            let ci = c.map(interval_from_rational);
+            let got = sq_dist_above(&x, &ci, interval_from_rational(&r2));
+            let exact = g.iter().all(|v| v > &r2);
+            let hair = &r2 * Rational::new(1.into(), 1_000_000_000.into())
+                + Rational::new(1.into(), 1_000_000_000.into());
+            let clear = g.iter().all(|v| v > &(&r2 + &hair));
+            assert!(!got || exact, "claimed above: {pts:?} c {c:?} r2 {r2}");
+            assert!(!clear || got, "missed: {pts:?} c {c:?} r2 {r2}");
+            if got {
+                above += 1;
+            } else {
+                not += 1;
+            }
+        }
+        assert!(above > 100 && not > 100, "{above} above, {not} not");
     }
 
     // ----------------------------------------------------------------------
