@@ -365,6 +365,16 @@ pub(crate) fn arc_end_parameter(
 }
 
 impl<S: ScalarSqrt + Copy + Casteljau> PieceData<S> {
+    /// The point alone: [`PieceData::eval`]'s value at `Jet::variable(t)`,
+    /// the same operations (so the same result, bit for bit), without the
+    /// derivatives where they are not needed for it (polynomial pieces).
+    pub fn point(&self, t: S) -> Option<(S, S)> {
+        match self {
+            PieceData::Bez { pts, .. } => Some(S::casteljau(pts, t)),
+            _ => self.eval(Jet::variable(t)).map(|(x, y)| (x.v, y.v)),
+        }
+    }
+
     /// The point of the piece at the parameter jet `t`, or `None` where the
     /// evaluation is undefined (a possibly vanishing normal or denominator).
     ///
@@ -531,5 +541,46 @@ fn err(field: impl Into<String>, reason: impl Into<String>) -> CertifyError {
     CertifyError {
         field: field.into(),
         reason: reason.into(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shape::ShapeDesc;
+
+    /// [`PieceData::point`] is [`PieceData::eval`]'s value, bit for bit, on
+    /// Béziers of degree 1–6, arcs and offsets (float and interval data).
+    #[test]
+    fn point_is_the_value_of_eval() {
+        let shapes = [
+            "M 0 0 L 3 1",
+            "M 0 0 Q 1 2 3 1",
+            "M 0 0 C 1 2 3 -1 4 0",
+            r#"{"bezier": [[0, 0], [1, 3], [2, -2], [3, 4], [5, 0], [6, 1], [7, -1]]}"#,
+            r#"{"arc": {"center": [1, 2], "radius": 3, "from": [1, 0], "to": [0, 1]}}"#,
+            r#"{"offset": {"curve": {"bezier": [[0, 0], [1, 2], [3, 2], [4, 0]]}, "distance": "1/3"}}"#,
+        ];
+        let mut checked = 0;
+        for text in shapes {
+            let pieces = ShapeDesc::parse(text).unwrap().pieces().unwrap();
+            for p in &pieces {
+                for k in 0..=64 {
+                    let t = p.inner.0 + (p.inner.1 - p.inner.0) * (k as f64 / 64.0);
+                    let bits = |x: f64| x.to_bits();
+                    if let Some((x, y)) = p.fl.eval(Jet::variable(t)) {
+                        let (px, py) = p.fl.point(t).unwrap();
+                        assert_eq!((bits(x.v), bits(y.v)), (bits(px), bits(py)), "{text} {t}");
+                        checked += 1;
+                    }
+                    let ti = Interval::try_from((t, t)).unwrap();
+                    if let Some((x, y)) = p.iv.eval(Jet::variable(ti)) {
+                        let (px, py) = p.iv.point(ti).unwrap();
+                        assert!(x.v == px && y.v == py, "{text} {t}");
+                    }
+                }
+            }
+        }
+        assert!(checked > 300, "{checked}");
     }
 }

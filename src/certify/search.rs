@@ -181,14 +181,19 @@ fn jet_f64(p: &Piece, t: f64) -> Option<JetPoint<f64>> {
 
 /// The float point of a piece at `t`.
 pub(crate) fn point_f64(p: &Piece, t: f64) -> Option<(f64, f64)> {
-    let (x, y) = jet_f64(p, t)?;
-    (x.v.is_finite() && y.v.is_finite()).then_some((x.v, y.v))
+    let (x, y) = p.fl.point(t)?;
+    (x.is_finite() && y.is_finite()).then_some((x, y))
+}
+
+/// `|q − B(t)|²` in floats (`None` where the piece is undefined).
+fn dist2_f64(p: &Piece, q: (f64, f64), t: f64) -> Option<f64> {
+    p.fl.point(t).map(|(x, y)| (x - q.0).powi(2) + (y - q.1).powi(2))
 }
 
 /// Newton's float foot point of `q` on `piece` from `guess` (kept in the inner
 /// domain; `guess` itself when Newton cannot start).
 pub(crate) fn foot_newton(piece: &Piece, q: (f64, f64), guess: f64) -> f64 {
-    let d2 = |t: f64| jet_f64(piece, t).map(|(x, y)| (x.v - q.0).powi(2) + (y.v - q.1).powi(2));
+    let d2 = |t: f64| dist2_f64(piece, q, t);
     let Some(mut cur) = d2(guess).filter(|v| v.is_finite()).map(|v| (guess, v)) else {
         return guess;
     };
@@ -226,7 +231,7 @@ pub(crate) fn foot_slope_of(b: &Piece, t: f64, a: &Piece, s: f64) -> Option<f64>
 /// Returns `(t, distance)`.
 pub(crate) fn foot_f64(piece: &Piece, q: (f64, f64), samples: usize) -> Option<(f64, f64)> {
     let (lo, hi) = piece.inner;
-    let d2 = |t: f64| jet_f64(piece, t).map(|(x, y)| (x.v - q.0).powi(2) + (y.v - q.1).powi(2));
+    let d2 = |t: f64| dist2_f64(piece, q, t);
     let vals: Vec<(f64, f64)> = (0..=samples)
         .filter_map(|i| {
             let t = lo + (hi - lo) * (i as f64 / samples as f64);
@@ -332,8 +337,8 @@ fn coarse_lower(p: &Piece, q: (f64, f64)) -> f64 {
     let (lo, hi) = p.inner;
     let mut pts = [(0.0, 0.0); 9];
     for (k, slot) in pts.iter_mut().enumerate() {
-        match jet_f64(p, lo + (hi - lo) * (k as f64 / 8.0)) {
-            Some((x, y)) if x.v.is_finite() && y.v.is_finite() => *slot = (x.v, y.v),
+        match p.fl.point(lo + (hi - lo) * (k as f64 / 8.0)) {
+            Some((x, y)) if x.is_finite() && y.is_finite() => *slot = (x, y),
             _ => return 0.0,
         }
     }

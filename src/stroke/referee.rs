@@ -399,14 +399,19 @@ pub fn distance_through(x: &ShapeDesc, s: Stroke, cfg: &Config) -> Result<Stroke
         });
     }
     let l = s.outline_shape()?;
+    let (a, b) = (s.a.bound, s.b.bound);
     let cfg = Config {
         parametric: false,
         tol: None,
         verdict_only: false,
+        // the bounds carry the outline's (a), (b), up to its tolerance E,
+        // anyway: a gap below E/4 is not worth refining (where X coincides
+        // with ∂S the gap shrinks only like w², and the search would run to
+        // its automatic floor, 1e-10 of the coordinates, for seconds)
+        abs: cfg.abs.max(s.tol.value() / 4.0),
         ..cfg.clone()
     };
     let h = hausdorff_each_direction(x, &l, &cfg)?;
-    let (a, b) = (s.a.bound, s.b.bound);
     let to_stroke = (down(h.a_to_b.lo - b), up(h.a_to_b.hi + a));
     let from_stroke = (down(h.b_to_a.lo - a), up(h.b_to_a.hi + b));
     Ok(StrokeDistance {
