@@ -16,7 +16,7 @@
 //! an *inner* domain `[0, u⁻]` (every parameter is a true point: used for foot
 //! points and witnesses).  For the other shapes both are `[0, 1]`.
 
-use super::jet::{Jet, JetPoint};
+use super::jet::{Jet, JetPoint, JetScalar};
 use super::CertifyError;
 use crate::curve::{Bezier, V2};
 use crate::scalar::{interval_from_rational, Interval, Rational, Scalar, ScalarSqrt, Sign};
@@ -212,7 +212,7 @@ fn arc_frame(
 
 /// `(cos φ, sin φ)` of `φ = 4 atan t` as jets: the rational parametrisation
 /// of the unit circle that circular and elliptic arcs share.
-fn unit_arc<S: ScalarSqrt + Copy>(t: Jet<S>) -> Option<(Jet<S>, Jet<S>)> {
+fn unit_arc<S: ScalarSqrt + JetScalar>(t: Jet<S>) -> Option<(Jet<S>, Jet<S>)> {
     let one = Jet::constant(S::one());
     let t2 = t * t;
     let a = one - t2;
@@ -431,12 +431,12 @@ impl<S: ScalarSqrt + Copy + Casteljau> PieceData<S> {
 }
 
 /// The jet of `B(τ(s))` from `B(τ)`, `B′(τ)`, `B″(τ)` and the jet `τ`.
-fn chain<S: Scalar + Copy>(p: (S, S), p1: (S, S), p2: (S, S), t: Jet<S>) -> JetPoint<S> {
-    let d2 = t.d * t.d;
+fn chain<S: JetScalar>(p: (S, S), p1: (S, S), p2: (S, S), t: Jet<S>) -> JetPoint<S> {
+    let d2 = t.d.times(t.d);
     let coord = |v: S, d: S, dd: S| Jet {
         v,
-        d: d * t.d,
-        dd: dd * d2 + d * t.dd,
+        d: d.times(t.d),
+        dd: dd.times(d2).plus(d.times(t.dd)),
     };
     (coord(p.0, p1.0, p2.0), coord(p.1, p1.1, p2.1))
 }
@@ -468,7 +468,7 @@ fn casteljau<S: Scalar + Copy>(pts: &[(S, S)], t: S) -> (S, S) {
 const STACK_POINTS: usize = 24;
 
 /// De Casteljau's algorithm as each scalar runs it in the hot loop of a search.
-pub(crate) trait Casteljau: Sized {
+pub(crate) trait Casteljau: JetScalar {
     /// The point with Bézier control points `pts` at `t` (an enclosure of the
     /// range over `t` for intervals).
     fn casteljau(pts: &[(Self, Self)], t: Self) -> (Self, Self);

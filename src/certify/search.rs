@@ -187,7 +187,8 @@ pub(crate) fn point_f64(p: &Piece, t: f64) -> Option<(f64, f64)> {
 
 /// `|q − B(t)|²` in floats (`None` where the piece is undefined).
 fn dist2_f64(p: &Piece, q: (f64, f64), t: f64) -> Option<f64> {
-    p.fl.point(t).map(|(x, y)| (x - q.0).powi(2) + (y - q.1).powi(2))
+    p.fl.point(t)
+        .map(|(x, y)| (x - q.0).powi(2) + (y - q.1).powi(2))
 }
 
 /// Newton's float foot point of `q` on `piece` from `guess` (kept in the inner

@@ -542,14 +542,9 @@ impl KeptChunks<'_, '_> {
         let pad = 1e-12;
         let (a, b) = (r0 + u0 * (r1 - r0) - pad, r0 + u1 * (r1 - r0) + pad);
         let (t0, t1) = self.link.exact_range(a.max(0.0), b.min(1.0))?;
-        let l = self.input.prove_interval(
-            self.link.piece,
-            &self.link.d,
-            t0,
-            t1,
-            self.budget,
-            nodes,
-        )?;
+        let l =
+            self.input
+                .prove_interval(self.link.piece, &self.link.d, t0, t1, self.budget, nodes)?;
         Some((self.e_in + l).next_up())
     }
 
