@@ -929,6 +929,11 @@ impl Input {
     /// splitting where a test fails. Returns the largest unproven run's arc
     /// length bound (`0` when all is proven), or `None` when nothing is proven
     /// or a run exceeds `budget`.
+    ///
+    /// The floors of [`FLOOR_DIVS`] are tried in turn, each from where the
+    /// previous one stopped: its proven leaves stay proven (the same tests on
+    /// the same intervals), its unproven leaves are split further and the
+    /// nodes it did not reach are searched at the finer floor.
     pub(crate) fn prove_interval(
         &self,
         i: usize,
@@ -938,46 +943,78 @@ impl Input {
         budget: f64,
         max_nodes: usize,
     ) -> Option<f64> {
-        FLOOR_DIVS.iter().find_map(|&div| {
-            self.prove_interval_at(i, d, (t0, t1), budget, budget / div, max_nodes)
-        })
-    }
-
-    /// [`Input::prove_interval`] with unproven leaves split down to an arc
-    /// length bound of `floor`.
-    fn prove_interval_at(
-        &self,
-        i: usize,
-        d: &Rational,
-        (t0, t1): (f64, f64),
-        budget: f64,
-        floor: f64,
-        max_nodes: usize,
-    ) -> Option<f64> {
         if !(0.0..=1.0).contains(&t0) || !(0.0..=1.0).contains(&t1) || t0 > t1 {
             return None;
         }
         let di = interval_from_rational(d);
-        // leaves in order: (t0, t1, proven, arc)
+        let mut items = vec![Item::Node(t0, t1, MAX_WINDOW)];
+        for div in FLOOR_DIVS {
+            match self.prove_interval_at(i, di, items, budget, budget / div, max_nodes) {
+                Ok(l) => return l,
+                Err(rest) => items = rest,
+            }
+        }
+        None
+    }
+
+    /// One floor of [`Input::prove_interval`]: `items` (in order) searched
+    /// with unproven leaves split down to an arc length bound of `floor`.
+    /// `Ok` with the charge when the search ran to the end (`None` when
+    /// nothing is proven or a run exceeds `budget`); `Err` with the items in
+    /// order where it stopped (a run over `budget`, or `max_nodes`), for a
+    /// finer floor.
+    fn prove_interval_at(
+        &self,
+        i: usize,
+        di: Interval,
+        items: Vec<Item>,
+        budget: f64,
+        floor: f64,
+        max_nodes: usize,
+    ) -> Result<Option<f64>, Vec<Item>> {
+        // leaves in order: (proven, arc), and the unproven ones' nodes
         let mut leaves: Vec<(bool, f64)> = Vec::new();
-        // (a, b, where the window search starts)
-        let mut todo = vec![(t0, t1, MAX_WINDOW)];
+        let mut done: Vec<Item> = Vec::new();
+        let mut todo: Vec<Item> = items;
+        todo.reverse();
         let mut nodes = 0;
-        while let Some((a, b, start)) = todo.pop() {
+        let stop = |done: Vec<Item>, todo: Vec<Item>| {
+            let mut rest = done;
+            rest.extend(todo.into_iter().rev());
+            Err(rest)
+        };
+        while let Some(item) = todo.pop() {
+            // (a, b, where the window search starts), and whether `holds`
+            // already failed on it (an unproven leaf of a coarser floor)
+            let (a, b, start, failed) = match item {
+                Item::Proven(arc) => {
+                    leaves.push((true, arc));
+                    done.push(item);
+                    continue;
+                }
+                Item::Node(a, b, start) => (a, b, start, false),
+                Item::Open(a, b, next) => (a, b, next, true),
+            };
             nodes += 1;
             if nodes > max_nodes {
                 log::trace!("onside: piece {i}: more than {max_nodes} nodes");
-                return None;
-            }
-            let (held, found) = self.holds(i, di, (a, b), start);
-            if let Some(arc) = held {
-                leaves.push((true, arc));
-                continue;
+                todo.push(item);
+                return stop(done, todo);
             }
             // the halves' windows start one doubling above this node's first
             // convex window (their boxes are smaller, so at least as wide a
             // window is usually convex), or at this node's width without one
-            let next = if found > 0.0 { 2.0 * found } else { b - a }.min(MAX_WINDOW);
+            let next = if failed {
+                start
+            } else {
+                let (held, found) = self.holds(i, di, (a, b), start);
+                if let Some(arc) = held {
+                    leaves.push((true, arc));
+                    done.push(Item::Proven(arc));
+                    continue;
+                }
+                if found > 0.0 { 2.0 * found } else { b - a }.min(MAX_WINDOW)
+            };
             let arc = self
                 .offset_box(i, di, a, b)
                 .map(|x| x.1)
@@ -985,22 +1022,36 @@ impl Input {
             let m = 0.5 * (a + b);
             if arc <= floor || !(a < m && m < b) {
                 leaves.push((false, arc));
+                done.push(Item::Open(a, b, next));
                 if run_over(&leaves, budget) {
                     log::trace!("onside: piece {i}: unproven run over {budget} at t {b}");
-                    return None;
+                    return stop(done, todo);
                 }
                 continue;
             }
-            todo.push((m, b, next));
-            todo.push((a, m, next));
+            todo.push(Item::Node(m, b, next));
+            todo.push(Item::Node(a, m, next));
         }
         log::trace!(
-            "onside: piece {i} [{t0}, {t1}] floor {floor}: {nodes} nodes, {} leaves, {} unproven",
+            "onside: piece {i} floor {floor}: {nodes} nodes, {} leaves, {} unproven",
             leaves.len(),
             leaves.iter().filter(|l| !l.0).count()
         );
-        charge(&leaves, budget)
+        Ok(charge(&leaves, budget))
     }
+}
+
+/// A part of a parameter interval in the ∂S search of
+/// [`Input::prove_interval`], in order along it.
+#[derive(Clone, Copy, Debug)]
+enum Item {
+    /// Not searched yet: `[a, b]` and where its window search starts.
+    Node(f64, f64, f64),
+    /// A proven leaf and its arc length bound.
+    Proven(f64),
+    /// An unproven leaf `[a, b]` (its test failed) and where its halves'
+    /// window searches start.
+    Open(f64, f64, f64),
 }
 
 #[cfg(test)]
