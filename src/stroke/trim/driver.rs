@@ -447,7 +447,8 @@ fn offset_dips(run: &Run, piece: usize, d: f64, (t0, t1): (f64, f64)) -> bool {
         let t = t0 + (t1 - t0) * k as f64 / 10.0;
         let (p, v) = (x.eval_fast(t), h.eval_fast(t));
         let n = v.x.hypot(v.y);
-        if !(n > 0.0) {
+        // (a zero or NaN speed gives no normal: no dip seen there)
+        if n.is_nan() || n <= 0.0 {
             return false;
         }
         let e = (p.x - d * v.y / n, p.y + d * v.x / n);
