@@ -526,12 +526,15 @@ impl KeptChunks<'_, '_> {
     /// usually at the ends (a crossing or a joint near each).
     fn ends_apart(&self) -> Option<f64> {
         let e = 0.5f64.powi(KEPT_CHUNK_DEPTH as i32);
-        let end = |u0, u1| {
-            self.witnesses(u0, u1, 4)
-                .or_else(|| self.witnesses(u0, u1, 64))
-        };
-        let mid = self.on_boundary(e, 1.0 - e, 512)?;
-        Some(mid.max(end(0.0, e)?).max(end(1.0 - e, 1.0)?))
+        // the middle first: where it fails, no witness is tried
+        tiled(&[(e, 1.0 - e), (0.0, e), (1.0 - e, 1.0)], |k, u0, u1| {
+            if k == 0 {
+                self.on_boundary(u0, u1, 512)
+            } else {
+                self.witnesses(u0, u1, 4)
+                    .or_else(|| self.witnesses(u0, u1, 64))
+            }
+        })
     }
 
     /// The chunk `[u0, u1]` by [`Input::prove_interval`] on the exact
@@ -570,6 +573,29 @@ impl KeptChunks<'_, '_> {
         log::trace!("kept chunk [{u0}, {u1}] of raw {} by witnesses", self.s.raw);
         Some((kept + self.s.delta).next_up().max(self.e_in))
     }
+}
+
+/// A bound over a whole sub-piece from bounds of its chunks `[u0, u1]` of
+/// `[0, 1]`, proven in the order given (`prove(k, u0, u1)` for chunk `k`):
+/// the largest, or `None` unless every chunk is proven and the chunks, in
+/// order of their starts, tile `[0, 1]` exactly (no gap, no overlap).
+pub(super) fn tiled(
+    chunks: &[(f64, f64)],
+    prove: impl Fn(usize, f64, f64) -> Option<f64>,
+) -> Option<f64> {
+    let mut sorted = chunks.to_vec();
+    sorted.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let tiles = sorted.first().is_some_and(|c| c.0 == 0.0)
+        && sorted.last().is_some_and(|c| c.1 == 1.0)
+        && sorted.windows(2).all(|w| w[0].1 == w[1].0)
+        && sorted.iter().all(|c| c.0 < c.1);
+    if !tiles {
+        return None;
+    }
+    chunks
+        .iter()
+        .enumerate()
+        .try_fold(0.0f64, |m, (k, &(u0, u1))| Some(m.max(prove(k, u0, u1)?)))
 }
 
 /// The removal test of one sub-piece that is not kept (only boundary pieces

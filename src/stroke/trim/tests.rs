@@ -342,3 +342,45 @@ fn claim_c_reusing_the_raw_search_agrees_with_the_full_search_on_strokes() {
     }
     assert_eq!(reused, docs.len());
 }
+
+/// A sub-piece's bound from its chunks: every chunk proven, once, in the
+/// order given, the largest bound kept (wherever it is); `None` for a gap, an
+/// overlap, a missing end, an empty chunk or one unproven chunk.
+#[test]
+fn chunk_bounds_need_a_tiling_of_the_whole_sub_piece() {
+    use super::driver::tiled;
+    use std::cell::RefCell;
+    let e = 1.0 / 16.0;
+    let calls = RefCell::new(Vec::new());
+    let bound = |k: usize, u0: f64, u1: f64| {
+        calls.borrow_mut().push((k, u0, u1));
+        Some([0.1, 0.2, 0.3][k])
+    };
+    let three = [(e, 1.0 - e), (0.0, e), (1.0 - e, 1.0)];
+    assert_eq!(tiled(&three, bound), Some(0.3));
+    assert_eq!(
+        *calls.borrow(),
+        vec![(0, e, 1.0 - e), (1, 0.0, e), (2, 1.0 - e, 1.0)]
+    );
+    // the largest bound first or in the middle is kept as well
+    let first = |k: usize, _: f64, _: f64| Some([0.3, 0.1, 0.2][k]);
+    assert_eq!(tiled(&three, first), Some(0.3));
+    let middle = |k: usize, _: f64, _: f64| Some([0.1, 0.3, 0.2][k]);
+    assert_eq!(tiled(&three, middle), Some(0.3));
+    // not a tiling: nothing is tried
+    calls.borrow_mut().clear();
+    for chunks in [
+        vec![(e, 1.0 - e)],
+        vec![(e, 1.0 - e), (0.0, e)],
+        vec![(0.0, 0.4), (0.5, 1.0)],
+        vec![(0.0, 0.6), (0.5, 1.0)],
+        vec![(0.0, 0.5), (0.5, 0.5), (0.5, 1.0)],
+        vec![],
+    ] {
+        assert_eq!(tiled(&chunks, bound), None, "{chunks:?}");
+    }
+    assert!(calls.borrow().is_empty());
+    // one unproven chunk: no bound
+    let fails = |k: usize, _: f64, _: f64| (k != 2).then_some(0.1);
+    assert_eq!(tiled(&three, fails), None);
+}
