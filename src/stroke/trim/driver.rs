@@ -338,6 +338,9 @@ fn kept_bound(run: &Run, onside_input: Option<&Input>, s: &Sub, est: f64) -> Opt
     if raw.kind == Kind::Butt {
         return Some(e_in);
     }
+    // witnesses outside S for the whole sub-piece, in at most `parts` parts
+    let witnesses =
+        |parts| prove_kept(run.curve, &run.curve_f, &s.post, e_in, run.form, tol, parts);
     if est < run.form.reach - 4.0 * e_in.max(tol / 8.0) {
         return None;
     }
@@ -367,9 +370,7 @@ fn kept_bound(run: &Run, onside_input: Option<&Input>, s: &Sub, est: f64) -> Opt
                     if let Some(l) = input.prove_interval(link.piece, &link.d, t0, t1, budget, 64) {
                         return Some((e_in + l).next_up());
                     }
-                    if let Some(b) =
-                        prove_kept(run.curve, &run.curve_f, &s.post, e_in, run.form, tol, 4)
-                    {
+                    if let Some(b) = witnesses(4) {
                         return Some(b);
                     }
                 }
@@ -379,15 +380,7 @@ fn kept_bound(run: &Run, onside_input: Option<&Input>, s: &Sub, est: f64) -> Opt
                 let dips = est < run.form.reach * (1.0 - DIP)
                     && offset_dips(run, link.piece, link.d.approx(), (t0, t1));
                 if dips {
-                    if let Some(b) = prove_kept(
-                        run.curve,
-                        &run.curve_f,
-                        &s.post,
-                        e_in,
-                        run.form,
-                        tol,
-                        KEPT_MAX_PARTS,
-                    ) {
+                    if let Some(b) = witnesses(KEPT_MAX_PARTS) {
                         return Some(b);
                     }
                 }
@@ -421,15 +414,7 @@ fn kept_bound(run: &Run, onside_input: Option<&Input>, s: &Sub, est: f64) -> Opt
             }
         }
     }
-    prove_kept(
-        run.curve,
-        &run.curve_f,
-        &s.post,
-        e_in,
-        run.form,
-        tol,
-        KEPT_MAX_PARTS,
-    )
+    witnesses(KEPT_MAX_PARTS)
 }
 
 /// How far (relative to the pen's reach) a float distance estimate must fall
