@@ -10,10 +10,10 @@
 #![allow(missing_docs)]
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use lncert::ln::pair::{pair_decision, PairDecision};
+use lncert::ln::pair::{pair_decision, pair_decision_signs, PairDecision};
 use lncert::scalar::{
     filter_stats, filtered, frac, reset_filter_stats, FloatErr, Interval, Predicate, Rational,
-    Scalar,
+    Scalar, SmallRat,
 };
 use std::hint::black_box;
 
@@ -155,6 +155,82 @@ fn bench(c: &mut Criterion) {
         b.iter(|| {
             rat.iter()
                 .filter_map(|(a, c, r)| pair_decision(black_box(a), c, r))
+                .count()
+        })
+    });
+    g.finish();
+    // The division-free form (`pair_decision_signs`, what `filtered` evaluates):
+    // the same decisions as signs of polynomials of degree ≤ 1 in each input.
+    let undecided = fes
+        .iter()
+        .filter(|(a, c, r)| pair_decision_signs(a, c, r).is_none())
+        .count();
+    let undecided_iv = ivs
+        .iter()
+        .filter(|(a, c, r)| pair_decision_signs(a, c, r).is_none())
+        .count();
+    println!(
+        "decisions, division-free form: the float-with-error-bound stage leaves {undecided} of {} undecided, intervals {undecided_iv}",
+        fes.len()
+    );
+    let mut g = c.benchmark_group("prop_4_2_and_4_4_division_free");
+    g.bench_function("f64", |b| {
+        b.iter(|| {
+            flt.iter()
+                .filter_map(|(a, c, r)| pair_decision_signs(black_box(a), c, r))
+                .count()
+        })
+    });
+    g.bench_function("float_err", |b| {
+        b.iter(|| {
+            fes.iter()
+                .filter_map(|(a, c, r)| pair_decision_signs(black_box(a), c, r))
+                .count()
+        })
+    });
+    let sms: Vec<(SmallRat, SmallRat, SmallRat)> = rat
+        .iter()
+        .map(|(a, b, r)| {
+            (
+                SmallRat::from_rational(a),
+                SmallRat::from_rational(b),
+                SmallRat::from_rational(r),
+            )
+        })
+        .collect();
+    g.bench_function("small_rational", |b| {
+        b.iter(|| {
+            sms.iter()
+                .filter_map(|(a, c, r)| pair_decision_signs(black_box(a), c, r))
+                .count()
+        })
+    });
+    // the four stages as `filtered` runs them, inputs held in each arithmetic
+    g.bench_function("filtered_static", |b| {
+        b.iter(|| {
+            fes.iter()
+                .zip(&sms)
+                .zip(&ivs)
+                .zip(&rat)
+                .filter_map(
+                    |((((a, c, r), (sa, sc, sr)), (ia, ic, ir)), (ea, ec, er))| {
+                        pair_decision_signs(black_box(a), c, r)
+                            .or_else(|| pair_decision_signs(sa, sc, sr))
+                            .or_else(|| pair_decision_signs(ia, ic, ir))
+                            .or_else(|| pair_decision_signs(ea, ec, er))
+                    },
+                )
+                .count()
+        })
+    });
+    // `filtered` itself: each stage converts the exact inputs on entry
+    g.bench_function("filtered_converting", |b| {
+        b.iter(|| data.iter().filter_map(|d| filtered(black_box(d))).count())
+    });
+    g.bench_function("rational", |b| {
+        b.iter(|| {
+            rat.iter()
+                .filter_map(|(a, c, r)| pair_decision_signs(black_box(a), c, r))
                 .count()
         })
     });

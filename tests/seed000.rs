@@ -345,3 +345,61 @@ proptest! {
         prop_assert_eq!(filtered(&d), exact);
     }
 }
+
+/// ρ choices for the division-free form's test: random ones, and every
+/// boundary the decision turns on (`1/2`, `2`, `q/2`, `2q`, and the zeros of
+/// `A = 2ρ(1 + c0) − (1 + c1)` and `B = 2(1 + c1) − ρ(1 + c0)`).
+fn rho_choices(c0: &Rational, c1: &Rational, k: usize, rn: i64) -> Option<Rational> {
+    let qv = c1 / c0;
+    let (p0, p1) = (q(1, 1) + c0, q(1, 1) + c1);
+    Some(match k {
+        0..=3 => q(rn, 97),
+        4 => q(1, 2),
+        5 => q(2, 1),
+        6 => &qv / q(2, 1),
+        7 => &qv * q(2, 1),
+        8 if p0 != q(0, 1) => &p1 / (q(2, 1) * &p0),
+        9 if p0 != q(0, 1) => q(2, 1) * &p1 / &p0,
+        _ => return None,
+    })
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// The division-free form of Props 4.2 + 4.4 (`pair_decision_signs`, what
+    /// `filtered` evaluates) equals the paper's form (`pair_decision`, with the
+    /// quotients `q`, `ρ/q` and the δs) in exact rationals on every input,
+    /// boundaries planted (`q = 1/4, 4`, `ρ` at each end of its range, `A = 0`,
+    /// `B = 0`, `1 + c0 = 0`, `1 + c1 = 0`, `c0 = 0`); its float-with-error-bound
+    /// and interval evaluations never contradict it.
+    #[test]
+    fn division_free_pair_decision_is_the_papers(
+        (c0, c1) in end_ratios(),
+        edge in 0usize..8,
+        k in 0usize..10,
+        rn in -40i64..=300,
+    ) {
+        use lncert::ln::pair::{pair_decision, pair_decision_signs};
+        use lncert::scalar::FloatErr;
+        let (c0, c1) = match edge {
+            0 => (q(-1, 1), c1),
+            1 => (c0, q(-1, 1)),
+            2 => (q(0, 1), c1),
+            _ => (c0, c1),
+        };
+        let Some(rho) = (if c0 == q(0, 1) { Some(q(rn, 97)) } else { rho_choices(&c0, &c1, k, rn) }) else {
+            return Ok(());
+        };
+        let exact = pair_decision_signs(&c0, &c1, &rho);
+        prop_assert_eq!(&exact, &pair_decision(&c0, &c1, &rho), "c0 {} c1 {} rho {}", c0, c1, rho);
+        let f = |r: &Rational| FloatErr::from_rational(r);
+        if let Some(v) = pair_decision_signs(&f(&c0), &f(&c1), &f(&rho)) {
+            prop_assert_eq!(Some(v), exact);
+        }
+        let i = |r: &Rational| Interval::from_rational(r);
+        if let Some(v) = pair_decision_signs(&i(&c0), &i(&c1), &i(&rho)) {
+            prop_assert_eq!(Some(v), exact);
+        }
+    }
+}

@@ -337,12 +337,80 @@ pub struct PairDecision {
     pub rho_left: crate::scalar::Rational,
 }
 
+/// Evaluated through [`pair_decision_signs`], the division-free form of
+/// [`pair_decision`] (the same answer in exact arithmetic, tested against it).
 impl crate::scalar::Predicate for PairDecision {
     type Out = (bool, Option<bool>);
     fn decide<S: Scalar>(&self) -> Option<Self::Out> {
         let conv = |r: &crate::scalar::Rational| S::from_rational(r);
-        pair_decision(&conv(&self.c0), &conv(&self.c1), &conv(&self.rho_left))
+        pair_decision_signs(&conv(&self.c0), &conv(&self.c1), &conv(&self.rho_left))
     }
+}
+
+/// [`pair_decision`] without divisions: every test is the sign of a polynomial of
+/// degree ≤ 1 in each of `c0, c1, ρ`, which a float with an error bound
+/// ([`crate::scalar::FloatErr`]) decides in a few operations and rationals
+/// decide without reducing quotients. The same answer as [`pair_decision`] in
+/// exact arithmetic (`None` for `c0 = 0`, as its `q = c1/c0` gives), by:
+///
+/// * `q > 1/4 ⟺ (4c1 − c0)·c0 > 0`, `q < 4 ⟺ (4c0 − c1)·c0 > 0`,
+///   `ρ > q/2 ⟺ (2ρc0 − c1)·c0 > 0`, `ρ < 2q ⟺ (2c1 − ρc0)·c0 > 0`
+///   (each side times `c0² > 0`);
+/// * with `A = 2ρ(1 + c0) − (1 + c1)`, `B = 2(1 + c1) − ρ(1 + c0)` and `ρ > 0`,
+///   `δ0 = 2A/(3ρ(1 + c0))`, `1 − δ0 = B/(3ρ(1 + c0))`, `δ1 = 2B/(3(1 + c1))`,
+///   `1 − δ1 = A/(3(1 + c1))` (eq. (1)'s `δ`s of `ρ` and `ρ/q`, summed as in
+///   [`convolution_deltas`], with `c0 q = c1`); so `δ0 ∈ [0, 1]` iff `A` and `B`
+///   have no sign opposite to `1 + c0`'s, and `δ1 ∈ [0, 1]` likewise with
+///   `1 + c1`; `1 + c0 = 0` or `1 + c1 = 0` is the degenerate frame
+///   [`convolution_deltas`] refuses (the second answer `None`).
+///
+/// # Examples
+/// ```
+/// use lncert::ln::pair::{pair_decision, pair_decision_signs};
+/// use lncert::scalar::{frac, FloatErr, Rational, Scalar};
+/// let (c0, c1, rho): (Rational, Rational, Rational) = (frac(-3, 2), frac(-1, 2), frac(7, 12));
+/// assert_eq!(pair_decision_signs(&c0, &c1, &rho), Some((true, Some(true))));
+/// assert_eq!(pair_decision_signs(&c0, &c1, &rho), pair_decision(&c0, &c1, &rho));
+/// // q = c1/c0 = 4 exactly: a float with an error bound cannot decide `q < 4`
+/// let f = |r: &Rational| FloatErr::from_rational(r);
+/// let (c0, c1): (Rational, Rational) = (frac(1, 3), frac(4, 3));
+/// assert_eq!(pair_decision_signs(&f(&c0), &f(&c1), &f(&rho)), None);
+/// assert_eq!(pair_decision_signs(&c0, &c1, &rho), Some((false, None)));
+/// ```
+pub fn pair_decision_signs<S: Scalar>(c0: &S, c1: &S, rho: &S) -> Option<(bool, Option<bool>)> {
+    let s = c0.sign();
+    if !matches!(s, Sign::Positive | Sign::Negative) {
+        return None; // c0 = 0 (q undefined) or undecided
+    }
+    let exists = ((c1.scale(4) - c0.clone()).sign() * s).is_positive()?
+        && ((c0.scale(4) - c1.clone()).sign() * s).is_positive()?;
+    let rc0 = rho.clone() * c0.clone();
+    let admissible = exists
+        && rho.cmp_sign(&frac(1, 2)).is_positive()?
+        && S::from_i64(2).cmp_sign(rho).is_positive()?
+        && ((rc0.scale(2) - c1.clone()).sign() * s).is_positive()?
+        && ((c1.scale(2) - rc0).sign() * s).is_positive()?;
+    if !admissible {
+        return Some((exists, None));
+    }
+    let p0 = S::one() + c0.clone();
+    let p1 = S::one() + c1.clone();
+    let (s0, s1) = (p0.sign(), p1.sign());
+    for side in [s0, s1] {
+        match side {
+            Sign::Unknown => return None,
+            Sign::Zero => return Some((exists, None)),
+            _ => {}
+        }
+    }
+    let m = rho.clone() * p0;
+    let a = (m.scale(2) - p1.clone()).sign();
+    let b = (p1.scale(2) - m).sign();
+    // δ ∈ [0, 1] iff neither factor has the sign opposite to its denominator's
+    let closed = |side: Sign| -> Option<bool> {
+        Some(!(a * side).is_negative()? && !(b * side).is_negative()?)
+    };
+    Some((exists, Some(!closed(s0)? || !closed(s1)?)))
 }
 
 /// The kernel of [`PairDecision`] on inputs already in `S` (the fast path takes

@@ -127,7 +127,13 @@ impl Scalar for FloatErr {
         }
     }
     fn from_frac(p: i64, q: i64) -> Self {
-        if p.unsigned_abs() < 1 << 53 && q.unsigned_abs() < 1 << 53 && q != 0 {
+        if p.unsigned_abs() < 1 << 53
+            && q.unsigned_abs().is_power_of_two()
+            && q.unsigned_abs() < 1 << 53
+        {
+            // a quotient by a power of two is exact (the result is a normal float)
+            FloatErr::exact(p as f64 / q as f64)
+        } else if p.unsigned_abs() < 1 << 53 && q.unsigned_abs() < 1 << 53 && q != 0 {
             let v = p as f64 / q as f64;
             // one rounding of exact operands: |p/q − v| ≤ u |p/q| ≤ 2u |v| (+ η)
             FloatErr {
@@ -171,6 +177,20 @@ impl Scalar for FloatErr {
     }
     fn is_finite(&self) -> bool {
         self.v.is_finite() && self.e.is_finite()
+    }
+    /// A power of two `k` (|k| ≤ 2⁵²) scales value and bound exactly (an
+    /// overflow gives an infinity, whose sign is `Unknown`); any other `k` is a
+    /// product.
+    fn scale(&self, k: i64) -> Self {
+        if k != 0 && k.unsigned_abs().is_power_of_two() && k.unsigned_abs() <= 1 << 52 {
+            let f = k as f64;
+            FloatErr {
+                v: self.v * f,
+                e: self.e * f.abs(),
+            }
+        } else {
+            *self * FloatErr::from_i64(k)
+        }
     }
     fn abs_val(&self) -> Self {
         // ||x| − |v|| ≤ |x − v|
@@ -227,7 +247,8 @@ mod tests {
                 ((fa * fb - fc) * (fa + fc), (a.clone() * b.clone() - c.clone()) * (a.clone() + c.clone())),
                 (fa * fa - fb * fc, a.clone() * a.clone() - b.clone() * c.clone()),
             ];
-            for (f, x) in cases.iter() {
+            let scaled = [(fa.scale(4), a.clone() * frac::<Rational>(4, 1)), (fb.scale(-2), b.clone() * frac::<Rational>(-2, 1)), (fc.scale(3), c.clone() * frac::<Rational>(3, 1))];
+            for (f, x) in cases.iter().chain(&scaled) {
                 prop_assert!(contains(f, x), "{f:?} does not contain {x}");
                 let s = f.sign();
                 let exact = if *x > Rational::from_integer(0.into()) { Sign::Positive }
@@ -248,6 +269,17 @@ mod tests {
         let s = third + third + third - FloatErr::one();
         assert_eq!(s.sign(), Sign::Unknown);
         assert_eq!(FloatErr::from_frac(1, 2).sign(), Sign::Positive);
+        // quotients by powers of two are exact; others carry a bound
+        assert_eq!(FloatErr::from_frac(-3, 4), FloatErr::exact(-0.75));
+        assert_eq!(
+            FloatErr::from_frac(1, 1 << 52),
+            FloatErr::exact(2f64.powi(-52))
+        );
+        assert!(FloatErr::from_frac(1, 3).e > 0.0);
+        assert_eq!(
+            (FloatErr::from_frac(1, 4).scale(4) - FloatErr::one()).sign(),
+            Sign::Zero
+        );
         assert_eq!((FloatErr::zero() * FloatErr::one()).sign(), Sign::Zero);
         assert!(FloatErr::exact(0.0).recip().is_none());
         assert!(FloatErr::exact(f64::NAN).recip().is_none());

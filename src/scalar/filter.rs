@@ -1,10 +1,11 @@
 //! Filtered decisions (the idea of CGAL's filtered kernels): evaluate a predicate
 //! with floats carrying an a-priori error bound first ([`FloatErr`]: plain float
-//! operations, no rounding-mode switches), then with interval arithmetic, and
-//! only when neither can decide, exactly with rationals. Exact answers at close
-//! to float speed.
+//! operations, no rounding-mode switches), then exactly in machine integers
+//! ([`SmallRat`]: decides exact ties of small inputs, gives up on overflow), then
+//! with interval arithmetic, and only when none can decide, exactly with big
+//! rationals. Exact answers at close to float speed.
 
-use super::{FloatErr, Interval, Rational, Scalar};
+use super::{FloatErr, Interval, Rational, Scalar, SmallRat};
 use std::sync::atomic::{AtomicU64, Ordering};
 
 /// A decision that can be evaluated in any arithmetic.
@@ -59,8 +60,9 @@ pub fn reset_filter_stats() {
     FALLBACKS.store(0, Ordering::Relaxed);
 }
 
-/// Decides `p` exactly: floats with an error bound first, then intervals, then
-/// rationals when neither can decide.
+/// Decides `p` exactly: floats with an error bound first, then small exact
+/// rationals (`i128`, given up on overflow), then intervals, then big rationals
+/// when none can decide.
 ///
 /// Returns `None` only if the exact evaluation itself declines, which a correct
 /// predicate never does.
@@ -83,6 +85,9 @@ pub fn reset_filter_stats() {
 pub fn filtered<P: Predicate>(p: &P) -> Option<P::Out> {
     CALLS.fetch_add(1, Ordering::Relaxed);
     if let Some(out) = p.decide::<FloatErr>() {
+        return Some(out);
+    }
+    if let Some(out) = p.decide::<SmallRat>() {
         return Some(out);
     }
     if let Some(out) = p.decide::<Interval>() {

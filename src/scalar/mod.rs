@@ -8,6 +8,7 @@
 //! | [`Rational`] (`BigRational`) | exact | never `Unknown` |
 //! | [`Interval`] (inari) | certified enclosure, outward rounded | `Unknown` when the enclosure straddles 0 |
 //! | [`FloatErr`] | a float with a running a-priori error bound (the static filter) | `Unknown` when the bound reaches 0 |
+//! | [`SmallRat`] | exact rationals in `i128`s, lost on overflow (the filter's small exact stage) | `Unknown` once lost |
 //! | [`crate::poly::RatFunc`] | symbolic rational functions over Q | exact for constants, else `Unknown` |
 //!
 //! Square roots are a separate capability ([`ScalarSqrt`]): only `f64` and
@@ -19,6 +20,7 @@ mod filter;
 mod float;
 mod interval;
 mod rational;
+mod small;
 mod surd;
 pub mod ulp;
 
@@ -32,6 +34,7 @@ pub(crate) use rational::float_parts;
 pub use rational::{
     abs_le_pow10, parse_rational, rational_from_f64, rational_to_string, ParseNumberError, Rational,
 };
+pub use small::{fits_small, SmallRat};
 pub use surd::Surd;
 
 use std::fmt::Debug;
