@@ -3,6 +3,7 @@
 //! bound of one box. Nothing here is shared with the search.
 
 use crate::scalar::interval_from_rational;
+use crate::scalar::ulp;
 use crate::scalar::{rational_from_f64, Interval, Rational};
 
 // ----- Taylor triples (value, d/ds, d²/ds²) over intervals -------------------
@@ -14,23 +15,37 @@ pub(crate) fn ic(x: i64) -> Interval {
     Interval::try_from((x as f64, x as f64)).expect("small integer")
 }
 
+/// Sums and products in [`ulp`] arithmetic (rounded to nearest, then one ulp
+/// outward: no rounding-mode switch per operation); quotients and square roots
+/// in inari's.
 impl T3 {
     fn c(v: Interval) -> T3 {
         T3([v, ic(0), ic(0)])
     }
     fn add(self, o: T3) -> T3 {
-        T3([self.0[0] + o.0[0], self.0[1] + o.0[1], self.0[2] + o.0[2]])
+        let [a, b, c] = self.0;
+        let [x, y, z] = o.0;
+        T3([ulp::add(a, x), ulp::add(b, y), ulp::add(c, z)])
     }
     fn sub(self, o: T3) -> T3 {
-        T3([self.0[0] - o.0[0], self.0[1] - o.0[1], self.0[2] - o.0[2]])
+        let [a, b, c] = self.0;
+        let [x, y, z] = o.0;
+        T3([ulp::sub(a, x), ulp::sub(b, y), ulp::sub(c, z)])
     }
     fn mul(self, o: T3) -> T3 {
         let [a, b, c] = self.0;
         let [x, y, z] = o.0;
-        T3([a * x, a * y + b * x, a * z + ic(2) * b * y + c * x])
+        // (b y) · 2 is exact: scaling by two only moves the exponent
+        let by2 = ulp::mul(b, y) * ic(2);
+        T3([
+            ulp::mul(a, x),
+            ulp::add(ulp::mul(a, y), ulp::mul(b, x)),
+            ulp::add(ulp::add(ulp::mul(a, z), by2), ulp::mul(c, x)),
+        ])
     }
     fn k(self, s: Interval) -> T3 {
-        T3([self.0[0] * s, self.0[1] * s, self.0[2] * s])
+        let [a, b, c] = self.0;
+        T3([ulp::mul(a, s), ulp::mul(b, s), ulp::mul(c, s)])
     }
     /// `1/self`; `None` if the value may vanish.
     fn inv(self) -> Option<T3> {
@@ -150,8 +165,13 @@ fn subdivide(pts: &[[Interval; 2]], t: Interval, left: bool) -> Vec<[Interval; 2
 /// `a`'s width `1 + 2t` times, so `n` levels multiply the control points'
 /// widths by up to `3ⁿ` and a degree-27 piece with non-dyadic control points
 /// could no longer be evaluated (issue 24, item 5).
+///
+/// In [`ulp`] arithmetic (rounded to nearest, then one ulp outward): no
+/// rounding-mode switch per operation, a third of the cost of inari's
+/// products in the de Casteljau loops of high-degree pieces.
 fn convex(u: Interval, a: [Interval; 2], t: Interval, b: [Interval; 2]) -> [Interval; 2] {
-    [u * a[0] + t * b[0], u * a[1] + t * b[1]]
+    let step = |x: Interval, y: Interval| ulp::add(ulp::mul(u, x), ulp::mul(t, y));
+    [step(a[0], b[0]), step(a[1], b[1])]
 }
 
 /// De Casteljau at an interval parameter: the convex form for a thin
@@ -167,7 +187,8 @@ fn casteljau_at(pts: &[[Interval; 2]], t: Interval) -> [Interval; 2] {
             p[i] = if thin {
                 convex(u, a, t, b)
             } else {
-                [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])]
+                let step = |x: Interval, y: Interval| ulp::add(x, ulp::mul(t, ulp::sub(y, x)));
+                [step(a[0], b[0]), step(a[1], b[1])]
             };
         }
     }
