@@ -902,3 +902,71 @@ fn half_circle_arcs_with_inexact_directions() {
         );
     }
 }
+
+/// The verifier is never looser than the search that wrote a certificate: a
+/// certificate whose tolerance is the float just above the search's `hi` (no
+/// slack at all, as the `against` fuzz target writes one in four) verifies,
+/// for every kind of shape pair the fuzz targets use. (Found by the `against`
+/// target when the verifier's Taylor triples were moved to `ulp` arithmetic:
+/// a quarter arc against itself was refused by one ulp.)
+#[test]
+fn certificates_at_the_searchs_own_bound_verify() {
+    use lncert::scalar::rational_from_f64;
+    use lncert::Tolerance;
+    let quarter = r#"{"arc": {"center": [0, 0], "radius": 1, "from": [1, 0], "to": [0, 1]}}"#;
+    let cubic = r#"{"bezier": [[0, 0], ["1/3", "1/2"], ["2/3", "1/2"], [1, 0]]}"#;
+    let pairs = [
+        (quarter, quarter),
+        (
+            quarter,
+            r#"{"bezier": [[1, 0], [1, "11/20"], ["11/20", 1], [0, 1]]}"#,
+        ),
+        (
+            cubic,
+            r#"{"bezier": [[0, "1/32"], ["1/3", "17/32"], ["2/3", "15/32"], [1, 0]]}"#,
+        ),
+        (cubic, cubic),
+        (
+            "M 0 0 L 1 0",
+            r#"{"bezier": [[0, 0], ["1/2", "1/4"], [1, 0]]}"#,
+        ),
+        (
+            r#"{"offset": {"curve": {"bezier": [[0, 0], [1, 1], [2, 0]]}, "distance": "1/4"}}"#,
+            r#"{"bezier": [["-1/8", "1/8"], ["2/3", "11/12"], ["4/3", "11/12"], ["17/8", "1/8"]]}"#,
+        ),
+        (
+            r#"{"offset": {"curve": "M 0 0 C 1 1 2 1 3 0", "distance": "-1/2"}}"#,
+            r#"{"convolution": {"curve": "M 0 0 C 1 1 2 1 3 0", "ellipse": [["1/2", 0], [0, "1/4"]], "side": -1}}"#,
+        ),
+    ];
+    let mut checked = 0;
+    for (a, b) in pairs {
+        let (a, b) = (shape(a), shape(b));
+        for (rel, max_boxes, parametric) in [(1e-2, 48, false), (1e-3, 400, true)] {
+            let search = Config {
+                rel,
+                max_boxes,
+                parametric,
+                ..Config::default()
+            };
+            let r = hausdorff(&a, &b, &search).expect("a search");
+            let tol = rational_from_f64(r.hi.next_up().max(f64::MIN_POSITIVE)).unwrap();
+            let tol = Tolerance::new(tol).unwrap();
+            let Some(cert) = Certificate::new(&a, &b, &tol, &r) else {
+                continue;
+            };
+            let text = cert.to_json_string();
+            let v = verify(&text);
+            assert!(
+                v.is_ok(),
+                "{} vs {} (rel {rel}, parametric {parametric}) at tol {}: {:?}",
+                a.to_json(),
+                b.to_json(),
+                tol.exact(),
+                v.err()
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked >= 10, "only {checked} certificates written");
+}

@@ -15,37 +15,23 @@ pub(crate) fn ic(x: i64) -> Interval {
     Interval::try_from((x as f64, x as f64)).expect("small integer")
 }
 
-/// Sums and products in [`ulp`] arithmetic (rounded to nearest, then one ulp
-/// outward: no rounding-mode switch per operation); quotients and square roots
-/// in inari's.
 impl T3 {
     fn c(v: Interval) -> T3 {
         T3([v, ic(0), ic(0)])
     }
     fn add(self, o: T3) -> T3 {
-        let [a, b, c] = self.0;
-        let [x, y, z] = o.0;
-        T3([ulp::add(a, x), ulp::add(b, y), ulp::add(c, z)])
+        T3([self.0[0] + o.0[0], self.0[1] + o.0[1], self.0[2] + o.0[2]])
     }
     fn sub(self, o: T3) -> T3 {
-        let [a, b, c] = self.0;
-        let [x, y, z] = o.0;
-        T3([ulp::sub(a, x), ulp::sub(b, y), ulp::sub(c, z)])
+        T3([self.0[0] - o.0[0], self.0[1] - o.0[1], self.0[2] - o.0[2]])
     }
     fn mul(self, o: T3) -> T3 {
         let [a, b, c] = self.0;
         let [x, y, z] = o.0;
-        // (b y) · 2 is exact: scaling by two only moves the exponent
-        let by2 = ulp::mul(b, y) * ic(2);
-        T3([
-            ulp::mul(a, x),
-            ulp::add(ulp::mul(a, y), ulp::mul(b, x)),
-            ulp::add(ulp::add(ulp::mul(a, z), by2), ulp::mul(c, x)),
-        ])
+        T3([a * x, a * y + b * x, a * z + ic(2) * b * y + c * x])
     }
     fn k(self, s: Interval) -> T3 {
-        let [a, b, c] = self.0;
-        T3([ulp::mul(a, s), ulp::mul(b, s), ulp::mul(c, s)])
+        T3([self.0[0] * s, self.0[1] * s, self.0[2] * s])
     }
     /// `1/self`; `None` if the value may vanish.
     fn inv(self) -> Option<T3> {
