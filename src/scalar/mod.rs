@@ -34,7 +34,7 @@ pub(crate) use rational::float_parts;
 pub use rational::{
     abs_le_pow10, parse_rational, rational_from_f64, rational_to_string, ParseNumberError, Rational,
 };
-pub use small::{fits_small, SmallRat};
+pub use small::SmallRat;
 pub use surd::Surd;
 
 use std::fmt::Debug;

@@ -14,7 +14,7 @@
 //! planted bug).
 
 use super::{Rational, Scalar, Sign};
-use num_traits::{ToPrimitive, Zero};
+use num_traits::ToPrimitive;
 use std::ops::{Add, Mul, Neg, Sub};
 
 /// An exact rational `n/d` with `d > 0` in `i128`s, or lost after an overflow.
@@ -172,15 +172,11 @@ impl SmallRat {
     }
 }
 
-/// Whether a big rational fits (numerator and denominator in `i128`).
-pub fn fits_small(r: &Rational) -> bool {
-    r.is_zero() || (r.numer().to_i128().is_some() && r.denom().to_i128().is_some())
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::scalar::frac;
+    use num_traits::Zero;
     use proptest::prelude::*;
 
     fn rat() -> impl Strategy<Value = Rational> {
@@ -258,6 +254,5 @@ mod tests {
         assert!(SmallRat::new(1, i128::MIN).is_lost());
         let huge = Rational::new(num_bigint::BigInt::from(1) << 200, 3.into());
         assert!(SmallRat::from_rational(&huge).is_lost());
-        assert!(!fits_small(&huge));
     }
 }
