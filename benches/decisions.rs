@@ -1,8 +1,12 @@
 //! Time per decision of Prop 4.2 + Prop 4.4 (seed 000) on random compatible
-//! pairs, in f64, interval, filtered (interval, then exact fallback), filtered
-//! with the static stage first (float with error bound, interval, exact) and
-//! rational-only arithmetic; prints the filter's fallback rate and how often
-//! the f64 path disagrees with the exact answer.
+//! pairs: the paper's form (`pair_decision`) in f64, interval, filtered
+//! (interval, then exact fallback), filtered with the static stage first
+//! (float with error bound, interval, exact) and rationals; then the
+//! division-free form (`pair_decision_signs`, what `filtered` evaluates) in
+//! f64, float with error bound, small exact rationals (`SmallRat`), the four
+//! stages, `filtered` itself (converting its inputs) and rationals. Prints the
+//! filter's fallback rate and how often the f64 path disagrees with the exact
+//! answer.
 //!
 //! Run: `cargo bench --bench decisions`.
 
@@ -137,7 +141,7 @@ fn bench(c: &mut Criterion) {
                 .count()
         })
     });
-    // the three stages: float with error bound, then intervals, then rationals
+    // the paper form's former filter: float with error bound, then intervals, then rationals
     g.bench_function("filtered_static", |b| {
         b.iter(|| {
             fes.iter()
