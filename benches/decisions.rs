@@ -52,6 +52,28 @@ fn cases(n: usize) -> Vec<PairDecision> {
         .collect()
 }
 
+/// The inputs in arithmetic `S` (converted once, outside the timed loops).
+fn convert<S: Scalar>(rat: &[(Rational, Rational, Rational)]) -> Vec<(S, S, S)> {
+    rat.iter()
+        .map(|(a, b, r)| {
+            (
+                S::from_rational(a),
+                S::from_rational(b),
+                S::from_rational(r),
+            )
+        })
+        .collect()
+}
+
+type Decide<S> = fn(&S, &S, &S) -> Option<(bool, Option<bool>)>;
+
+/// How many of `v` the decision `f` decides (the timed body of one arithmetic).
+fn decided<S>(v: &[(S, S, S)], f: Decide<S>) -> usize {
+    v.iter()
+        .filter_map(|(a, c, r)| f(black_box(a), c, r))
+        .count()
+}
+
 fn bench(c: &mut Criterion) {
     let data = cases(512);
     reset_filter_stats();
@@ -80,26 +102,8 @@ fn bench(c: &mut Criterion) {
         .iter()
         .map(|(a, b, r)| (a.approx(), b.approx(), r.approx()))
         .collect();
-    let ivs: Vec<(Interval, Interval, Interval)> = rat
-        .iter()
-        .map(|(a, b, r)| {
-            (
-                Interval::from_rational(a),
-                Interval::from_rational(b),
-                Interval::from_rational(r),
-            )
-        })
-        .collect();
-    let fes: Vec<(FloatErr, FloatErr, FloatErr)> = rat
-        .iter()
-        .map(|(a, b, r)| {
-            (
-                FloatErr::from_rational(a),
-                FloatErr::from_rational(b),
-                FloatErr::from_rational(r),
-            )
-        })
-        .collect();
+    let ivs: Vec<(Interval, Interval, Interval)> = convert(&rat);
+    let fes: Vec<(FloatErr, FloatErr, FloatErr)> = convert(&rat);
     let undecided = fes
         .iter()
         .filter(|(a, c, r)| pair_decision(a, c, r).is_none())
@@ -109,20 +113,8 @@ fn bench(c: &mut Criterion) {
         fes.len()
     );
     let mut g = c.benchmark_group("prop_4_2_and_4_4");
-    g.bench_function("f64", |b| {
-        b.iter(|| {
-            flt.iter()
-                .filter_map(|(a, c, r)| pair_decision(black_box(a), c, r))
-                .count()
-        })
-    });
-    g.bench_function("interval", |b| {
-        b.iter(|| {
-            ivs.iter()
-                .filter_map(|(a, c, r)| pair_decision(black_box(a), c, r))
-                .count()
-        })
-    });
+    g.bench_function("f64", |b| b.iter(|| decided(&flt, pair_decision)));
+    g.bench_function("interval", |b| b.iter(|| decided(&ivs, pair_decision)));
     g.bench_function("filtered", |b| {
         b.iter(|| {
             ivs.iter()
@@ -134,13 +126,7 @@ fn bench(c: &mut Criterion) {
         })
     });
     // the static stage alone (decides all but the near-boundary cases)
-    g.bench_function("float_err", |b| {
-        b.iter(|| {
-            fes.iter()
-                .filter_map(|(a, c, r)| pair_decision(black_box(a), c, r))
-                .count()
-        })
-    });
+    g.bench_function("float_err", |b| b.iter(|| decided(&fes, pair_decision)));
     // the paper form's former filter: float with error bound, then intervals, then rationals
     g.bench_function("filtered_static", |b| {
         b.iter(|| {
@@ -155,13 +141,7 @@ fn bench(c: &mut Criterion) {
                 .count()
         })
     });
-    g.bench_function("rational", |b| {
-        b.iter(|| {
-            rat.iter()
-                .filter_map(|(a, c, r)| pair_decision(black_box(a), c, r))
-                .count()
-        })
-    });
+    g.bench_function("rational", |b| b.iter(|| decided(&rat, pair_decision)));
     g.finish();
     // The division-free form (`pair_decision_signs`, what `filtered` evaluates):
     // the same decisions as signs of polynomials of degree ≤ 1 in each input.
@@ -178,36 +158,13 @@ fn bench(c: &mut Criterion) {
         fes.len()
     );
     let mut g = c.benchmark_group("prop_4_2_and_4_4_division_free");
-    g.bench_function("f64", |b| {
-        b.iter(|| {
-            flt.iter()
-                .filter_map(|(a, c, r)| pair_decision_signs(black_box(a), c, r))
-                .count()
-        })
-    });
+    g.bench_function("f64", |b| b.iter(|| decided(&flt, pair_decision_signs)));
     g.bench_function("float_err", |b| {
-        b.iter(|| {
-            fes.iter()
-                .filter_map(|(a, c, r)| pair_decision_signs(black_box(a), c, r))
-                .count()
-        })
+        b.iter(|| decided(&fes, pair_decision_signs))
     });
-    let sms: Vec<(SmallRat, SmallRat, SmallRat)> = rat
-        .iter()
-        .map(|(a, b, r)| {
-            (
-                SmallRat::from_rational(a),
-                SmallRat::from_rational(b),
-                SmallRat::from_rational(r),
-            )
-        })
-        .collect();
+    let sms: Vec<(SmallRat, SmallRat, SmallRat)> = convert(&rat);
     g.bench_function("small_rational", |b| {
-        b.iter(|| {
-            sms.iter()
-                .filter_map(|(a, c, r)| pair_decision_signs(black_box(a), c, r))
-                .count()
-        })
+        b.iter(|| decided(&sms, pair_decision_signs))
     });
     // the four stages as `filtered` runs them, inputs held in each arithmetic
     g.bench_function("filtered_static", |b| {
@@ -232,11 +189,7 @@ fn bench(c: &mut Criterion) {
         b.iter(|| data.iter().filter_map(|d| filtered(black_box(d))).count())
     });
     g.bench_function("rational", |b| {
-        b.iter(|| {
-            rat.iter()
-                .filter_map(|(a, c, r)| pair_decision_signs(black_box(a), c, r))
-                .count()
-        })
+        b.iter(|| decided(&rat, pair_decision_signs))
     });
     g.finish();
 }
