@@ -60,12 +60,12 @@ pub(crate) struct Bez {
     pub(crate) pts: Vec<P>,
     d: Vec<P>,
     dd: Vec<P>,
-    /// The distance form of [`outside`], computed once per piece:
-    /// `|x − p|²` has the Bernstein coefficients `sq_k − 2 p·elev_k + |p|²`
-    /// (degree `2n`), where `sq` are those of `|x|²` and `elev` the control
-    /// points raised to degree `2n`.
-    sq: Vec<Interval>,
-    elev: Vec<P>,
+    /// The distance form of [`outside_near`], computed once per input piece
+    /// ([`Bez::with_distance_form`]; `None` for the outline's pieces, which
+    /// are never tested against): `|x − p|²` has the Bernstein coefficients
+    /// `sq_k − 2 p·elev_k + |p|²` (degree `2n`), where `sq` are those of
+    /// `|x|²` and `elev` the control points raised to degree `2n`.
+    dform: Option<DistForm>,
     /// The control polygon's box `[lo, hi]`, its ends rounded outward
     /// (`None` if not finite).
     bbox: Option<([f64; 2], [f64; 2])>,
@@ -82,7 +82,16 @@ fn casteljau(p: &[P], t: Interval) -> P {
     if p.is_empty() {
         return [ic(0.0), ic(0.0)];
     }
-    let mut b = p.to_vec();
+    // (a stack buffer for the usual degrees: this runs for every box)
+    let mut buf = [[ic(0.0), ic(0.0)]; 16];
+    let mut heap = Vec::new();
+    let b: &mut [P] = if p.len() <= buf.len() {
+        buf[..p.len()].copy_from_slice(p);
+        &mut buf[..p.len()]
+    } else {
+        heap.extend_from_slice(p);
+        &mut heap
+    };
     // Over a parameter box of width `w`, `b_i + t (b_{i+1} − b_i)`: its
     // enclosure grows by `w |b_{i+1} − b_i|` where the convex form's grows by
     // `w (|b_i| + |b_{i+1}|)` (control points far from the origin made boxes
@@ -103,10 +112,15 @@ fn casteljau(p: &[P], t: Interval) -> P {
     b[0]
 }
 
-impl Bez {
-    pub(crate) fn new(pts: Vec<P>) -> Bez {
-        let d = hodograph(&pts);
-        let dd = hodograph(&d);
+/// `|x|²` and `x` at degree `2n` (see [`Bez`]'s `dform`).
+#[derive(Clone, Debug)]
+struct DistForm {
+    sq: Vec<Interval>,
+    elev: Vec<P>,
+}
+
+impl DistForm {
+    fn new(pts: &[P]) -> DistForm {
         let xs: Vec<Interval> = pts.iter().map(|q| q[0]).collect();
         let ys: Vec<Interval> = pts.iter().map(|q| q[1]).collect();
         let ones = vec![ic(1.0); pts.len()];
@@ -120,6 +134,24 @@ impl Bez {
             .zip(bprod(&ys, &ones))
             .map(|(x, y)| [x, y])
             .collect();
+        DistForm { sq, elev }
+    }
+}
+
+impl Bez {
+    /// A piece of the input: with the distance form of [`outside_near`].
+    pub(crate) fn with_distance_form(pts: Vec<P>) -> Bez {
+        let dform = Some(DistForm::new(&pts));
+        Bez {
+            dform,
+            ..Bez::new(pts)
+        }
+    }
+
+    /// A piece (of the outline) without the distance form.
+    pub(crate) fn new(pts: Vec<P>) -> Bez {
+        let d = hodograph(&pts);
+        let dd = hodograph(&d);
         let bbox = pts.iter().try_fold(
             [[f64::INFINITY; 2], [f64::NEG_INFINITY; 2]],
             |[mut lo, mut hi], q| {
@@ -138,8 +170,7 @@ impl Bez {
             pts,
             d,
             dd,
-            sq,
-            elev,
+            dform: None,
             bbox,
         }
     }
@@ -445,16 +476,18 @@ pub(crate) fn outside_near(
         // the form computed once per piece first; the coefficients of
         // `x − p` squared when it does not decide (they are tighter far
         // from the origin)
-        let g: Vec<Interval> =
-            b.sq.iter()
-                .zip(&b.elev)
-                .map(|(s, e)| {
-                    let two_pe = ulp::mul(ic(2.0), dot(p, *e));
-                    ulp::sub(ulp::add(ulp::sub(*s, two_pe), p2), r2)
-                })
-                .collect();
-        if split(g, j).is_ok() {
-            continue;
+        if let Some(f) = &b.dform {
+            let g: Vec<Interval> =
+                f.sq.iter()
+                    .zip(&f.elev)
+                    .map(|(s, e)| {
+                        let two_pe = ulp::mul(ic(2.0), dot(p, *e));
+                        ulp::sub(ulp::add(ulp::sub(*s, two_pe), p2), r2)
+                    })
+                    .collect();
+            if split(g, j).is_ok() {
+                continue;
+            }
         }
         let xs: Vec<Interval> = b.pts.iter().map(|q| ulp::sub(q[0], p[0])).collect();
         let ys: Vec<Interval> = b.pts.iter().map(|q| ulp::sub(q[1], p[1])).collect();

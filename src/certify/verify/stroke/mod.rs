@@ -481,7 +481,7 @@ impl Input {
         }
         let iv = exact
             .iter()
-            .map(|p| Bez::new(p.iter().map(ip).collect()))
+            .map(|p| Bez::with_distance_form(p.iter().map(ip).collect()))
             .collect();
         let straight = exact
             .iter()

@@ -1190,7 +1190,7 @@ mod geom_edges {
         ip(&[q(x), q(y)])
     }
     fn bez(p: &[(&str, &str)]) -> Bez {
-        Bez::new(p.iter().map(|(x, y)| pt(x, y)).collect())
+        Bez::with_distance_form(p.iter().map(|(x, y)| pt(x, y)).collect())
     }
     fn bx(t0: &str, t1: &str) -> BoxT {
         BoxT::new(&q(t0), &q(t1))
