@@ -135,25 +135,55 @@ pub(crate) fn bprod(a: &[Interval], b: &[Interval]) -> Vec<Interval> {
         return Vec::new();
     }
     let (m, n) = (a.len() - 1, b.len() - 1);
+    // sums and products in `ulp` arithmetic, the division correctly rounded
     let sa: Vec<Interval> = a
         .iter()
         .enumerate()
-        .map(|(i, x)| binom(m, i) * *x)
+        .map(|(i, x)| ulp::mul(binom(m, i), *x))
         .collect();
     let sb: Vec<Interval> = b
         .iter()
         .enumerate()
-        .map(|(j, x)| binom(n, j) * *x)
+        .map(|(j, x)| ulp::mul(binom(n, j), *x))
         .collect();
     (0..=m + n)
         .map(|k| {
             let mut s = point(0.0);
             for i in k.saturating_sub(n)..=k.min(m) {
-                s += sa[i] * sb[k - i];
+                s = ulp::add(s, ulp::mul(sa[i], sb[k - i]));
             }
             s / binom(m + n, k)
         })
         .collect()
+}
+
+/// The restriction of `x` to `[a, b]` (point parameters), reparametrised to
+/// `[0, 1]`: control point `i` is the blossom `x(a^(n−i), b^i)`, each by de
+/// Casteljau steps `(1 − u)·p + u·q` in [`ulp`] arithmetic (`1 − u`
+/// enclosed), so each encloses the exact restriction's control point.
+fn restrict(x: &IB, a: f64, b: f64) -> IB {
+    let pts = x.points();
+    let n = pts.len() - 1;
+    let one = point(1.0);
+    let (ua, ub) = (point(a), point(b));
+    let (va, vb) = (ulp::sub(one, ua), ulp::sub(one, ub));
+    let mut w: Vec<IV> = pts.to_vec();
+    let out = (0..=n)
+        .map(|i| {
+            w.clone_from_slice(pts);
+            for r in 0..n {
+                let (u, v) = if r < n - i { (ua, va) } else { (ub, vb) };
+                for j in 0..n - r {
+                    w[j] = V2::new(
+                        ulp::add(ulp::mul(w[j].x, v), ulp::mul(w[j + 1].x, u)),
+                        ulp::add(ulp::mul(w[j].y, v), ulp::mul(w[j + 1].y, u)),
+                    );
+                }
+            }
+            w[0].clone()
+        })
+        .collect();
+    Bezier::new(out)
 }
 
 /// Every Bernstein coefficient of `|x − c|²` (degree `2n`) is above `r2`,
@@ -163,12 +193,12 @@ pub(crate) fn bprod(a: &[Interval], b: &[Interval]) -> Vec<Interval> {
 /// unordered pair once (weight `2 C(n,i) C(n,j)`, exact in `f64` below
 /// [`EXACT_ROWS`]) and each square as a square, in [`ulp`] arithmetic; stops
 /// at the first coefficient that fails.
-fn sq_dist_above(x: &IB, c: &IV, r2: Interval) -> bool {
-    let pts = x.points();
+fn sq_dist_above(pts: &[IV], c: &IV, r2: Interval) -> bool {
     let n = pts.len() - 1;
     if 2 * n >= EXACT_ROWS {
         // beyond the exact table: the general products
-        let (xs, ys) = coords(x);
+        let xs: Vec<Interval> = pts.iter().map(|p| p.x).collect();
+        let ys: Vec<Interval> = pts.iter().map(|p| p.y).collect();
         let dx: Vec<Interval> = xs.iter().map(|v| *v - c.x).collect();
         let dy: Vec<Interval> = ys.iter().map(|v| *v - c.y).collect();
         let g = add(&bprod(&dx, &dx), &bprod(&dy, &dy));
@@ -302,19 +332,60 @@ fn charge(leaves: &[(bool, f64)], budget: f64) -> Option<f64> {
     (worst <= budget).then_some(worst)
 }
 
-/// A certain lower bound of the squared distance between two boxes.
+/// A certain lower bound of the squared distance between two boxes, in
+/// floats: each result rounded to nearest and stepped down once, which is
+/// below the exact value (the argument of [`ulp`]); a gap rounded below 0
+/// counts as 0. `NaN` (an empty or unbounded box) compares as no bound.
 fn box_dist2_lo(a: &IV, b: &IV) -> f64 {
-    let gap = |p: Interval, q: Interval| -> Interval {
-        if p.sup() < q.inf() {
-            point(q.inf()) - point(p.sup())
-        } else if q.sup() < p.inf() {
-            point(p.inf()) - point(q.sup())
+    let gap = |p: Interval, q: Interval| -> f64 {
+        let g = (q.inf() - p.sup())
+            .next_down()
+            .max((p.inf() - q.sup()).next_down());
+        if g > 0.0 {
+            g
+        } else if g.is_nan() {
+            f64::NAN
         } else {
-            point(0.0)
+            0.0
         }
     };
+    // (a result rounded to 0 is below the exact non-negative value already)
+    let down = |x: f64| if x > 0.0 { x.next_down() } else { x };
     let (gx, gy) = (gap(a.x, b.x), gap(a.y, b.y));
-    (gx * gx + gy * gy).inf()
+    down(down(gx * gx) + down(gy * gy))
+}
+
+/// The box of control points (outward: their hull).
+fn bbox_pts(pts: &[IV]) -> IV {
+    V2::new(hull(pts.iter().map(|p| p.x)), hull(pts.iter().map(|p| p.y)))
+}
+
+/// The control points of the halves `[0, 1/2]` and `[1/2, 1]` (de Casteljau
+/// at `1/2`), each step `(a + b)·(1/2)` in [`ulp`] arithmetic: enclosures of
+/// the exact halves' control points.
+fn halves(pts: &[IV]) -> (Vec<IV>, Vec<IV>) {
+    let half = point(0.5);
+    let mid = |a: &IV, b: &IV| {
+        V2::new(
+            ulp::mul(ulp::add(a.x, b.x), half),
+            ulp::mul(ulp::add(a.y, b.y), half),
+        )
+    };
+    let n = pts.len();
+    let mut w = pts.to_vec();
+    let mut left = Vec::with_capacity(n);
+    let mut right = Vec::with_capacity(n);
+    left.push(w[0].clone());
+    right.push(w[n - 1].clone());
+    for level in 1..n {
+        for i in 0..n - level {
+            w[i] = mid(&w[i], &w[i + 1]);
+        }
+        left.push(w[0].clone());
+        right.push(w[n - 1 - level].clone());
+    }
+    right.reverse();
+    (left, right)
 }
 
 /// Remembered one-form tests of one box on one piece: `(kind, w0, w1)` →
@@ -464,9 +535,9 @@ impl Input {
     fn offset_box(&self, i: usize, d: Interval, t0: f64, t1: f64) -> Option<(IV, f64)> {
         let p = &self.pieces[i];
         let (a, b) = (point(t0), point(t1));
-        let xb = bbox(&p.x.restrict(&a, &b));
-        let hb = bbox(&p.h.restrict(&a, &b));
-        let h2b = bbox(&p.h2.restrict(&a, &b));
+        let xb = bbox(&restrict(&p.x, t0, t1));
+        let hb = bbox(&restrict(&p.h, t0, t1));
+        let h2b = bbox(&restrict(&p.h2, t0, t1));
         let n2 = dot(&hb, &hb);
         if n2.inf().is_nan() || n2.inf() <= 0.0 || !n2.sup().is_finite() {
             return None;
@@ -505,7 +576,7 @@ impl Input {
             return true;
         }
         let one = memo.get_or(0, w0, w1, || {
-            let xr = self.pieces[j].x.restrict(&point(w0), &point(w1));
+            let xr = restrict(&self.pieces[j].x, w0, w1);
             let (c, eps) = centre(e);
             let h = xr.hodograph();
             whole_positive(&convex_form(&xr, &h, &h.hodograph(), &c), &eps, 1)
@@ -550,7 +621,7 @@ impl Input {
             return true;
         }
         let one = memo.get_or(sign, w0, w1, || {
-            let xr = self.pieces[j].x.restrict(&point(w0), &point(w1));
+            let xr = restrict(&self.pieces[j].x, w0, w1);
             if xr.degree() == 0 {
                 return false;
             }
@@ -584,7 +655,7 @@ impl Input {
             }
             return self.far_part(&p.x, e, depth);
         }
-        let xr = p.x.restrict(&point(a), &point(b));
+        let xr = restrict(&p.x, a, b);
         if box_dist2_lo(e, &bbox(&xr)) > self.r2.sup() {
             return true;
         }
@@ -599,7 +670,13 @@ impl Input {
         let (ex, ey) = (point(eps.x.mag()), point(eps.y.mag()));
         let reach = self.r + (ex * ex + ey * ey).sqrt();
         let r2 = reach * reach;
-        if sq_dist_above(xr, &c, r2) {
+        self.far_pts(xr.points(), e, &c, r2, depth)
+    }
+
+    /// [`Input::far_part`] on control points, with the box's centre `c` and
+    /// `r2 ≥ (r + ρ)²` computed once.
+    fn far_pts(&self, pts: &[IV], e: &IV, c: &IV, r2: Interval, depth: u32) -> bool {
+        if sq_dist_above(pts, c, r2) {
             return true;
         }
         if depth == 0 {
@@ -608,17 +685,16 @@ impl Input {
         // hopeless: an end point of the part (a point of the piece) is
         // within `reach` of the centre, so no subdivision can prove it (an
         // early `false` only gives up; near a joint this saves 2^depth parts)
-        let pts = xr.points();
         for q in [&pts[0], &pts[pts.len() - 1]] {
-            let (qx, qy) = (q.x - c.x, q.y - c.y);
-            if (qx * qx + qy * qy).sup() < r2.inf() {
+            let (qx, qy) = (ulp::sub(q.x, c.x), ulp::sub(q.y, c.y));
+            if ulp::add(ulp::sqr(qx), ulp::sqr(qy)).sup() < r2.inf() {
                 return false;
             }
         }
-        let (l, r) = xr.split(&point(0.5));
-        [l, r]
-            .iter()
-            .all(|h| box_dist2_lo(e, &bbox(h)) > self.r2.sup() || self.far_part(h, e, depth - 1))
+        let (l, r) = halves(pts);
+        [l, r].iter().all(|h| {
+            box_dist2_lo(e, &bbox_pts(h)) > self.r2.sup() || self.far_pts(h, e, c, r2, depth - 1)
+        })
     }
 
     /// The widest window `[w0, w1] ⊇ [t0, t1]` of piece `j` on which `g` is
@@ -1177,7 +1253,7 @@ mod tests {
                 .collect();
             let x = Bezier::new(pts.clone()).map(interval_from_rational);
             let ci = c.map(interval_from_rational);
-            let got = sq_dist_above(&x, &ci, interval_from_rational(&r2));
+            let got = sq_dist_above(x.points(), &ci, interval_from_rational(&r2));
             let exact = g.iter().all(|v| v > &r2);
             let hair = &r2 * Rational::new(1.into(), 1_000_000_000.into())
                 + Rational::new(1.into(), 1_000_000_000.into());
@@ -1191,6 +1267,131 @@ mod tests {
             }
         }
         assert!(above > 100 && not > 100, "{above} above, {not} not");
+    }
+
+    /// The `ulp` geometry of the far and window tests against exact rational
+    /// geometry: the restriction to `[a, b]` (blossoms), the halves at `1/2`
+    /// and the products of Bernstein forms enclose the exact control points
+    /// and coefficients; the boxes' squared distance is a lower bound of the
+    /// exact one, and tight (within a relative `1e-12`). Control points with
+    /// denominators 3 and 7 (never floats) and full-mantissa parameters.
+    #[test]
+    fn ulp_geometry_encloses_the_exact_geometry() {
+        use crate::scalar::{rational_from_f64, IntervalExt};
+        let mut rng = crate::test_util::TestRng::new(0x1319_8a2e_0370_7344);
+        let mut apart = 0;
+        for case in 0..400 {
+            let n = 1 + case % 5;
+            let mut r = |m: i64, d: i64| Rational::new(rng.int(m).into(), d.into());
+            let pts: Vec<V2<Rational>> = (0..=n).map(|_| V2::new(r(3000, 3), r(7000, 7))).collect();
+            let (dx, dy) = (r(9000, 3), r(9000, 7));
+            let x = Bezier::new(pts.clone());
+            let xi = x.map(interval_from_rational);
+            let has =
+                |iv: &IB, ex: &Bezier<Rational>| {
+                    iv.points().len() == ex.points().len()
+                        && iv.points().iter().zip(ex.points()).all(|(i, e)| {
+                            i.x.contains_rational(&e.x) && i.y.contains_rational(&e.y)
+                        })
+                };
+            // parameters with full mantissas (1 − a is not a float)
+            let u = (rng.int(1 << 20) as f64 / f64::from(1 << 20)).abs() / 3.0;
+            let v = u + (1.0 - u) * ((rng.int(1 << 20) as f64).abs() / f64::from(1 << 20)) / 1.1;
+            let (a, b) = (u.min(v), u.max(v));
+            let (qa, qb) = (rational_from_f64(a).unwrap(), rational_from_f64(b).unwrap());
+            assert!(
+                has(&restrict(&xi, a, b), &x.restrict(&qa, &qb)),
+                "restrict {a} {b}"
+            );
+            let half = Rational::new(1.into(), 2.into());
+            let (l, rr) = x.split(&half);
+            let (li, ri) = halves(xi.points());
+            assert!(has(&Bezier::new(li), &l), "left half");
+            assert!(has(&Bezier::new(ri), &rr), "right half");
+            // a product of two Bernstein forms
+            let (xs, ys) = x.coords();
+            let (xsi, ysi) = coords(&xi);
+            let exact = crate::curve::bernstein_product(&xs, &ys);
+            let got = bprod(&xsi, &ysi);
+            assert!(
+                got.iter().zip(&exact).all(|(g, e)| g.contains_rational(e)),
+                "bprod"
+            );
+            // two boxes: the hull of the control points and a moved one
+            let b1 = bbox(&xi);
+            let moved = Bezier::new(
+                pts.iter()
+                    .map(|p| V2::new(&p.x + &dx, &p.y + &dy))
+                    .collect(),
+            )
+            .map(interval_from_rational);
+            let b2 = bbox(&moved);
+            let q = |f: f64| rational_from_f64(f).unwrap();
+            let gap = |p: Interval, o: Interval| {
+                let g1 = q(o.inf()) - q(p.sup());
+                let g2 = q(p.inf()) - q(o.sup());
+                let g = if g1 > g2 { g1 } else { g2 };
+                if g.is_negative() {
+                    Rational::zero()
+                } else {
+                    g
+                }
+            };
+            let (gx, gy) = (gap(b1.x, b2.x), gap(b1.y, b2.y));
+            let d2 = &gx * &gx + &gy * &gy;
+            let lo = box_dist2_lo(&b1, &b2);
+            assert!(q(lo) <= d2, "box distance {lo} above the exact {d2}");
+            let slack = &d2 * Rational::new(1.into(), 1_000_000_000_000i64.into());
+            assert!(q(lo) >= &d2 - &slack, "box distance {lo} far below {d2}");
+            if d2.is_positive() {
+                apart += 1;
+            }
+        }
+        assert!(apart > 100, "{apart} pairs of boxes apart");
+    }
+
+    /// [`box_dist2_lo`] on float boxes (full mantissas, exponents over 30
+    /// binades or within 2, so that the gaps, squares and sums round):
+    /// never above the exact squared distance, and within a relative `1e-12`.
+    #[test]
+    fn box_distance_is_a_tight_lower_bound() {
+        use crate::scalar::rational_from_f64;
+        let mut rng = crate::test_util::TestRng::new(0xa409_3822_299f_31d0);
+        // half the cases over 30 binades, half within 2 (so that both
+        // squares are of one size and their rounding errors add up)
+        let mut k = 0;
+        let mut f = || {
+            k += 1;
+            let m = 1.0 + (rng.int(1 << 52) as f64).abs() / 2f64.powi(52);
+            let e = if k % 8 < 4 { rng.int(15) } else { rng.int(1) } as i32;
+            m * 2f64.powi(e) * if rng.int(2) == 0 { 1.0 } else { -1.0 }
+        };
+        let q = |x: f64| rational_from_f64(x).unwrap();
+        let mut rounded = 0;
+        for _ in 0..40_000 {
+            let iv = |a: f64, b: f64| Interval::try_from((a.min(b), a.max(b))).unwrap();
+            let a = V2::new(iv(f(), f()), iv(f(), f()));
+            let b = V2::new(iv(f(), f()), iv(f(), f()));
+            let gap = |p: Interval, o: Interval| {
+                let (g1, g2) = (q(o.inf()) - q(p.sup()), q(p.inf()) - q(o.sup()));
+                let g = if g1 > g2 { g1 } else { g2 };
+                if g.is_negative() {
+                    Rational::zero()
+                } else {
+                    g
+                }
+            };
+            let (gx, gy) = (gap(a.x, b.x), gap(a.y, b.y));
+            let d2 = &gx * &gx + &gy * &gy;
+            let lo = box_dist2_lo(&a, &b);
+            assert!(q(lo) <= d2, "{lo} above the exact {d2}: {a:?} {b:?}");
+            let slack = &d2 * Rational::new(1.into(), 1_000_000_000_000i64.into());
+            assert!(q(lo) >= &d2 - &slack, "{lo} far below {d2}");
+            if q(lo) != d2 {
+                rounded += 1;
+            }
+        }
+        assert!(rounded > 1000, "{rounded} inexact cases");
     }
 
     // ----------------------------------------------------------------------
