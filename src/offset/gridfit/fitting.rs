@@ -5,6 +5,7 @@ use super::fit::{self, dv, FitEnds};
 use super::outline::{Contour, Ctx, Joint, Pos};
 use crate::curve::{Bezier, V2};
 use glam::DVec2;
+use std::cell::Cell;
 
 impl Ctx<'_> {
     /// A cubic from `a.g` to `b.g` with inner control points on the grid.
@@ -400,6 +401,18 @@ pub(super) fn two_sided(exact: &[DVec2], c: &Bezier<f64>) -> f64 {
 /// smaller). A comparison `< cap` decides as with the full value; for `≤ x`
 /// or `> x` pass `cap = x.next_up()`.
 pub(super) fn two_sided_capped(exact: &[DVec2], c: &Bezier<f64>, cap: f64) -> f64 {
+    two_sided_hinted(exact, c, cap, &Cell::new(0))
+}
+
+/// [`two_sided_capped`] with the first direction's sample order hinted
+/// ([`fit::sampled_error_hinted`]: the same value, only the work depends on
+/// `first`).
+pub(super) fn two_sided_hinted(
+    exact: &[DVec2],
+    c: &Bezier<f64>,
+    cap: f64,
+    first: &Cell<usize>,
+) -> f64 {
     // a quadratic is measured as its exact degree elevation (the same curve)
     let elevated;
     let c = if c.degree() == 1 {
@@ -432,7 +445,7 @@ pub(super) fn two_sided_capped(exact: &[DVec2], c: &Bezier<f64>, cap: f64) -> f6
     } else {
         c
     };
-    let ab = fit::sampled_error_capped(exact, c, cap);
+    let ab = fit::sampled_error_hinted(exact, c, cap, first);
     if ab >= cap {
         return ab;
     }
@@ -507,7 +520,8 @@ fn free_inner_points(exact: &[DVec2], c: Bezier<f64>) -> Bezier<f64> {
     };
     // capped: fr is kept only below simplex[3].1, fe only below fr, fk only
     // below simplex[4].1, so those caps change no decision
-    let f = |x: &[f64; 4], cap: f64| two_sided_capped(exact, &make(x), cap);
+    let hint = Cell::new(0);
+    let f = |x: &[f64; 4], cap: f64| two_sided_hinted(exact, &make(x), cap, &hint);
     let x0 = [p[1].x, p[1].y, p[2].x, p[2].y];
     let step = 0.05
         * (p[3] - p[0])
