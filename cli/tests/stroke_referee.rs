@@ -194,8 +194,13 @@ fn check(
     }
     // the search stops when d_H's gap is small (the smaller direction's
     // bounds need only stay below the larger one): d_H's interval is no
-    // wider than the stroke's bounds and the relative gap allow
-    let allowed = 2.0 * d.stroke.a.bound.max(d.stroke.b.bound) + 2e-3 * d.hi + 1e-12;
+    // wider than the stroke's bounds and the search's gap allow — the gap of
+    // a direction's search is below its relative gap (1e-3, doubled here)
+    // or below the referee's absolute gap, a quarter of the stroke's
+    // tolerance E (`stroke::referee::distance_through`: the bounds carry the
+    // outline's (a), (b) up to E anyway)
+    let e = stroke_tol.parse::<f64>().unwrap();
+    let allowed = 2.0 * d.stroke.a.bound.max(d.stroke.b.bound) + (2e-3 * d.hi).max(e / 4.0) + 1e-12;
     assert!(
         d.hi - d.lo <= allowed,
         "{name}: d_H in [{}, {}] wider than {allowed}",
