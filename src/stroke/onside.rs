@@ -61,6 +61,17 @@ fn hull(xs: impl Iterator<Item = Interval>) -> Interval {
     Interval::try_from((lo, hi)).unwrap_or(Interval::ENTIRE)
 }
 
+/// Every number of `v` is `> 0` (an empty `v`, whose ends are `+∞` and
+/// `−∞`, is not).
+fn above(v: Interval) -> bool {
+    !v.is_empty() && v.inf() > 0.0
+}
+
+/// Every number of `v` is `< 0` (an empty `v` is not).
+fn below(v: Interval) -> bool {
+    !v.is_empty() && v.sup() < 0.0
+}
+
 /// The box of an interval Bézier's control points.
 pub(crate) fn bbox(b: &IB) -> IV {
     V2::new(
@@ -202,7 +213,7 @@ fn sq_dist_above(pts: &[IV], c: &IV, r2: Interval) -> bool {
         let dx: Vec<Interval> = xs.iter().map(|v| *v - c.x).collect();
         let dy: Vec<Interval> = ys.iter().map(|v| *v - c.y).collect();
         let g = add(&bprod(&dx, &dx), &bprod(&dy, &dy));
-        return g.iter().all(|v| (*v - r2).inf() > 0.0);
+        return g.iter().all(|v| above(*v - r2));
     }
     let d: Vec<(Interval, Interval)> = pts
         .iter()
@@ -223,7 +234,7 @@ fn sq_dist_above(pts: &[IV], c: &IV, r2: Interval) -> bool {
             };
             sum = ulp::add(sum, term);
         }
-        ulp::sub(sum, ulp::mul(point(row2[k]), r2)).inf() > 0.0
+        above(ulp::sub(sum, ulp::mul(point(row2[k]), r2)))
     })
 }
 
@@ -292,9 +303,9 @@ fn whole_positive(f: &[Vec<Interval>; 3], e: &IV, sign: i8) -> bool {
         && q.iter().zip(hx).zip(hy).all(|((q, a), b)| {
             let v = *q - e.x * *a - e.y * *b;
             if sign > 0 {
-                v.inf() > 0.0
+                above(v)
             } else {
-                v.sup() < 0.0
+                below(v)
             }
         })
 }
@@ -335,8 +346,11 @@ fn charge(leaves: &[(bool, f64)], budget: f64) -> Option<f64> {
 /// A certain lower bound of the squared distance between two boxes, in
 /// floats: each result rounded to nearest and stepped down once, which is
 /// below the exact value (the argument of [`ulp`]); a gap rounded below 0
-/// counts as 0. `NaN` (an empty or unbounded box) compares as no bound.
+/// counts as 0, and so does every gap of an empty box (no bound).
 fn box_dist2_lo(a: &IV, b: &IV) -> f64 {
+    if [a.x, a.y, b.x, b.y].iter().any(|c| c.is_empty()) {
+        return 0.0;
+    }
     let gap = |p: Interval, q: Interval| -> f64 {
         let g = (q.inf() - p.sup())
             .next_down()
@@ -802,11 +816,7 @@ impl Input {
                     )
                 };
                 let s = dot(&V2::new(e.x - c.x, e.y - c.y), tj);
-                let ok = if forward {
-                    s.sup() < 0.0
-                } else {
-                    s.inf() > 0.0
-                };
+                let ok = if forward { below(s) } else { above(s) };
                 if !ok {
                     break;
                 }
@@ -1392,6 +1402,19 @@ mod tests {
             }
         }
         assert!(rounded > 1000, "{rounded} inexact cases");
+        // an empty coordinate (inari's ends +∞, −∞) bounds nothing
+        let one = Interval::try_from((1.0, 2.0)).unwrap();
+        for (a, b) in [
+            (V2::new(Interval::EMPTY, one), V2::new(one, one)),
+            (V2::new(one, one), V2::new(one, Interval::EMPTY)),
+        ] {
+            assert_eq!(box_dist2_lo(&a, &b), 0.0);
+        }
+        // nor does it prove a sign or a far part
+        assert!(!above(Interval::EMPTY) && !below(Interval::EMPTY));
+        let c = V2::new(one, one);
+        let pts = [V2::new(Interval::EMPTY, one), V2::new(one, one)];
+        assert!(!sq_dist_above(&pts, &c, one));
     }
 
     // ----------------------------------------------------------------------
