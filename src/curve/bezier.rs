@@ -101,6 +101,12 @@ impl<S: Scalar> Bezier<S> {
     /// Splits at `t` into the pieces over `[0, t]` and `[t, 1]`, each
     /// reparametrised to `[0, 1]`.
     pub fn split(&self, t: &S) -> (Bezier<S>, Bezier<S>) {
+        self.split_by(|p, q| p.lerp(q, t))
+    }
+    /// [`Bezier::split`] with its de Casteljau step given: `step(p, q)` is
+    /// the point at the split parameter between `p` and `q` (an arithmetic
+    /// of the caller's own, e.g. outward-rounded enclosures).
+    pub fn split_by(&self, step: impl Fn(&V2<S>, &V2<S>) -> V2<S>) -> (Bezier<S>, Bezier<S>) {
         let mut p = self.pts.clone();
         let n = p.len();
         let mut left = Vec::with_capacity(n);
@@ -109,7 +115,7 @@ impl<S: Scalar> Bezier<S> {
         right.push(p[n - 1].clone());
         for r in 1..n {
             for i in 0..n - r {
-                p[i] = p[i].lerp(&p[i + 1], t);
+                p[i] = step(&p[i], &p[i + 1]);
             }
             left.push(p[0].clone());
             right.push(p[n - 1 - r].clone());

@@ -369,37 +369,17 @@ fn box_dist2_lo(a: &IV, b: &IV) -> f64 {
     down(down(gx * gx) + down(gy * gy))
 }
 
-/// The box of control points (outward: their hull).
-fn bbox_pts(pts: &[IV]) -> IV {
-    V2::new(hull(pts.iter().map(|p| p.x)), hull(pts.iter().map(|p| p.y)))
-}
-
-/// The control points of the halves `[0, 1/2]` and `[1/2, 1]` (de Casteljau
-/// at `1/2`), each step `(a + b)·(1/2)` in [`ulp`] arithmetic: enclosures of
-/// the exact halves' control points.
-fn halves(pts: &[IV]) -> (Vec<IV>, Vec<IV>) {
+/// The halves `[0, 1/2]` and `[1/2, 1]` of `x` (de Casteljau at `1/2`), each
+/// step `(a + b)·(1/2)` in [`ulp`] arithmetic: enclosures of the exact halves'
+/// control points.
+fn halves(x: &IB) -> (IB, IB) {
     let half = point(0.5);
-    let mid = |a: &IV, b: &IV| {
+    x.split_by(|a, b| {
         V2::new(
             ulp::mul(ulp::add(a.x, b.x), half),
             ulp::mul(ulp::add(a.y, b.y), half),
         )
-    };
-    let n = pts.len();
-    let mut w = pts.to_vec();
-    let mut left = Vec::with_capacity(n);
-    let mut right = Vec::with_capacity(n);
-    left.push(w[0].clone());
-    right.push(w[n - 1].clone());
-    for level in 1..n {
-        for i in 0..n - level {
-            w[i] = mid(&w[i], &w[i + 1]);
-        }
-        left.push(w[0].clone());
-        right.push(w[n - 1 - level].clone());
-    }
-    right.reverse();
-    (left, right)
+    })
 }
 
 /// Remembered one-form tests of one box on one piece: `(kind, w0, w1)` →
@@ -684,12 +664,13 @@ impl Input {
         let (ex, ey) = (point(eps.x.mag()), point(eps.y.mag()));
         let reach = self.r + (ex * ex + ey * ey).sqrt();
         let r2 = reach * reach;
-        self.far_pts(xr.points(), e, &c, r2, depth)
+        self.far_pts(xr, e, &c, r2, depth)
     }
 
     /// [`Input::far_part`] on control points, with the box's centre `c` and
     /// `r2 ≥ (r + ρ)²` computed once.
-    fn far_pts(&self, pts: &[IV], e: &IV, c: &IV, r2: Interval, depth: u32) -> bool {
+    fn far_pts(&self, x: &IB, e: &IV, c: &IV, r2: Interval, depth: u32) -> bool {
+        let pts = x.points();
         if sq_dist_above(pts, c, r2) {
             return true;
         }
@@ -705,9 +686,9 @@ impl Input {
                 return false;
             }
         }
-        let (l, r) = halves(pts);
+        let (l, r) = halves(x);
         [l, r].iter().all(|h| {
-            box_dist2_lo(e, &bbox_pts(h)) > self.r2.sup() || self.far_pts(h, e, c, r2, depth - 1)
+            box_dist2_lo(e, &bbox(h)) > self.r2.sup() || self.far_pts(h, e, c, r2, depth - 1)
         })
     }
 
@@ -1279,6 +1260,22 @@ mod tests {
         assert!(above > 100 && not > 100, "{above} above, {not} not");
     }
 
+    /// The exact squared distance of two boxes with float ends (rationals).
+    fn exact_box_dist2(a: &IV, b: &IV) -> Rational {
+        let q = |f: f64| crate::scalar::rational_from_f64(f).unwrap();
+        let gap = |p: Interval, o: Interval| {
+            let (g1, g2) = (q(o.inf()) - q(p.sup()), q(p.inf()) - q(o.sup()));
+            let g = if g1 > g2 { g1 } else { g2 };
+            if g.is_negative() {
+                Rational::zero()
+            } else {
+                g
+            }
+        };
+        let (gx, gy) = (gap(a.x, b.x), gap(a.y, b.y));
+        &gx * &gx + &gy * &gy
+    }
+
     /// The `ulp` geometry of the far and window tests against exact rational
     /// geometry: the restriction to `[a, b]` (blossoms), the halves at `1/2`
     /// and the products of Bernstein forms enclose the exact control points
@@ -1315,9 +1312,9 @@ mod tests {
             );
             let half = Rational::new(1.into(), 2.into());
             let (l, rr) = x.split(&half);
-            let (li, ri) = halves(xi.points());
-            assert!(has(&Bezier::new(li), &l), "left half");
-            assert!(has(&Bezier::new(ri), &rr), "right half");
+            let (li, ri) = halves(&xi);
+            assert!(has(&li, &l), "left half");
+            assert!(has(&ri, &rr), "right half");
             // a product of two Bernstein forms
             let (xs, ys) = x.coords();
             let (xsi, ysi) = coords(&xi);
@@ -1337,18 +1334,7 @@ mod tests {
             .map(interval_from_rational);
             let b2 = bbox(&moved);
             let q = |f: f64| rational_from_f64(f).unwrap();
-            let gap = |p: Interval, o: Interval| {
-                let g1 = q(o.inf()) - q(p.sup());
-                let g2 = q(p.inf()) - q(o.sup());
-                let g = if g1 > g2 { g1 } else { g2 };
-                if g.is_negative() {
-                    Rational::zero()
-                } else {
-                    g
-                }
-            };
-            let (gx, gy) = (gap(b1.x, b2.x), gap(b1.y, b2.y));
-            let d2 = &gx * &gx + &gy * &gy;
+            let d2 = exact_box_dist2(&b1, &b2);
             let lo = box_dist2_lo(&b1, &b2);
             assert!(q(lo) <= d2, "box distance {lo} above the exact {d2}");
             let slack = &d2 * Rational::new(1.into(), 1_000_000_000_000i64.into());
@@ -1382,17 +1368,7 @@ mod tests {
             let iv = |a: f64, b: f64| Interval::try_from((a.min(b), a.max(b))).unwrap();
             let a = V2::new(iv(f(), f()), iv(f(), f()));
             let b = V2::new(iv(f(), f()), iv(f(), f()));
-            let gap = |p: Interval, o: Interval| {
-                let (g1, g2) = (q(o.inf()) - q(p.sup()), q(p.inf()) - q(o.sup()));
-                let g = if g1 > g2 { g1 } else { g2 };
-                if g.is_negative() {
-                    Rational::zero()
-                } else {
-                    g
-                }
-            };
-            let (gx, gy) = (gap(a.x, b.x), gap(a.y, b.y));
-            let d2 = &gx * &gx + &gy * &gy;
+            let d2 = exact_box_dist2(&a, &b);
             let lo = box_dist2_lo(&a, &b);
             assert!(q(lo) <= d2, "{lo} above the exact {d2}: {a:?} {b:?}");
             let slack = &d2 * Rational::new(1.into(), 1_000_000_000_000i64.into());
