@@ -134,6 +134,45 @@ fn fitted_cubics_are_certified_sampled_and_connected() {
     }
 }
 
+/// The offset of a B-spline (C² at its knots) is one connected run in every
+/// output: the segments on both sides of a knot share the offset point bit for
+/// bit, so the papers' count is `Σ degree + 1` (before, the two pieces'
+/// float normals differed in the last bits and every knot of the pawn started
+/// a new run: 7 control points more at every TOL).
+#[test]
+fn b_spline_offsets_are_one_run_across_the_knots() {
+    for name in ["pawn_bspline", "doc_bspline", "cross_bspline"] {
+        let (x, ds) = curve(name);
+        for d in &ds {
+            for out in [Output::Native, Output::Cubic] {
+                let r = fitted(&x, d, "1e-2", out);
+                assert!(r.reached(), "{name} {d} {out:?}");
+                let mut knots = 0;
+                for w in r.segments.windows(2) {
+                    let (a, b) = (&w[0], &w[1]);
+                    if b.piece == a.piece + 1 && a.t.1 == 1.0 && b.t.0 == 0.0 {
+                        let pa = a.bezier.points();
+                        assert_eq!(
+                            pa[pa.len() - 1],
+                            b.bezier.points()[0],
+                            "{name} {d} {out:?} knot {}",
+                            b.piece
+                        );
+                        knots += 1;
+                    }
+                }
+                assert_eq!(
+                    knots + 1,
+                    x.len(),
+                    "{name} {d} {out:?}: every knot is a joint"
+                );
+                let degrees: usize = r.segments.iter().map(|s| s.bezier.degree()).sum();
+                assert_eq!(r.control_points(), degrees + 1, "{name} {d} {out:?}");
+            }
+        }
+    }
+}
+
 #[test]
 fn fitted_quadratics_are_certified_sampled_and_connected() {
     let (x, ds) = curve("cubic_bezier");

@@ -296,18 +296,37 @@ pub fn point_at(x: &Bezier<Rational>, t: f64) -> V2<Rational> {
 /// input, never part of a proof): the derivative in floats, by de Casteljau
 /// on the rounded control points, where it stands well above its rounding
 /// error, else the exact derivative rounded to floats; normalised in floats.
-/// Neighbouring segments call this with the same arguments, so they share the
-/// normal bit for bit.
+/// At the piece's ends (`t` = 0 or 1) always the exact end derivative
+/// `n·(p₁ − p₀)` or `n·(pₙ − pₙ₋₁)` rounded to floats.
+///
+/// Neighbouring segments of one piece call this with the same arguments, so
+/// they share the normal bit for bit; and two pieces meeting with equal
+/// derivatives (a C¹ junction: B-spline pieces, TrueType's implied on-curve
+/// points) get the same normal from either side, so their offsets meet at one
+/// float point and the output stays one connected run.
 pub fn unit_left_normal(x: &Bezier<Rational>, t: f64) -> Option<V2<f64>> {
-    let d = derivative_f64(x, t).map_or_else(
-        || {
-            x.hodograph()
-                .eval(&rational_from_f64(t)?)
-                .map(crate::scalar::Scalar::approx)
-                .into()
-        },
-        Some,
-    )?;
+    let exact = || -> Option<V2<f64>> {
+        let p = x.points();
+        let n = p.len().checked_sub(1).filter(|&n| n > 0)?;
+        let diff = if t == 0.0 {
+            p[1].sub(&p[0])
+        } else if t == 1.0 {
+            p[n].sub(&p[n - 1])
+        } else {
+            return Some(
+                x.hodograph()
+                    .eval(&rational_from_f64(t)?)
+                    .map(crate::scalar::Scalar::approx),
+            );
+        };
+        let n = Rational::from_integer((n as i64).into());
+        Some(diff.scale(&n).map(crate::scalar::Scalar::approx))
+    };
+    let d = if t == 0.0 || t == 1.0 {
+        exact()?
+    } else {
+        derivative_f64(x, t).map_or_else(exact, Some)?
+    };
     let l = d.norm2().sqrt();
     if !(l > 0.0 && l.is_finite()) {
         // rescale huge or tiny derivatives before normalising
@@ -511,6 +530,34 @@ mod tests {
                 prop_assert!((d.x - exact.x).abs() <= size * 2f64.powi(-30));
                 prop_assert!((d.y - exact.y).abs() <= size * 2f64.powi(-30));
             }
+        }
+    }
+
+    proptest! {
+        /// Two pieces meeting with equal derivatives (any degrees, control
+        /// points with non-dyadic coordinates) get the same canonical normal
+        /// from either side, bit for bit (before, the float derivatives of
+        /// the two sides' rounded points differed in the last bits, and the
+        /// offset of a B-spline broke into runs at its knots).
+        #[test]
+        fn a_c1_junction_has_one_normal(
+            p in proptest::collection::vec((-1000i64..=1000, -1000i64..=1000), 2..=5),
+            q in proptest::collection::vec((-1000i64..=1000, -1000i64..=1000), 0..=3),
+            den in 1i64..=1024,
+        ) {
+            let r = |v: i64| Rational::new(v.into(), (3 * den).into());
+            let pts: Vec<V2<Rational>> = p.iter().map(|&(x, y)| V2::new(r(x), r(y))).collect();
+            let (n, m) = (pts.len() - 1, q.len() + 1);
+            let end = pts[n].clone();
+            let step = end.sub(&pts[n - 1]);
+            prop_assume!(!step.x.is_zero() || !step.y.is_zero());
+            // q₁ = q₀ + (n/m)(pₙ − pₙ₋₁): equal derivatives at the junction
+            let k = Rational::new((n as i64).into(), (m as i64).into());
+            let mut next = vec![end.clone(), end.add(&step.scale(&k))];
+            next.extend(q.iter().map(|&(x, y)| V2::new(r(x), r(y))));
+            let (a, b) = (Bezier::new(pts), Bezier::new(next));
+            prop_assert_eq!(unit_left_normal(&a, 1.0), unit_left_normal(&b, 0.0));
+            prop_assert!(unit_left_normal(&a, 1.0).is_some());
         }
     }
 
