@@ -191,8 +191,16 @@ struct Parser<'a> {
     members: Vec<(Cow<'a, str>, Json<'a>)>,
 }
 
+/// The parser's results: the error boxed, so that a `Result` moves as
+/// cheaply as the value it carries (every value read is returned through one).
+type Parsed<T> = Result<T, Box<JsonError>>;
+
 /// Reads one JSON document under `limits`.
 pub fn parse<'a>(text: &'a str, limits: &Limits) -> Result<Json<'a>, JsonError> {
+    parse_boxed(text, limits).map_err(|e| *e)
+}
+
+fn parse_boxed<'a>(text: &'a str, limits: &Limits) -> Parsed<Json<'a>> {
     let mut p = Parser {
         text,
         b: text.as_bytes(),
@@ -247,23 +255,33 @@ impl<'a> Parser<'a> {
         s
     }
 
-    fn err(&self, reason: impl Into<String>) -> JsonError {
+    fn err(&self, reason: impl Into<String>) -> Box<JsonError> {
         self.err_of(ErrorKind::Syntax, reason)
     }
 
-    fn limit(&self, reason: impl Into<String>) -> JsonError {
+    fn limit(&self, reason: impl Into<String>) -> Box<JsonError> {
         self.err_of(ErrorKind::Limit, reason)
     }
 
-    fn err_of(&self, kind: ErrorKind, reason: impl Into<String>) -> JsonError {
+    fn err_of(&self, kind: ErrorKind, reason: impl Into<String>) -> Box<JsonError> {
         let (line, column) = line_col(self.b, self.pos);
-        JsonError {
+        Box::new(JsonError {
             path: self.path_string(),
             line,
             column,
             reason: reason.into(),
             kind,
-        }
+        })
+    }
+
+    /// Moves past the characters a string holds as they are (up to a quote,
+    /// a backslash, a control character or the end).
+    fn plain_run(&mut self) {
+        let rest = &self.b[self.pos..];
+        self.pos += rest
+            .iter()
+            .position(|&c| c == b'"' || c == b'\\' || c < 0x20)
+            .unwrap_or(rest.len());
     }
 
     fn peek(&self) -> Option<u8> {
@@ -276,7 +294,7 @@ impl<'a> Parser<'a> {
         }
     }
 
-    fn node(&mut self) -> Result<(), JsonError> {
+    fn node(&mut self) -> Parsed<()> {
         self.nodes += 1;
         if self.nodes > self.lim.max_nodes {
             return Err(self.limit(format!(
@@ -287,7 +305,7 @@ impl<'a> Parser<'a> {
         Ok(())
     }
 
-    fn value(&mut self, depth: usize) -> Result<Json<'a>, JsonError> {
+    fn value(&mut self, depth: usize) -> Parsed<Json<'a>> {
         self.node()?;
         match self.peek() {
             None => Err(self.err("unexpected end of the document")),
@@ -310,7 +328,7 @@ impl<'a> Parser<'a> {
             .unwrap_or_else(|| format!("\\x{c:02x}"))
     }
 
-    fn literal(&mut self, word: &str, v: Json<'a>) -> Result<Json<'a>, JsonError> {
+    fn literal(&mut self, word: &str, v: Json<'a>) -> Parsed<Json<'a>> {
         if self.b[self.pos..].starts_with(word.as_bytes()) {
             self.pos += word.len();
             Ok(v)
@@ -319,7 +337,7 @@ impl<'a> Parser<'a> {
         }
     }
 
-    fn enter(&self, depth: usize) -> Result<(), JsonError> {
+    fn enter(&self, depth: usize) -> Parsed<()> {
         if depth > self.lim.max_depth {
             return Err(self.limit(format!(
                 "nested deeper than the limit of {}",
@@ -329,7 +347,7 @@ impl<'a> Parser<'a> {
         Ok(())
     }
 
-    fn array(&mut self, depth: usize) -> Result<Json<'a>, JsonError> {
+    fn array(&mut self, depth: usize) -> Parsed<Json<'a>> {
         self.enter(depth)?;
         self.pos += 1;
         self.ws();
@@ -356,10 +374,11 @@ impl<'a> Parser<'a> {
         }
     }
 
-    fn object(&mut self, depth: usize) -> Result<Json<'a>, JsonError> {
+    fn object(&mut self, depth: usize) -> Parsed<Json<'a>> {
         self.enter(depth)?;
         self.pos += 1;
-        let mut seen: std::collections::HashSet<Cow<'a, str>> = std::collections::HashSet::new();
+        // built only for an object past 16 members (the hasher's seed is not free)
+        let mut seen: Option<std::collections::HashSet<Cow<'a, str>>> = None;
         self.ws();
         if self.peek() == Some(b'}') {
             self.pos += 1;
@@ -385,10 +404,9 @@ impl<'a> Parser<'a> {
             let dup = if members.len() < 16 {
                 members.iter().any(|(k, _)| *k == key)
             } else {
-                if seen.is_empty() {
-                    seen.extend(members.iter().map(|(k, _)| k.clone()));
-                }
-                !seen.insert(key.clone())
+                !seen
+                    .get_or_insert_with(|| members.iter().map(|(k, _)| k.clone()).collect())
+                    .insert(key.clone())
             };
             if dup {
                 self.pos = key_start;
@@ -418,16 +436,11 @@ impl<'a> Parser<'a> {
         }
     }
 
-    fn string(&mut self) -> Result<Cow<'a, str>, JsonError> {
+    fn string(&mut self) -> Parsed<Cow<'a, str>> {
         self.pos += 1; // opening quote
                        // without an escape, the string is a slice of the text
         let first = self.pos;
-        while let Some(c) = self.peek() {
-            if c == b'"' || c == b'\\' || c < 0x20 {
-                break;
-            }
-            self.pos += 1;
-        }
+        self.plain_run();
         if self.peek() == Some(b'"') {
             if self.pos - first > self.lim.max_string_bytes {
                 return Err(self.limit(format!(
@@ -442,12 +455,7 @@ impl<'a> Parser<'a> {
         let mut out = String::new();
         loop {
             let start = self.pos;
-            while let Some(c) = self.peek() {
-                if c == b'"' || c == b'\\' || c < 0x20 {
-                    break;
-                }
-                self.pos += 1;
-            }
+            self.plain_run();
             out.push_str(&self.text[start..self.pos]);
             if out.len() > self.lim.max_string_bytes {
                 return Err(self.limit(format!(
@@ -484,7 +492,7 @@ impl<'a> Parser<'a> {
         }
     }
 
-    fn hex4(&mut self) -> Result<u32, JsonError> {
+    fn hex4(&mut self) -> Parsed<u32> {
         let h = self
             .text
             .get(self.pos..self.pos + 4)
@@ -495,7 +503,7 @@ impl<'a> Parser<'a> {
         Ok(v)
     }
 
-    fn unicode_escape(&mut self) -> Result<char, JsonError> {
+    fn unicode_escape(&mut self) -> Parsed<char> {
         let hi = self.hex4()?;
         let code = if (0xD800..0xDC00).contains(&hi) {
             if !self.b[self.pos..].starts_with(b"\\u") {
@@ -513,7 +521,7 @@ impl<'a> Parser<'a> {
         char::from_u32(code).ok_or_else(|| self.err("lone surrogate in a \\u escape"))
     }
 
-    fn number(&mut self) -> Result<Json<'a>, JsonError> {
+    fn number(&mut self) -> Parsed<Json<'a>> {
         let start = self.pos;
         let digits = |p: &mut Self| {
             let s = p.pos;

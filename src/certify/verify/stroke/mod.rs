@@ -454,6 +454,24 @@ pub(crate) struct Input {
     pub(crate) straight: Vec<bool>,
 }
 
+/// Whether every control point of `p` lies on the line through its end points
+/// (exactly). `pi` encloses `p`: a control point whose enclosed cross product
+/// with the chord excludes 0 is off the line, so a curved piece is decided in
+/// intervals; only pieces that pass every interval test are checked exactly.
+fn on_chord(p: &[Q2], pi: &[P]) -> bool {
+    let n = p.len() - 1;
+    let d = [pi[n][0] - pi[0][0], pi[n][1] - pi[0][1]];
+    let off = |q: &P| {
+        let c = (q[0] - pi[0][0]) * d[1] - (q[1] - pi[0][1]) * d[0];
+        !c.contains(0.0)
+    };
+    if pi[1..n].iter().any(off) {
+        return false;
+    }
+    let d = subq(&p[n], &p[0]);
+    p.iter().all(|q| cross(&subq(q, &p[0]), &d).is_zero())
+}
+
 impl Input {
     /// Checks the pieces (degree ≥ 1, nonzero end tangents, finite) and
     /// encloses them.
@@ -479,16 +497,14 @@ impl Input {
                 ));
             }
         }
-        let iv = exact
+        let iv: Vec<Bez> = exact
             .iter()
             .map(|p| Bez::with_distance_form(p.iter().map(ip).collect()))
             .collect();
         let straight = exact
             .iter()
-            .map(|p| {
-                let d = subq(&p[p.len() - 1], &p[0]);
-                p.iter().all(|q| cross(&subq(q, &p[0]), &d).is_zero())
-            })
+            .zip(&iv)
+            .map(|(p, b)| on_chord(p, &b.pts))
             .collect();
         Ok(Input {
             exact,

@@ -1800,3 +1800,32 @@ fn restriction_encloses_the_exact_blossom_values() {
         }
     }
 }
+
+/// `on_chord` (whether a piece is straight) decides curved pieces in
+/// intervals and the rest exactly: points exactly on the chord with
+/// non-dyadic coordinates are straight, a point moved off it by far less than
+/// an interval's width is not, and a clearly curved piece is not.
+#[test]
+fn straight_pieces_are_decided_exactly() {
+    use super::geom::ip;
+    let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
+    let check = |pts: &[[Rational; 2]]| {
+        let iv: Vec<_> = pts.iter().map(ip).collect();
+        super::on_chord(pts, &iv)
+    };
+    for k in 1..40i64 {
+        // p(s) = a + s (b − a) at s = k/41 and s = 2k/83: on the chord
+        let (a, b) = ([q(1, 3), q(-2, 7)], [q(5 * k, 9), q(k, 11)]);
+        let on = |s: Rational| [&a[0] + &s * (&b[0] - &a[0]), &a[1] + &s * (&b[1] - &a[1])];
+        let (m1, m2) = (on(q(k, 41)), on(q(2 * k, 83)));
+        assert!(check(&[a.clone(), m1.clone(), m2.clone(), b.clone()]), "k = {k}");
+        // off the chord by 10⁻⁴⁰ (inside every interval's rounding)
+        let mut off = m1.clone();
+        off[1] += q(1, 10).pow(40);
+        assert!(!check(&[a.clone(), off, m2.clone(), b.clone()]), "k = {k}");
+        // clearly curved
+        let mut bent = m2.clone();
+        bent[0] += q(1, 2);
+        assert!(!check(&[a.clone(), m1, bent, b.clone()]), "k = {k}");
+    }
+}
