@@ -87,6 +87,74 @@ pub(super) fn foot(curve: &[Bezier<f64>], form: &Form, p: (f64, f64)) -> (f64, u
     (form.estimate(best.0), best.1, best.2)
 }
 
+/// The input curve as the kept test reads it: the exact pieces, and per
+/// piece a float box that encloses its exact control points (outward
+/// rounded), the cheap first exclusion of [`ExactCurve::outside`].
+pub(crate) struct ExactCurve<'a> {
+    pub(crate) pieces: &'a [Bezier<Rational>],
+    /// Per piece `[[x_lo, y_lo], [x_hi, y_hi]]`; `None` where a coordinate
+    /// has no finite enclosure (the exact tests decide there).
+    boxes: Vec<Option<[[f64; 2]; 2]>>,
+}
+
+impl<'a> ExactCurve<'a> {
+    pub(crate) fn new(pieces: &'a [Bezier<Rational>]) -> Self {
+        let boxes = pieces
+            .iter()
+            .map(|x| {
+                let mut b = [[f64::INFINITY; 2], [f64::NEG_INFINITY; 2]];
+                for p in x.points() {
+                    for (k, c) in [&p.x, &p.y].into_iter().enumerate() {
+                        let i = interval_from_rational(c);
+                        if !(i.inf().is_finite() && i.sup().is_finite()) {
+                            return None;
+                        }
+                        b[0][k] = b[0][k].min(i.inf());
+                        b[1][k] = b[1][k].max(i.sup());
+                    }
+                }
+                Some(b)
+            })
+            .collect();
+        ExactCurve { pieces, boxes }
+    }
+
+    /// `w ∉ S = x ⊕ E`, proven (`false`: not proven), as [`outside`]; a
+    /// piece whose box is proven farther than `√a2_hi` from `w` (`E` lies in
+    /// that disk) is passed over without exact arithmetic. The same answer as
+    /// [`outside`] always: the box test is the exact bounding-box exclusion
+    /// of [`outside_piece`] with a box that is only larger.
+    pub(crate) fn outside(&self, w: &V2<Rational>, form: &Form) -> bool {
+        let wi = [interval_from_rational(&w.x), interval_from_rational(&w.y)];
+        let r2_hi = interval_from_rational(&form.a2_hi).sup();
+        (0..self.pieces.len())
+            .all(|i| self.far(i, &wi, r2_hi) || outside_piece(&self.pieces[i], w, form))
+    }
+
+    /// Piece `i`'s box is proven at a squared distance `> r2_hi` from every
+    /// point of `wi`.
+    pub(super) fn far(&self, i: usize, wi: &[Interval; 2], r2_hi: f64) -> bool {
+        let Some([lo, hi]) = self.boxes[i] else {
+            return false;
+        };
+        let point = |v: f64| Interval::try_from((v, v)).expect("a finite box");
+        // an enclosure of the gap between w and the box along axis k, when
+        // it is proven positive on one side; 0 otherwise (a lower bound)
+        let gap = |k: usize| {
+            let below = point(lo[k]) - wi[k];
+            let above = wi[k] - point(hi[k]);
+            if below.inf() > 0.0 {
+                below
+            } else if above.inf() > 0.0 {
+                above
+            } else {
+                point(0.0)
+            }
+        };
+        (gap(0).sqr() + gap(1).sqr()).inf() > r2_hi
+    }
+}
+
 /// Proves `g(w − x(t)) > d` for all `t` in `[0, 1]` (`w ∉ x(t) + E`; for a
 /// circle `|w − x(t)|² > r²`) by exact Bernstein signs, subdividing.
 pub(crate) fn outside_piece(x: &Bezier<Rational>, w: &V2<Rational>, form: &Form) -> bool {
@@ -327,7 +395,7 @@ pub(super) const KEPT_MAX_PARTS: usize = 4000;
 /// `max_parts` parts ([`KEPT_MAX_PARTS`], or a few for a cheap first try on a
 /// short sub-piece, which one or two witnesses cover).
 pub(super) fn prove_kept(
-    curve: &[Bezier<Rational>],
+    curve: &ExactCurve,
     curve_f: &[Bezier<f64>],
     piece: &Piece,
     e_in: f64,
@@ -403,7 +471,7 @@ pub(super) fn prove_kept(
                     continue;
                 }
                 over = false;
-                if outside(curve, &w, form) {
+                if curve.outside(&w, form) {
                     done = Some(rho);
                     break 'tries;
                 }

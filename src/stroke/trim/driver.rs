@@ -2,7 +2,7 @@
 
 use super::add_note;
 use super::chain::{chain, check_simple, Known};
-use super::classify::{foot, prove_kept, prove_removed, Part, KEPT_MAX_PARTS};
+use super::classify::{foot, prove_kept, prove_removed, ExactCurve, Part, KEPT_MAX_PARTS};
 use super::pinch::pinched_loops;
 use super::sides::{check, dist_hi, raw_contours, Kind, Raw};
 use super::split::{find_crossings, split_piece, Bridge, Sub};
@@ -128,6 +128,7 @@ fn stroke_at(
     let run = Run {
         curve,
         curve_f: curve.iter().map(|b| b.map(Scalar::approx)).collect(),
+        exact: ExactCurve::new(curve),
         comps: &comps,
         opts,
         form: &form,
@@ -247,6 +248,8 @@ struct Run<'a> {
     curve: &'a [Bezier<Rational>],
     /// The input in floats (for estimates and feet only).
     curve_f: Vec<Bezier<f64>>,
+    /// The input with the boxes of the exact outside test.
+    exact: ExactCurve<'a>,
     comps: &'a [(usize, usize, bool)],
     opts: &'a StrokeOptions,
     form: &'a Form,
@@ -339,8 +342,17 @@ fn kept_bound(run: &Run, onside_input: Option<&Input>, s: &Sub, est: f64) -> Opt
         return Some(e_in);
     }
     // witnesses outside S for the whole sub-piece, in at most `parts` parts
-    let witnesses =
-        |parts| prove_kept(run.curve, &run.curve_f, &s.post, e_in, run.form, tol, parts);
+    let witnesses = |parts| {
+        prove_kept(
+            &run.exact,
+            &run.curve_f,
+            &s.post,
+            e_in,
+            run.form,
+            tol,
+            parts,
+        )
+    };
     if est < run.form.reach - 4.0 * e_in.max(tol / 8.0) {
         return None;
     }
@@ -547,7 +559,7 @@ impl KeptChunks<'_, '_> {
         let chunk = Piece::Bezier(self.pre.restrict(&q0, &q1));
         let raw_e_in = self.run.raws[self.s.raw].e_in;
         let kept = prove_kept(
-            self.run.curve,
+            &self.run.exact,
             &self.run.curve_f,
             &chunk,
             raw_e_in,

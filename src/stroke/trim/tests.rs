@@ -384,3 +384,86 @@ fn chunk_bounds_need_a_tiling_of_the_whole_sub_piece() {
     let fails = |k: usize, _: f64, _: f64| (k != 2).then_some(0.1);
     assert_eq!(tiled(&three, fails), None);
 }
+
+/// The kept test's float boxes (`ExactCurve::far`) exclude a piece only
+/// where its exact control points are farther than `r` from the witness
+/// (checked exactly), they do exclude the clearly far ones, and
+/// `ExactCurve::outside` answers as the exact `outside` on witnesses placed
+/// a hair inside, on and outside the box distance `r` (non-dyadic control
+/// points, so the boxes are rounded outward).
+#[test]
+fn float_boxes_exclude_only_what_is_far() {
+    use super::classify::{outside, ExactCurve};
+    use crate::stroke::ellipse::Form;
+    let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
+    let curve: Vec<Bezier<Rational>> = (0..6i64)
+        .map(|k| {
+            Bezier::new(vec![
+                V2::new(q(3 * k, 7), q(k * k, 3)),
+                V2::new(q(3 * k + 1, 7), q(k * k + 2, 3)),
+                V2::new(q(3 * k + 2, 7), q(k * k - 1, 3)),
+                V2::new(q(3 * k + 3, 7), q((k + 1) * (k + 1), 3)),
+            ])
+        })
+        .collect();
+    let r = q(1, 3);
+    let form = Form::circle(&r);
+    let exact = ExactCurve::new(&curve);
+    let r2_hi = interval_from_rational(&form.a2_hi).sup();
+    // the exact squared distance from w to piece i's control-point box
+    let box_d2 = |i: usize, w: &V2<Rational>| {
+        let pts = curve[i].points();
+        let mut d2 = <Rational as Zero>::zero();
+        for get in [
+            |v: &V2<Rational>| v.x.clone(),
+            |v: &V2<Rational>| v.y.clone(),
+        ] {
+            let lo = pts.iter().map(get).min().unwrap();
+            let hi = pts.iter().map(get).max().unwrap();
+            let c = get(w);
+            let g = if c < lo {
+                lo - c
+            } else if c > hi {
+                c - hi
+            } else {
+                <Rational as Zero>::zero()
+            };
+            d2 += &g * &g;
+        }
+        d2
+    };
+    let (mut far, mut near) = (0, 0);
+    for i in 0..curve.len() {
+        let pts = curve[i].points();
+        let lo_x = pts.iter().map(|v| v.x.clone()).min().unwrap();
+        let mid_y = (&pts[0].y + &pts[3].y) / Rational::from_integer(2.into());
+        for eps in [
+            q(-1, 1 << 40),
+            <Rational as Zero>::zero(),
+            q(1, 1 << 40),
+            q(1, 1000),
+            q(1, 3),
+        ] {
+            // left of the box by r + eps, at the height of its middle
+            let w = V2::new(&lo_x - &r - &eps, mid_y.clone());
+            let wi = [interval_from_rational(&w.x), interval_from_rational(&w.y)];
+            for j in 0..curve.len() {
+                if exact.far(j, &wi, r2_hi) {
+                    assert!(
+                        box_d2(j, &w) > form.a2_hi,
+                        "piece {j}, witness near piece {i}"
+                    );
+                    far += 1;
+                } else {
+                    near += 1;
+                }
+            }
+            assert_eq!(
+                exact.outside(&w, &form),
+                outside(&curve, &w, &form),
+                "piece {i}, eps {eps}"
+            );
+        }
+    }
+    assert!(far > 0 && near > 0, "far {far}, near {near}");
+}

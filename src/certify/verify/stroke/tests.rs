@@ -1818,7 +1818,10 @@ fn straight_pieces_are_decided_exactly() {
         let (a, b) = ([q(1, 3), q(-2, 7)], [q(5 * k, 9), q(k, 11)]);
         let on = |s: Rational| [&a[0] + &s * (&b[0] - &a[0]), &a[1] + &s * (&b[1] - &a[1])];
         let (m1, m2) = (on(q(k, 41)), on(q(2 * k, 83)));
-        assert!(check(&[a.clone(), m1.clone(), m2.clone(), b.clone()]), "k = {k}");
+        assert!(
+            check(&[a.clone(), m1.clone(), m2.clone(), b.clone()]),
+            "k = {k}"
+        );
         // off the chord by 10⁻⁴⁰ (inside every interval's rounding)
         let mut off = m1.clone();
         off[1] += q(1, 10).pow(40);
