@@ -960,99 +960,162 @@ fn read_outside(v: &Json, at: At) -> Result<(Q2, Rational), Invalid> {
     ))
 }
 
-/// Claim (a): the parts of one piece chain over it; each is checked.
-fn check_cover_piece(
-    v: &Json,
-    at: &str,
+/// Where the parts of one piece have reached: the end parameter of the last
+/// Bézier part, or the end direction of the last arc part.
+struct Chain {
+    s: Rational,
+    dir: Option<Q2>,
+}
+
+/// One part as the certificate states it: its span on the outline piece
+/// (checked to continue `chain`, which it advances), its hull, and its two
+/// witness fields (not read yet).
+fn read_part<'j, 't>(
+    p: &'j Json<'t>,
+    atk: &dyn Fn() -> String,
     piece: &OPiece,
-    input: &Input,
-    tol: crate::scalar::Interval,
-) -> Result<(Tally, Vec<simple::Span>, Vec<geom::Hull>), Invalid> {
-    let parts = arr(v, at, "parts")?;
-    if parts.is_empty() {
-        return Err(inv(at, "no parts: the piece is not covered"));
-    }
-    let zero = Rational::zero();
-    let one = Rational::from_integer(1.into());
-    let mut max = 0.0f64;
-    let mut spans = Vec::with_capacity(parts.len());
-    let mut hulls = Vec::with_capacity(parts.len());
-    let mut prev: Option<Q2> = None;
-    let mut prev_s: Rational = zero.clone();
-    for (k, p) in parts.iter().enumerate() {
-        let atk = || format!("{at}[{k}]");
-        let (hull, o, w) = match piece {
-            OPiece::Bezier { iv, .. } => {
-                let [s, o, w] = named(exact_object(p, "", ["s", "o", "w"]), atk)?;
-                let sa = named(arr(s, "", "2 parameters"), || join(&atk(), "s"))?;
-                if sa.len() != 2 {
-                    return Err(inv(join(&atk(), "s"), "expected [s0, s1]"));
-                }
-                let s0 = rational_at(&sa[0], &|| format!("{}.s[0]", atk()))?;
-                let s1 = rational_at(&sa[1], &|| format!("{}.s[1]", atk()))?;
-                if s0 != prev_s {
-                    return Err(inv(
-                        format!("{}.s[0]", atk()),
-                        format!("expected {prev_s}: the parts must cover [0, 1] in order"),
-                    ));
-                }
-                if s1 <= s0 || s1 > one {
-                    return Err(inv(format!("{}.s[1]", atk()), "expected s0 < s1 ≤ 1"));
-                }
-                prev_s = s1.clone();
-                spans.push(simple::Span::Bez(s0.clone(), s1.clone()));
-                (iv.restrict(iq(&s0), iq(&s1)), o, w)
+    chain: &mut Chain,
+) -> Result<(simple::Span, geom::Hull, &'j Json<'t>, &'j Json<'t>), Invalid> {
+    match piece {
+        OPiece::Bezier { iv, .. } => {
+            let [s, o, w] = named(exact_object(p, "", ["s", "o", "w"]), atk)?;
+            let sa = named(arr(s, "", "2 parameters"), || join(&atk(), "s"))?;
+            if sa.len() != 2 {
+                return Err(inv(join(&atk(), "s"), "expected [s0, s1]"));
             }
-            OPiece::Arc {
-                ccw_u, ccw_v, t, ..
-            } => {
-                let [d, o, w] = named(exact_object(p, "", ["dirs", "o", "w"]), atk)?;
-                let da = named(arr(d, "", "2 directions"), || join(&atk(), "dirs"))?;
-                if da.len() != 2 {
-                    return Err(inv(join(&atk(), "dirs"), "expected [d0, d1]"));
-                }
-                let d0 = point(&da[0], &|| format!("{}.dirs[0]", atk()))?;
-                let d1 = point(&da[1], &|| format!("{}.dirs[1]", atk()))?;
-                let start_ok = match &prev {
-                    None => cross(&d0, ccw_u).is_zero() && dotq(&d0, ccw_u).is_positive(),
-                    Some(q) => *q == d0,
-                };
-                if !start_ok {
-                    return Err(inv(
-                        format!("{}.dirs[0]", atk()),
-                        "must continue the previous part exactly (the first: along the arc's counter-clockwise start)",
-                    ));
-                }
-                if !turns_ccw_less_than_right_angle(&d0, &d1) {
-                    return Err(inv(
-                        join(&atk(), "dirs"),
-                        "a part turns counter-clockwise by less than π/2",
-                    ));
-                }
-                prev = Some(d1.clone());
-                spans.push(simple::Span::Arc(d0.clone(), d1.clone()));
-                let h = arc_hull(t.c, t.rho, ip(&d0), ip(&d1))
-                    .ok_or_else(|| inv(join(&atk(), "dirs"), "hull not finite"))?;
-                let _ = ccw_v;
-                (h, o, w)
+            let s0 = rational_at(&sa[0], &|| format!("{}.s[0]", atk()))?;
+            let s1 = rational_at(&sa[1], &|| format!("{}.s[1]", atk()))?;
+            if s0 != chain.s {
+                return Err(inv(
+                    format!("{}.s[0]", atk()),
+                    format!("expected {}: the parts must cover [0, 1] in order", chain.s),
+                ));
             }
-        };
-        let inside = read_witness(o, &|| join(&atk(), "o"))?;
-        let (w, mu) = read_outside(w, &|| join(&atk(), "w"))?;
-        let b = check_part(input, &hull, &inside, &w, &mu, tol).map_err(|e| inv(atk(), e))?;
-        max = max.max(b);
-        hulls.push(hull);
+            if s1 <= s0 || s1 > Rational::from_integer(1.into()) {
+                return Err(inv(format!("{}.s[1]", atk()), "expected s0 < s1 ≤ 1"));
+            }
+            chain.s = s1.clone();
+            let hull = iv.restrict(iq(&s0), iq(&s1));
+            Ok((simple::Span::Bez(s0, s1), hull, o, w))
+        }
+        OPiece::Arc { ccw_u, t, .. } => {
+            let [d, o, w] = named(exact_object(p, "", ["dirs", "o", "w"]), atk)?;
+            let da = named(arr(d, "", "2 directions"), || join(&atk(), "dirs"))?;
+            if da.len() != 2 {
+                return Err(inv(join(&atk(), "dirs"), "expected [d0, d1]"));
+            }
+            let d0 = point(&da[0], &|| format!("{}.dirs[0]", atk()))?;
+            let d1 = point(&da[1], &|| format!("{}.dirs[1]", atk()))?;
+            let start_ok = match &chain.dir {
+                None => cross(&d0, ccw_u).is_zero() && dotq(&d0, ccw_u).is_positive(),
+                Some(q) => *q == d0,
+            };
+            if !start_ok {
+                return Err(inv(
+                    format!("{}.dirs[0]", atk()),
+                    "must continue the previous part exactly (the first: along the arc's counter-clockwise start)",
+                ));
+            }
+            if !turns_ccw_less_than_right_angle(&d0, &d1) {
+                return Err(inv(
+                    join(&atk(), "dirs"),
+                    "a part turns counter-clockwise by less than π/2",
+                ));
+            }
+            chain.dir = Some(d1.clone());
+            let h = arc_hull(t.c, t.rho, ip(&d0), ip(&d1))
+                .ok_or_else(|| inv(join(&atk(), "dirs"), "hull not finite"))?;
+            Ok((simple::Span::Arc(d0, d1), h, o, w))
+        }
     }
-    let end_ok = match piece {
-        OPiece::Bezier { .. } => prev_s == one,
-        OPiece::Arc { ccw_v, .. } => prev
+}
+
+/// The parts chained over the whole piece: to its end parameter 1, or to the
+/// arc's counter-clockwise end direction.
+fn chain_complete(piece: &OPiece, chain: &Chain) -> bool {
+    match piece {
+        OPiece::Bezier { .. } => chain.s == Rational::from_integer(1.into()),
+        OPiece::Arc { ccw_v, .. } => chain
+            .dir
             .as_ref()
             .is_some_and(|d| cross(d, ccw_v).is_zero() && dotq(d, ccw_v).is_positive()),
-    };
-    if !end_ok {
-        return Err(inv(at, "the parts stop before the end of the piece"));
     }
-    Ok(((max, parts.len()), spans, hulls))
+}
+
+/// One outline piece's cover as read (no witness checked yet): per part its
+/// span, hull and witness fields, in order, and the error that stopped the
+/// reading (a malformed part, a gap in the chain, parts stopping short).
+struct PieceRead<'j, 't> {
+    spans: Vec<simple::Span>,
+    hulls: Vec<geom::Hull>,
+    witnesses: Vec<(&'j Json<'t>, &'j Json<'t>)>,
+    stop: Option<Invalid>,
+}
+
+/// Claim (a), first half: the parts of one piece read and chained over it.
+fn read_cover_piece<'j, 't>(v: &'j Json<'t>, at: &str, piece: &OPiece) -> PieceRead<'j, 't> {
+    let mut r = PieceRead {
+        spans: Vec::new(),
+        hulls: Vec::new(),
+        witnesses: Vec::new(),
+        stop: None,
+    };
+    let parts = match arr(v, at, "parts") {
+        Ok([]) => Err(inv(at, "no parts: the piece is not covered")),
+        other => other,
+    };
+    let parts = match parts {
+        Ok(p) => p,
+        Err(e) => {
+            r.stop = Some(e);
+            return r;
+        }
+    };
+    let mut chain = Chain {
+        s: Rational::zero(),
+        dir: None,
+    };
+    for (k, p) in parts.iter().enumerate() {
+        let atk = || format!("{at}[{k}]");
+        match read_part(p, &atk, piece, &mut chain) {
+            Ok((span, hull, o, w)) => {
+                r.spans.push(span);
+                r.hulls.push(hull);
+                r.witnesses.push((o, w));
+            }
+            Err(e) => {
+                r.stop = Some(e);
+                return r;
+            }
+        }
+    }
+    if !chain_complete(piece, &chain) {
+        r.stop = Some(inv(at, "the parts stop before the end of the piece"));
+    }
+    r
+}
+
+/// Claim (a), second half: each part read is checked, in order; then the
+/// reading's own error, if it stopped — the order in which reading and
+/// checking part by part would meet them.
+fn check_read_piece(
+    r: &PieceRead,
+    at: &str,
+    input: &Input,
+    tol: crate::scalar::Interval,
+) -> Result<Tally, Invalid> {
+    let mut max = 0.0f64;
+    for (k, (hull, (o, w))) in r.hulls.iter().zip(&r.witnesses).enumerate() {
+        let atk = || format!("{at}[{k}]");
+        let inside = read_witness(o, &|| join(&atk(), "o"))?;
+        let (w, mu) = read_outside(w, &|| join(&atk(), "w"))?;
+        let b = check_part(input, hull, &inside, &w, &mu, tol).map_err(|e| inv(atk(), e))?;
+        max = max.max(b);
+    }
+    match &r.stop {
+        Some(e) => Err(e.clone()),
+        None => Ok((max, r.hulls.len())),
+    }
 }
 
 /// One box of the cover of `∂S`.
@@ -1410,11 +1473,12 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
         )),
     };
     let bd = arr(boundary, "boundary", "families");
-    // Two strands at once (each parallel inside): (a), every piece's parts,
-    // then (c) when claimed, reusing (a)'s hulls; and the families of ∂S
-    // (exact joints included), then (b), every family's cover. The errors
-    // are reported in the order of the claims, (a) first, whichever strand
-    // finishes first.
+    // Two strands at once (each parallel inside): (a), every piece's parts
+    // read, then their witnesses checked beside (c) when claimed (which needs
+    // only the parts' spans and hulls); and the families of ∂S (exact joints
+    // included), then (b), every family's cover. The errors are reported in
+    // the order of the claims, (a) first, whichever strand finishes first;
+    // (c)'s verdict counts only when (a) has passed.
     type StrandA = (
         Vec<Result<(f64, usize), Invalid>>,
         Option<Result<Vec<bool>, Invalid>>,
@@ -1425,33 +1489,43 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
     let relaxed = std::sync::atomic::Ordering::Relaxed;
     let ((a, orient), (fams, b)): (StrandA, _) = rayon::join(
         || {
-            let parts: Vec<_> = jobs
+            let reads: Vec<PieceRead> = jobs
                 .par_iter()
-                .map(|(at, v, p)| {
-                    let r = check_cover_piece(v, at, p, &input, tol_i);
-                    if r.is_err() {
-                        a_failed.store(true, relaxed);
-                    }
-                    r
-                })
+                .map(|(at, v, p)| read_cover_piece(v, at, p))
                 .collect();
-            let mut spans: Vec<Vec<Vec<simple::Span>>> =
-                outline.iter().map(|_| Vec::new()).collect();
-            let mut hulls: Vec<Vec<Vec<geom::Hull>>> = outline.iter().map(|_| Vec::new()).collect();
-            let mut a = Vec::with_capacity(parts.len());
-            for (t, (c, _)) in parts.into_iter().zip(&contour_of) {
-                a.push(t.map(|(mn, sp, h)| {
-                    spans[*c].push(sp);
-                    hulls[*c].push(h);
-                    mn
-                }));
-            }
-            if !matches!(simple_claimed, Ok(true)) || a.iter().any(|t| t.is_err()) {
-                return (a, None);
-            }
-            let orient = simple::simple_with(&outline, &spans, Some(&hulls))
-                .map_err(|e| inv("simple", format!("claimed, but {e}")));
-            (a, Some(orient))
+            let all_read = reads.iter().all(|r| r.stop.is_none());
+            rayon::join(
+                || {
+                    reads
+                        .par_iter()
+                        .zip(jobs.par_iter())
+                        .map(|(r, (at, _, _))| {
+                            let t = check_read_piece(r, at, &input, tol_i);
+                            if t.is_err() {
+                                a_failed.store(true, relaxed);
+                            }
+                            t
+                        })
+                        .collect::<Vec<_>>()
+                },
+                || {
+                    if !(all_read && matches!(simple_claimed, Ok(true))) {
+                        return None;
+                    }
+                    let mut spans: Vec<Vec<Vec<simple::Span>>> =
+                        outline.iter().map(|_| Vec::new()).collect();
+                    let mut hulls: Vec<Vec<Vec<geom::Hull>>> =
+                        outline.iter().map(|_| Vec::new()).collect();
+                    for (r, (c, _)) in reads.iter().zip(&contour_of) {
+                        spans[*c].push(r.spans.clone());
+                        hulls[*c].push(r.hulls.clone());
+                    }
+                    Some(
+                        simple::simple_with(&outline, &spans, Some(&hulls))
+                            .map_err(|e| inv("simple", format!("claimed, but {e}"))),
+                    )
+                },
+            )
         },
         || {
             let fams = input.families();
@@ -1474,6 +1548,12 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
             (fams, b)
         },
     );
+    // (c)'s verdict only once (a) has passed (then every piece was read)
+    let orient = if a.iter().all(|t| t.is_ok()) {
+        orient
+    } else {
+        None
+    };
     let (mut max, mut count) = (0.0f64, 0usize);
     for t in a {
         let (m, n) = t?;

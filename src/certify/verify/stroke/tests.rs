@@ -1832,3 +1832,25 @@ fn straight_pieces_are_decided_exactly() {
         assert!(!check(&[a.clone(), m1, bent, b.clone()]), "k = {k}");
     }
 }
+
+/// Claim (c) is checked on the certificate's own parts: a copy of the
+/// outline's only contour (and of its cover) leaves claims (a) and (b) true —
+/// every part is still near `∂S`, and `∂S` near the first copy — but the two
+/// copies are not apart, so a certificate that claims a simple outline is
+/// refused at `simple`; without the claim it is accepted, and claim (c) is
+/// then not stated.
+#[test]
+fn a_doubled_contour_is_not_simple() {
+    let f = fixture(SQUARE);
+    assert_eq!(f.cert["simple"], true);
+    let mut doc = f.cert.clone();
+    for key in ["outline", "cover"] {
+        let first = arr(&mut doc[key])[0].clone();
+        arr(&mut doc[key]).push(first);
+    }
+    let e = refused_exactly(&doc, "simple");
+    assert!(e.reason.contains("claimed, but"), "{}", e.reason);
+    doc["simple"] = json!(false);
+    let v = check(&doc).expect("(a) and (b) hold for the doubled outline");
+    assert!(v.a.contains("simplicity not claimed"), "{}", v.a);
+}
