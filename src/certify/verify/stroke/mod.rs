@@ -967,6 +967,25 @@ struct Chain {
     dir: Option<Q2>,
 }
 
+/// A part's object `{key: [a, b], "o": …, "w": …}`: its two range ends read
+/// by `read` (named `key[0]`, `key[1]`; `what` the list, `ends` its expected
+/// form, for the errors), and its witness fields.
+fn read_pair<'j, 't, T>(
+    p: &'j Json<'t>,
+    atk: &dyn Fn() -> String,
+    [key, what, ends]: [&str; 3],
+    read: fn(&Json, At) -> Result<T, Invalid>,
+) -> Result<([T; 2], &'j Json<'t>, &'j Json<'t>), Invalid> {
+    let [v, o, w] = named(exact_object(p, "", [key, "o", "w"]), atk)?;
+    let a = named(arr(v, "", what), || join(&atk(), key))?;
+    if a.len() != 2 {
+        return Err(inv(join(&atk(), key), format!("expected {ends}")));
+    }
+    let first = read(&a[0], &|| format!("{}.{key}[0]", atk()))?;
+    let second = read(&a[1], &|| format!("{}.{key}[1]", atk()))?;
+    Ok(([first, second], o, w))
+}
+
 /// One part as the certificate states it: its span on the outline piece
 /// (checked to continue `chain`, which it advances), its hull, and its two
 /// witness fields (not read yet).
@@ -978,13 +997,8 @@ fn read_part<'j, 't>(
 ) -> Result<(simple::Span, geom::Hull, &'j Json<'t>, &'j Json<'t>), Invalid> {
     match piece {
         OPiece::Bezier { iv, .. } => {
-            let [s, o, w] = named(exact_object(p, "", ["s", "o", "w"]), atk)?;
-            let sa = named(arr(s, "", "2 parameters"), || join(&atk(), "s"))?;
-            if sa.len() != 2 {
-                return Err(inv(join(&atk(), "s"), "expected [s0, s1]"));
-            }
-            let s0 = rational_at(&sa[0], &|| format!("{}.s[0]", atk()))?;
-            let s1 = rational_at(&sa[1], &|| format!("{}.s[1]", atk()))?;
+            let ([s0, s1], o, w) =
+                read_pair(p, atk, ["s", "2 parameters", "[s0, s1]"], rational_at)?;
             if s0 != chain.s {
                 return Err(inv(
                     format!("{}.s[0]", atk()),
@@ -999,13 +1013,7 @@ fn read_part<'j, 't>(
             Ok((simple::Span::Bez(s0, s1), hull, o, w))
         }
         OPiece::Arc { ccw_u, t, .. } => {
-            let [d, o, w] = named(exact_object(p, "", ["dirs", "o", "w"]), atk)?;
-            let da = named(arr(d, "", "2 directions"), || join(&atk(), "dirs"))?;
-            if da.len() != 2 {
-                return Err(inv(join(&atk(), "dirs"), "expected [d0, d1]"));
-            }
-            let d0 = point(&da[0], &|| format!("{}.dirs[0]", atk()))?;
-            let d1 = point(&da[1], &|| format!("{}.dirs[1]", atk()))?;
+            let ([d0, d1], o, w) = read_pair(p, atk, ["dirs", "2 directions", "[d0, d1]"], point)?;
             let start_ok = match &chain.dir {
                 None => cross(&d0, ccw_u).is_zero() && dotq(&d0, ccw_u).is_positive(),
                 Some(q) => *q == d0,
