@@ -3,8 +3,8 @@
 //! (interval, then exact fallback), filtered with the static stage first
 //! (float with error bound, interval, exact) and rationals; then the
 //! division-free form (`pair_decision_signs`, what `filtered` evaluates) in
-//! f64, float with error bound, small exact rationals (`SmallRat`), the four
-//! stages, `filtered` itself (converting its inputs) and rationals. Prints the
+//! f64, its static stage (`pair_decision_static`), float with error bound,
+//! small exact rationals (`SmallRat`), the five stages, `filtered` itself (converting its inputs) and rationals. Prints the
 //! filter's fallback rate and how often the f64 path disagrees with the exact
 //! answer.
 //!
@@ -14,7 +14,7 @@
 #![allow(missing_docs)]
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use lncert::ln::pair::{pair_decision, pair_decision_signs, PairDecision};
+use lncert::ln::pair::{pair_decision, pair_decision_signs, pair_decision_static, PairDecision};
 use lncert::scalar::{
     filter_stats, filtered, frac, reset_filter_stats, FloatErr, Interval, Predicate, Rational,
     Scalar, SmallRat,
@@ -159,6 +159,18 @@ fn bench(c: &mut Criterion) {
     );
     let mut g = c.benchmark_group("prop_4_2_and_4_4_division_free");
     g.bench_function("f64", |b| b.iter(|| decided(&flt, pair_decision_signs)));
+    // the static stage: plain f64 tests against one bound from the inputs' magnitude
+    let by_static = |d: &[(FloatErr, FloatErr, FloatErr)]| {
+        d.iter()
+            .filter_map(|(a, c, r)| pair_decision_static(*black_box(a), *c, *r))
+            .count()
+    };
+    println!(
+        "decisions, division-free form: the static stage decides {} of {}",
+        by_static(&fes),
+        fes.len()
+    );
+    g.bench_function("static", |b| b.iter(|| by_static(&fes)));
     g.bench_function("float_err", |b| {
         b.iter(|| decided(&fes, pair_decision_signs))
     });
@@ -166,7 +178,7 @@ fn bench(c: &mut Criterion) {
     g.bench_function("small_rational", |b| {
         b.iter(|| decided(&sms, pair_decision_signs))
     });
-    // the four stages as `filtered` runs them, inputs held in each arithmetic
+    // the five stages as `filtered` runs them, inputs held in each arithmetic
     g.bench_function("filtered_static", |b| {
         b.iter(|| {
             fes.iter()
@@ -175,7 +187,8 @@ fn bench(c: &mut Criterion) {
                 .zip(&rat)
                 .filter_map(
                     |((((a, c, r), (sa, sc, sr)), (ia, ic, ir)), (ea, ec, er))| {
-                        pair_decision_signs(black_box(a), c, r)
+                        pair_decision_static(*black_box(a), *c, *r)
+                            .or_else(|| pair_decision_signs(a, c, r))
                             .or_else(|| pair_decision_signs(sa, sc, sr))
                             .or_else(|| pair_decision_signs(ia, ic, ir))
                             .or_else(|| pair_decision_signs(ea, ec, er))

@@ -403,3 +403,163 @@ proptest! {
         }
     }
 }
+
+/// `x` as a float with an error bound whose value is moved `k` units of
+/// `2^-j |x|` off the nearest float, its bound the exact distance rounded up
+/// plus `extra` such units: the real `x` stays within the stated bound.
+fn loose_float(x: &Rational, k: i64, j: i32, extra: u32) -> lncert::scalar::FloatErr {
+    use lncert::scalar::{interval_from_rational, rational_from_f64, FloatErr};
+    let unit = x.approx().abs() * 2f64.powi(-j);
+    let v = x.approx() + k as f64 * unit;
+    let dist = (x - rational_from_f64(v).unwrap()).abs_val();
+    let e = interval_from_rational(&dist).sup() + extra as f64 * unit;
+    FloatErr { v, e }
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// The static stage of Props 4.2 + 4.4 (`pair_decision_static`: plain f64
+    /// tests against one bound from the inputs' magnitude) never contradicts the
+    /// exact division-free decision, on inputs within a few ulps of every
+    /// boundary (the planted ones of the test above, each input moved by
+    /// `k·2⁻ʲ·x/3`, `j` in 50..=58), scaled by powers of two, and given as the
+    /// nearest floats with their bounds, as floats with loose error bounds (value
+    /// moved off the input, bound up to `2⁻²⁰·|x|`), or rounded to floats that
+    /// are then the exact inputs (no input error: the rounding terms alone).
+    #[test]
+    fn static_pair_decision_is_never_wrong(
+        (c0, c1) in end_ratios(),
+        edge in 0usize..8,
+        k in 0usize..10,
+        rn in -40i64..=300,
+        nudge in prop::array::uniform3(-6i64..=6),
+        fine in 50u32..=58,
+        scale in -30i32..=30,
+        loose in prop::array::uniform3((-3i64..=3, 20i32..=53, 0u32..=2)),
+        mode in 0usize..3,
+    ) {
+        use lncert::ln::pair::{pair_decision_signs, pair_decision_static};
+        use lncert::scalar::FloatErr;
+        let (c0, c1) = match edge {
+            0 => (q(-1, 1), c1),
+            1 => (c0, q(-1, 1)),
+            _ => (c0, c1),
+        };
+        let pow = |s: i32| if s >= 0 { q(1 << s, 1) } else { q(1, 1 << -s) };
+        let (c0, c1) = if edge == 7 { (&c0 * pow(scale), &c1 * pow(scale)) } else { (c0, c1) };
+        let Some(rho) = rho_choices(&c0, &c1, k, rn) else { return Ok(()); };
+        // each input moved a few units of 2⁻⁵⁰|x|/3 (non-dyadic, off every float)
+        let nudged = |x: &Rational, n: i64| x + x * q(n, 3) * q(1, 1 << fine);
+        let mut ins = [nudged(&c0, nudge[0]), nudged(&c1, nudge[1]), nudged(&rho, nudge[2])];
+        if mode == 2 {
+            // exact floats (no input error): the bound's rounding terms alone
+            for x in &mut ins {
+                *x = lncert::scalar::rational_from_f64(x.approx()).unwrap();
+            }
+        }
+        let exact = pair_decision_signs(&ins[0], &ins[1], &ins[2]);
+        prop_assert!(exact.is_some());
+        let f: Vec<FloatErr> = ins
+            .iter()
+            .zip(loose)
+            .map(|(x, (k, j, extra))| {
+                if mode == 1 { loose_float(x, k, j, extra) } else { FloatErr::from_rational(x) }
+            })
+            .collect();
+        if let Some(v) = pair_decision_static(f[0], f[1], f[2]) {
+            prop_assert_eq!(Some(v), exact, "c0 {} c1 {} rho {} as {:?}", &ins[0], &ins[1], &ins[2], f);
+        }
+    }
+}
+
+/// The static stage decides what the float with an error bound decides on a
+/// grid of small rationals (every test's value is 0 or far above either bound),
+/// and refuses non-finite inputs, negative bounds and magnitudes of 10¹⁵⁰.
+#[test]
+fn static_pair_decision_decides_away_from_ties() {
+    use lncert::ln::pair::{pair_decision_signs, pair_decision_static};
+    use lncert::scalar::FloatErr;
+    let f = |r: &Rational| FloatErr::from_rational(r);
+    let (mut both, mut float_err_only) = (0, 0);
+    for n0 in [-37i64, -12, -7, -3, -1, 1, 2, 5, 9, 31] {
+        for n1 in [-40i64, -9, -4, -2, 1, 3, 4, 8, 13, 29] {
+            for rn in [-5i64, 13, 40, 61, 97, 150, 193, 260] {
+                let (c0, c1, rho) = (q(n0, 7), q(n1, 5), q(rn, 97));
+                let exact = pair_decision_signs(&c0, &c1, &rho);
+                let by_float_err = pair_decision_signs(&f(&c0), &f(&c1), &f(&rho));
+                let by_static = pair_decision_static(f(&c0), f(&c1), f(&rho));
+                if let Some(v) = by_static {
+                    assert_eq!(Some(v), exact, "{c0} {c1} {rho}");
+                }
+                match (by_float_err, by_static) {
+                    (Some(_), Some(_)) => both += 1,
+                    (Some(_), None) => float_err_only += 1,
+                    _ => {}
+                }
+            }
+        }
+    }
+    assert!(both > 600, "static decided {both}");
+    assert_eq!(float_err_only, 0);
+    let one = FloatErr::exact(1.0);
+    let half = FloatErr::exact(0.75);
+    for bad in [
+        FloatErr::exact(f64::NAN),
+        FloatErr::exact(f64::INFINITY),
+        FloatErr {
+            v: 1.0,
+            e: f64::NAN,
+        },
+        FloatErr { v: 1.0, e: -1.0 },
+        FloatErr::exact(1e150),
+        FloatErr { v: 1.0, e: 1e151 },
+    ] {
+        assert_eq!(pair_decision_static(bad, one, half), None, "{bad:?}");
+        assert_eq!(pair_decision_static(one, bad, half), None, "{bad:?}");
+        assert_eq!(pair_decision_static(one, one, bad), None, "{bad:?}");
+    }
+}
+
+/// The static stage on exact float inputs at the float nearest each boundary
+/// of `ρ` (`q/2`, `2q`, `A = 0`, `B = 0`) and a few ulps around it: the exact
+/// tests' values are then below an ulp of the operands, where the float
+/// evaluation's own roundings decide the sign, so only a bound that covers
+/// them keeps the answers exact.
+#[test]
+fn static_pair_decision_at_float_ties() {
+    use lncert::ln::pair::{pair_decision_signs, pair_decision_static};
+    use lncert::scalar::{rational_from_f64, FloatErr};
+    let exact_of = |x: f64| rational_from_f64(x).unwrap();
+    let (mut decided, mut total) = (0, 0);
+    for n0 in 1..=40i64 {
+        for n1 in 1..=40i64 {
+            for neg in [false, true] {
+                let sg = if neg { -1.0 } else { 1.0 };
+                let (a, b) = (sg * n0 as f64 / 7.0, sg * n1 as f64 / 9.0);
+                let (p0, p1) = (1.0 + a, 1.0 + b);
+                for tie in [b / (2.0 * a), 2.0 * b / a, p1 / (2.0 * p0), 2.0 * p1 / p0] {
+                    let mut r = tie;
+                    for _ in 0..3 {
+                        r = f64::from_bits(r.to_bits() - 1);
+                    }
+                    for _ in 0..7 {
+                        r = f64::from_bits(r.to_bits() + 1);
+                        if !r.is_finite() {
+                            continue;
+                        }
+                        total += 1;
+                        let exact = pair_decision_signs(&exact_of(a), &exact_of(b), &exact_of(r));
+                        let e = FloatErr::exact;
+                        if let Some(v) = pair_decision_static(e(a), e(b), e(r)) {
+                            decided += 1;
+                            assert_eq!(Some(v), exact, "c0 {a:e} c1 {b:e} rho {r:e}");
+                        }
+                    }
+                }
+            }
+        }
+    }
+    // most ties' tests are within the bound; the rest decide away from them
+    assert!(decided > total / 10, "{decided} of {total}");
+}

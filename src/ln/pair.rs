@@ -345,6 +345,10 @@ impl crate::scalar::Predicate for PairDecision {
         let conv = |r: &crate::scalar::Rational| S::from_rational(r);
         pair_decision_signs(&conv(&self.c0), &conv(&self.c1), &conv(&self.rho_left))
     }
+    fn decide_static(&self) -> Option<Self::Out> {
+        let conv = |r: &crate::scalar::Rational| crate::scalar::FloatErr::from_rational(r);
+        pair_decision_static(conv(&self.c0), conv(&self.c1), conv(&self.rho_left))
+    }
 }
 
 /// [`pair_decision`] without divisions: every test is the sign of a polynomial of
@@ -410,6 +414,113 @@ pub fn pair_decision_signs<S: Scalar>(c0: &S, c1: &S, rho: &S) -> Option<(bool, 
     let closed = |side: Sign| -> Option<bool> {
         Some(!(a * side).is_negative()? && !(b * side).is_negative()?)
     };
+    Some((exists, Some(!closed(s0)? || !closed(s1)?)))
+}
+
+/// The static stage of [`PairDecision`]'s filter: [`pair_decision_signs`]'
+/// tests evaluated in plain `f64`, each sign read against **one error bound
+/// computed once** from the inputs' magnitude, instead of a bound carried
+/// through every operation ([`crate::scalar::FloatErr`]'s arithmetic). `None`
+/// when a test's value is within the bound (exact ties are, but for the
+/// degenerate frame `1 + c = 0` of an exact float `c = −1`), when an
+/// input is not finite or has a negative bound, or when `M` (below) is 10¹⁵⁰ or more;
+/// otherwise the exact answer of the inputs' reals.
+///
+/// **The bound.** The inputs stand for reals `x0, x1, ρ` with
+/// `|x − v| ≤ e` (`E` the largest `e`); `M = max(1, |c0.v|, |c1.v|, |ρ.v|, E)`,
+/// so `|x| ≤ 2M`. With unit roundoff `u = 2⁻⁵³`, `η = 2⁻¹⁰²²` (a product's
+/// absolute error in the subnormal range) and scalings by 2 and 4 exact (no
+/// overflow: `M < 10¹⁵⁰`, so every value is below `4M² < 2¹⁰²³`),
+/// the computed tests differ from the exact ones by at most
+///
+/// | test | computed as | error ≤ |
+/// |---|---|---|
+/// | `c0`, `1/2 < ρ`, `ρ < 2` | `v`, `r − 1/2`, `2 − r` | `3uM + E` |
+/// | `4c1 − c0`, `4c0 − c1` | one rounding | `5uM + 5E` |
+/// | `2ρc0 − c1`, `2c1 − ρc0` | `P = fl(r·c0)`: `uM² + η + 3ME` from `ρx0` | `5uM² + 7ME + 2η` (+ `O(u²M²)`) |
+/// | `1 + c0`, `1 + c1` | one rounding | `2uM + E` |
+/// | `A = 2ρ(1 + c0) − (1 + c1)` | `m = fl(r·p0)`: `4uM² + 4ME + η` | `16uM² + 9ME + 2η` (+ `O(u²M²)`) |
+/// | `B = 2(1 + c1) − ρ(1 + c0)` | the same `m` | `14uM² + 6ME + η` (+ `O(u²M²)`) |
+///
+/// (each product's rounding `u|r·p| ≤ u·2M²(1 + u)`, each sum's `u` times the
+/// sum of its operands' magnitudes; `uM ≤ uM²`, `E ≤ ME` as `M ≥ 1`). The
+/// stage uses `d = 32uM² + 16ME + 4η`, computed in three roundings of relative
+/// `u` each: at least twice every row's leading terms, which covers the `O(u²M²)`
+/// remainders and the bound's own rounding. A sign is read as positive iff
+/// `t > d`, negative iff `t < −d`.
+///
+/// Tested against exact rationals on inputs a few ulps from every boundary
+/// (`tests/seed000.rs`, `static_pair_decision_is_never_wrong`) and for deciding
+/// every case [`crate::scalar::FloatErr`] decides away from ties (below).
+///
+/// # Examples
+/// ```
+/// use lncert::ln::pair::{pair_decision_signs, pair_decision_static};
+/// use lncert::scalar::{frac, FloatErr, Rational, Scalar};
+/// let f = |r: &Rational| FloatErr::from_rational(r);
+/// let (c0, c1, rho): (Rational, Rational, Rational) = (frac(-3, 2), frac(-1, 2), frac(7, 12));
+/// assert_eq!(pair_decision_static(f(&c0), f(&c1), f(&rho)), Some((true, Some(true))));
+/// // q = 4 exactly: an exact tie, left to the exact stages
+/// let (c0, c1) = (frac(1, 3), frac(4, 3));
+/// assert_eq!(pair_decision_static(f(&c0), f(&c1), f(&rho)), None);
+/// assert_eq!(pair_decision_signs(&c0, &c1, &rho), Some((false, None)));
+/// ```
+pub fn pair_decision_static(
+    c0: crate::scalar::FloatErr,
+    c1: crate::scalar::FloatErr,
+    rho: crate::scalar::FloatErr,
+) -> Option<(bool, Option<bool>)> {
+    const U: f64 = f64::EPSILON * 0.5;
+    let (a, b, r) = (c0.v, c1.v, rho.v);
+    // `>=` is false for NaN; the sum below is not finite for an infinity or NaN
+    if !(c0.e >= 0.0 && c1.e >= 0.0 && rho.e >= 0.0) || !(a + b + r).is_finite() {
+        return None;
+    }
+    let e = c0.e.max(c1.e).max(rho.e);
+    let m = 1f64.max(a.abs()).max(b.abs()).max(r.abs()).max(e);
+    if !(m < 1e150) {
+        return None; // every value below stays under 4M² < 2¹⁰²³: no overflow
+    }
+    let d = 32.0 * U * (m * m) + 16.0 * (m * e) + 4.0 * f64::MIN_POSITIVE;
+    // a test's sign: `Some(true)` positive, `Some(false)` negative, `None` within `d`
+    let pos = |t: f64| {
+        if t > d {
+            Some(true)
+        } else if t < -d {
+            Some(false)
+        } else {
+            None
+        }
+    };
+    let s = pos(a)?;
+    // the sign of `t·c0`: whether `t` has `c0`'s sign
+    let agree = |t: f64| Some(pos(t)? == s);
+    let exists = agree(4.0 * b - a)? && agree(4.0 * a - b)?;
+    let p = r * a;
+    let admissible =
+        exists && pos(r - 0.5)? && pos(2.0 - r)? && agree(2.0 * p - b)? && agree(2.0 * b - p)?;
+    if !admissible {
+        return Some((exists, None));
+    }
+    let (p0, p1) = (1.0 + a, 1.0 + b);
+    // `1 + c = 0` is decided for an exact `c = −1` (the degenerate frame)
+    let side = |t: f64, e: f64| {
+        if t == 0.0 && e == 0.0 {
+            Some(None)
+        } else {
+            pos(t).map(Some)
+        }
+    };
+    let Some(s0) = side(p0, c0.e)? else {
+        return Some((exists, None));
+    };
+    let Some(s1) = side(p1, c1.e)? else {
+        return Some((exists, None));
+    };
+    let mm = r * p0;
+    let (sa, sb) = (pos(2.0 * mm - p1), pos(2.0 * p1 - mm));
+    // δ ∈ [0, 1] iff neither factor has the sign opposite to its denominator's
+    let closed = |side: bool| Some(sa? == side && sb? == side);
     Some((exists, Some(!closed(s0)? || !closed(s1)?)))
 }
 

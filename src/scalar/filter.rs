@@ -18,6 +18,12 @@ pub trait Predicate {
     type Out;
     /// Evaluate the predicate with scalar type `S`.
     fn decide<S: Scalar>(&self) -> Option<Self::Out>;
+    /// A first stage specialised to the predicate (e.g. plain floats against one
+    /// error bound derived for its expressions), tried by [`filtered`] before the
+    /// generic stages. `None` when it cannot decide; the default has no such stage.
+    fn decide_static(&self) -> Option<Self::Out> {
+        None
+    }
 }
 
 /// Alias kept for readability at call sites: `Some` = decided, `None` = unknown.
@@ -60,7 +66,8 @@ pub fn reset_filter_stats() {
     FALLBACKS.store(0, Ordering::Relaxed);
 }
 
-/// Decides `p` exactly: floats with an error bound first, then small exact
+/// Decides `p` exactly: the predicate's own static stage
+/// ([`Predicate::decide_static`]) first, then floats with an error bound, then small exact
 /// rationals (`i128`, given up on overflow), then intervals, then big rationals
 /// when none can decide.
 ///
@@ -84,6 +91,9 @@ pub fn reset_filter_stats() {
 /// ```
 pub fn filtered<P: Predicate>(p: &P) -> Option<P::Out> {
     CALLS.fetch_add(1, Ordering::Relaxed);
+    if let Some(out) = p.decide_static() {
+        return Some(out);
+    }
     if let Some(out) = p.decide::<FloatErr>() {
         return Some(out);
     }
