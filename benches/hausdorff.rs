@@ -1,5 +1,6 @@
 //! Certified Hausdorff bounds (issue 4): time per segment pair at rel = 1e-3 and
-//! 1e-6 (search), the tightness of the bounds, and the time to verify the
+//! 1e-6 (the default path: the radial proof for the arc, else the parametric
+//! proof, else the search; for the arc also without the radial proof), the tightness of the bounds, and the time to verify the
 //! certificate of `d_H ≤ 1.01 · hi` compared with the proof that produced it
 //! (the default path — the parametric map where it decides — and the search).
 //!
@@ -67,6 +68,16 @@ fn bench(c: &mut Criterion) {
             g.bench_function(format!("search/{name}/rel={rel:e}"), |bch| {
                 bch.iter(|| hausdorff(black_box(&a), black_box(&b), &cfg).unwrap())
             });
+            if r.radial.is_some() {
+                // the same pair without the radial proof (parametric, then search)
+                let cfg_nr = Config {
+                    radial: false,
+                    ..cfg.clone()
+                };
+                g.bench_function(format!("no_radial/{name}/rel={rel:e}"), |bch| {
+                    bch.iter(|| hausdorff(black_box(&a), black_box(&b), &cfg_nr).unwrap())
+                });
+            }
         }
         // certificate of d_H ≤ 1.01 hi, searched with that tolerance
         let r = hausdorff(

@@ -970,3 +970,150 @@ fn certificates_at_the_searchs_own_bound_verify() {
     }
     assert!(checked >= 10, "only {checked} certificates written");
 }
+
+/// Pythagorean unit directions (exact rationals) and rational rotations by
+/// angles in `(0, π]`: the arcs of the radial proof's tests.
+fn unit_dirs() -> Vec<(i64, i64, i64)> {
+    vec![
+        (1, 0, 1),
+        (3, 4, 5),
+        (-5, 12, 13),
+        (0, 1, 1),
+        (-4, 3, 5),
+        (8, -15, 17),
+        (-1, 0, 1),
+    ]
+}
+fn rotations() -> Vec<(i64, i64, i64)> {
+    // (cos, sin, denominator): 36.9°, 67.4°, 90°, 126.9°, 163.7°, 180°
+    vec![
+        (4, 3, 5),
+        (5, 12, 13),
+        (0, 1, 1),
+        (-3, 4, 5),
+        (-24, 7, 25),
+        (-1, 0, 1),
+    ]
+}
+
+proptest! {
+    #![proptest_config(common::config())]
+
+    /// The radial proof (an arc against a chain of pieces in its sector, `d_H`
+    /// the largest radial distance) against independent computations: the
+    /// parametric / two-directional search on the same shapes (a different
+    /// proof: Taylor forms and foot points) must overlap its bounds, and the
+    /// exact radial distance at rational samples (a lower bound of `d_H`
+    /// whatever the shapes) must not exceed its upper bound. Arcs of sweep 37°
+    /// to 180° on rational circles; cubics near them whose ends move along or
+    /// off the end rays and whose inner points move in or out of the sector
+    /// (handles pointing backwards: out of it at both ends), as one piece or split in two, either way round, the arc as `A` or `B`.
+    #[test]
+    fn radial_proof_agrees_with_the_search(
+        (cx, cy, rn) in (-8i64..=8, -8i64..=8, 4i64..=40),
+        (di, ri) in (0usize..7, 0usize..6),
+        ends in prop::array::uniform2(-3i64..=3),
+        off_ray in prop::array::uniform2(prop_oneof![3 => Just(0i64), 1 => -2i64..=2]),
+        inner in prop::array::uniform4(prop_oneof![2 => Just(0i64), 1 => -6i64..=6]),
+        split in any::<bool>(),
+        reverse in any::<bool>(),
+        arc_first in any::<bool>(),
+        behind in 0usize..4,
+    ) {
+        let (c, r) = (V2::new(q(cx, 4), q(cy, 4)), q(rn, 8));
+        let (dx, dy, dn) = unit_dirs()[di];
+        let (rc, rs, rd) = rotations()[ri];
+        let u0 = V2::new(q(dx, dn), q(dy, dn));
+        let (cos, sin) = (q(rc, rd), q(rs, rd));
+        let u1 = V2::new(&cos * &u0.x - &sin * &u0.y, &sin * &u0.x + &cos * &u0.y);
+        // the classical handle 4/3 tan(Θ/4), as a rational near it
+        let theta = (rs as f64).atan2(rc as f64);
+        let k = Rational::from_float(4.0 / 3.0 * (theta / 4.0).tan()).unwrap();
+        let at = |u: &V2<Rational>, s: &Rational| c.add(&u.scale(s));
+        let rad = |e: i64| &r * (q(1, 1) + q(e, 40));
+        let p0 = at(&u0, &rad(ends[0])).add(&u0.rot90().scale(&(&r * q(off_ray[0], 50))));
+        let p3 = at(&u1, &rad(ends[1])).add(&u1.rot90().scale(&(&r * q(off_ray[1], 50))));
+        let h = &k * &r;
+        let nudge = |p: V2<Rational>, a: i64, b: i64| p.add(&V2::new(&r * q(a, 30), &r * q(b, 30)));
+        // one time in four, the handles point backwards: the curve leaves the sector
+        let h1 = if behind == 0 { -&h } else { h.clone() };
+        let p1 = nudge(p0.add(&u0.rot90().scale(&h1)), inner[0], inner[1]);
+        let p2 = nudge(p3.sub(&u1.rot90().scale(&h1)), inner[2], inner[3]);
+        let mut pts = vec![p0, p1, p2, p3];
+        if reverse {
+            pts.reverse();
+        }
+        let cubic = Bezier::new(pts);
+        let pieces = if split {
+            let (l, rr) = cubic.split(&q(1, 3));
+            vec![l, rr]
+        } else {
+            vec![cubic.clone()]
+        };
+        let arc = ShapeDesc::arc(ArcDesc { center: c.clone(), radius: r.clone(), from: u0, to: u1 }).unwrap();
+        let curve = ShapeDesc::curve(pieces).unwrap();
+        let (a, b) = if arc_first { (&arc, &curve) } else { (&curve, &arc) };
+        let rr = hausdorff(a, b, &cfg(1e-6)).unwrap();
+        let other = hausdorff(a, b, &Config { radial: false, ..cfg(1e-6) }).unwrap();
+        prop_assert!(other.radial.is_none());
+        // the exact radial distance at samples: ≤ dist(P(t), arc) ≤ d_H ≤ hi
+        let hi = Rational::from_float(rr.hi).unwrap();
+        for j in 0..=12 {
+            let d2 = cubic.eval(&q(j, 12)).sub(&c).norm2();
+            let below = &r - &hi;
+            prop_assert!(d2 <= (&r + &hi) * (&r + &hi), "sample {j}: outside R + hi ({:?})", rr.radial);
+            prop_assert!(below < q(0, 1) || d2 >= &below * &below, "sample {j}: inside R − hi ({:?})", rr.radial);
+        }
+        let slack = 1e-12 * rr.hi.max(other.hi);
+        prop_assert!(rr.lo <= other.hi + slack && other.lo <= rr.hi + slack,
+            "radial [{}, {}] ({:?}) against the search [{}, {}]", rr.lo, rr.hi, rr.radial, other.lo, other.hi);
+        // on the ray at both ends and every control point in the sector: decided radially
+        if off_ray == [0, 0] && inner == [0, 0, 0, 0] && ends.iter().all(|e| *e >= 0) && behind != 0 {
+            prop_assert!(rr.radial.is_some(), "not radial: {:?}", rr);
+        }
+        if off_ray != [0, 0] {
+            prop_assert!(rr.radial.is_none(), "an end off its ray was taken radially");
+        }
+        if let Some(p) = &rr.radial {
+            prop_assert!(rr.hi - rr.lo <= 1e-6 * rr.hi + 1e-10 * (1.0 + 3.0 * rn as f64));
+            prop_assert_eq!(p.curve_is_a, !arc_first);
+        }
+    }
+}
+
+/// The radial proof's refusals: an end off its ray, a control point outside the
+/// sector, a sweep above π, a chain with a gap, a tolerance claimed; a chain
+/// through the centre (its radial distance undefined there) is left to the search.
+#[test]
+fn radial_proof_applies_only_where_its_statement_holds() {
+    let arc = |from: &str, to: &str| {
+        shape(&format!(
+            r#"{{"arc": {{"center": [0, 0], "radius": 1, "from": {from}, "to": {to}}}}}"#
+        ))
+    };
+    let quarter = arc("[1, 0]", "[0, 1]");
+    let radial =
+        |a: &ShapeDesc, b: &str, c: &Config| hausdorff(a, &shape(b), c).unwrap().radial.is_some();
+    let c6 = cfg(1e-6);
+    assert!(radial(&quarter, "M 1 0 C 1 0.5523 0.5523 1 0 1", &c6));
+    assert!(radial(&quarter, "M 0 1 C 0.5523 1 1 0.5523 1 0", &c6)); // reversed
+    assert!(!radial(&quarter, "M 1 0.01 C 1 0.5523 0.5523 1 0 1", &c6)); // off the ray
+    assert!(!radial(&quarter, "M 1 0 C 1 0.5523 0.5523 1 -0.01 1", &c6)); // past the end ray
+    assert!(!radial(&quarter, "M 1 0 C 1.1 -0.1 0.5523 1 0 1", &c6)); // a point below d0
+    assert!(!radial(&quarter, "M 1 0 L 0.6 0.6 M 0.6 0.61 L 0 1", &c6)); // a gap
+    let half = arc("[1, 0]", "[-1, 0]");
+    assert!(radial(&half, "M 1 0 C 1 1.3333 -1 1.3333 -1 0", &c6));
+    let three_quarters = arc("[1, 0]", "[0, -1]");
+    assert!(!radial(&three_quarters, "M 1 0 C 1 2 -2 1 0 -1", &c6));
+    // through the centre: refused; the search's bounds hold the true d_H = 1
+    let through = hausdorff(&quarter, &shape("M 1 0 L 0 0 L 0 1"), &c6).unwrap();
+    assert!(through.radial.is_none());
+    assert!(through.lo <= 1.0 && 1.0 <= through.hi, "{through:?}");
+    // a claimed tolerance goes to the proofs a certificate can state
+    let tol = lncert::Tolerance::new(q(1, 1000)).unwrap();
+    let claimed = Config {
+        tol: Some(tol),
+        ..cfg(1e-3)
+    };
+    assert!(!radial(&quarter, "M 1 0 C 1 0.5523 0.5523 1 0 1", &claimed));
+}

@@ -5,8 +5,11 @@
 //! arcs, exact offsets `x + r N` of polynomial curves and exact convolutions of
 //! polynomial curves with ellipses — with both one-sided distances
 //! `h(A, B) = sup_{a∈A} dist(a, B)` and `h(B, A)` bounded separately
-//! (`d_H = max(h(A, B), h(B, A))`). Upper bounds come from interval branch and
-//! bound over the parameter domains (second-order Taylor forms, see [`Config`]),
+//! (`d_H = max(h(A, B), h(B, A))`). A circular arc against a curve inside its
+//! sector from one end ray to the other has `d_H` computed as the curve's
+//! largest radial distance to the circle ([`RadialProof`]). Otherwise upper
+//! bounds come from interval branch and bound over the parameter domains
+//! (second-order Taylor forms, see [`Config`]),
 //! lower bounds from witness points whose distance is bounded below by a second
 //! branch and bound. Nothing is sampled: every figure is an outward-rounded
 //! interval bound.
@@ -35,6 +38,7 @@ mod cert;
 mod jet;
 mod param;
 pub(crate) mod piece;
+mod radial;
 mod same;
 pub(crate) mod search;
 pub mod verify;
@@ -45,6 +49,7 @@ use piece::Pieces;
 pub use arcquad::circular_arc_quadratics;
 pub use cert::{Certificate, MapCover};
 pub use param::{ParamBox, Parametric};
+pub use radial::RadialProof;
 pub use same::verify_against;
 
 pub use search::{Config, CoverBox, OneSided};
@@ -67,6 +72,10 @@ pub struct HausdorffBounds {
     /// The parametric proof of `hi` when that path decided (then both
     /// one-sided results are `[0, hi]` with no boxes, and `lo` is 0).
     pub parametric: Option<param::Parametric>,
+    /// The radial proof when that path decided (an arc against a chain of
+    /// pieces in its sector: `d_H` is the curve's largest radial distance; no
+    /// boxes, so no [`Certificate`] is built from it).
+    pub radial: Option<RadialProof>,
 }
 
 impl HausdorffBounds {
@@ -132,8 +141,6 @@ pub fn hausdorff(
     cfg: &Config,
 ) -> Result<HausdorffBounds, CertifyError> {
     check_config(cfg)?;
-    let pa = a.pieces()?;
-    let pb = b.pieces()?;
     // (the coordinate scale converts every rational: only computed when used)
     let abs_of = || {
         if cfg.abs > 0.0 {
@@ -142,7 +149,42 @@ pub fn hausdorff(
             1e-10 * (1.0 + a.scale().max(b.scale()))
         }
     };
+    // a distance (no claim to certify) between an arc and a curve in its sector
+    if cfg.tol.is_none() && cfg.parametric && cfg.radial {
+        if let Some(p) = radial::prove(a, b, cfg.rel, &abs_of) {
+            return Ok(radial_bounds(p));
+        }
+    }
+    let pa = a.pieces()?;
+    let pb = b.pieces()?;
     Ok(hausdorff_pieces(&pa, &pb, cfg, &abs_of))
+}
+
+/// The bounds of a radial proof: `h(curve, arc) ∈ [lo, hi]` (the witness a
+/// point of the curve), `h(arc, curve) ≤ hi`.
+fn radial_bounds(p: RadialProof) -> HausdorffBounds {
+    let side = |lo, witness| OneSided {
+        lo,
+        hi: p.hi,
+        witness,
+        boxes: Vec::new(),
+        evaluated: p.splits,
+        incomplete: false,
+    };
+    let (curve, arc) = (side(p.lo, Some(p.witness)), side(0.0, None));
+    let (a_to_b, b_to_a) = if p.curve_is_a {
+        (curve, arc)
+    } else {
+        (arc, curve)
+    };
+    HausdorffBounds {
+        lo: p.lo,
+        hi: p.hi,
+        a_to_b,
+        b_to_a,
+        parametric: None,
+        radial: Some(p),
+    }
 }
 
 /// [`hausdorff`] with **each** one-sided distance bounded to the goal
@@ -182,6 +224,7 @@ pub fn hausdorff_each_direction(
         a_to_b: ab,
         b_to_a: ba,
         parametric: None,
+        radial: None,
     })
 }
 
@@ -315,6 +358,7 @@ pub(crate) fn hausdorff_pieces(
         a_to_b: ab,
         b_to_a: ba,
         parametric: None,
+        radial: None,
     }
 }
 
@@ -371,6 +415,7 @@ fn parametric_path(
         a_to_b: ab,
         b_to_a: ba,
         parametric: Some(p),
+        radial: None,
     })
 }
 

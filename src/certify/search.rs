@@ -67,6 +67,12 @@ pub struct Config {
     /// Its result has no box covers, so a [`super::Certificate`] cannot be
     /// built from it: set `false` when one is wanted.
     pub parametric: bool,
+    /// For a circular arc of sweep `≤ π` against a chain of pieces running
+    /// from one end ray to the other inside its sector, without `tol`: try the
+    /// radial proof first (`d_H` is the curve's largest radial distance to the
+    /// circle, see [`super::RadialProof`]), a few µs where it applies (default
+    /// true; off with `parametric: false`).
+    pub radial: bool,
 }
 
 impl Default for Config {
@@ -78,6 +84,7 @@ impl Default for Config {
             tol: None,
             verdict_only: false,
             parametric: true,
+            radial: true,
         }
     }
 }

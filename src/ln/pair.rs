@@ -473,13 +473,14 @@ pub fn pair_decision_static(
     const U: f64 = f64::EPSILON * 0.5;
     let (a, b, r) = (c0.v, c1.v, rho.v);
     // `>=` is false for NaN; the sum below is not finite for an infinity or NaN
-    if !(c0.e >= 0.0 && c1.e >= 0.0 && rho.e >= 0.0) || !(a + b + r).is_finite() {
+    let usable = c0.e >= 0.0 && c1.e >= 0.0 && rho.e >= 0.0 && (a + b + r).is_finite();
+    if !usable {
         return None;
     }
     let e = c0.e.max(c1.e).max(rho.e);
     let m = 1f64.max(a.abs()).max(b.abs()).max(r.abs()).max(e);
-    if !(m < 1e150) {
-        return None; // every value below stays under 4M² < 2¹⁰²³: no overflow
+    if m >= 1e150 {
+        return None; // (an infinite bound too) every value below stays under 4M² < 2¹⁰²³
     }
     let d = 32.0 * U * (m * m) + 16.0 * (m * e) + 4.0 * f64::MIN_POSITIVE;
     // a test's sign: `Some(true)` positive, `Some(false)` negative, `None` within `d`

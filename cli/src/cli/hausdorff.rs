@@ -261,7 +261,13 @@ impl Report<'_> {
             "tol": tol.as_ref().map(|t| t.to_string()),
             "verdict": verdict,
             "incomplete": r.incomplete(),
-            "proof": if r.parametric.is_some() { "parametric" } else { "search" },
+            "proof": if r.parametric.is_some() {
+                "parametric"
+            } else if r.radial.is_some() {
+                "radial"
+            } else {
+                "search"
+            },
             "parametric_boxes": r.parametric.as_ref().map(|p| p.boxes.len()),
             "certificate": cert_note,
             "seconds": self.seconds,
@@ -308,7 +314,7 @@ impl Report<'_> {
     }
 }
 
-/// The proof's lines: the parametric cover, or the two directions' searches.
+/// The proof's lines: the parametric cover, the radial proof, or the two directions' searches.
 fn text_directions(r: &HausdorffBounds) -> String {
     let mut out = String::new();
     if let Some(p) = &r.parametric {
@@ -318,8 +324,15 @@ fn text_directions(r: &HausdorffBounds) -> String {
             p.evaluated
         );
     }
+    if let Some(p) = &r.radial {
+        out += &format!(
+            "  proof: radial, the {} lies in the arc's sector from one end ray to the other: d_H is its largest radial distance to the circle ({} Bernstein splits)\n",
+            if p.curve_is_a { "curve A" } else { "curve B" },
+            p.splits
+        );
+    }
     for (name, d) in [("h(A→B)", &r.a_to_b), ("h(B→A)", &r.b_to_a)] {
-        if r.parametric.is_some() && d.witness.is_none() {
+        if (r.parametric.is_some() || r.radial.is_some()) && d.witness.is_none() {
             continue;
         }
         out += &format!(
