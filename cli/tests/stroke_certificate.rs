@@ -435,3 +435,76 @@ fn svg_document_certificate_set_verifies() {
     ]);
     assert_eq!(o.status.code(), Some(1));
 }
+
+/// `verify --against` takes the outline as the user has it: the SVG that
+/// `stroke --out` wrote (lines and exact `A` arcs in path order), or its path
+/// data, though the certificate lists all Bézier pieces before its arcs. The
+/// same path with the inner corner moved, an arc replaced by a line, or an arc's sweep
+/// flag flipped is refused.
+#[test]
+fn stroke_certificate_verifies_against_its_own_svg_output() {
+    let curve = tmp("sco.txt", "M 0 0 L 4 0 L 4 3");
+    let (cert, svg) = (
+        curve.with_file_name("sco.cert.json"),
+        curve.with_file_name("sco.svg"),
+    );
+    let o = lncert(&[
+        "stroke",
+        curve.to_str().unwrap(),
+        "--pen",
+        "circle:1",
+        "--tol",
+        "1e-3",
+        "--certificate",
+        cert.to_str().unwrap(),
+        "--out",
+        svg.to_str().unwrap(),
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let doc = std::fs::read_to_string(&svg).unwrap();
+    let start = doc.find(" d=\"").expect("a path") + 4;
+    let d = &doc[start..start + doc[start..].find('"').unwrap()];
+    assert!(d.contains(" A "), "{d}");
+    let path = tmp("sco-path.txt", d);
+    let against = |outline: &std::path::Path| {
+        lncert(&[
+            "verify",
+            cert.to_str().unwrap(),
+            "--against",
+            outline.to_str().unwrap(),
+            curve.to_str().unwrap(),
+        ])
+    };
+    for outline in [&svg, &path] {
+        let o = against(outline);
+        let out = String::from_utf8_lossy(&o.stdout);
+        assert_eq!(o.status.code(), Some(0), "{}: {out}", outline.display());
+        assert!(
+            out.contains("exactly the shapes given to --against"),
+            "{out}"
+        );
+    }
+    // the inner corner (between two lines, no arc touched) moved by 1/1000;
+    // the first arc replaced by a line
+    let moved = d.replacen("L 3 1 L", "L 3.001 1 L", 1);
+    assert_ne!(moved, d, "{d}");
+    let mut tokens: Vec<&str> = d.split_whitespace().collect();
+    let a = tokens.iter().position(|t| *t == "A").unwrap();
+    // A rx ry φ fA fS x y  →  L x y
+    tokens.splice(a..a + 6, ["L"]);
+    let dropped = tokens.join(" ");
+    // the first arc's sweep flag flipped: the other half of its circle
+    let flipped = d.replacen("A 1 1 0 0 1", "A 1 1 0 0 0", 1);
+    assert_ne!(flipped, d, "{d}");
+    for (name, bad) in [("moved", moved), ("dropped", dropped), ("flipped", flipped)] {
+        let o = against(&tmp(&format!("sco-{name}.txt"), &bad));
+        let out = String::from_utf8_lossy(&o.stdout);
+        assert_eq!(o.status.code(), Some(1), "{name}: {bad}: {out}");
+        assert!(out.contains("invalid: outline:"), "{name}: {out}");
+    }
+}

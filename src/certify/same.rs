@@ -94,13 +94,16 @@ impl ShapeDesc {
                 x.same_as(&y[0])
             }
             (ShapeDesc::Union(x), ShapeDesc::Union(y)) => {
-                if x.len() != y.len() {
-                    return Err(format!("unions of {} and {} members", x.len(), y.len()));
-                }
-                for (i, (a, b)) in x.iter().zip(y).enumerate() {
-                    a.same_as(b).map_err(|e| format!("member {i}: {e}"))?;
-                }
-                Ok(())
+                let member_by_member = || {
+                    if x.len() != y.len() {
+                        return Err(format!("unions of {} and {} members", x.len(), y.len()));
+                    }
+                    for (i, (a, b)) in x.iter().zip(y).enumerate() {
+                        a.same_as(b).map_err(|e| format!("member {i}: {e}"))?;
+                    }
+                    Ok(())
+                };
+                member_by_member().or_else(|e| same_regrouped(x, y).map_err(|_| e))
             }
             _ => match (conv_form(self), conv_form(other)) {
                 (Some((cx, qx, sx)), Some((cy, qy, sy))) => {
@@ -125,6 +128,38 @@ impl ShapeDesc {
             },
         }
     }
+}
+
+/// Two unions compared with their curve members gathered: every Bézier piece
+/// of every curve member, in order, as one curve, and the other members (arcs,
+/// offsets, …) in order. A union's point set is the union of its members', and
+/// a curve's the union of its pieces', so equal gathered curves and equal other
+/// members are the same point set, however the members were grouped: an
+/// outline read from SVG path data (`L` runs between `A` arcs, in path order)
+/// against a stroke certificate's (all its Bézier pieces, then its arcs).
+fn same_regrouped(x: &[ShapeDesc], y: &[ShapeDesc]) -> Result<(), String> {
+    fn gathered(members: &[ShapeDesc]) -> (Vec<Piece>, Vec<&ShapeDesc>) {
+        let mut pieces = Vec::new();
+        let mut rest = Vec::new();
+        for m in members {
+            match m {
+                ShapeDesc::Curve(p) => pieces.extend(p.iter().cloned()),
+                other => rest.push(other),
+            }
+        }
+        (pieces, rest)
+    }
+    let ((px, rx), (py, ry)) = (gathered(x), gathered(y));
+    if rx.len() != ry.len() || px.is_empty() != py.is_empty() {
+        return Err("different members".into());
+    }
+    if !px.is_empty() {
+        ShapeDesc::Curve(px).same_as(&ShapeDesc::Curve(py))?;
+    }
+    for (a, b) in rx.iter().zip(&ry) {
+        a.same_as(b)?;
+    }
+    Ok(())
 }
 
 fn positively_parallel(u: &V2<Rational>, v: &V2<Rational>) -> bool {
