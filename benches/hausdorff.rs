@@ -106,7 +106,13 @@ fn bench(c: &mut Criterion) {
         let cert_p = Certificate::new(&a, &b, &tol, &rp).expect("certified");
         println!(
             "{name}: d_H ≤ 1.01·hi by the {} path ({} boxes evaluated, certificate of {} boxes); by the search: certificate of {} boxes",
-            if rp.parametric.is_some() { "parametric" } else { "search" },
+            if rp.parametric.is_some() {
+                "parametric"
+            } else if rp.radial.is_some() {
+                "radial (the certificate proven again)"
+            } else {
+                "search"
+            },
             rp.a_to_b.evaluated + rp.b_to_a.evaluated,
             cert_p.box_count(),
             cert.box_count()

@@ -1077,13 +1077,26 @@ proptest! {
         if let Some(p) = &rr.radial {
             prop_assert!(rr.hi - rr.lo <= 1e-6 * rr.hi + 1e-10 * (1.0 + 3.0 * rn as f64));
             prop_assert_eq!(p.curve_is_a, !arc_first);
+            // claims 1/1000 above and below d_H: the radial verdict is the search's
+            for k in [999i64, 1001] {
+                let t = Rational::from_float(rr.hi).unwrap() * q(k, 1000);
+                let Ok(tol) = lncert::Tolerance::new(t) else { continue };
+                let claim = |radial| Config { tol: Some(tol.clone()), radial, ..cfg(1e-3) };
+                let (x, y) = (hausdorff(a, b, &claim(true)).unwrap(), hausdorff(a, b, &claim(false)).unwrap());
+                prop_assert!(x.radial.is_some());
+                let v = tol.value();
+                let verdict = |h: &lncert::certify::HausdorffBounds| (h.hi <= v, h.lo > v);
+                prop_assert_eq!(verdict(&x), (k > 1000, k < 1000), "radial {:?}", x);
+                prop_assert_eq!(verdict(&x), verdict(&y), "radial {:?} against {:?}", x, y);
+            }
         }
     }
 }
 
 /// The radial proof's refusals: an end off its ray, a control point outside the
-/// sector, a sweep above π, a chain with a gap, a tolerance claimed; a chain
-/// through the centre (its radial distance undefined there) is left to the search.
+/// sector, a sweep above π, a chain with a gap; a chain through the centre (its
+/// radial distance undefined there) is left to the search. A claimed tolerance
+/// is decided either way, and a certificate of a radial result verifies.
 #[test]
 fn radial_proof_applies_only_where_its_statement_holds() {
     let arc = |from: &str, to: &str| {
@@ -1109,11 +1122,25 @@ fn radial_proof_applies_only_where_its_statement_holds() {
     let through = hausdorff(&quarter, &shape("M 1 0 L 0 0 L 0 1"), &c6).unwrap();
     assert!(through.radial.is_none());
     assert!(through.lo <= 1.0 && 1.0 <= through.hi, "{through:?}");
-    // a claimed tolerance goes to the proofs a certificate can state
-    let tol = lncert::Tolerance::new(q(1, 1000)).unwrap();
-    let claimed = Config {
-        tol: Some(tol),
-        ..cfg(1e-3)
-    };
-    assert!(!radial(&quarter, "M 1 0 C 1 0.5523 0.5523 1 0 1", &claimed));
+    // a claimed tolerance is decided radially (certified, refuted); its
+    // certificate is proven again by a proof the certificate language states
+    let cubic = shape("M 1 0 C 1 0.5523 0.5523 1 0 1");
+    for (t, holds) in [(q(277, 1_000_000), true), (q(276, 1_000_000), false)] {
+        let tol = lncert::Tolerance::new(t).unwrap();
+        let claimed = Config {
+            tol: Some(tol.clone()),
+            ..cfg(1e-3)
+        };
+        let r = hausdorff(&quarter, &cubic, &claimed).unwrap();
+        assert!(r.radial.is_some());
+        let v = tol.value();
+        assert_eq!((r.hi <= v, r.lo > v), (holds, !holds), "{r:?}");
+        let cert = Certificate::new(&quarter, &cubic, &tol, &r);
+        assert_eq!(cert.is_some(), holds);
+        if let Some(c) = cert {
+            let text = c.to_json_string();
+            assert!(verify(&text).is_ok(), "{text}");
+            assert!(!text.contains("radial"));
+        }
+    }
 }

@@ -74,7 +74,7 @@ pub struct HausdorffBounds {
     pub parametric: Option<param::Parametric>,
     /// The radial proof when that path decided (an arc against a chain of
     /// pieces in its sector: `d_H` is the curve's largest radial distance; no
-    /// boxes, so no [`Certificate`] is built from it).
+    /// boxes: [`Certificate::new`] proves the claim again by the other proofs).
     pub radial: Option<RadialProof>,
 }
 
@@ -149,9 +149,14 @@ pub fn hausdorff(
             1e-10 * (1.0 + a.scale().max(b.scale()))
         }
     };
-    // a distance (no claim to certify) between an arc and a curve in its sector
-    if cfg.tol.is_none() && cfg.parametric && cfg.radial {
-        if let Some(p) = radial::prove(a, b, cfg.rel, &abs_of) {
+    // an arc and a curve in its sector: the distance computed
+    if cfg.parametric && cfg.radial {
+        let goal = match &cfg.tol {
+            Some(t) => radial::Goal::Tol(t.value()),
+            None => radial::Goal::Gap(cfg.rel),
+        };
+        // its halvings count against the box budget
+        if let Some(p) = radial::prove(a, b, goal, &abs_of, cfg.max_boxes) {
             return Ok(radial_bounds(p));
         }
     }

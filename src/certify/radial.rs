@@ -33,9 +33,11 @@
 //! lower bounds meet the relative gap. No Taylor forms, no foot points: a
 //! degree-6 polynomial per cubic piece.
 //!
-//! Used by [`super::hausdorff`] for a distance (no tolerance claimed: a
-//! certificate needs the parametric or search proofs, which the certificate
-//! language states); it falls back to them whenever a condition fails.
+//! Used first by [`super::hausdorff`] (for a distance and for a claimed
+//! tolerance); it falls back to the other proofs whenever a condition fails.
+//! The certificate language has no radial proof: [`super::Certificate::new`]
+//! given a radial result proves the claim again by the parametric proof or
+//! the search and states that.
 
 use crate::curve::{Bezier, V2};
 use crate::scalar::{interval_from_rational, ulp, Interval, Rational};
@@ -46,6 +48,15 @@ use std::collections::BinaryHeap;
 const MAX_DEGREE: usize = 20;
 /// Parameter intervals split before the proof gives up.
 const MAX_SPLITS: usize = 20_000;
+
+/// What the radial proof runs for.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Goal {
+    /// `hi − lo ≤ max(rel · hi, abs)`.
+    Gap(f64),
+    /// `hi ≤ tol` or `lo > tol` (else down to a relative gap of `1e-12`).
+    Tol(f64),
+}
 
 /// A decided radial proof: `lo ≤ d_H ≤ hi`.
 #[derive(Clone, Debug, PartialEq)]
@@ -196,16 +207,19 @@ struct Cell {
     coef: Vec<Interval>,
 }
 
-/// The radial proof of `d_H(a, b)` to the relative gap `rel` (or `abs`), when
+/// The radial proof of `d_H(a, b)` for `goal` (the absolute gap `abs_of()`
+/// is formed only when the relative one is not met), when
 /// one shape is a circular arc of sweep `≤ π` and the other a chain of pieces
 /// satisfying the module's conditions; `None` otherwise (or when it does not
-/// decide within its budget).
+/// decide within `max_splits` halvings, at most 20 000).
 pub(crate) fn prove(
     a: &ShapeDesc,
     b: &ShapeDesc,
-    rel: f64,
+    goal: Goal,
     abs_of: &dyn Fn() -> f64,
+    max_splits: usize,
 ) -> Option<RadialProof> {
+    let max_splits = max_splits.min(MAX_SPLITS);
     let (arc, curve, curve_is_a) = pair(a, b)?;
     applies(&arc, curve)?;
     let r = interval_from_rational(&arc.radius);
@@ -257,7 +271,13 @@ pub(crate) fn prove(
         // a finite top bounds every cell: `R² + f > 0` on all of them (condition 2)
         let (lo, witness) = best;
         let gap = hi - lo;
-        if hi.is_finite() && (gap <= rel * hi || gap <= *abs.get_or_insert_with(abs_of)) {
+        let done = hi.is_finite()
+            && match goal {
+                Goal::Gap(rel) => gap <= rel * hi || gap <= *abs.get_or_insert_with(abs_of),
+                // decided, or as close as the bounds' floats resolve
+                Goal::Tol(tol) => hi <= tol || lo > tol || gap <= 1e-12 * hi,
+            };
+        if done {
             return Some(RadialProof {
                 lo,
                 hi,
@@ -266,7 +286,7 @@ pub(crate) fn prove(
                 curve_is_a,
             });
         }
-        if splits >= MAX_SPLITS {
+        if splits >= max_splits {
             return None;
         }
         let cell = heap.pop()?.item;

@@ -68,10 +68,11 @@ pub struct Config {
     /// built from it: set `false` when one is wanted.
     pub parametric: bool,
     /// For a circular arc of sweep `≤ π` against a chain of pieces running
-    /// from one end ray to the other inside its sector, without `tol`: try the
-    /// radial proof first (`d_H` is the curve's largest radial distance to the
-    /// circle, see [`super::RadialProof`]), a few µs where it applies (default
-    /// true; off with `parametric: false`).
+    /// from one end ray to the other inside its sector: try the radial proof
+    /// first (`d_H` is the curve's largest radial distance to the circle, see
+    /// [`super::RadialProof`]), tens of µs where it applies, its halvings
+    /// limited by `max_boxes` (default true; off with `parametric: false`). A certificate built from its result is proven
+    /// again by the other proofs ([`super::Certificate::new`]).
     pub radial: bool,
 }
 
