@@ -18,7 +18,10 @@
 //!   `h(A, B)` from `hausdorff(A, B)` and from `hausdorff(B, A)` intersect;
 //! * for two curves, `h(A, B) <= max_i |A_i - B(0)|` (every point of A is in
 //!   the convex hull of A's control points and `B(0)` is a point of B), so the
-//!   certified lower bound of `h(A, B)` cannot exceed it.
+//!   certified lower bound of `h(A, B)` cannot exceed it;
+//! * when A is an arc, the radial scenario ([`radial_scenario`]): a cubic
+//!   between its end rays inside its sector, the radial proof's bounds against
+//!   the other proofs' and against exact radial distances.
 
 use libfuzzer_sys::arbitrary::{Result, Unstructured};
 use libfuzzer_sys::{fuzz_target, Corpus};
@@ -130,6 +133,78 @@ fn lower_ok(lo: f64, bound_sq: &Rational) -> bool {
     }
 }
 
+/// When shape A is an arc, the bytes left build a cubic from a point of its
+/// start ray to a point of its end ray, its inner points `c + α·from + β·to`
+/// (`α, β ≥ 0`: in the sector whenever the sweep is at most π), where the
+/// radial proof applies (`src/certify/radial.rs`). Its bounds must overlap the
+/// other proofs' on the same pair, and the exact radial distance of the cubic
+/// at 9 rational parameters (a lower bound of `d_H` for any shapes) must not
+/// exceed its `hi`.
+fn radial_scenario(u: &mut Unstructured, arc: &ArcDesc, cfg: &Config) {
+    let Ok(k) = (0..6)
+        .map(|_| u.int_in_range(0..=24u8).map(|v| q(v.into(), 8)))
+        .collect::<Result<Vec<_>>>()
+    else {
+        return;
+    };
+    let c = &arc.center;
+    let at = |a: &Rational, b: &Rational| c.add(&arc.from.scale(a)).add(&arc.to.scale(b));
+    let zero = q(0, 1);
+    // only where the proof's exact conditions hold by construction (a sweep of
+    // at most π, both ends strictly on their rays): elsewhere the pair would
+    // only rerun the other proofs
+    let cr = arc.from.cross(&arc.to);
+    let half_turn = cr == zero && arc.from.dot(&arc.to) < zero;
+    if !(cr > zero || half_turn) || k[0] == zero || k[5] == zero {
+        return;
+    }
+    let cubic = Bezier::new(vec![
+        at(&k[0], &zero),
+        at(&k[1], &k[2]),
+        at(&k[3], &k[4]),
+        at(&zero, &k[5]),
+    ]);
+    let (Ok(arc_shape), Ok(curve)) = (ShapeDesc::arc(arc.clone()), ShapeDesc::curve(vec![cubic.clone()])) else {
+        return;
+    };
+    let Ok(r) = hausdorff(&arc_shape, &curve, cfg) else {
+        return;
+    };
+    check(&r, &arc_shape, &curve);
+    if r.radial.is_none() {
+        return;
+    }
+    // coarse (rel 1/4): soundness is what is compared, and fewer witnesses run
+    let other = Config { radial: false, rel: 0.25, ..cfg.clone() };
+    if let Ok(o) = hausdorff(&arc_shape, &curve, &other) {
+        assert!(
+            r.lo <= o.hi && o.lo <= r.hi,
+            "radial [{}, {}] and the other proofs' [{}, {}] are disjoint: A = {}, B = {}",
+            r.lo,
+            r.hi,
+            o.lo,
+            o.hi,
+            arc_shape.to_json(),
+            curve.to_json()
+        );
+    }
+    let Some(hi) = rational_from_f64(r.hi) else {
+        panic!("radial hi {} is not finite", r.hi);
+    };
+    let radius = &arc.radius;
+    for j in 0..=8 {
+        let d2 = cubic.eval(&q(j, 8)).sub(c).norm2();
+        let (out, inner) = (radius.clone() + hi.clone(), radius.clone() - hi.clone());
+        assert!(
+            d2 <= out.clone() * out && (inner < zero || d2 >= inner.clone() * inner),
+            "the radial distance at t = {j}/8 exceeds the radial hi {}: A = {}, B = {}",
+            r.hi,
+            arc_shape.to_json(),
+            curve.to_json()
+        );
+    }
+}
+
 fuzz_target!(|data: &[u8]| -> Corpus {
     let mut u = Unstructured::new(data);
     let (Ok(Some(a)), Ok(Some(b))) = (shape(&mut u), shape(&mut u)) else {
@@ -164,6 +239,9 @@ fuzz_target!(|data: &[u8]| -> Corpus {
             a.summary(),
             b.summary()
         );
+    }
+    if let ShapeDesc::Arc(arc) = &a {
+        radial_scenario(&mut u, arc, &cfg);
     }
     if let (ShapeDesc::Curve(ca), ShapeDesc::Curve(cb)) = (&a, &b) {
         for (lo, bound_sq, what) in [
