@@ -120,6 +120,23 @@ fn verify_exit_codes() {
         0
     );
     assert_eq!(code(&["verify", cert_s]), 0, "valid");
+    // the claim was decided by the radial proof, which the certificate cannot
+    // state: the report says how the written certificate was proven
+    let o = lncert(&[
+        "hausdorff",
+        &a,
+        &b,
+        "--tol",
+        "3e-4",
+        "--certificate",
+        cert_s,
+    ]);
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(out.contains("proof: radial"), "{out}");
+    assert!(
+        out.contains("the claim proven again by the parametric proof or the search"),
+        "{out}"
+    );
     let text = std::fs::read_to_string(&cert).unwrap();
     let forged = file(
         "contract_forged.json",

@@ -218,8 +218,15 @@ fn write_certificate(
         Some(c) => {
             std::fs::write(path, c.to_json_string())
                 .map_err(|e| bad("--certificate", format!("{}: {e}", path.display())))?;
+            // the certificate language has no radial proof: Certificate::new
+            // proved the claim again by a proof it states
+            let again = if r.radial.is_some() {
+                ", the claim proven again by the parametric proof or the search, which the certificate states"
+            } else {
+                ""
+            };
             Some(format!(
-                "written to {} ({} boxes)",
+                "written to {} ({} boxes{again})",
                 path.display(),
                 c.box_count()
             ))
