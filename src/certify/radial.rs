@@ -117,10 +117,8 @@ fn applies(arc: &ArcDesc, curve: &[Bezier<Rational>]) -> Option<()> {
             return None;
         }
     }
-    let on_ray = |p: &V2<Rational>, d: &V2<Rational>| {
-        let q = p.sub(c);
-        q.cross(d) == zero && q.dot(d) > zero
-    };
+    let on_ray =
+        |p: &V2<Rational>, d: &V2<Rational>| super::same::positively_parallel(&p.sub(c), d);
     let (p0, p1) = (first.points().first()?, last.points().last()?);
     if !((on_ray(p0, d0) && on_ray(p1, d1)) || (on_ray(p0, d1) && on_ray(p1, d0))) {
         return None;

@@ -162,7 +162,8 @@ fn same_regrouped(x: &[ShapeDesc], y: &[ShapeDesc]) -> Result<(), String> {
     Ok(())
 }
 
-fn positively_parallel(u: &V2<Rational>, v: &V2<Rational>) -> bool {
+/// `u = λ v` with `λ > 0`, exactly.
+pub(crate) fn positively_parallel(u: &V2<Rational>, v: &V2<Rational>) -> bool {
     u.cross(v).is_zero() && u.dot(v).is_positive()
 }
 
