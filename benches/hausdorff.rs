@@ -2,7 +2,8 @@
 //! 1e-6 (the default path: the radial proof for the arc, else the parametric
 //! proof, else the search; for the arc also without the radial proof), the tightness of the bounds, and the time to verify the
 //! certificate of `d_H ≤ 1.01 · hi` compared with the proof that produced it
-//! (the default path — the parametric map where it decides — and the search).
+//! (the default path — the radial cells or the parametric map where they
+//! decide — and the search).
 //!
 //! Run: `cargo bench --bench hausdorff`.
 
@@ -108,6 +109,8 @@ fn bench(c: &mut Criterion) {
             "{name}: d_H ≤ 1.01·hi by the {} path ({} boxes evaluated, certificate of {} boxes); by the search: certificate of {} boxes",
             if rp.parametric.is_some() {
                 "parametric"
+            } else if rp.radial.is_some() && cert_p.is_radial() {
+                "radial (a version 4 certificate of its cells)"
             } else if rp.radial.is_some() {
                 "radial (the certificate proven again)"
             } else {

@@ -308,6 +308,9 @@ fn certified_by(a: &ShapeDesc, b: &ShapeDesc, tol: &str, kind: Kind) -> Certific
         &Config {
             tol: Some(t.clone()),
             parametric: kind == Kind::Map,
+            // the maps and boxes these tests forge (radial certificates:
+            // `radial_certificates_are_refused_where_the_statement_fails`)
+            radial: false,
             ..Config::default()
         },
     )
@@ -1088,6 +1091,15 @@ proptest! {
                 let verdict = |h: &lncert::certify::HausdorffBounds| (h.hi <= v, h.lo > v);
                 prop_assert_eq!(verdict(&x), (k > 1000, k < 1000), "radial {:?}", x);
                 prop_assert_eq!(verdict(&x), verdict(&y), "radial {:?} against {:?}", x, y);
+                // its certificate: radial, checked by the verifier, whose own
+                // bound lies between the search's lower bound and the claim
+                let cert = Certificate::new(a, b, &tol, &x);
+                prop_assert_eq!(cert.is_some(), k > 1000);
+                if let Some(c) = cert {
+                    prop_assert!(c.is_radial());
+                    let valid = verify(&c.to_json_string()).unwrap();
+                    prop_assert!(valid.max_bound >= y.lo && valid.max_bound <= v, "{:?} {:?}", valid, y);
+                }
             }
         }
     }
@@ -1138,9 +1150,149 @@ fn radial_proof_applies_only_where_its_statement_holds() {
         let cert = Certificate::new(&quarter, &cubic, &tol, &r);
         assert_eq!(cert.is_some(), holds);
         if let Some(c) = cert {
+            // a radial certificate (version 4), which the verifier checks
+            assert!(c.is_radial());
             let text = c.to_json_string();
-            assert!(verify(&text).is_ok(), "{text}");
-            assert!(!text.contains("radial"));
+            let valid = verify(&text).unwrap_or_else(|e| panic!("{e}: {text}"));
+            assert!(valid.max_bound >= r.lo && valid.max_bound <= v, "{valid:?}");
+            assert_eq!(c.doc["version"], 4);
         }
     }
+}
+
+/// A version 4 document stating the radial proof of `d_H(arc, curve) ≤ tol`
+/// over `per_piece` equal cells of each of the curve's `pieces` pieces.
+fn radial_doc(
+    arc: &ShapeDesc,
+    curve: &ShapeDesc,
+    tol: &str,
+    pieces: usize,
+    per_piece: i64,
+) -> Value {
+    let cells: Vec<Value> = (0..pieces)
+        .flat_map(|p| {
+            (0..per_piece).map(move |k| {
+                serde_json::json!({"piece": p, "t": [q(k, per_piece).to_string(), q(k + 1, per_piece).to_string()]})
+            })
+        })
+        .collect();
+    serde_json::json!({
+        "format": "lncert-hausdorff-certificate", "version": 4,
+        "claim": "hausdorff(a, b) <= tol", "tol": tol,
+        "a": arc.to_json(), "b": curve.to_json(),
+        "radial": {"arc": "a", "cells": cells},
+    })
+}
+
+/// Forged radial certificates: each states a **false** claim (its curve's
+/// largest radial distance is below the tolerance, its true `d_H` far above),
+/// and only the exact condition it breaks stands between it and acceptance.
+/// Each is refused at the named field; so are broken covers, cells above the
+/// claim and documents of the wrong shape.
+#[test]
+fn radial_certificates_are_refused_where_the_statement_fails() {
+    let quarter =
+        shape(r#"{"arc": {"center": [0, 0], "radius": 1, "from": [1, 0], "to": [0, 1]}}"#);
+    let refused = |doc: &Value, at: &str, reason: &str| {
+        let e = verify(&doc.to_string()).expect_err("a forged certificate was accepted");
+        assert_eq!(e.at, at, "{e}");
+        assert!(e.reason.contains(reason), "{e}");
+    };
+    // the true d_H of each curve is certified above twice its claim
+    let far = |arc: &ShapeDesc, curve: &ShapeDesc, claim: f64| {
+        let r = hausdorff(
+            arc,
+            curve,
+            &Config {
+                radial: false,
+                ..cfg(1e-2)
+            },
+        )
+        .unwrap();
+        assert!(r.lo > 2.0 * claim, "{r:?}");
+    };
+    // a control point outside the sector: the chain dips below d0 along the
+    // circle to (0.866, −0.5) and comes back, 0.52 from the arc there
+    let dip = shape("M 1 0 Q 1 -0.268 0.866 -0.5 C 1.2509 0.1667 0.7698 1 0 1");
+    far(&quarter, &dip, 0.1);
+    refused(
+        &radial_doc(&quarter, &dip, "1/10", 2, 64),
+        "b.beziers[0][1]",
+        "outside the arc's closed sector",
+    );
+    // an end off its ray: the 45°–90° half of the arc only
+    let half = shape("M 0.70711 0.70711 C 0.51957 0.89464 0.26521 1 0 1");
+    far(&quarter, &half, 0.1);
+    refused(
+        &radial_doc(&quarter, &half, "1/10", 1, 64),
+        "b.beziers[0][0]",
+        "from one end ray",
+    );
+    // a gap in the chain: 0°–45° and 60°–90°
+    let gap = shape(
+        "M 1 0 C 1 0.26521 0.89464 0.51957 0.70711 0.70711 M 0.5 0.86603 C 0.59 0.8 0.17 1 0 1",
+    );
+    far(&quarter, &gap, 0.05);
+    refused(
+        &radial_doc(&quarter, &gap, "1/20", 2, 64),
+        "b.beziers[1][0]",
+        "continuous chain",
+    );
+    // a sweep above π
+    let three = shape(r#"{"arc": {"center": [0, 0], "radius": 1, "from": [1, 0], "to": [0, -1]}}"#);
+    let line = shape("M 1 0 L 0 -1");
+    refused(&radial_doc(&three, &line, "1", 1, 4), "a", "more than π");
+    // through the centre: refused on the cell that reaches it
+    let through = shape("M 1 0 L 0 0 L 0 1");
+    refused(
+        &radial_doc(&quarter, &through, "2", 2, 4),
+        "radial.cells[3]",
+        "centre",
+    );
+
+    // the classical cubic, d_H = 2.7607e-4: 3/10000 holds, 2.76e-4 does not
+    let cubic = shape("M 1 0 C 1 0.5523 0.5523 1 0 1");
+    let good = radial_doc(&quarter, &cubic, "3/10000", 1, 256);
+    let valid = verify(&good.to_string()).unwrap();
+    assert!(
+        valid.max_bound > 2.76e-4 && valid.max_bound <= 3e-4,
+        "{valid:?}"
+    );
+    assert_eq!(valid.boxes, 256);
+    let mut low = good.clone();
+    low["tol"] = "69/250000".into(); // 2.76e-4
+    assert!(verify(&low.to_string())
+        .unwrap_err()
+        .reason
+        .contains("exceeds the tolerance"));
+    // covers: a cell dropped, the last dropped, one too many, past 1
+    let cells = |d: &mut Value| -> Vec<Value> { d["radial"]["cells"].as_array().unwrap().clone() };
+    let mut d = good.clone();
+    let mut c = cells(&mut d);
+    c.remove(7);
+    d["radial"]["cells"] = c.into();
+    refused(&d, "radial.cells[7]", "gap or overlap");
+    let mut d = good.clone();
+    let mut c = cells(&mut d);
+    c.pop();
+    d["radial"]["cells"] = c.into();
+    refused(&d, "radial.cells", "not covered to its end");
+    let mut d = good.clone();
+    let mut c = cells(&mut d);
+    c.push(serde_json::json!({"piece": 1, "t": ["0", "1"]}));
+    d["radial"]["cells"] = c.into();
+    refused(&d, "radial.cells[256]", "already covered");
+    let mut d = good.clone();
+    d["radial"]["cells"] = serde_json::json!([{"piece": 0, "t": ["0", "2"]}]);
+    refused(&d, "radial.cells[0]", "at most at 1");
+    // the arc named wrongly, the shapes swapped, a stray key, no cells
+    let mut d = good.clone();
+    d["radial"]["arc"] = "b".into();
+    refused(&d, "radial.arc", "not a circular arc");
+    let mut d = good.clone();
+    d["maps"] = serde_json::json!([]);
+    refused(&d, "maps", "unknown key");
+    let mut d = good.clone();
+    d["radial"]["cells"] = serde_json::json!([]);
+    refused(&d, "radial.cells", "non-empty");
 }

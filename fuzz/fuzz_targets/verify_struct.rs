@@ -3,7 +3,7 @@
 //!
 //! The bytes are *choices* (read with `arbitrary::Unstructured`): one of the
 //! seed certificates of fuzz/seeds/verify/ (embedded; version 2 with box
-//! covers, version 3 with parametric maps, stroke certificates (a disk pen on
+//! covers, version 3 with parametric maps, version 4 with radial cells, stroke certificates (a disk pen on
 //! segments and on a quadratic, and an elliptical one), a stroke distance certificate and a certificate set), then
 //! 1 to 4 mutations of
 //! its JSON tree ([`Mutation`]): add a key (from the keys of the certificate and
@@ -32,7 +32,7 @@ use std::fmt::Write;
 use std::sync::OnceLock;
 use verify_oracle::check_accepted;
 
-const SEED_TEXTS: [&str; 18] = [
+const SEED_TEXTS: [&str; 20] = [
     include_str!("../seeds/verify/cert_quad_seg.json"),
     include_str!("../seeds/verify/cert_quad_seg_tol1.json"),
     include_str!("../seeds/verify/cert_box_deleted.json"),
@@ -51,6 +51,8 @@ const SEED_TEXTS: [&str; 18] = [
     include_str!("../seeds/verify/stroke_ellipse_segment.json"),
     include_str!("../seeds/verify/stroke_set_two.json"),
     include_str!("../seeds/verify/stroke_curve.json"),
+    include_str!("../seeds/verify/cert_radial_arc_cubic.json"),
+    include_str!("../seeds/verify/cert_radial_half_arc.json"),
 ];
 
 fn seeds() -> &'static [Value] {
@@ -65,7 +67,7 @@ fn seeds() -> &'static [Value] {
 
 /// Keys a forger may add: every key of the formats, and the classic extras.
 #[rustfmt::skip]
-const KEYS: [&str; 51] = [
+const KEYS: [&str; 53] = [
     "clockwise", "bounds", "bound", "digest", "beziers", "bezier", "arc", "ellipse_arc", "matrix", "offset",
     "convolution", "side", "ellipse", "curve", "distance", "radius", "center", "from", "to",
     "piece", "target", "s", "t", "k", "tol", "claim", "extra", "format", "version", "directions",
@@ -73,6 +75,8 @@ const KEYS: [&str; 51] = [
     // stroke and stroke distance certificates
     "outline", "cover", "boundary", "of", "boxes", "near", "inside", "contour", "u", "o", "w",
     "mu", "dirs", "at", "pen", "members", "certificate", "segment",
+    // radial certificates (version 4)
+    "radial", "cells",
 ];
 
 /// A value to put somewhere.

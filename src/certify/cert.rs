@@ -47,6 +47,25 @@
 //! `h(a, b) ≤ tol` and `h(b, a) ≤ tol`, hence the claim. Version 2 is the same
 //! document without `maps`.
 //!
+//! **Version 4: the radial proof** ([`super::RadialProof`]). For a circular
+//! arc and a chain of Bézier pieces, the document has, in place of `maps` and
+//! `directions`, one key
+//!
+//! ```text
+//!   "radial": {"arc": "b", "cells": [        which shape is the arc
+//!      {"piece": i, "t": [Q, Q]}, ...]}      the curve's cover, in order
+//! ```
+//!
+//! The verifier decides exactly, in rationals, the statement's conditions (a
+//! sweep `≤ π`, a continuous chain of degree `≤ 20`, every control point in
+//! the arc's closed sector, the chain's ends positively on the two end rays),
+//! checks that the cells cover every piece's `[0, 1]` exactly and in order,
+//! and on each cell encloses `f = |P − c|² − R²` by the Bernstein
+//! coefficients of the piece restricted to (a superset of) the cell: `R² + f >
+//! 0` and `|f| / (√(R² + f) + R) ≤ tol` there. Then `d_H ≤ tol`
+//! (`proofs/certify-hausdorff.md`, "The radial proof"). The writer uses
+//! version 4 only for a radial result, and version 3 otherwise.
+//!
 //! Every field is checked: there is nothing informational, and an unknown or
 //! duplicate key anywhere makes the certificate invalid. There is no digest: an
 //! unkeyed hash authenticates nothing (anyone who edits a certificate can
@@ -68,6 +87,9 @@ pub const FORMAT: &str = "lncert-hausdorff-certificate";
 pub const VERSION: u64 = 3;
 /// The older version the verifier still reads (no `maps`).
 pub const VERSION_2: u64 = 2;
+/// The version of a radial certificate (`radial` in place of `maps` and
+/// `directions`).
+pub const VERSION_RADIAL: u64 = 4;
 /// The claim of this format, the value of the `claim` field.
 pub const CLAIM: &str = "hausdorff(a, b) <= tol";
 
@@ -132,18 +154,28 @@ fn map_json(m: &MapCover) -> Value {
 
 impl Certificate {
     /// Builds the certificate of `d_H(a, b) ≤ tol` from a proof of
-    /// [`super::hausdorff`] (its parametric map, or its two box covers; a
-    /// radial result is proven again by those), or `None` if the bounds do not
-    /// prove it (some bound above `tol`).
+    /// [`super::hausdorff`] (its radial cover, its parametric map, or its two
+    /// box covers), or `None` if the bounds do not prove it (some bound above
+    /// `tol`).
+    ///
+    /// A radial certificate is checked by the verifier before it is returned
+    /// (microseconds): should the verifier's own enclosures not confirm a cell
+    /// the proof placed at the tolerance to within rounding, the claim is
+    /// proven again without the radial proof and stated by maps or boxes
+    /// ([`Certificate::is_radial`] tells which).
     pub fn new(
         a: &ShapeDesc,
         b: &ShapeDesc,
         tol: &Tolerance,
         r: &HausdorffBounds,
     ) -> Option<Certificate> {
-        if r.radial.is_some() {
-            // the certificate language states maps and box covers: prove the
-            // claim again without the radial proof
+        if let Some(p) = &r.radial {
+            if let Some(c) = Self::radial(a, b, tol, p) {
+                if super::verify::verify(&c.to_json_string()).is_ok() {
+                    return Some(c);
+                }
+            }
+            // prove the claim again without the radial proof
             let cfg = super::Config {
                 tol: Some(tol.clone()),
                 radial: false,
@@ -166,6 +198,46 @@ impl Certificate {
             None if r.a_to_b.boxes.is_empty() || r.b_to_a.boxes.is_empty() => None,
             None => Self::assemble(a, b, tol, &[], &r.a_to_b.boxes, &r.b_to_a.boxes),
         }
+    }
+
+    /// The version 4 certificate of a radial proof (see the module docs);
+    /// `None` if some cell's bound is above `tol` or some number is not finite.
+    pub fn radial(
+        a: &ShapeDesc,
+        b: &ShapeDesc,
+        tol: &Tolerance,
+        p: &super::RadialProof,
+    ) -> Option<Certificate> {
+        let tol_f = tol.value();
+        let ok = !p.cells.is_empty()
+            && p.hi <= tol_f
+            && p.cells
+                .iter()
+                .all(|c| c.bound <= tol_f && c.t.0.is_finite() && c.t.1.is_finite());
+        if !ok {
+            return None;
+        }
+        let doc = json!({
+            "format": FORMAT,
+            "version": VERSION_RADIAL,
+            "claim": CLAIM,
+            "tol": tol.exact().to_string(),
+            "a": a.to_json(),
+            "b": b.to_json(),
+            "radial": {
+                "arc": if p.curve_is_a { "b" } else { "a" },
+                "cells": p.cells.iter().map(|c| json!({
+                    "piece": c.piece,
+                    "t": [q(c.t.0), q(c.t.1)],
+                })).collect::<Vec<_>>(),
+            },
+        });
+        Some(Certificate { doc })
+    }
+
+    /// The certificate states a radial proof (version 4).
+    pub fn is_radial(&self) -> bool {
+        self.doc.get("radial").is_some()
     }
 
     /// Assembles a certificate from parametric maps and the two directions'
@@ -253,6 +325,21 @@ impl Certificate {
                     }
                     out.push_str("  ]");
                 }
+                ("radial", Value::Object(r)) => {
+                    // {"arc":"b","cells":[ one cell per line ]}
+                    let cells = r.get("cells").and_then(Value::as_array);
+                    match (r.get("arc"), cells) {
+                        (Some(arc), Some(cells)) if r.len() == 2 && !cells.is_empty() => {
+                            out.push_str(&format!("{{\"arc\": {}, \"cells\": [", compact(arc)));
+                            for (j, c) in cells.iter().enumerate() {
+                                out.push_str(if j == 0 { "\n    " } else { ",\n    " });
+                                out.push_str(&compact(c));
+                            }
+                            out.push_str("]}");
+                        }
+                        _ => out.push_str(&compact(v)),
+                    }
+                }
                 _ => out.push_str(&compact(v)),
             }
         }
@@ -260,13 +347,15 @@ impl Certificate {
         out
     }
 
-    /// Number of proof boxes.
+    /// Number of proof boxes (a radial certificate's cells).
     pub fn box_count(&self) -> usize {
+        let cells = self.doc["radial"]["cells"].as_array().map_or(0, Vec::len);
         ["maps", "directions"]
             .iter()
             .filter_map(|k| self.doc[*k].as_array())
             .flatten()
             .map(|d| d["boxes"].as_array().map_or(0, Vec::len))
-            .sum()
+            .sum::<usize>()
+            + cells
     }
 }

@@ -49,7 +49,7 @@ use piece::Pieces;
 pub use arcquad::circular_arc_quadratics;
 pub use cert::{Certificate, MapCover};
 pub use param::{ParamBox, Parametric};
-pub use radial::RadialProof;
+pub use radial::{RadialCell, RadialProof};
 pub use same::verify_against;
 
 pub use search::{Config, CoverBox, OneSided};

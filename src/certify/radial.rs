@@ -35,9 +35,8 @@
 //!
 //! Used first by [`super::hausdorff`] (for a distance and for a claimed
 //! tolerance); it falls back to the other proofs whenever a condition fails.
-//! The certificate language has no radial proof: [`super::Certificate::new`]
-//! given a radial result proves the claim again by the parametric proof or
-//! the search and states that.
+//! A certificate states the final cover ([`RadialProof::cells`]) for the
+//! verifier to check on its own (version 4, [`super::cert`]).
 
 use crate::curve::{Bezier, V2};
 use crate::scalar::{interval_from_rational, ulp, Interval, Rational};
@@ -71,6 +70,22 @@ pub struct RadialProof {
     pub splits: usize,
     /// The curve is shape `A` of [`super::hausdorff`] (the arc is `B`).
     pub curve_is_a: bool,
+    /// The final cover: every piece's parameter domain `[0, 1]` cut into
+    /// cells, in order (by piece, then parameter), each with its bound
+    /// (`≤ hi`). A certificate states them (see [`super::Certificate`]).
+    pub cells: Vec<RadialCell>,
+}
+
+/// One cell of a radial proof's cover: the radial distance over parameters
+/// `t` of curve piece `piece` is at most `bound`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RadialCell {
+    /// The curve piece.
+    pub piece: usize,
+    /// The parameter interval (dyadic ends).
+    pub t: (f64, f64),
+    /// The bound over it.
+    pub bound: f64,
 }
 
 /// The arc and the curve of a radial pair, in either order.
@@ -276,12 +291,26 @@ pub(crate) fn prove(
                 Goal::Tol(tol) => hi <= tol || lo > tol || gap <= 1e-12 * hi,
             };
         if done {
+            let mut cells: Vec<RadialCell> = heap
+                .into_iter()
+                .map(|c| RadialCell {
+                    piece: c.item.piece,
+                    t: c.item.t,
+                    bound: c.bound,
+                })
+                .collect();
+            cells.sort_by(|x, y| {
+                (x.piece, x.t.0)
+                    .partial_cmp(&(y.piece, y.t.0))
+                    .expect("finite")
+            });
             return Some(RadialProof {
                 lo,
                 hi,
                 witness,
                 splits,
                 curve_is_a,
+                cells,
             });
         }
         if splits >= max_splits {

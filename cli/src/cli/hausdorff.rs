@@ -218,15 +218,20 @@ fn write_certificate(
         Some(c) => {
             std::fs::write(path, c.to_json_string())
                 .map_err(|e| bad("--certificate", format!("{}: {e}", path.display())))?;
-            // the certificate language has no radial proof: Certificate::new
+            // a radial certificate the verifier did not confirm: Certificate::new
             // proved the claim again by a proof it states
-            let again = if r.radial.is_some() {
+            let again = if r.radial.is_some() && !c.is_radial() {
                 ", the claim proven again by the parametric proof or the search, which the certificate states"
             } else {
                 ""
             };
+            let what = if c.is_radial() {
+                "radial cells"
+            } else {
+                "boxes"
+            };
             Some(format!(
-                "written to {} ({} boxes{again})",
+                "written to {} ({} {what}{again})",
                 path.display(),
                 c.box_count()
             ))

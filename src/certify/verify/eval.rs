@@ -84,6 +84,25 @@ pub(crate) struct VShape {
     pub ends: Vec<Interval>,
     /// What the shape is, in words, from the exact data.
     pub text: String,
+    /// The exact data of the shapes the radial check reads (a curve of
+    /// Bézier pieces, a circular arc); `None` for the other kinds and unions.
+    pub exact: Option<Exact>,
+}
+
+/// A shape's exact data, for the radial check (`radial.rs`).
+// two per certificate: the size of a variant does not matter
+#[allow(clippy::large_enum_variant)]
+pub(crate) enum Exact {
+    /// The control points of each piece.
+    Curve(Vec<Vec<[Rational; 2]>>),
+    /// A circular arc: centre, radius, counter-clockwise from direction `d0`
+    /// to `d1` (an elliptic arc whose matrix is `r I` is one too).
+    Circle {
+        c: [Rational; 2],
+        r: Rational,
+        d0: [Rational; 2],
+        d1: [Rational; 2],
+    },
 }
 
 /// The range of a polynomial over an interval parameter.
@@ -126,7 +145,7 @@ fn casteljau(pts: &[[Interval; 2]], t: Interval) -> [Interval; 2] {
 }
 
 /// The control points of the piece on `[0, t]` (`left`) or `[t, 1]`.
-fn subdivide(pts: &[[Interval; 2]], t: Interval, left: bool) -> Vec<[Interval; 2]> {
+pub(crate) fn subdivide(pts: &[[Interval; 2]], t: Interval, left: bool) -> Vec<[Interval; 2]> {
     let n = pts.len();
     let u = ic(1) - t;
     let mut tri: Vec<[Interval; 2]> = pts.to_vec();

@@ -27,10 +27,11 @@
 //! at most 4 096 characters of big-integer parsing.
 
 mod eval;
+mod radial;
 mod read;
 pub mod stroke;
 
-use super::cert::{CLAIM, FORMAT, VERSION, VERSION_2};
+use super::cert::{CLAIM, FORMAT, VERSION, VERSION_2, VERSION_RADIAL};
 use crate::json::{parse, Json, Limits};
 use crate::scalar::{rational_from_f64, Interval, Rational};
 use eval::{check_box, check_map_box, le_rational, reach, VShape};
@@ -133,6 +134,8 @@ pub(super) const KEYS: [&str; 8] = [
 ];
 /// The keys of a version 2 certificate (no maps), all required.
 const KEYS_2: [&str; 7] = ["format", "version", "claim", "tol", "a", "b", "directions"];
+/// The keys of a version 4 (radial) certificate, all required.
+const KEYS_RADIAL: [&str; 7] = ["format", "version", "claim", "tol", "a", "b", "radial"];
 
 /// Verifies a certificate document.
 ///
@@ -214,14 +217,28 @@ fn check_document(doc: &Json) -> Result<Valid, Invalid> {
     let version = match doc.get("version") {
         Some(Json::Number(v)) if **v == *VERSION_2.to_string() => VERSION_2,
         Some(Json::Number(v)) if **v == *VERSION.to_string() => VERSION,
+        Some(Json::Number(v)) if **v == *VERSION_RADIAL.to_string() => VERSION_RADIAL,
         Some(_) => {
             return Err(inv(
                 "version",
-                format!("unsupported; this verifier reads versions {VERSION_2} and {VERSION} (version 1 carried unverified fields and a digest that authenticated nothing: re-run the proof to get a version {VERSION} certificate)"),
+                format!("unsupported; this verifier reads versions {VERSION_2}, {VERSION} and {VERSION_RADIAL} (version 1 carried unverified fields and a digest that authenticated nothing: re-run the proof to get a version {VERSION} certificate)"),
             ))
         }
         None => VERSION,
     };
+    if version == VERSION_RADIAL {
+        let [_format, _version, claim, tol, a, b, radial] = exact_object(doc, "", KEYS_RADIAL)?;
+        let (tol, shapes) = head(claim, tol, a, b)?;
+        let (max_bound, boxes) = radial::check(radial, &shapes, &tol)?;
+        let [a, b] = shapes.map(|s: VShape| s.text);
+        return Ok(Valid {
+            tol: tol.exact,
+            a,
+            b,
+            max_bound,
+            boxes,
+        });
+    }
     let (claim, tol, a, b, maps, dirs) = if version == VERSION {
         let [_format, _version, claim, tol, a, b, maps, dirs] = exact_object(doc, "", KEYS)?;
         (claim, tol, a, b, Some(maps), dirs)
@@ -229,21 +246,7 @@ fn check_document(doc: &Json) -> Result<Valid, Invalid> {
         let [_format, _version, claim, tol, a, b, dirs] = exact_object(doc, "", KEYS_2)?;
         (claim, tol, a, b, None, dirs)
     };
-    if claim.as_str() != Some(CLAIM) {
-        return Err(inv(
-            "claim",
-            format!("expected \"{CLAIM}\", the one claim of this format"),
-        ));
-    }
-    let tol = canonical_rational(tol, "tol")?;
-    if tol.is_negative() {
-        return Err(inv("tol", "negative"));
-    }
-    let tol = Tol {
-        below: crate::scalar::interval_from_rational(&tol).inf(),
-        exact: tol,
-    };
-    let shapes = [read_shape(a, "a")?, read_shape(b, "b")?];
+    let (tol, shapes) = head(claim, tol, a, b)?;
     let mut max_bound = 0.0f64;
     let mut count = 0;
     // which pieces the maps cover: `by_map[shape][piece]` (both directions)
@@ -405,6 +408,25 @@ fn check_document(doc: &Json) -> Result<Valid, Invalid> {
         max_bound,
         boxes: count,
     })
+}
+
+/// The claim, the tolerance and the two shapes, read and checked.
+fn head(claim: &Json, tol: &Json, a: &Json, b: &Json) -> Result<(Tol, [VShape; 2]), Invalid> {
+    if claim.as_str() != Some(CLAIM) {
+        return Err(inv(
+            "claim",
+            format!("expected \"{CLAIM}\", the one claim of this format"),
+        ));
+    }
+    let tol = canonical_rational(tol, "tol")?;
+    if tol.is_negative() {
+        return Err(inv("tol", "negative"));
+    }
+    let tol = Tol {
+        below: crate::scalar::interval_from_rational(&tol).inf(),
+        exact: tol,
+    };
+    Ok((tol, [read_shape(a, "a")?, read_shape(b, "b")?]))
 }
 
 /// The head of a map: source shape and piece, target shape and piece (in

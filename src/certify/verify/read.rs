@@ -4,7 +4,7 @@
 //! nothing else; the specification is in `proofs/certify-hausdorff.md`
 //! ("The canonical shape form"). Every rejection names the field.
 
-use super::eval::{ic, VPiece, VShape};
+use super::eval::{ic, Exact, VPiece, VShape};
 use super::{inv, Invalid};
 use crate::json::Json;
 use crate::scalar::{abs_le_pow10, interval_from_rational, Interval, Rational};
@@ -263,6 +263,7 @@ fn conv_shape(bs: &[Vec<[Rational; 2]>], q: [Rational; 3], sigma: i64, text: Str
             })
             .collect(),
         text,
+        exact: None,
     }
 }
 
@@ -282,6 +283,7 @@ pub(crate) fn read_shape(v: &Json, at: &str) -> Result<VShape, Invalid> {
                 pieces: Vec::new(),
                 ends: Vec::new(),
                 text: String::new(),
+                exact: None,
             };
             let mut texts = Vec::new();
             for (i, m) in list.iter().enumerate() {
@@ -347,6 +349,7 @@ fn read_member(v: &Json, at: &str) -> Result<VShape, Invalid> {
                     .map(|b| VPiece::Poly(derivatives::<3>(b)))
                     .collect(),
                 text: format!("the curve of {}", describe_curve(&bs)),
+                exact: Some(Exact::Curve(bs)),
             })
         }
         "arc" => read_arc(&m[0].1, &join(at, "arc"), false),
@@ -424,9 +427,12 @@ fn nonsingular_matrix(v: &Json, at: &str) -> Result<[[Rational; 2]; 2], Invalid>
 /// `elliptic`, an elliptic one (`{"center", "from", "matrix", "to"}`): both
 /// `c + M u`, `u` on the unit-circle arc, `M = r I` for the circle.
 fn read_arc(v: &Json, at: &str, elliptic: bool) -> Result<VShape, Invalid> {
-    let (c, d0, d1, m, what) = if elliptic {
+    let (c, d0, d1, m, what, radius) = if elliptic {
         let [center, from, matrix, to] = exact_object(v, at, ["center", "from", "matrix", "to"])?;
         let [r0, r1] = nonsingular_matrix(matrix, &join(at, "matrix"))?;
+        // M = r I, r > 0: a circle
+        let radius = (r0[0] == r1[1] && r0[1].is_zero() && r1[0].is_zero() && r0[0].is_positive())
+            .then(|| r0[0].clone());
         let what = format!(
             "the elliptic arc c + M·u of centre c = {} and M = [[{}, {}], [{}, {}]], u",
             fmt_pt(&point(center, &join(at, "center"))?),
@@ -442,6 +448,7 @@ fn read_arc(v: &Json, at: &str, elliptic: bool) -> Result<VShape, Invalid> {
             point(to, &join(at, "to"))?,
             m,
             what,
+            radius,
         )
     } else {
         let [center, radius, from, to] = exact_object(v, at, ["center", "radius", "from", "to"])?;
@@ -458,6 +465,7 @@ fn read_arc(v: &Json, at: &str, elliptic: bool) -> Result<VShape, Invalid> {
             point(to, &join(at, "to"))?,
             [ri, ic(0), ic(0), ri],
             what,
+            Some(r),
         )
     };
     for (d, key) in [(&d0, "from"), (&d1, "to")] {
@@ -515,5 +523,6 @@ fn read_arc(v: &Json, at: &str, elliptic: bool) -> Result<VShape, Invalid> {
         pieces: vec![VPiece::Arc { c: ivp(&c), m, e0 }],
         ends: vec![u],
         text,
+        exact: radius.map(|r| Exact::Circle { c, r, d0, d1 }),
     })
 }
