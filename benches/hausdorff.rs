@@ -26,6 +26,12 @@ fn pairs() -> Vec<(&'static str, ShapeDesc, ShapeDesc)> {
             s("M 1 0 C 1 0.5523 0.5523 1 0 1"),
         ),
         (
+            // an SVG <circle> (two half arcs) against four cubics
+            "circle_vs_4_cubics",
+            s(r#"<svg xmlns="http://www.w3.org/2000/svg"><circle cx="0" cy="0" r="1"/></svg>"#),
+            s("M 1 0 C 1 0.5523 0.5523 1 0 1 C -0.5523 1 -1 0.5523 -1 0 C -1 -0.5523 -0.5523 -1 0 -1 C 0.5523 -1 1 -0.5523 1 0"),
+        ),
+        (
             "cubic_vs_cubic",
             s("M 0 0 C 1 1 2 1 3 0"),
             s("M 0 0 C 1.01 1.02 1.98 0.99 3 0.01"),

@@ -1130,6 +1130,69 @@ fn radial_proof_applies_only_where_its_statement_holds() {
     assert!(radial(&half, "M 1 0 C 1 1.3333 -1 1.3333 -1 0", &c6));
     let three_quarters = arc("[1, 0]", "[0, -1]");
     assert!(!radial(&three_quarters, "M 1 0 C 1 2 -2 1 0 -1", &c6));
+    // arcs of more than π, and whole circles, against chains of pieces that
+    // each turn less: in either direction, from any start on a whole circle
+    let k = "0.5523";
+    let quarters = [
+        format!("C 1 {k} {k} 1 0 1"),
+        format!("C -{k} 1 -1 {k} -1 0"),
+        format!("C -1 -{k} -{k} -1 0 -1"),
+        format!("C {k} -1 1 -{k} 1 0"),
+    ];
+    let three_cubics = format!("M 1 0 {} {} {}", quarters[0], quarters[1], quarters[2]);
+    assert!(radial(&three_quarters, &three_cubics, &c6));
+    assert!(radial(
+        &three_quarters,
+        "M 0 -1 C -0.5523 -1 -1 -0.5523 -1 0 C -1 0.5523 -0.5523 1 0 1 C 0.5523 1 1 0.5523 1 0",
+        &c6
+    ));
+    let circle =
+        shape(r#"<svg xmlns="http://www.w3.org/2000/svg"><circle cx="0" cy="0" r="1"/></svg>"#);
+    let four = format!("M 1 0 {}", quarters.join(" "));
+    let from_top = format!(
+        "M 0 1 {} {} {} {}",
+        quarters[1], quarters[2], quarters[3], quarters[0]
+    );
+    for c in [&four, &from_top] {
+        let r = hausdorff(&circle, &shape(c), &c6).unwrap();
+        let s = hausdorff(
+            &circle,
+            &shape(c),
+            &Config {
+                radial: false,
+                ..cfg(1e-3)
+            },
+        )
+        .unwrap();
+        assert!(r.radial.is_some(), "{c}");
+        // the same d_H as one quarter's, inside the search's bounds
+        assert!(
+            r.lo <= s.hi && s.lo <= r.hi && (r.hi - 2.7607e-4).abs() < 1e-7,
+            "{r:?} {s:?}"
+        );
+        // the claim 3/10000 and its radial certificate, which verifies
+        let tol = lncert::Tolerance::new(q(3, 10_000)).unwrap();
+        let claimed = Config {
+            tol: Some(tol.clone()),
+            ..cfg(1e-3)
+        };
+        let r = hausdorff(&circle, &shape(c), &claimed).unwrap();
+        let cert = Certificate::new(&circle, &shape(c), &tol, &r).unwrap();
+        assert!(cert.is_radial());
+        let valid = verify(&cert.to_json_string()).unwrap();
+        assert!(
+            valid.max_bound >= s.lo && valid.max_bound <= 3e-4,
+            "{valid:?}"
+        );
+    }
+    assert!(
+        !radial(&circle, &three_cubics, &c6),
+        "three quarters of a circle"
+    );
+    assert!(
+        !radial(&three_quarters, &four, &c6),
+        "a whole turn against 270°"
+    );
     // through the centre: refused; the search's bounds hold the true d_H = 1
     let through = hausdorff(&quarter, &shape("M 1 0 L 0 0 L 0 1"), &c6).unwrap();
     assert!(through.radial.is_none());
@@ -1211,14 +1274,23 @@ fn radial_certificates_are_refused_where_the_statement_fails() {
         .unwrap();
         assert!(r.lo > 2.0 * claim, "{r:?}");
     };
-    // a control point outside the sector: the chain dips below d0 along the
+    // a control point outside its piece's sector: the cubic leaves the
+    // sector below d0 (radial distance 0.16, d_H 0.47)
+    let poke = shape("M 1 0 C 1 -1.3 1.5 0.5 0 1");
+    far(&quarter, &poke, 0.2);
+    refused(
+        &radial_doc(&quarter, &poke, "1/5", 1, 64),
+        "b.beziers[0][1]",
+        "outside the closed sector",
+    );
+    // a piece turning the other way: the chain dips below d0 along the
     // circle to (0.866, −0.5) and comes back, 0.52 from the arc there
     let dip = shape("M 1 0 Q 1 -0.268 0.866 -0.5 C 1.2509 0.1667 0.7698 1 0 1");
     far(&quarter, &dip, 0.1);
     refused(
         &radial_doc(&quarter, &dip, "1/10", 2, 64),
-        "b.beziers[0][1]",
-        "outside the arc's closed sector",
+        "b.beziers[1]",
+        "does not turn",
     );
     // an end off its ray: the 45°–90° half of the arc only
     let half = shape("M 0.70711 0.70711 C 0.51957 0.89464 0.26521 1 0 1");
@@ -1226,7 +1298,7 @@ fn radial_certificates_are_refused_where_the_statement_fails() {
     refused(
         &radial_doc(&quarter, &half, "1/10", 1, 64),
         "b.beziers[0][0]",
-        "from one end ray",
+        "does not sweep the arcs' directions",
     );
     // a gap in the chain: 0°–45° and 60°–90°
     let gap = shape(
@@ -1238,16 +1310,42 @@ fn radial_certificates_are_refused_where_the_statement_fails() {
         "b.beziers[1][0]",
         "continuous chain",
     );
-    // a sweep above π
+    // a 270° arc against the chord of its missing quarter (turning 90° the
+    // other way round): not its directions
     let three = shape(r#"{"arc": {"center": [0, 0], "radius": 1, "from": [1, 0], "to": [0, -1]}}"#);
     let line = shape("M 1 0 L 0 -1");
-    refused(&radial_doc(&three, &line, "1", 1, 4), "a", "more than π");
-    // through the centre: refused on the cell that reaches it
-    let through = shape("M 1 0 L 0 0 L 0 1");
     refused(
-        &radial_doc(&quarter, &through, "2", 2, 4),
-        "radial.cells[3]",
+        &radial_doc(&three, &line, "1", 1, 4),
+        "b.beziers[0][0]",
+        "does not sweep",
+    );
+    // a whole circle against three quarters of it
+    let circle =
+        shape(r#"<svg xmlns="http://www.w3.org/2000/svg"><circle cx="0" cy="0" r="1"/></svg>"#);
+    let most = shape(
+        "M 1 0 C 1 0.5523 0.5523 1 0 1 C -0.5523 1 -1 0.5523 -1 0 C -1 -0.5523 -0.5523 -1 0 -1",
+    );
+    far(&circle, &most, 0.1);
+    refused(
+        &radial_doc(&circle, &most, "1/10", 3, 64),
+        "b.beziers[0][0]",
+        "does not sweep",
+    );
+    // a chord through the centre, a half turn: refused on the cell reaching it
+    let half_arc =
+        shape(r#"{"arc": {"center": [0, 0], "radius": 1, "from": [1, 0], "to": [-1, 0]}}"#);
+    let through = shape("M 1 0 L -1 0");
+    refused(
+        &radial_doc(&half_arc, &through, "2", 1, 4),
+        "radial.cells[1]",
         "centre",
+    );
+    // a piece ending at the centre: no turn
+    let stop = shape("M 1 0 L 0 0 L 0 1");
+    refused(
+        &radial_doc(&quarter, &stop, "2", 2, 4),
+        "b.beziers[0]",
+        "does not turn",
     );
 
     // the classical cubic, d_H = 2.7607e-4: 3/10000 holds, 2.76e-4 does not
@@ -1289,6 +1387,15 @@ fn radial_certificates_are_refused_where_the_statement_fails() {
     let mut d = good.clone();
     d["radial"]["arc"] = "b".into();
     refused(&d, "radial.arc", "not a circular arc");
+    // a union of arcs that is not one chain
+    let broken = shape(
+        r#"{"union": [{"arc": {"center": [0, 0], "radius": 1, "from": [1, 0], "to": [0, 1]}}, {"arc": {"center": [0, 0], "radius": 1, "from": [-1, 0], "to": [0, -1]}}]}"#,
+    );
+    refused(
+        &radial_doc(&broken, &cubic, "1", 1, 4),
+        "a.union[1]",
+        "previous arc ends",
+    );
     let mut d = good.clone();
     d["maps"] = serde_json::json!([]);
     refused(&d, "maps", "unknown key");

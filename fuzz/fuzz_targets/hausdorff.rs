@@ -136,7 +136,9 @@ fn lower_ok(lo: f64, bound_sq: &Rational) -> bool {
 /// When shape A is an arc, the bytes left build a cubic from a point of its
 /// start ray to a point of its end ray, its inner points `c + α·from + β·to`
 /// (`α, β ≥ 0`: in the sector whenever the sweep is at most π), where the
-/// radial proof applies (`src/certify/radial.rs`). Its bounds must overlap the
+/// radial proof applies (`src/certify/radial.rs`); or, one time in two, the
+/// arc's whole circle (a union of two half arcs) against four such cubics,
+/// one per quarter turn from the arc's start direction. Its bounds must overlap the
 /// other proofs' on the same pair, and the exact radial distance of the cubic
 /// at 9 rational parameters (a lower bound of `d_H` for any shapes) must not
 /// exceed its `hi`.
@@ -158,13 +160,37 @@ fn radial_scenario(u: &mut Unstructured, arc: &ArcDesc, cfg: &Config) {
     if !(cr > zero || half_turn) || k[0] == zero || k[5] == zero {
         return;
     }
-    let cubic = Bezier::new(vec![
-        at(&k[0], &zero),
-        at(&k[1], &k[2]),
-        at(&k[3], &k[4]),
-        at(&zero, &k[5]),
-    ]);
-    let (Ok(arc_shape), Ok(curve)) = (ShapeDesc::arc(arc.clone()), ShapeDesc::curve(vec![cubic.clone()])) else {
+    // one byte in two: the whole circle (two half arcs) against four
+    // quarters, each `s e_i → s e_{i+1}` with inner points `α e_i + β e_{i+1}`
+    // (`e_i` the arc's start direction turned by i quarters)
+    let whole = u.arbitrary::<bool>().unwrap_or(false);
+    let (arc_shape, pieces) = if whole {
+        let e = [arc.from.clone(), arc.from.rot90(), arc.from.scale(&q(-1, 1)), arc.from.rot90().scale(&q(-1, 1))];
+        let pieces: Vec<Bezier<Rational>> = (0..4)
+            .map(|i| {
+                let (a, b) = (&e[i], &e[(i + 1) % 4]);
+                let pt = |x: &Rational, y: &Rational| c.add(&a.scale(x)).add(&b.scale(y));
+                Bezier::new(vec![pt(&k[0], &zero), pt(&k[1], &k[2]), pt(&k[3], &k[4]), pt(&zero, &k[0])])
+            })
+            .collect();
+        let half = |from: &V2<Rational>, to: &V2<Rational>| {
+            ShapeDesc::arc(ArcDesc { center: c.clone(), radius: arc.radius.clone(), from: from.clone(), to: to.clone() })
+        };
+        let (Ok(h0), Ok(h1)) = (half(&e[0], &e[2]), half(&e[2], &e[0])) else {
+            return;
+        };
+        let Ok(circle) = ShapeDesc::union(vec![h0, h1]) else {
+            return;
+        };
+        (circle, pieces)
+    } else {
+        let cubic = Bezier::new(vec![at(&k[0], &zero), at(&k[1], &k[2]), at(&k[3], &k[4]), at(&zero, &k[5])]);
+        let Ok(a) = ShapeDesc::arc(arc.clone()) else {
+            return;
+        };
+        (a, vec![cubic])
+    };
+    let Ok(curve) = ShapeDesc::curve(pieces.clone()) else {
         return;
     };
     let Ok(r) = hausdorff(&arc_shape, &curve, cfg) else {
@@ -192,7 +218,7 @@ fn radial_scenario(u: &mut Unstructured, arc: &ArcDesc, cfg: &Config) {
         panic!("radial hi {} is not finite", r.hi);
     };
     let radius = &arc.radius;
-    for j in 0..=8 {
+    for (cubic, j) in pieces.iter().flat_map(|p| (0..=8).map(move |j| (p, j))) {
         let d2 = cubic.eval(&q(j, 8)).sub(c).norm2();
         let (out, inner) = (radius.clone() + hi.clone(), radius.clone() - hi.clone());
         assert!(

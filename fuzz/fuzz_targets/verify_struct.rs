@@ -32,7 +32,7 @@ use std::fmt::Write;
 use std::sync::OnceLock;
 use verify_oracle::check_accepted;
 
-const SEED_TEXTS: [&str; 20] = [
+const SEED_TEXTS: [&str; 21] = [
     include_str!("../seeds/verify/cert_quad_seg.json"),
     include_str!("../seeds/verify/cert_quad_seg_tol1.json"),
     include_str!("../seeds/verify/cert_box_deleted.json"),
@@ -53,6 +53,7 @@ const SEED_TEXTS: [&str; 20] = [
     include_str!("../seeds/verify/stroke_curve.json"),
     include_str!("../seeds/verify/cert_radial_arc_cubic.json"),
     include_str!("../seeds/verify/cert_radial_half_arc.json"),
+    include_str!("../seeds/verify/cert_radial_circle.json"),
 ];
 
 fn seeds() -> &'static [Value] {

@@ -1,27 +1,39 @@
-//! The radial proof: the Hausdorff distance between a circular arc and a
-//! chain of polynomial Bézier pieces that runs from one end ray of the arc to
-//! the other inside its sector, **computed** (not only bounded) as the curve's
-//! largest radial distance to the circle.
+//! The radial proof: the Hausdorff distance between arcs of one circle and
+//! a chain of polynomial Bézier pieces that turns about the centre as the
+//! arcs do, each piece inside the sector of its own end rays, **computed**
+//! (not only bounded) as the curve's largest radial distance to the circle.
 //!
-//! **Statement.** Let the arc have centre `c`, radius `R` and sweep `Θ ≤ π`,
-//! counter-clockwise from the direction `d0` to `d1`, and let `P` be a
-//! continuous chain of pieces with
+//! **Statement.** Let `A` be one circular arc, or a union of arcs of one
+//! circle (centre `c`, radius `R`) each starting on the ray the previous one
+//! ends on — one chain of directions, counter-clockwise, of total sweep `Σ`
+//! (a whole circle when `Σ ≥ 2π`). Let `P` be a continuous chain of pieces
+//! `P_i` (in its order, or all reversed) with
 //!
-//! 1. every control point `q` (relative to `c`) in the closed sector:
-//!    `d0 × q ≥ 0` and, when `Θ < π`, `q × d1 ≥ 0` — so, by the convex hull
-//!    property, every point of `P`;
+//! 1. each piece turning counter-clockwise from the ray `ρ_i` of its first
+//!    point to the ray `ρ_{i+1}` of its last by `Θ_i ∈ (0, π]`
+//!    (`ρ_i × ρ_{i+1} > 0`, or `ρ_{i+1} = −λ ρ_i`), with every control point
+//!    `q` in that closed sector (`ρ_i × q ≥ 0` and, when `Θ_i < π`,
+//!    `q × ρ_{i+1} ≥ 0`) — so, by the convex hull property, every point of
+//!    `P_i`;
 //! 2. `P(t) ≠ c` for all `t` (below: `|P − c|² − R² > −R²`);
-//! 3. `P`'s first point on the ray of `d0` and its last on the ray of `d1`
-//!    (positively parallel), or the other way round.
+//! 3. the same directions as `A`: `A` and `P` both whole turns, or `ρ_0` on
+//!    the ray `A` starts on, the last `ρ` on the ray it ends on, and `Σ Θ_i =
+//!    Σ` (the same number of passes through the angle 0).
 //!
-//! Then `d_H(P, arc) = sup_t | |P(t) − c| − R |`. The angle of `P(t) − c` is a
-//! continuous function into `[θ0, θ0 + Θ]` (the sector, less its apex, is cut
-//! nowhere else) with the end values `θ0` and `θ0 + Θ`. So every point
-//! `P(t)` has the arc point on its own ray, at distance `||P(t) − c| − R|`,
-//! and every arc point is on the ray of some `P(t)` (the intermediate value
-//! theorem): `d_H ≤ sup`. Conversely `dist(P(t), arc) ≥ dist(P(t), circle) =
-//! ||P(t) − c| − R|` for every `t`: `d_H ≥ h(P, arc) ≥ sup`. Conditions 1
-//! and 3 are decided exactly in rationals; nothing about monotonicity is needed.
+//! Then `d_H(P, A) = sup_t | |P(t) − c| − R |`. On each piece the angle of
+//! `P(t) − c` is a continuous function into `[θ_i, θ_i + Θ_i]` (the sector,
+//! less its apex, is cut nowhere else) with those end values; the pieces
+//! join, so the angles of `P` run continuously over `[θ_0, θ_0 + Σ Θ_i]`,
+//! whose directions are exactly `A`'s (condition 3). So every point `P(t)`
+//! has the point of `A` on its own ray, at distance `||P(t) − c| − R|`, and
+//! every point of `A` is on the ray of some `P(t)` (the intermediate value
+//! theorem): `d_H ≤ sup`. Conversely `dist(P(t), A) ≥ dist(P(t), circle) =
+//! ||P(t) − c| − R|` for every `t`: `d_H ≥ h(P, A) ≥ sup`. Conditions 1
+//! and 3 are decided exactly in rationals (angles compared by half-plane and
+//! cross product, never computed); nothing about monotonicity is needed.
+//! One arc of sweep `≤ π` against a curve from one end ray to the other in
+//! its sector is the first case; a `<circle>` against its four cubics, or a
+//! 270° arc against three, are others.
 //!
 //! **The bounds.** With `f = |P − c|² − R²` (a polynomial of degree `2n` per
 //! piece, its Bernstein coefficients enclosed in intervals from the exact
@@ -88,9 +100,17 @@ pub struct RadialCell {
     pub bound: f64,
 }
 
-/// The arc and the curve of a radial pair, in either order.
-fn pair<'s>(a: &'s ShapeDesc, b: &'s ShapeDesc) -> Option<(ArcDesc, &'s [Bezier<Rational>], bool)> {
-    let arc_of = |s: &ShapeDesc| match s {
+/// A circle's arcs: centre, radius, and the members' `(from, to)`
+/// directions (counter-clockwise), in the order given.
+struct Arcs {
+    center: V2<Rational>,
+    radius: Rational,
+    members: Vec<(V2<Rational>, V2<Rational>)>,
+}
+
+/// One circular arc (or an elliptic arc with `M = r I`) as [`Arcs`].
+fn arc_of(s: &ShapeDesc) -> Option<ArcDesc> {
+    match s {
         ShapeDesc::Arc(arc) => Some(arc.clone()),
         ShapeDesc::EllipseArc(e) => {
             // a circle written as an ellipse: M = r I
@@ -104,47 +124,142 @@ fn pair<'s>(a: &'s ShapeDesc, b: &'s ShapeDesc) -> Option<(ArcDesc, &'s [Bezier<
             })
         }
         _ => None,
+    }
+}
+
+/// An arc, or a union of arcs of one circle (same centre and radius).
+fn arcs_of(s: &ShapeDesc) -> Option<Arcs> {
+    let list: Vec<ArcDesc> = match s {
+        ShapeDesc::Union(members) => members.iter().map(arc_of).collect::<Option<_>>()?,
+        other => vec![arc_of(other)?],
     };
+    let first = list.first()?;
+    let (center, radius) = (first.center.clone(), first.radius.clone());
+    if list
+        .iter()
+        .any(|a| a.center != center || a.radius != radius)
+    {
+        return None;
+    }
+    Some(Arcs {
+        center,
+        radius,
+        members: list.into_iter().map(|a| (a.from, a.to)).collect(),
+    })
+}
+
+/// The arcs and the curve of a radial pair, in either order.
+fn pair<'s>(a: &'s ShapeDesc, b: &'s ShapeDesc) -> Option<(Arcs, &'s [Bezier<Rational>], bool)> {
     match (a, b) {
-        (ShapeDesc::Curve(p), other) => Some((arc_of(other)?, p.as_slice(), true)),
-        (other, ShapeDesc::Curve(p)) => Some((arc_of(other)?, p.as_slice(), false)),
+        (ShapeDesc::Curve(p), other) => Some((arcs_of(other)?, p.as_slice(), true)),
+        (other, ShapeDesc::Curve(p)) => Some((arcs_of(other)?, p.as_slice(), false)),
         _ => None,
     }
 }
 
-/// Conditions 1 and 3 of the module statement, exactly; `None` when one fails.
-fn applies(arc: &ArcDesc, curve: &[Bezier<Rational>]) -> Option<()> {
+/// Exact angle order of directions: the half-plane (`[0, π)` is 0, `[π, 2π)`
+/// is 1), then the cross product.
+fn half(v: &V2<Rational>) -> u8 {
     let zero = Rational::from_integer(0.into());
-    let (d0, d1, c) = (&arc.from, &arc.to, &arc.center);
-    let cr = d0.cross(d1);
-    // Θ < π (d0 × d1 > 0) or Θ = π (d1 = −λ d0)
-    let half_turn = cr == zero && d0.dot(d1) < zero;
-    if !(cr > zero || half_turn) {
-        return None;
+    u8::from(!(v.y > zero || (v.y == zero && v.x > zero)))
+}
+
+/// `angle(u) < angle(v)` in `[0, 2π)`, exactly.
+fn before(u: &V2<Rational>, v: &V2<Rational>) -> bool {
+    let (hu, hv) = (half(u), half(v));
+    hu < hv || (hu == hv && u.cross(v) > Rational::from_integer(0.into()))
+}
+
+/// A counter-clockwise angular chain: its first and last rays and how many
+/// times it passes the angle 0 (its total sweep is `angle(last) −
+/// angle(first) + 2π · wraps`).
+struct Sweep {
+    first: V2<Rational>,
+    last: V2<Rational>,
+    wraps: usize,
+}
+
+impl Sweep {
+    /// The chain covers every direction (total sweep `≥ 2π`).
+    fn full(&self) -> bool {
+        self.wraps >= 2 || (self.wraps == 1 && !before(&self.last, &self.first))
     }
-    let (first, last) = (curve.first()?, curve.last()?);
-    if first.degree() > MAX_DEGREE || curve.iter().any(|p| p.degree() > MAX_DEGREE) {
-        return None;
+
+    /// The same set of directions.
+    fn same_set(&self, o: &Sweep) -> bool {
+        let pp = super::same::positively_parallel;
+        if self.full() || o.full() {
+            return self.full() && o.full();
+        }
+        pp(&self.first, &o.first) && pp(&self.last, &o.last) && self.wraps == o.wraps
     }
-    // a continuous chain
-    for w in curve.windows(2) {
-        if w[0].points().last() != w[1].points().first() {
+}
+
+/// The arcs' directions as one chain: each member starts on the ray the
+/// previous one ends on; `None` otherwise.
+fn arc_sweep(arcs: &Arcs) -> Option<Sweep> {
+    let mut wraps = 0;
+    for (k, (from, to)) in arcs.members.iter().enumerate() {
+        if k > 0 && !super::same::positively_parallel(&arcs.members[k - 1].1, from) {
             return None;
         }
+        // a sweep in (0, 2π) passes the angle 0 when it does not increase it
+        wraps += usize::from(!before(from, to));
     }
-    let on_ray =
-        |p: &V2<Rational>, d: &V2<Rational>| super::same::positively_parallel(&p.sub(c), d);
-    let (p0, p1) = (first.points().first()?, last.points().last()?);
-    if !((on_ray(p0, d0) && on_ray(p1, d1)) || (on_ray(p0, d1) && on_ray(p1, d0))) {
-        return None;
+    Some(Sweep {
+        first: arcs.members.first()?.0.clone(),
+        last: arcs.members.last()?.1.clone(),
+        wraps,
+    })
+}
+
+/// The statement's conditions on the curve, pieces `pts` in this order:
+/// a continuous chain; each piece from the ray of its first point to the ray
+/// of its last counter-clockwise, less than a full turn and at most a half
+/// turn (`ρ × ρ′ > 0`, or `ρ′ = −λ ρ`), every control point in that closed
+/// sector. Returns the chain's sweep.
+fn curve_sweep(c: &V2<Rational>, pts: &[Vec<V2<Rational>>]) -> Option<Sweep> {
+    let zero = Rational::from_integer(0.into());
+    let mut wraps = 0;
+    for (i, p) in pts.iter().enumerate() {
+        if p.len() > MAX_DEGREE + 1 || (i > 0 && pts[i - 1].last() != p.first()) {
+            return None;
+        }
+        let (r0, r1) = (p.first()?.sub(c), p.last()?.sub(c));
+        let cr = r0.cross(&r1);
+        let half_turn = cr == zero && r0.dot(&r1) < zero;
+        if !(cr > zero || half_turn) {
+            return None;
+        }
+        let in_sector = |q: &V2<Rational>| {
+            let q = q.sub(c);
+            r0.cross(&q) >= zero && (half_turn || q.cross(&r1) >= zero)
+        };
+        if !p.iter().all(in_sector) {
+            return None;
+        }
+        wraps += usize::from(!before(&r0, &r1));
     }
-    let in_sector = |p: &V2<Rational>| {
-        let q = p.sub(c);
-        d0.cross(&q) >= zero && (half_turn || q.cross(d1) >= zero)
-    };
-    curve
+    Some(Sweep {
+        first: pts.first()?.first()?.sub(c),
+        last: pts.last()?.last()?.sub(c),
+        wraps,
+    })
+}
+
+/// The module's conditions, exactly: `None` when one fails. The curve is
+/// read in its order, then reversed (a clockwise chain).
+fn applies(arcs: &Arcs, curve: &[Bezier<Rational>]) -> Option<()> {
+    let target = arc_sweep(arcs)?;
+    let forward: Vec<Vec<V2<Rational>>> = curve.iter().map(|b| b.points().to_vec()).collect();
+    let backward: Vec<Vec<V2<Rational>>> = forward
         .iter()
-        .all(|b| b.points().iter().all(in_sector))
+        .rev()
+        .map(|p| p.iter().rev().cloned().collect())
+        .collect();
+    [forward, backward]
+        .iter()
+        .any(|pts| curve_sweep(&arcs.center, pts).is_some_and(|s| s.same_set(&target)))
         .then_some(())
 }
 

@@ -338,7 +338,7 @@ fn text_directions(r: &HausdorffBounds) -> String {
     }
     if let Some(p) = &r.radial {
         out += &format!(
-            "  proof: radial, the {} lies in the arc's sector from one end ray to the other: d_H is its largest radial distance to the circle ({} Bernstein splits)\n",
+            "  proof: radial, each piece of the {} lies in the sector of its end rays and they sweep the arcs' directions: d_H is its largest radial distance to the circle ({} Bernstein splits)\n",
             if p.curve_is_a { "curve A" } else { "curve B" },
             p.splits
         );

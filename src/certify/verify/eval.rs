@@ -95,13 +95,14 @@ pub(crate) struct VShape {
 pub(crate) enum Exact {
     /// The control points of each piece.
     Curve(Vec<Vec<[Rational; 2]>>),
-    /// A circular arc: centre, radius, counter-clockwise from direction `d0`
-    /// to `d1` (an elliptic arc whose matrix is `r I` is one too).
+    /// Arcs of one circle: centre, radius, and each arc's directions
+    /// `(from, to)`, counter-clockwise, in the order given (an elliptic arc
+    /// whose matrix is `r I` is a circular one; a union of arcs of one circle
+    /// lists its members).
     Circle {
         c: [Rational; 2],
         r: Rational,
-        d0: [Rational; 2],
-        d1: [Rational; 2],
+        arcs: Vec<([Rational; 2], [Rational; 2])>,
     },
 }
 

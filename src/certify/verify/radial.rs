@@ -1,8 +1,8 @@
-//! The check of a radial certificate (version 4, `super::super::cert`): a
-//! circular arc against a chain of Bézier pieces that lies in the arc's
-//! sector and runs from one end ray to the other, its distance bounded by the
-//! largest radial distance `||P − c| − R|` over cells of the curve's
-//! parameter domains.
+//! The check of a radial certificate (version 4, `super::super::cert`): arcs
+//! of one circle against a chain of Bézier pieces that turns about the
+//! centre as they do, each piece inside the sector of its own end rays, the
+//! distance bounded by the largest radial distance `||P − c| − R|` over cells
+//! of the curve's parameter domains.
 //!
 //! Independent of the prover (`certify/radial.rs`): the conditions of the
 //! statement are decided here again in rationals, and each cell's enclosure
@@ -68,10 +68,13 @@ pub(super) fn check(v: &Json, shapes: &[VShape; 2], tol: &Tol) -> Result<(f64, u
             ))
         }
     };
-    let Some(Exact::Circle { c, r, d0, d1 }) = &shapes[ai].exact else {
+    let Some(Exact::Circle { c, r, arcs }) = &shapes[ai].exact else {
         return Err(inv(
             "radial.arc",
-            format!("shape {} is not a circular arc", names[ai]),
+            format!(
+                "shape {} is not a circular arc or a union of arcs of one circle",
+                names[ai]
+            ),
         ));
     };
     let Some(Exact::Curve(curve)) = &shapes[ci].exact else {
@@ -83,7 +86,7 @@ pub(super) fn check(v: &Json, shapes: &[VShape; 2], tol: &Tol) -> Result<(f64, u
             ),
         ));
     };
-    conditions(c, d0, d1, curve, names[ai], names[ci])?;
+    conditions(c, arcs, curve, names[ai], names[ci])?;
 
     // the cover: every piece's [0, 1], in order
     let cells = cells
@@ -151,26 +154,71 @@ pub(super) fn check(v: &Json, shapes: &[VShape; 2], tol: &Tol) -> Result<(f64, u
     Ok((max_bound, cells.len()))
 }
 
-/// The statement's conditions, exactly: a sweep `≤ π`; a continuous chain of
-/// degree `≤ 20`; its first and last points positively on the two end rays
-/// (either way round); every control point in the closed sector.
+/// Quadrant of a nonzero direction: `[0, π/2)` is 0, `[π/2, π)` 1,
+/// `[π, 3π/2)` 2, `[3π/2, 2π)` 3.
+fn quadrant(v: &P) -> u8 {
+    let (x, y) = (&v[0], &v[1]);
+    if x.is_positive() && !y.is_negative() {
+        0
+    } else if !x.is_positive() && y.is_positive() {
+        1
+    } else if x.is_negative() && !y.is_positive() {
+        2
+    } else {
+        3
+    }
+}
+
+/// The angle of `u` in `[0, 2π)` is below that of `v`, exactly.
+fn earlier(u: &P, v: &P) -> bool {
+    let (qu, qv) = (quadrant(u), quadrant(v));
+    qu < qv || (qu == qv && cross(u, v).is_positive())
+}
+
+/// A counter-clockwise chain of directions: first, last, and how often its
+/// steps (each in `(0, 2π)`) pass the angle 0.
+struct Turn {
+    first: P,
+    last: P,
+    zeros: usize,
+}
+
+impl Turn {
+    fn whole_circle(&self) -> bool {
+        self.zeros >= 2 || (self.zeros == 1 && !earlier(&self.last, &self.first))
+    }
+}
+
+/// The statement's conditions, exactly: the arcs form one chain
+/// (each starts on the ray the previous ends on); the curve is a continuous
+/// chain of degree `≤ 20` whose pieces (in its order or reversed) each turn
+/// counter-clockwise about the centre from the ray of their first point to
+/// the ray of their last by more than 0 and at most π, with every control
+/// point in that closed sector; and the curve's directions are the arcs'.
 fn conditions(
     c: &P,
-    d0: &P,
-    d1: &P,
+    arcs: &[(P, P)],
     curve: &[Vec<P>],
     arc_name: &str,
     name: &str,
 ) -> Result<(), Invalid> {
-    let cr = cross(d0, d1);
-    let half_turn = cr.is_zero() && dot(d0, d1).is_negative();
-    if !(cr.is_positive() || half_turn) {
-        return Err(inv(
-            arc_name,
-            "the arc's sweep is more than π: the radial proof needs at most a half turn",
-        ));
+    // the arcs' chain
+    let mut zeros = 0;
+    for (k, (from, to)) in arcs.iter().enumerate() {
+        if k > 0 && !on_ray(from, &arcs[k - 1].1) {
+            return Err(inv(
+                format!("{arc_name}.union[{k}]"),
+                "does not start where the previous arc ends: the radial proof needs one chain of arcs",
+            ));
+        }
+        zeros += usize::from(!earlier(from, to));
     }
-    let at_pt = |i: usize, k: usize| format!("{name}.beziers[{i}][{k}]");
+    let target = Turn {
+        first: arcs[0].0.clone(),
+        last: arcs[arcs.len() - 1].1.clone(),
+        zeros,
+    };
+    let n = curve.len();
     for (i, b) in curve.iter().enumerate() {
         if b.len() > MAX_DEGREE + 1 {
             return Err(inv(
@@ -180,34 +228,77 @@ fn conditions(
         }
         if i > 0 && curve[i - 1].last() != b.first() {
             return Err(inv(
-                at_pt(i, 0),
+                format!("{name}.beziers[{i}][0]"),
                 "not the end of the previous piece: the radial proof needs a continuous chain",
             ));
         }
-        for (k, p) in b.iter().enumerate() {
-            let q = sub(p, c);
-            let inside =
-                !cross(d0, &q).is_negative() && (half_turn || !cross(&q, d1).is_negative());
-            if !inside {
-                return Err(inv(
-                    at_pt(i, k),
-                    "outside the arc's closed sector: the radial proof does not apply",
-                ));
-            }
-        }
     }
-    let last_i = curve.len() - 1;
-    let (first, last) = (
-        sub(&curve[0][0], c),
-        sub(&curve[last_i][curve[last_i].len() - 1], c),
-    );
-    if !((on_ray(&first, d0) && on_ray(&last, d1)) || (on_ray(&first, d1) && on_ray(&last, d0))) {
+    // the orientation: the first piece's turn (both ways for a half turn)
+    let r0 = sub(&curve[0][0], c);
+    let r1 = sub(&curve[0][curve[0].len() - 1], c);
+    let first_turn = cross(&r0, &r1);
+    let forward = piece_turns(c, curve, false, name);
+    let turn = if first_turn.is_negative() {
+        piece_turns(c, curve, true, name)?
+    } else if first_turn.is_zero() {
+        forward.or_else(|e| piece_turns(c, curve, true, name).map_err(|_| e))?
+    } else {
+        forward?
+    };
+    let same = if target.whole_circle() || turn.whole_circle() {
+        target.whole_circle() && turn.whole_circle()
+    } else {
+        on_ray(&turn.first, &target.first)
+            && on_ray(&turn.last, &target.last)
+            && turn.zeros == target.zeros
+    };
+    if !same {
         return Err(inv(
-            at_pt(0, 0),
-            "the curve does not run from one end ray of the arc to the other (its first and last points, positively on them)",
+            format!("{name}.beziers[{}][0]", if first_turn.is_negative() { n - 1 } else { 0 }),
+            "the curve does not sweep the arcs' directions: it must run from one end ray of the arcs to the other (either way round), or around the whole circle",
         ));
     }
     Ok(())
+}
+
+/// Each piece's turn about `c`, the pieces read in order or all reversed;
+/// fields name the pieces and points as the document lists them.
+fn piece_turns(c: &P, curve: &[Vec<P>], reversed: bool, name: &str) -> Result<Turn, Invalid> {
+    let n = curve.len();
+    let mut zeros = 0;
+    let mut ends: Option<(P, P)> = None;
+    for j in 0..n {
+        let i = if reversed { n - 1 - j } else { j };
+        let b = &curve[i];
+        let m = b.len();
+        let pt = |k: usize| if reversed { &b[m - 1 - k] } else { &b[k] };
+        let (r0, r1) = (sub(pt(0), c), sub(pt(m - 1), c));
+        let cr = cross(&r0, &r1);
+        let half_turn = cr.is_zero() && dot(&r0, &r1).is_negative();
+        if !(cr.is_positive() || half_turn) {
+            return Err(inv(
+                format!("{name}.beziers[{i}]"),
+                "does not turn about the arc's centre the way the first piece does, by more than 0 and at most π",
+            ));
+        }
+        for k in 0..m {
+            let q = sub(pt(k), c);
+            if cross(&r0, &q).is_negative() || (!half_turn && cross(&q, &r1).is_negative()) {
+                let kk = if reversed { m - 1 - k } else { k };
+                return Err(inv(
+                    format!("{name}.beziers[{i}][{kk}]"),
+                    "outside the closed sector of its piece's end rays: the radial proof does not apply",
+                ));
+            }
+        }
+        zeros += usize::from(!earlier(&r0, &r1));
+        ends = Some(match ends {
+            None => (r0, r1),
+            Some((f, _)) => (f, r1),
+        });
+    }
+    let (first, last) = ends.expect("a curve has pieces");
+    Ok(Turn { first, last, zeros })
 }
 
 /// The largest radial distance over the cell `[t0, t1]` of the piece whose

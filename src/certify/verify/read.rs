@@ -286,9 +286,31 @@ pub(crate) fn read_shape(v: &Json, at: &str) -> Result<VShape, Invalid> {
                 exact: None,
             };
             let mut texts = Vec::new();
+            // arcs of one circle, all of them: their exact data, joined
+            let mut circle: Option<Exact> = None;
+            let mut all_arcs = true;
             for (i, m) in list.iter().enumerate() {
                 let at_i = format!("{at}[{i}]");
                 let s = read_member(m, &at_i)?;
+                match (&mut circle, &s.exact) {
+                    (_, _) if !all_arcs => {}
+                    (None, Some(Exact::Circle { c, r, arcs })) => {
+                        circle = Some(Exact::Circle {
+                            c: c.clone(),
+                            r: r.clone(),
+                            arcs: arcs.clone(),
+                        })
+                    }
+                    (
+                        Some(Exact::Circle { c, r, arcs }),
+                        Some(Exact::Circle {
+                            c: c2,
+                            r: r2,
+                            arcs: a2,
+                        }),
+                    ) if c == c2 && r == r2 => arcs.extend(a2.iter().cloned()),
+                    _ => all_arcs = false,
+                }
                 if out.pieces.len() + s.pieces.len() > MAX_SEGMENTS {
                     return Err(inv(
                         &at_i,
@@ -306,6 +328,7 @@ pub(crate) fn read_shape(v: &Json, at: &str) -> Result<VShape, Invalid> {
                 out.ends.extend(s.ends);
             }
             out.text = format!("the union of {} shapes: {}", list.len(), texts.join("; "));
+            out.exact = circle.filter(|_| all_arcs);
             return Ok(out);
         }
     }
@@ -523,6 +546,10 @@ fn read_arc(v: &Json, at: &str, elliptic: bool) -> Result<VShape, Invalid> {
         pieces: vec![VPiece::Arc { c: ivp(&c), m, e0 }],
         ends: vec![u],
         text,
-        exact: radius.map(|r| Exact::Circle { c, r, d0, d1 }),
+        exact: radius.map(|r| Exact::Circle {
+            c,
+            r,
+            arcs: vec![(d0, d1)],
+        }),
     })
 }
