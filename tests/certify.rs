@@ -1364,26 +1364,28 @@ fn radial_certificates_are_refused_where_the_statement_fails() {
         .reason
         .contains("exceeds the tolerance"));
     // covers: a cell dropped, the last dropped, one too many, past 1
-    let cells = |d: &mut Value| -> Vec<Value> { d["radial"]["cells"].as_array().unwrap().clone() };
-    let mut d = good.clone();
-    let mut c = cells(&mut d);
-    c.remove(7);
-    d["radial"]["cells"] = c.into();
-    refused(&d, "radial.cells[7]", "gap or overlap");
-    let mut d = good.clone();
-    let mut c = cells(&mut d);
-    c.pop();
-    d["radial"]["cells"] = c.into();
-    refused(&d, "radial.cells", "not covered to its end");
-    let mut d = good.clone();
-    let mut c = cells(&mut d);
-    c.push(serde_json::json!({"piece": 1, "t": ["0", "1"]}));
-    d["radial"]["cells"] = c.into();
-    refused(&d, "radial.cells[256]", "already covered");
-    let mut d = good.clone();
-    d["radial"]["cells"] = serde_json::json!([{"piece": 0, "t": ["0", "2"]}]);
-    refused(&d, "radial.cells[0]", "at most at 1");
-    // the arc named wrongly, the shapes swapped, a stray key, no cells
+    let edited = |edit: &dyn Fn(&mut Vec<Value>)| {
+        let mut d = good.clone();
+        let mut c = d["radial"]["cells"].as_array().unwrap().clone();
+        edit(&mut c);
+        d["radial"]["cells"] = c.into();
+        d
+    };
+    refused(
+        &edited(&|c| drop(c.remove(7))),
+        "radial.cells[7]",
+        "gap or overlap",
+    );
+    refused(
+        &edited(&|c| drop(c.pop())),
+        "radial.cells",
+        "not covered to its end",
+    );
+    let extra = |c: &mut Vec<Value>| c.push(serde_json::json!({"piece": 1, "t": ["0", "1"]}));
+    refused(&edited(&extra), "radial.cells[256]", "already covered");
+    let past = |c: &mut Vec<Value>| *c = vec![serde_json::json!({"piece": 0, "t": ["0", "2"]})];
+    refused(&edited(&past), "radial.cells[0]", "at most at 1");
+    // the arc named wrongly, a stray key, no cells
     let mut d = good.clone();
     d["radial"]["arc"] = "b".into();
     refused(&d, "radial.arc", "not a circular arc");

@@ -122,6 +122,23 @@ fn direction(from: &str, to: &str, boxes: &[CoverBox]) -> Value {
     })
 }
 
+/// A certificate document: the format's head (format, version, claim,
+/// tolerance, shapes) and the members of its proof (`proof`, an object).
+fn document(a: &ShapeDesc, b: &ShapeDesc, tol: &Tolerance, version: u64, proof: Value) -> Value {
+    let mut doc = json!({
+        "format": FORMAT,
+        "version": version,
+        "claim": CLAIM,
+        "tol": tol.exact().to_string(),
+        "a": a.to_json(),
+        "b": b.to_json(),
+    });
+    if let (Value::Object(d), Value::Object(p)) = (&mut doc, proof) {
+        d.extend(p);
+    }
+    doc
+}
+
 /// One parametric cover for a certificate: the map from piece `piece` of the
 /// source shape onto piece `target` of the other ([`super::Parametric`]).
 #[derive(Clone, Debug, PartialEq)]
@@ -217,21 +234,21 @@ impl Certificate {
         if !ok {
             return None;
         }
-        let doc = json!({
-            "format": FORMAT,
-            "version": VERSION_RADIAL,
-            "claim": CLAIM,
-            "tol": tol.exact().to_string(),
-            "a": a.to_json(),
-            "b": b.to_json(),
-            "radial": {
-                "arc": if p.curve_is_a { "b" } else { "a" },
-                "cells": p.cells.iter().map(|c| json!({
-                    "piece": c.piece,
-                    "t": [q(c.t.0), q(c.t.1)],
-                })).collect::<Vec<_>>(),
-            },
-        });
+        let doc = document(
+            a,
+            b,
+            tol,
+            VERSION_RADIAL,
+            json!({
+                "radial": {
+                    "arc": if p.curve_is_a { "b" } else { "a" },
+                    "cells": p.cells.iter().map(|c| json!({
+                        "piece": c.piece,
+                        "t": [q(c.t.0), q(c.t.1)],
+                    })).collect::<Vec<_>>(),
+                },
+            }),
+        );
         Some(Certificate { doc })
     }
 
@@ -267,16 +284,16 @@ impl Certificate {
         if !boxes_ok || !maps_ok || (maps.is_empty() && (a_to_b.is_empty() || b_to_a.is_empty())) {
             return None;
         }
-        let doc = json!({
-            "format": FORMAT,
-            "version": VERSION,
-            "claim": CLAIM,
-            "tol": tol.exact().to_string(),
-            "a": a.to_json(),
-            "b": b.to_json(),
-            "maps": maps.iter().map(map_json).collect::<Vec<_>>(),
-            "directions": [direction("a", "b", a_to_b), direction("b", "a", b_to_a)],
-        });
+        let doc = document(
+            a,
+            b,
+            tol,
+            VERSION,
+            json!({
+                "maps": maps.iter().map(map_json).collect::<Vec<_>>(),
+                "directions": [direction("a", "b", a_to_b), direction("b", "a", b_to_a)],
+            }),
+        );
         Some(Certificate { doc })
     }
 

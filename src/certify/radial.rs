@@ -267,11 +267,10 @@ fn exact(x: f64) -> Interval {
     Interval::try_from((x, x)).expect("a finite float")
 }
 
-/// `C(n, k)` as a float (exact for `n ≤ 2·MAX_DEGREE`).
+/// `C(n, k)` as a float: the crate's exact integer binomial, below `2⁵³`
+/// for `n ≤ 2·MAX_DEGREE`, so the conversion is exact.
 fn binom(n: usize, k: usize) -> f64 {
-    (0..k)
-        .fold(1.0, |acc, i| acc * (n - i) as f64 / (i + 1) as f64)
-        .round()
+    crate::poly::binomial(n, k) as f64
 }
 
 /// Bernstein coefficients of `|P − c|² − R²` (degree `2n`) on `[0, 1]`.
