@@ -10,8 +10,8 @@
 use super::{Piece, Stroke};
 use crate::certify::verify::stroke::geom::{arc_hull, ip, iq, BoxT, Path};
 use crate::certify::verify::stroke::{
-    check_bbox, check_part, exact_points, BBox, Input, Inside, OPiece, PenMap, Span, CLAIM,
-    CLAIM_ELLIPSE, FORMAT, Q2, VERSION,
+    check_bbox, check_part, exact_points, BBox, CurvePiece, Input, Inside, OPiece, PenMap, Span,
+    CLAIM, CLAIM_ELLIPSE, FORMAT, Q2, VERSION,
 };
 use crate::curve::Bezier;
 use crate::scalar::{rational_from_f64, rational_to_string, Interval, Rational, Scalar};
@@ -172,8 +172,93 @@ impl FBez {
     }
 }
 
+/// A float model of an input arc `c + ρ d(λ)/|d(λ)|`, `d(λ) = (1 − λ) a +
+/// λ b` (`a`, `b` the end radius vectors, less than `π` apart).
+struct FArc {
+    c: DVec2,
+    rho: f64,
+    a: DVec2,
+    b: DVec2,
+}
+
+impl FArc {
+    fn at(&self, u: f64) -> DVec2 {
+        let d = self.a.lerp(self.b, u);
+        self.c + d * (self.rho / d.length())
+    }
+    /// The nearest point: `(λ, distance)` — the direction of `p − c` where
+    /// it lies between `a` and `b`, an end otherwise.
+    fn nearest(&self, p: DVec2) -> (f64, f64) {
+        let v = p - self.c;
+        let den = (self.a - self.b).perp_dot(v);
+        if den != 0.0 {
+            let l = self.a.perp_dot(v) / den;
+            if (0.0..=1.0).contains(&l) && self.a.lerp(self.b, l).dot(v) > 0.0 {
+                return (l, (v.length() - self.rho).abs());
+            }
+        }
+        let (d0, d1) = ((p - self.at(0.0)).length(), (p - self.at(1.0)).length());
+        if d0 <= d1 {
+            (0.0, d0)
+        } else {
+            (1.0, d1)
+        }
+    }
+}
+
+/// A float input piece.
+enum FIn {
+    Bez(FBez),
+    Arc(FArc),
+}
+
+impl FIn {
+    fn new(p: &CurvePiece) -> FIn {
+        match p {
+            CurvePiece::Bezier(p) => FIn::Bez(FBez::new(p.iter().map(v2).collect())),
+            CurvePiece::Arc {
+                c, rho, from, to, ..
+            } => {
+                let c = v2(c);
+                FIn::Arc(FArc {
+                    c,
+                    rho: rho.approx(),
+                    a: v2(from) - c,
+                    b: v2(to) - c,
+                })
+            }
+        }
+    }
+    fn nearest(&self, p: DVec2) -> (f64, f64) {
+        match self {
+            FIn::Bez(b) => b.nearest(p),
+            FIn::Arc(a) => a.nearest(p),
+        }
+    }
+    /// A lower bound of the distance (floats; it only orders the search).
+    fn box_dist(&self, p: DVec2) -> f64 {
+        match self {
+            FIn::Bez(b) => b.box_dist(p),
+            FIn::Arc(a) => ((p - a.c).length() - a.rho).abs(),
+        }
+    }
+    fn at(&self, u: f64) -> DVec2 {
+        match self {
+            FIn::Bez(b) => bez_at(&b.p, u),
+            FIn::Arc(a) => a.at(u),
+        }
+    }
+    /// [`param_grid`] of the piece (an arc by its end and middle points).
+    fn grid(&self, tol: f64) -> f64 {
+        match self {
+            FIn::Bez(b) => param_grid(&b.p, tol),
+            FIn::Arc(a) => param_grid(&[a.at(0.0), a.at(0.5), a.at(1.0)], tol),
+        }
+    }
+}
+
 /// The nearest input point of all pieces: `(piece, u, distance)`.
-fn nearest_input(input: &[FBez], p: DVec2) -> (usize, f64, f64) {
+fn nearest_input(input: &[FIn], p: DVec2) -> (usize, f64, f64) {
     let mut best = (0, 0.0, f64::INFINITY);
     for (j, b) in input.iter().enumerate() {
         if b.box_dist(p) >= best.2 {
@@ -189,7 +274,7 @@ fn nearest_input(input: &[FBez], p: DVec2) -> (usize, f64, f64) {
 
 /// Every input piece is farther than `d` from `p` (floats: it only chooses
 /// which witnesses are tried).
-fn clear_of(input: &[FBez], p: DVec2, d: f64) -> bool {
+fn clear_of(input: &[FIn], p: DVec2, d: f64) -> bool {
     input
         .iter()
         .all(|b| b.box_dist(p) > d || b.nearest(p).1 > d)
@@ -308,7 +393,7 @@ fn adaptive(
 
 struct Ctx<'a> {
     input: Input,
-    fin: Vec<FBez>,
+    fin: Vec<FIn>,
     outline: Vec<Vec<OPiece>>,
     fout: Vec<(usize, usize, FPiece)>,
     r: f64,
@@ -357,7 +442,7 @@ impl Ctx<'_> {
     /// others fail).
     fn witnesses(&self, m: DVec2, corners: bool) -> Vec<(Inside, DVec2, f64)> {
         let (j, u, d) = nearest_input(&self.fin, m);
-        let y = bez_at(&self.fin[j].p, u);
+        let y = self.fin[j].at(u);
         if d <= 0.0 {
             return vec![];
         }
@@ -376,7 +461,7 @@ impl Ctx<'_> {
             }
         }
         // (the nearest point's parameter is a finite float in [0, 1])
-        let Ok(uq) = q(snap(u, param_grid(&self.fin[j].p, self.tol))) else {
+        let Ok(uq) = q(snap(u, self.fin[j].grid(self.tol))) else {
             return ws;
         };
         let disk = |w, mu| {
@@ -642,7 +727,7 @@ impl Ctx<'_> {
             d_in < self.r * (1.0 - 1e-12) && near.first().is_none_or(|n| n.3 > 0.5 * self.near_tol);
         let mut inside_try = Vec::new();
         if d_in < self.r {
-            let uq = q(snap(u, param_grid(&self.fin[j].p, self.tol)))?;
+            let uq = q(snap(u, self.fin[j].grid(self.tol)))?;
             inside_try.push((
                 BBox::Inside {
                     piece: j,
@@ -791,14 +876,53 @@ pub fn certificate(
     if let Some(pen) = &s.pen {
         return ellipse_certificate(curve, s, pen);
     }
-    disk_certificate(curve, s, radius, None)
+    let pieces: Vec<CurvePiece> = curve
+        .iter()
+        .map(|b| CurvePiece::Bezier(exact_points(b)))
+        .collect();
+    disk_certificate(&pieces, s, radius, None)
+}
+
+/// [`certificate`] of an outline `s` against an exact path of Bézier pieces
+/// and circular arcs (each arc is split where it turns by more than a
+/// quarter, at rational points of its circle; the certificate's `curve`
+/// states the pieces so split). A circular pen only.
+///
+/// # Examples
+/// ```
+/// use lncert::stroke::{certificate_path, stroke_path, PathPiece, StrokeOptions};
+/// use lncert::shape::parse_path;
+/// # fn main() -> Result<(), lncert::Error> {
+/// // a half circle of radius 2 and its diameter, read exactly
+/// let path: Vec<PathPiece> = parse_path("M 2 0 A 2 2 0 0 1 -2 0 L 2 0")?;
+/// let r = lncert::parse_rational("1/2")?;
+/// let s = stroke_path(&path, &StrokeOptions::new(r.clone(), "1e-2".parse()?))?;
+/// assert!(s.proven());
+/// let cert = certificate_path(&path, &s, &r)?;
+/// let valid = lncert::certify::verify::verify(&cert.to_string()).unwrap();
+/// assert!(valid.max_bound <= 1e-2);
+/// # Ok(())
+/// # }
+/// ```
+pub fn certificate_path(
+    path: &[super::PathPiece],
+    s: &Stroke,
+    radius: &Rational,
+) -> Result<Value, Error> {
+    if s.pen.is_some() {
+        return Err(err(
+            "an exact path with arcs is certified with a circular pen only",
+        ));
+    }
+    let pieces = super::path::curve_pieces(path).map_err(|e| err(e.reason))?;
+    disk_certificate(&pieces, s, radius, None)
 }
 
 /// [`certificate`] for a disk pen; with `metric = (M, tol)`, of the
 /// pre-images `curve = M⁻¹x`, `s = M⁻¹L` (radius 1, `s.tol = t′`), claim
 /// (b)'s near tests measured through `M` at the stated `tol`.
 fn disk_certificate(
-    curve: &[Bezier<Rational>],
+    curve: &[CurvePiece],
     s: &Stroke,
     radius: &Rational,
     metric: Option<(&PenMap, &Rational)>,
@@ -808,14 +932,10 @@ fn disk_certificate(
             "the stroke is not proven: no certificate is written for an unproven outline",
         ));
     }
-    let exact: Vec<Vec<Q2>> = curve.iter().map(exact_points).collect();
-    let mut input =
-        Input::new(exact.clone(), radius.clone(), "curve").map_err(|e| err(e.to_string()))?;
+    let mut input = Input::with_pieces(curve.to_vec(), radius.clone(), "curve")
+        .map_err(|e| err(e.to_string()))?;
     input.metric = metric.map(|(m, _)| m.metric());
-    let fin: Vec<FBez> = exact
-        .iter()
-        .map(|p| FBez::new(p.iter().map(v2).collect()))
-        .collect();
+    let fin: Vec<FIn> = curve.iter().map(FIn::new).collect();
     let mut outline = Vec::new();
     let mut fout = Vec::new();
     let mut outline_json = Vec::new();
@@ -938,12 +1058,28 @@ fn disk_certificate(
         "claim": CLAIM,
         "tol": qs(&tol_q),
         "radius": qs(radius),
-        "curve": exact.iter().map(|p| p.iter().map(pt).collect::<Vec<_>>()).collect::<Vec<_>>(),
+        "curve": curve.iter().map(curve_json).collect::<Vec<_>>(),
         "outline": outline_json,
         "cover": cover,
         "boundary": boundary,
         "simple": simple,
     }))
+}
+
+/// One input piece as the certificate states it.
+fn curve_json(p: &CurvePiece) -> Value {
+    match p {
+        CurvePiece::Bezier(p) => Value::Array(p.iter().map(pt).collect()),
+        CurvePiece::Arc {
+            c,
+            rho,
+            from,
+            to,
+            clockwise,
+        } => {
+            json!({"arc": {"center": pt(c), "radius": qs(rho), "from": pt(from), "to": pt(to), "clockwise": clockwise}})
+        }
+    }
 }
 
 /// The certificate of an elliptical pen's stroke `∂(x ⊕ M·disk(1))`: since
@@ -993,7 +1129,10 @@ fn ellipse_certificate(
         }
         outline_json.push(Value::Array(js));
     }
-    let pre_curve: Vec<Bezier<Rational>> = curve.iter().map(pre_bez).collect();
+    let pre_curve: Vec<CurvePiece> = curve
+        .iter()
+        .map(|b| CurvePiece::Bezier(exact_points(&pre_bez(b))))
+        .collect();
     let one = Rational::from_integer(1.into());
     let mut doc = disk_certificate(&pre_curve, &pre, &one, Some((&map, &tol_q)))?;
     let o = doc.as_object_mut().expect("the writer writes an object");

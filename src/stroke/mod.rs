@@ -35,16 +35,18 @@ pub(crate) mod circle;
 pub(crate) mod ellipse;
 pub(crate) mod intersect;
 pub(crate) mod onside;
+pub(crate) mod path;
 mod referee;
 pub(crate) mod trim;
 
-pub use cert::{certificate, certificate_set, distance_certificate};
+pub use cert::{certificate, certificate_path, certificate_set, distance_certificate};
 pub use circle::{arcs_meet, bezier_arc, Arc, ArcHit, ArcMeet};
 pub use ellipse::{half_ellipse_cap, outside_of, EllipseCap, Form};
 pub use intersect::{
     intersections, intersections_skipping, Crossing, IntersectOptions, Intersections, Joint,
     Undecided,
 };
+pub use path::{exact_path, parse_path, stroke_path, PathPiece};
 pub use referee::{
     distance_through, distance_to_stroke, referee, StrokeDistance, StrokeShape, StrokeVerdict,
 };

@@ -494,6 +494,7 @@ pub fn circle_stroke(c: &V2<Rational>, rho: &Rational, r: &Rational, tol: Tolera
         notes: vec!["a circle ({\"circle\"}, or an SVG <circle> stroked with its stroke-width): the stroke is computed exactly (concentric circles), no offset is approximated".to_string()],
         pen: None,
         caps: Vec::new(),
+        certificate: None,
     }
 }
 

@@ -209,6 +209,7 @@ fn stroke_at(
         notes,
         pen: opts.ellipse.clone(),
         caps,
+        certificate: None,
     })
 }
 

@@ -82,7 +82,7 @@ pub use types::{
 };
 
 /// Adds a note to a stroke's notes: at most 20 of them, no repeats.
-fn add_note(notes: &mut Vec<String>, s: String) {
+pub(crate) fn add_note(notes: &mut Vec<String>, s: String) {
     if notes.len() < 20 && !notes.contains(&s) {
         notes.push(s);
     }

@@ -341,6 +341,10 @@ pub struct Stroke {
     pub pen: Option<Pen>,
     /// The round caps of an elliptical pen (empty for a circle or butt caps).
     pub caps: Vec<CapReport>,
+    /// The stroke certificate that proves claims (a) and (b), when they were
+    /// proven by one ([`crate::stroke::stroke_path`] of a path with exact
+    /// arcs: against the exact arcs); `None` otherwise.
+    pub certificate: Option<Box<serde_json::Value>>,
 }
 
 impl Stroke {

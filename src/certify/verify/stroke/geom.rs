@@ -448,17 +448,33 @@ pub(crate) fn inside(path: &dyn Path, bx: &BoxT, y: P, r2: Interval) -> Result<(
 /// is about `x_j(u)`. That piece's form is split at `u` first: the distance
 /// is least there, and each side then needs far fewer halvings. The hint
 /// only orders the work; `[0, u]` and `[u, 1]` cover `[0, 1]` whatever `u`.
+#[cfg(test)]
 pub(crate) fn outside_near(
     p: P,
     input: &[Bez],
     r2: Interval,
     hint: Option<(usize, f64)>,
 ) -> Result<(), String> {
+    for (j, b) in input.iter().enumerate() {
+        let h = hint.filter(|h| h.0 == j).map(|h| h.1);
+        outside_bez(p, j, b, r2, h)?;
+    }
+    Ok(())
+}
+
+/// [`outside_near`] for one Bézier piece `j`, with the hint's parameter
+/// when the hint names this piece.
+pub(crate) fn outside_bez(
+    p: P,
+    j: usize,
+    b: &Bez,
+    r2: Interval,
+    hint: Option<f64>,
+) -> Result<(), String> {
     // (called with r2 = (r + μ)² for a disk of radius μ about p)
-    let p2 = dot(p, p);
-    let split = |g: Vec<Interval>, j: usize| -> Result<(), String> {
+    let split = |g: Vec<Interval>| -> Result<(), String> {
         match hint {
-            Some((h, u)) if h == j && u > 0.0 && u < 1.0 => {
+            Some(u) if u > 0.0 && u < 1.0 => {
                 let (a, b) = split_at(&g, ic(u));
                 positive(a, j)?;
                 positive(b, j)
@@ -466,39 +482,82 @@ pub(crate) fn outside_near(
             _ => positive(g, j),
         }
     };
-    for (j, b) in input.iter().enumerate() {
-        // the control polygon's box: farther than r from p ⇒ the piece is
-        if let Some((lo, hi)) = b.bbox {
-            if box_farther(lo, hi, p, r2) {
-                continue;
-            }
+    // the control polygon's box: farther than r from p ⇒ the piece is
+    if let Some((lo, hi)) = b.bbox {
+        if box_farther(lo, hi, p, r2) {
+            return Ok(());
         }
-        // the form computed once per piece first; the coefficients of
-        // `x − p` squared when it does not decide (they are tighter far
-        // from the origin)
-        if let Some(f) = &b.dform {
-            let g: Vec<Interval> =
-                f.sq.iter()
-                    .zip(&f.elev)
-                    .map(|(s, e)| {
-                        let two_pe = ulp::mul(ic(2.0), dot(p, *e));
-                        ulp::sub(ulp::add(ulp::sub(*s, two_pe), p2), r2)
-                    })
-                    .collect();
-            if split(g, j).is_ok() {
-                continue;
-            }
-        }
-        let xs: Vec<Interval> = b.pts.iter().map(|q| ulp::sub(q[0], p[0])).collect();
-        let ys: Vec<Interval> = b.pts.iter().map(|q| ulp::sub(q[1], p[1])).collect();
-        let g: Vec<Interval> = bprod(&xs, &xs)
-            .iter()
-            .zip(bprod(&ys, &ys))
-            .map(|(a, c)| ulp::sub(ulp::add(*a, c), r2))
-            .collect();
-        split(g, j)?;
     }
-    Ok(())
+    // the form computed once per piece first; the coefficients of
+    // `x − p` squared when it does not decide (they are tighter far
+    // from the origin)
+    if let Some(f) = &b.dform {
+        let p2 = dot(p, p);
+        let g: Vec<Interval> =
+            f.sq.iter()
+                .zip(&f.elev)
+                .map(|(s, e)| {
+                    let two_pe = ulp::mul(ic(2.0), dot(p, *e));
+                    ulp::sub(ulp::add(ulp::sub(*s, two_pe), p2), r2)
+                })
+                .collect();
+        if split(g).is_ok() {
+            return Ok(());
+        }
+    }
+    let xs: Vec<Interval> = b.pts.iter().map(|q| ulp::sub(q[0], p[0])).collect();
+    let ys: Vec<Interval> = b.pts.iter().map(|q| ulp::sub(q[1], p[1])).collect();
+    let g: Vec<Interval> = bprod(&xs, &xs)
+        .iter()
+        .zip(bprod(&ys, &ys))
+        .map(|(a, c)| ulp::sub(ulp::add(*a, c), r2))
+        .collect();
+    split(g)
+}
+
+/// `|p − x(λ)|² > r2` for every point of the input arc `j`,
+/// `x = c + ρ d/|d|` over the directions `d` between `a` and `b` (less than
+/// `π` apart, turning the way `turn` says): every point of the enclosure `p`
+/// is farther than `R = √r2` from the arc. Either from the whole circle
+/// (`|p − c| > ρ + R`, or `|p − c| < ρ − R`), or `p − c` is strictly outside
+/// the closed sector of the arc's directions — then the distance to the
+/// circle's point of direction `θ`, `|p − c|² + ρ² − 2ρ|p − c| cos(θ − φ)`,
+/// is least at an end of the arc's range of `θ`, which does not hold `φ`
+/// — and both end points are farther than `R`.
+pub(crate) fn outside_arc(
+    p: P,
+    j: usize,
+    arc: &ConeArc,
+    turn: f64,
+    r2: Interval,
+) -> Result<(), String> {
+    let e = sub(p, arc.c);
+    let e2 = dot(e, e);
+    let big_r = r2.sqrt();
+    let far = ulp::add(arc.r, big_r).sqr();
+    let near = ulp::sub(arc.r, big_r);
+    if !(finite(e2) && finite(far) && finite(near)) {
+        return Err(format!("input arc {j}: not finite"));
+    }
+    if e2.inf() > far.sup() || (near.inf() > 0.0 && e2.sup() < near.sqr().inf()) {
+        return Ok(());
+    }
+    let cr = |u: P, v: P| ulp::sub(ulp::mul(u[0], v[1]), ulp::mul(u[1], v[0]));
+    let s = ic(turn);
+    let before = ulp::mul(s, cr(arc.a, e));
+    let after = ulp::mul(s, cr(e, arc.b));
+    let outside_sector = before.sup() < 0.0 || after.sup() < 0.0;
+    let end_far = |d: P| {
+        let v = sub(e, d);
+        let v2 = dot(v, v);
+        finite(v2) && v2.inf() > r2.sup()
+    };
+    if outside_sector && end_far(arc.a) && end_far(arc.b) {
+        return Ok(());
+    }
+    Err(format!(
+        "the point is not proven farther than r from input arc {j}"
+    ))
 }
 
 /// The box `[lo, hi]` is farther than `√r2` from every point of `p`: its

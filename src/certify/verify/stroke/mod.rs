@@ -87,8 +87,8 @@ use crate::json::Json;
 use crate::scalar::Rational;
 use crate::shape::io::{MAX_CONTROL_POINTS, MAX_SEGMENTS};
 use geom::{
-    arc_hull, inside, ip, iq, near_arc, near_bezier, outside_near, part_bound, ArcT, Bez, BoxT,
-    ConeArc, Core, Path, Side, P,
+    arc_hull, inside, ip, iq, near_arc, near_bezier, outside_arc, outside_bez, part_bound, ArcT,
+    Bez, BoxT, ConeArc, Core, Path, Side, P,
 };
 use num_traits::{Signed, ToPrimitive, Zero};
 use rayon::prelude::*;
@@ -440,10 +440,117 @@ pub(crate) struct Family {
     pub(crate) path: Box<dyn Path + Send>,
 }
 
+/// One piece of the input curve as a certificate states it: a Bézier's
+/// control points, or an exact circular arc of sweep in `(0, π)` (ends
+/// exactly on the circle, travelled the short way from `from` to `to`).
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum CurvePiece {
+    Bezier(Vec<Q2>),
+    Arc {
+        c: Q2,
+        rho: Rational,
+        from: Q2,
+        to: Q2,
+        clockwise: bool,
+    },
+}
+
+impl CurvePiece {
+    /// The start and end points, exact.
+    pub(crate) fn ends(&self) -> (&Q2, &Q2) {
+        match self {
+            CurvePiece::Bezier(p) => (&p[0], &p[p.len() - 1]),
+            CurvePiece::Arc { from, to, .. } => (from, to),
+        }
+    }
+
+    /// The tangent directions at the start and at the end, exact (a
+    /// Bézier's first and last control polygon legs; an arc's `±J(p − c)`).
+    fn tangents(&self) -> (Q2, Q2) {
+        match self {
+            CurvePiece::Bezier(p) => (subq(&p[1], &p[0]), subq(&p[p.len() - 1], &p[p.len() - 2])),
+            CurvePiece::Arc {
+                c,
+                from,
+                to,
+                clockwise,
+                ..
+            } => {
+                // counter-clockwise: J(p − c) = (−(p_y − c_y), p_x − c_x)
+                let t = |p: &Q2| {
+                    let v = subq(p, c);
+                    if *clockwise {
+                        [v[1].clone(), -&v[0]]
+                    } else {
+                        [-&v[1], v[0].clone()]
+                    }
+                };
+                (t(from), t(to))
+            }
+        }
+    }
+
+    /// Checks an arc: radius `> 0`, ends exactly on the circle, and a sweep
+    /// in `(0, π)` the way `clockwise` says (`(from − c) × (to − c)` nonzero,
+    /// of the sign of that direction).
+    pub(crate) fn checked_arc(
+        c: Q2,
+        rho: Rational,
+        from: Q2,
+        to: Q2,
+        clockwise: bool,
+    ) -> Result<CurvePiece, String> {
+        if !rho.is_positive() {
+            return Err("radius: must be > 0".into());
+        }
+        let (u, v) = (subq(&from, &c), subq(&to, &c));
+        let r2 = &rho * &rho;
+        if dotq(&u, &u) != r2 || dotq(&v, &v) != r2 {
+            return Err("an end point is not exactly on the circle".into());
+        }
+        let cr = cross(&u, &v);
+        if cr.is_zero() || cr.is_negative() != clockwise {
+            return Err(format!(
+                "an input arc must turn by more than 0 and less than π {} from `from` to `to` (split longer arcs)",
+                if clockwise { "clockwise" } else { "counter-clockwise" }
+            ));
+        }
+        Ok(CurvePiece::Arc {
+            c,
+            rho,
+            from,
+            to,
+            clockwise,
+        })
+    }
+}
+
+/// One input piece, enclosed.
+pub(crate) enum InPiece {
+    /// A Bézier with its hodographs.
+    Bez(Bez),
+    /// An arc `x(λ) = c + ρ d(λ)/|d(λ)|`, `d(λ) = (1 − λ)(from − c) +
+    /// λ(to − c)`, `λ ∈ [0, 1]` (a sweep below `π`: `d` never vanishes), and
+    /// the sign of its turn (`+1` counter-clockwise).
+    Arc { path: ConeArc, turn: f64 },
+}
+
+impl InPiece {
+    /// An enclosure of the point `x(u)`.
+    pub(crate) fn at(&self, u: crate::scalar::Interval) -> Option<P> {
+        match self {
+            InPiece::Bez(b) => Some(b.at(u)),
+            InPiece::Arc { path, .. } => path.val(u),
+        }
+    }
+}
+
 /// The input curve read exactly, with interval pieces.
 pub(crate) struct Input {
-    pub(crate) exact: Vec<Vec<Q2>>,
-    pub(crate) iv: Vec<Bez>,
+    /// The pieces as stated.
+    pub(crate) curve: Vec<CurvePiece>,
+    /// The same pieces, enclosed.
+    pub(crate) pieces: Vec<InPiece>,
     pub(crate) r: Rational,
     /// For an elliptical pen, `M` enclosed: the pieces are pre-images under
     /// `M⁻¹`, and the near tests of claim (b) measure `|M (F′ − L′)| = |F − L|`
@@ -473,16 +580,27 @@ fn on_chord(p: &[Q2], pi: &[P]) -> bool {
 }
 
 impl Input {
-    /// Checks the pieces (degree ≥ 1, nonzero end tangents, finite) and
-    /// encloses them.
+    /// [`Input::with_pieces`] of Bézier pieces only.
+    #[cfg(test)]
     pub(crate) fn new(exact: Vec<Vec<Q2>>, r: Rational, at: &str) -> Result<Input, Invalid> {
-        if exact.is_empty() {
+        Input::with_pieces(exact.into_iter().map(CurvePiece::Bezier).collect(), r, at)
+    }
+
+    /// Checks the pieces (a Bézier: degree ≥ 1, nonzero end tangents; an arc
+    /// as [`CurvePiece::checked_arc`] leaves it) and encloses them.
+    pub(crate) fn with_pieces(
+        curve: Vec<CurvePiece>,
+        r: Rational,
+        at: &str,
+    ) -> Result<Input, Invalid> {
+        if curve.is_empty() {
             return Err(inv(at, "no pieces"));
         }
         if !r.is_positive() {
             return Err(inv("radius", "must be > 0"));
         }
-        for (j, p) in exact.iter().enumerate() {
+        for (j, p) in curve.iter().enumerate() {
+            let CurvePiece::Bezier(p) = p else { continue };
             let n = p.len();
             if n < 2 {
                 return Err(inv(
@@ -497,18 +615,38 @@ impl Input {
                 ));
             }
         }
-        let iv: Vec<Bez> = exact
-            .iter()
-            .map(|p| Bez::with_distance_form(p.iter().map(ip).collect()))
-            .collect();
-        let straight = exact
-            .iter()
-            .zip(&iv)
-            .map(|(p, b)| on_chord(p, &b.pts))
-            .collect();
+        let mut pieces = Vec::with_capacity(curve.len());
+        let mut straight = Vec::with_capacity(curve.len());
+        for p in &curve {
+            match p {
+                CurvePiece::Bezier(p) => {
+                    let b = Bez::with_distance_form(p.iter().map(ip).collect());
+                    straight.push(on_chord(p, &b.pts));
+                    pieces.push(InPiece::Bez(b));
+                }
+                CurvePiece::Arc {
+                    c,
+                    rho,
+                    from,
+                    to,
+                    clockwise,
+                } => {
+                    straight.push(false);
+                    pieces.push(InPiece::Arc {
+                        path: ConeArc {
+                            c: ip(c),
+                            r: iq(rho),
+                            a: ip(&subq(from, c)),
+                            b: ip(&subq(to, c)),
+                        },
+                        turn: if *clockwise { -1.0 } else { 1.0 },
+                    });
+                }
+            }
+        }
         Ok(Input {
-            exact,
-            iv,
+            curve,
+            pieces,
             r,
             metric: None,
             straight,
@@ -518,10 +656,10 @@ impl Input {
     /// The connected components (pieces joined end to start): `(first, end,
     /// closed)` — the same rule as the stroke's input.
     fn components(&self) -> Vec<(usize, usize, bool)> {
-        let c = &self.exact;
+        let c = &self.curve;
         let mut out: Vec<(usize, usize, bool)> = Vec::new();
         for i in 0..c.len() {
-            let joined = i > 0 && c[i - 1].last() == c[i].first();
+            let joined = i > 0 && c[i - 1].ends().1 == c[i].ends().0;
             match out.last_mut() {
                 Some(k) if joined => k.1 = i + 1,
                 _ => out.push((i, i + 1, false)),
@@ -529,8 +667,10 @@ impl Input {
         }
         for k in &mut out {
             let part = &c[k.0..k.1];
-            let closed = part.len() > 1 || part[0].len() > 2;
-            k.2 = closed && part.last().and_then(|b| b.last()) == part[0].first();
+            // one piece closes only as a Bézier of degree ≥ 2 (an arc's
+            // sweep is below π)
+            let closed = part.len() > 1 || matches!(&part[0], CurvePiece::Bezier(p) if p.len() > 2);
+            k.2 = closed && part[part.len() - 1].ends().1 == part[0].ends().0;
         }
         out
     }
@@ -539,26 +679,39 @@ impl Input {
     /// offsets of every piece, then per component its start cap (open) and the
     /// cone at the end of each piece (a join, the closing join, or the end
     /// cap), each cone as two halves `a`, `b` (none at a G¹ joint).
+    ///
+    /// An arc's offsets are the concentric arcs `c + (ρ ∓ r) d/|d|` over the
+    /// same directions (left is towards the centre for a counter-clockwise
+    /// arc; a negative radius is the arc through the opposite directions,
+    /// which the same formula states).
     pub(crate) fn families(&self) -> Vec<Family> {
         let r = iq(&self.r);
         let mut out: Vec<Family> = Vec::new();
-        for (j, b) in self.iv.iter().enumerate() {
+        for (j, p) in self.pieces.iter().enumerate() {
             for (side, sigma) in [("left", 1.0), ("right", -1.0)] {
-                out.push(Family {
-                    name: format!("piece {j} {side}"),
-                    path: Box::new(OwnedSide {
+                let path: Box<dyn Path + Send> = match p {
+                    InPiece::Bez(b) => Box::new(OwnedSide {
                         b: b.clone(),
                         sigma,
                         r,
                     }),
+                    // left normal J x′/|x′| = −turn·(x − c)/ρ: the offset
+                    // radius is ρ − σ·turn·r
+                    InPiece::Arc { path, turn } => Box::new(ConeArc {
+                        c: path.c,
+                        r: path.r - geom::ic(sigma * turn) * r,
+                        a: path.a,
+                        b: path.b,
+                    }),
+                };
+                out.push(Family {
+                    name: format!("piece {j} {side}"),
+                    path,
                 });
             }
         }
-        let tin = |j: usize| {
-            let p = &self.exact[j];
-            subq(&p[p.len() - 1], &p[p.len() - 2])
-        };
-        let tout = |j: usize| subq(&self.exact[j][1], &self.exact[j][0]);
+        let tin = |j: usize| self.curve[j].tangents().1;
+        let tout = |j: usize| self.curve[j].tangents().0;
         for (first, end, closed) in self.components() {
             let mut cones: Vec<(String, Q2, Option<[Q2; 3]>)> = Vec::new();
             if !closed {
@@ -566,7 +719,7 @@ impl Input {
                 let t = [-&t[0], -&t[1]];
                 cones.push((
                     format!("start {first}"),
-                    self.exact[first][0].clone(),
+                    self.curve[first].ends().0.clone(),
                     Some(half_plane(&t)),
                 ));
             }
@@ -578,7 +731,7 @@ impl Input {
                 } else {
                     None
                 };
-                let y = self.exact[j].last().expect("≥ 2 points").clone();
+                let y = self.curve[j].ends().1.clone();
                 let rays = match next {
                     None => Some(half_plane(&tin(j))),
                     Some(k) => joint(&tin(j), &tout(k)),
@@ -828,6 +981,36 @@ fn read_piece(v: &Json, at: &str) -> Result<OPiece, Invalid> {
     .map_err(|e| inv(at, e))
 }
 
+/// One input piece: a Bézier's control points `[[x, y], ...]`, or
+/// `{"arc": {"center", "radius", "from", "to", "clockwise"}}` of sweep in
+/// `(0, π)`.
+fn read_curve_piece(v: &Json, at: &str) -> Result<CurvePiece, Invalid> {
+    if v.as_array().is_some() {
+        return Ok(CurvePiece::Bezier(points(v, at)?));
+    }
+    let [a] = exact_object(v, at, ["arc"])?;
+    let at = join(at, "arc");
+    let [c, rho, from, to, cw] =
+        exact_object(a, &at, ["center", "radius", "from", "to", "clockwise"])?;
+    let cw = match cw {
+        Json::Bool(b) => *b,
+        o => {
+            return Err(inv(
+                join(&at, "clockwise"),
+                format!("expected true or false, found {}", o.describe()),
+            ))
+        }
+    };
+    CurvePiece::checked_arc(
+        point(c, &|| join(&at, "center"))?,
+        canonical_rational(rho, &join(&at, "radius"))?,
+        point(from, &|| join(&at, "from"))?,
+        point(to, &|| join(&at, "to"))?,
+        cw,
+    )
+    .map_err(|e| inv(at, e))
+}
+
 /// The outline's contours, each closed by exact shared end points.
 pub(crate) fn read_outline(v: &Json) -> Result<Vec<Vec<OPiece>>, Invalid> {
     let cs = arr(v, "outline", "contours")?;
@@ -898,37 +1081,48 @@ pub(crate) fn check_part(
     if mu.is_negative() {
         return Err("w.mu: negative".into());
     }
+    let n = input.pieces.len();
     let (core, hint) = match o {
         Inside::Disk { piece, u } => {
-            let bez = input.iv.get(*piece).ok_or_else(|| {
-                format!("o.piece {piece}: the curve has {} pieces", input.iv.len())
-            })?;
+            let p = input
+                .pieces
+                .get(*piece)
+                .ok_or_else(|| format!("o.piece {piece}: the curve has {n} pieces"))?;
             if u.is_negative() || u > &Rational::from_integer(1.into()) {
                 return Err("o.u: outside [0, 1]".into());
             }
             // the disk's centre lies along the normal at the witness point
             // `x_j(u)` in certificates lncert writes: `u` hints where the
             // distance is least
-            (
-                Core::Point(bez.at(iq(u))),
-                (*piece, u.to_f64().unwrap_or(0.5)),
-            )
+            let y = p
+                .at(iq(u))
+                .ok_or_else(|| format!("o.piece {piece}: its point at u is not finite"))?;
+            (Core::Point(y), (*piece, u.to_f64().unwrap_or(0.5)))
         }
         Inside::Segment { piece } => {
-            let bez = input.iv.get(*piece).ok_or_else(|| {
-                format!("o.segment {piece}: the curve has {} pieces", input.iv.len())
-            })?;
-            if !input.straight[*piece] {
+            let p = input
+                .pieces
+                .get(*piece)
+                .ok_or_else(|| format!("o.segment {piece}: the curve has {n} pieces"))?;
+            let (InPiece::Bez(bez), true) = (p, input.straight[*piece]) else {
                 return Err(format!(
                     "o.segment {piece}: the piece is not straight (its control points are not all on the line through its end points)"
                 ));
-            }
+            };
             let (a, b) = (bez.pts[0], bez.pts[bez.pts.len() - 1]);
             // where `w` projects on the segment (a hint only)
             (Core::Segment(a, b), (*piece, geom::segment_param(a, b, wi)))
         }
     };
-    outside_near(wi, &input.iv, (r + mu_i).sqr(), Some(hint)).map_err(|e| format!("w: {e}"))?;
+    let r2 = (r + mu_i).sqr();
+    for (j, p) in input.pieces.iter().enumerate() {
+        let h = (hint.0 == j).then_some(hint.1);
+        match p {
+            InPiece::Bez(b) => outside_bez(wi, j, b, r2, h),
+            InPiece::Arc { path, turn } => outside_arc(wi, j, path, *turn, r2),
+        }
+        .map_err(|e| format!("w: {e}"))?;
+    }
     let b = part_bound(hull, core, r, wi, mu_i);
     if b > tol.inf() {
         return Err(format!(
@@ -1179,16 +1373,19 @@ pub(crate) fn check_bbox(
             OPiece::Bezier { .. } => Err("near: the piece is a Bézier (s and k needed)".into()),
         },
         BBox::Inside { piece, u } => {
-            let b = input.iv.get(*piece).ok_or_else(|| {
+            let b = input.pieces.get(*piece).ok_or_else(|| {
                 format!(
                     "inside.piece {piece}: the curve has {} pieces",
-                    input.iv.len()
+                    input.pieces.len()
                 )
             })?;
             if u.is_negative() || u > &Rational::from_integer(1.into()) {
                 return Err("inside.u: outside [0, 1]".into());
             }
-            inside(path, bx, b.at(iq(u)), iq(&input.r).sqr()).map(|()| 0.0)
+            let y = b
+                .at(iq(u))
+                .ok_or_else(|| format!("inside.piece {piece}: its point at u is not finite"))?;
+            inside(path, bx, y, iq(&input.r).sqr()).map(|()| 0.0)
         }
     }
 }
@@ -1424,26 +1621,32 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
             iq(&tol_q),
         )
     };
-    let pieces = arr(curve, "curve", "Bézier pieces")?;
+    let pieces = arr(curve, "curve", "pieces")?;
     if pieces.len() > MAX_SEGMENTS {
         return Err(inv("curve", format!("more than {MAX_SEGMENTS} pieces")));
     }
-    let mut exact: Vec<Vec<Q2>> = pieces
+    let mut exact: Vec<CurvePiece> = pieces
         .iter()
         .enumerate()
-        .map(|(j, p)| points(p, &format!("curve[{j}]")))
+        .map(|(j, p)| read_curve_piece(p, &format!("curve[{j}]")))
         .collect::<Result<_, _>>()?;
     let t0 = std::time::Instant::now();
     let mut outline = read_outline(outline)?;
     if let Some(pen) = &pen {
-        for p in exact.iter_mut() {
+        for (j, p) in exact.iter_mut().enumerate() {
+            let CurvePiece::Bezier(p) = p else {
+                return Err(inv(
+                    format!("curve[{j}]"),
+                    "an exact arc with an elliptical pen (its pre-image under M⁻¹ is not a circular arc)",
+                ));
+            };
             for q in p.iter_mut() {
                 *q = pen.pre(q);
             }
         }
         outline = pre_outline(outline, pen)?;
     }
-    let mut input = Input::new(exact, r, "curve")?;
+    let mut input = Input::with_pieces(exact, r, "curve")?;
     input.metric = pen.as_ref().map(PenMap::metric);
     log::debug!(
         "stroke certificate: input and outline read in {:?}",
@@ -1577,7 +1780,7 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
             format!(
                 "expected {} families (both offsets of each of the {} pieces, and the cap and join arcs), found {}",
                 fams.len(),
-                input.iv.len(),
+                input.pieces.len(),
                 bd.len()
             ),
         ));
@@ -1631,7 +1834,7 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
             }
         ),
         b: format!(
-            "{}, x = {} Bézier piece(s) in {} component(s) ({} closed)",
+            "{}, x = {} in {} component(s) ({} closed)",
             match &pen {
                 Some(p) => format!(
                     "∂(x ⊕ M·disk(1)), M = [[{}, {}], [{}, {}]] (checked as the pre-image under M⁻¹ at tol/‖M‖₂)",
@@ -1639,7 +1842,22 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
                 ),
                 None => format!("∂(x ⊕ disk(r)), r = {}", input.r),
             },
-            input.iv.len(),
+            {
+                let arcs = input
+                    .pieces
+                    .iter()
+                    .filter(|p| matches!(p, InPiece::Arc { .. }))
+                    .count();
+                if arcs == 0 {
+                    format!("{} Bézier piece(s)", input.pieces.len())
+                } else {
+                    format!(
+                        "{} piece(s) ({} Bézier, {arcs} exact arcs)",
+                        input.pieces.len(),
+                        input.pieces.len() - arcs
+                    )
+                }
+            },
             comps.len(),
             comps.iter().filter(|c| c.2).count()
         ),
@@ -1648,6 +1866,8 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
     })
 }
 
+#[cfg(test)]
+mod arc_tests;
 #[cfg(test)]
 mod ellipse_tests;
 #[cfg(test)]

@@ -1,0 +1,369 @@
+//! Exact paths as stroke input: Bézier pieces and circular arcs in one chain
+//! (SVG `A` commands, `<circle>`, `<rect rx>`), stroked without replacing
+//! the arcs by their approximations in what is claimed.
+//!
+//! [`stroke_path`] builds the outline from certified cubic approximations
+//! of the arcs (at half the tolerance) and then proves claims (a) and (b)
+//! **against the exact path** by a stroke certificate
+//! ([`super::certificate_path`]) that [`crate::certify::verify::verify`]
+//! checks on its own: its families of `∂S` are the exact arcs' offsets
+//! (concentric arcs) and the cones at the exact joints, its points outside
+//! `S` are tested against the exact arcs. Claim (c) is about the outline
+//! alone. Where the certificate cannot be built or is refused, claims (a)
+//! and (b) are reported undecided, never taken from the approximation.
+
+use super::circle::Arc;
+use super::{Claim, Stroke, StrokeOptions};
+use crate::certify::verify::stroke::{exact_points, CurvePiece};
+use crate::curve::{Bezier, V2};
+use crate::scalar::Rational;
+use crate::shape::svgarc::ExactPiece;
+use crate::shape::InputApprox;
+use crate::{Error, Tolerance};
+use num_traits::{Signed, Zero};
+
+/// One piece of an exact path: a Bézier or a circular arc (end points
+/// exactly on its circle, any sweep below a full turn; `from = to` is a
+/// whole circle).
+#[derive(Clone, Debug, PartialEq)]
+#[allow(clippy::large_enum_variant)]
+pub enum PathPiece {
+    /// A Bézier with exact control points.
+    Bezier(Bezier<Rational>),
+    /// An exact circular arc.
+    Arc(Arc),
+}
+
+impl PathPiece {
+    /// The start point.
+    pub fn start(&self) -> &V2<Rational> {
+        match self {
+            PathPiece::Bezier(b) => &b.points()[0],
+            PathPiece::Arc(a) => &a.from,
+        }
+    }
+    /// The end point.
+    pub fn end(&self) -> &V2<Rational> {
+        match self {
+            PathPiece::Bezier(b) => b.points().last().expect("nonempty"),
+            PathPiece::Arc(a) => &a.to,
+        }
+    }
+}
+
+fn bad(field: &str, reason: impl Into<String>) -> Error {
+    Error {
+        field: field.into(),
+        reason: reason.into(),
+    }
+}
+
+/// The path's pieces as a stroke certificate states them: Béziers as they
+/// are, each arc split at rational points of its circle a quarter turn
+/// apart (from its start) so that every piece turns by more than 0 and at
+/// most `π/2`. Errors name the piece (`path[k]`): an arc off its circle or
+/// with a radius `≤ 0`.
+pub(crate) fn curve_pieces(path: &[PathPiece]) -> Result<Vec<CurvePiece>, Error> {
+    let mut out = Vec::new();
+    for (k, p) in path.iter().enumerate() {
+        match p {
+            PathPiece::Bezier(b) => out.push(CurvePiece::Bezier(exact_points(b))),
+            PathPiece::Arc(a) => {
+                for (u, v) in quarters(a).map_err(|e| bad(&format!("path[{k}]"), e))? {
+                    let c = [a.center.x.clone(), a.center.y.clone()];
+                    let pt = |d: &V2<Rational>| [&a.center.x + &d.x, &a.center.y + &d.y];
+                    out.push(
+                        CurvePiece::checked_arc(c, a.radius.clone(), pt(&u), pt(&v), a.clockwise)
+                            .map_err(|e| bad(&format!("path[{k}]"), e))?,
+                    );
+                }
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// An arc's radius vectors split into steps of more than 0 and at most a
+/// quarter turn in its direction: quarter turns `±J` from the start (exact,
+/// on the circle), then the rest.
+fn quarters(a: &Arc) -> Result<Vec<(V2<Rational>, V2<Rational>)>, String> {
+    if !a.radius.is_positive() {
+        return Err("the arc's radius must be > 0".into());
+    }
+    let (u, v) = (a.from.sub(&a.center), a.to.sub(&a.center));
+    let r2 = &a.radius * &a.radius;
+    if u.dot(&u) != r2 || v.dot(&v) != r2 {
+        return Err("an end point of the arc is not exactly on its circle".into());
+    }
+    // a quarter turn in the arc's direction
+    let turn = |w: &V2<Rational>| {
+        if a.clockwise {
+            V2::new(w.y.clone(), -w.x.clone())
+        } else {
+            V2::new(-w.y.clone(), w.x.clone())
+        }
+    };
+    let sign = |x: Rational| if a.clockwise { -x } else { x };
+    let mut out = Vec::new();
+    let mut cur = u;
+    for _ in 0..5 {
+        let (cr, d) = (sign(cur.cross(&v)), cur.dot(&v));
+        if cr.is_positive() && !d.is_negative() {
+            out.push((cur, v));
+            return Ok(out);
+        }
+        if cr.is_zero() && d.is_positive() && !out.is_empty() {
+            return Ok(out);
+        }
+        let next = turn(&cur);
+        out.push((cur, next.clone()));
+        cur = next;
+    }
+    Err("internal error: an arc of more than a full turn (please report)".into())
+}
+
+/// The path read from `pieces` and the report of a curve reader
+/// ([`crate::shape::parse_curve_reported`]): every approximated element that
+/// is exactly a chain of lines and circular arcs (SVG arcs with a rational
+/// centre, `<circle>`, rounded `<rect>` with equal radii) is put in place
+/// of its cubic pieces, each arc travelled the way the pieces it replaces
+/// are. Returns the path and the elements still approximated (ellipses,
+/// irrational centres, rotations), or `None` when no element was exact.
+///
+/// # Examples
+/// ```
+/// use lncert::shape::parse_curve_reported;
+/// use lncert::stroke::{exact_path, PathPiece};
+/// let doc = r#"<svg><rect width="10" height="6" rx="2"/></svg>"#;
+/// let (pieces, approx) = parse_curve_reported(doc).unwrap();
+/// let (path, rest) = exact_path(&pieces, &approx).unwrap();
+/// assert_eq!(path.iter().filter(|p| matches!(p, PathPiece::Arc(_))).count(), 4);
+/// assert!(rest.is_empty());
+/// ```
+pub fn exact_path(
+    pieces: &[Bezier<Rational>],
+    approx: &InputApprox,
+) -> Option<(Vec<PathPiece>, InputApprox)> {
+    let mut rest = InputApprox::default();
+    let mut exact = Vec::new();
+    for e in &approx.elements {
+        match &e.exact {
+            Some(x)
+                if x.count > 0
+                    && x.first + x.count <= pieces.len()
+                    && x.pieces
+                        .iter()
+                        .all(|p| !matches!(p, ExactPiece::EllipseArc(_))) =>
+            {
+                exact.push(x)
+            }
+            _ => rest.push(e.clone()),
+        }
+    }
+    if exact.is_empty() {
+        return None;
+    }
+    exact.sort_by_key(|x| x.first);
+    if exact
+        .windows(2)
+        .any(|w| w[0].first + w[0].count > w[1].first)
+    {
+        return None;
+    }
+    let mut out: Vec<PathPiece> = Vec::new();
+    let mut i = 0;
+    for x in exact {
+        out.extend(pieces[i..x.first].iter().cloned().map(PathPiece::Bezier));
+        // the element starts where its first replaced piece starts
+        let mut at = pieces[x.first].points()[0].clone();
+        for p in &x.pieces {
+            let next = match p {
+                ExactPiece::Bezier(b) => {
+                    let b = if b.points()[0] == at {
+                        b.clone()
+                    } else if b.points().last() == Some(&at) {
+                        Bezier::new(b.points().iter().rev().cloned().collect())
+                    } else {
+                        return None;
+                    };
+                    PathPiece::Bezier(b)
+                }
+                ExactPiece::Arc(a) => {
+                    let on = |d: &V2<Rational>| -> Option<V2<Rational>> {
+                        let n = crate::shape::svgarc::rational_sqrt(&d.dot(d))?;
+                        (!n.is_zero()).then(|| {
+                            V2::new(
+                                &a.center.x + &d.x * &a.radius / &n,
+                                &a.center.y + &d.y * &a.radius / &n,
+                            )
+                        })
+                    };
+                    let (p, q) = (on(&a.from)?, on(&a.to)?);
+                    let arc = |from: V2<Rational>, to: V2<Rational>, clockwise| Arc {
+                        center: a.center.clone(),
+                        radius: a.radius.clone(),
+                        from,
+                        to,
+                        clockwise,
+                    };
+                    if p == at {
+                        PathPiece::Arc(arc(p, q, false))
+                    } else if q == at {
+                        PathPiece::Arc(arc(q, p, true))
+                    } else {
+                        return None;
+                    }
+                }
+                ExactPiece::EllipseArc(_) => return None,
+            };
+            at = next.end().clone();
+            out.push(next);
+        }
+        i = x.first + x.count;
+    }
+    out.extend(pieces[i..].iter().cloned().map(PathPiece::Bezier));
+    Some((out, rest))
+}
+
+/// Reads a curve as [`crate::shape::parse_curve_reported`] does (JSON, SVG
+/// path data or an SVG document) with its circular arcs exact
+/// ([`exact_path`]); the elements that stay approximated are returned in the
+/// report.
+///
+/// # Examples
+/// ```
+/// use lncert::stroke::{parse_path, PathPiece};
+/// let (path, rest) = parse_path("M 2 0 A 2 2 0 0 1 -2 0 L 2 0").unwrap();
+/// assert!(matches!(path[0], PathPiece::Arc(_)) && rest.is_empty());
+/// ```
+pub fn parse_path(text: &str) -> Result<(Vec<PathPiece>, InputApprox), Error> {
+    let (pieces, approx) = crate::shape::parse_curve_reported(text)?;
+    Ok(match exact_path(&pieces, &approx) {
+        Some(x) => x,
+        None => (pieces.into_iter().map(PathPiece::Bezier).collect(), approx),
+    })
+}
+
+/// The stroke of an exact path with a circular pen.
+///
+/// Without arcs: [`super::stroke`]. With arcs: the outline is built from
+/// the arcs' certified cubic approximations at half the tolerance, then
+/// claims (a) and (b) are proven against the exact path by its stroke
+/// certificate, checked by the independent verifier (kept in
+/// [`Stroke::certificate`]); claim (c) concerns the outline alone. Where
+/// that certificate is not built or not accepted, (a) and (b) are
+/// undecided, with the reason.
+///
+/// Errors: an elliptical pen with arcs (field `pen`), an arc off its circle
+/// (field `path[k]`), and the errors of [`super::stroke`].
+///
+/// # Examples
+/// ```
+/// use lncert::stroke::{parse_path, stroke_path, StrokeOptions};
+/// # fn main() -> Result<(), lncert::Error> {
+/// let (path, _) = parse_path(r#"<svg><circle cx="0" cy="0" r="3"/></svg>"#)?;
+/// let opts = StrokeOptions::new(lncert::parse_rational("1/2")?, "1e-3".parse()?);
+/// let s = stroke_path(&path, &opts)?;
+/// assert!(s.proven() && s.certificate.is_some());
+/// assert_eq!(s.contours.len(), 2); // the outer and the inner circle
+/// # Ok(())
+/// # }
+/// ```
+pub fn stroke_path(path: &[PathPiece], opts: &StrokeOptions) -> Result<Stroke, Error> {
+    let beziers: Option<Vec<Bezier<Rational>>> = path
+        .iter()
+        .map(|p| match p {
+            PathPiece::Bezier(b) => Some(b.clone()),
+            PathPiece::Arc(_) => None,
+        })
+        .collect();
+    if let Some(b) = beziers {
+        return super::stroke(&b, opts);
+    }
+    if opts.ellipse.is_some() {
+        return Err(bad(
+            "pen",
+            "a path with exact arcs is stroked with a circular pen only (give the arcs as cubics for an elliptical pen)",
+        ));
+    }
+    // the approximation: each arc piece of at most a quarter turn by cubics
+    let mut approx: Vec<Bezier<Rational>> = Vec::new();
+    let mut delta = 0.0f64;
+    for (k, p) in path.iter().enumerate() {
+        match p {
+            PathPiece::Bezier(b) => approx.push(b.clone()),
+            PathPiece::Arc(a) => {
+                for (u, v) in quarters(a).map_err(|e| bad(&format!("path[{k}]"), e))? {
+                    let p0 = a.center.add(&u);
+                    let p1 = a.center.add(&v);
+                    let (c, d) = crate::shape::svgarc::circular_arc_cubics(
+                        &p0,
+                        &a.radius,
+                        false,
+                        !a.clockwise,
+                        &p1,
+                    )
+                    .map_err(|e| bad(&format!("path[{k}]"), e))?;
+                    delta = delta.max(d);
+                    approx.extend(c);
+                }
+            }
+        }
+    }
+    let half = Tolerance::new(opts.tol.exact() / Rational::from_integer(2.into()))?;
+    let mut inner = opts.clone();
+    inner.tol = half;
+    let mut s = super::stroke(&approx, &inner)?;
+    s.tol = opts.tol.clone();
+    let what = format!(
+        "the outline was built from the arcs' cubic approximations (within {}) at tol/2; claims (a) and (b) are about the exact arcs",
+        crate::shape::format_up(delta)
+    );
+    super::trim::add_note(&mut s.notes, what);
+    if !(s.a.proven && s.b.proven && s.c.proven) {
+        let why =
+            "not proven against the exact arcs: the outline of their approximation is not proven"
+                .to_string();
+        s.a = undecided(why.clone());
+        s.b = undecided(why);
+        return Ok(s);
+    }
+    let checked = super::certificate_path(path, &s, &opts.radius).and_then(|cert| {
+        crate::certify::verify::verify(&cert.to_string())
+            .map(|v| (cert, v))
+            .map_err(|e| bad("certificate", format!("refused at {}: {}", e.at, e.reason)))
+    });
+    match checked {
+        Ok((cert, v)) => {
+            let note = format!(
+                "proven against the exact path by its stroke certificate, checked by the independent verifier: every point of either set within {:.3e} of the other",
+                v.max_bound
+            );
+            s.a = Claim {
+                proven: true,
+                bound: v.max_bound,
+                note: note.clone(),
+            };
+            s.b = Claim {
+                proven: true,
+                bound: v.max_bound,
+                note,
+            };
+            s.certificate = Some(Box::new(cert));
+        }
+        Err(e) => {
+            let why = format!("not proven against the exact arcs: {}", e.reason);
+            s.a = undecided(why.clone());
+            s.b = undecided(why);
+        }
+    }
+    Ok(s)
+}
+
+fn undecided(note: String) -> Claim {
+    Claim {
+        proven: false,
+        bound: f64::INFINITY,
+        note,
+    }
+}
