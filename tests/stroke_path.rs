@@ -185,3 +185,40 @@ fn arcs_with_an_elliptical_pen_are_refused_with_a_named_field() {
     assert_eq!(e.field, "pen");
     let _ = Piece::Bezier; // (the output type is the plain stroke's)
 }
+
+#[test]
+fn verify_against_compares_the_exact_curve() {
+    // B is the user's exact shape (lines and arcs as read), A the outline;
+    // the certificate states the arcs split in quarters, in the path's
+    // order and direction: the same point set
+    for (src, r) in [
+        (
+            r#"<svg><rect x="0" y="0" width="10" height="6" rx="2"/></svg>"#,
+            "1",
+        ),
+        (r#"<svg><circle cx="1" cy="2" r="3"/></svg>"#, "1/2"),
+        ("M12 2a10 10 0 1 0 10 10h-4a6 6 0 1 1-6-6z", "1"),
+        ("M 2 0 A 2 2 0 0 0 -2 0 L -2 3", "1/2"),
+    ] {
+        let (_, s) = check_proven(src, r, "1e-2");
+        let text = s.certificate.as_ref().unwrap().to_string();
+        let outline = s.outline_shape().unwrap();
+        let (b, rest) = lncert::shape::ShapeDesc::parse_reported(src).unwrap();
+        assert!(rest.is_empty());
+        lncert::certify::verify_against(&text, &outline, &b)
+            .unwrap_or_else(|e| panic!("{src}: {} {}", e.at, e.reason));
+    }
+    // another rect, another circle: refused at the curve
+    let (_, s) = check_proven(r#"<svg><circle cx="1" cy="2" r="3"/></svg>"#, "1/2", "1e-2");
+    let text = s.certificate.as_ref().unwrap().to_string();
+    let outline = s.outline_shape().unwrap();
+    for other in [
+        r#"<svg><circle cx="1" cy="2" r="3.5"/></svg>"#,
+        r#"<svg><circle cx="1" cy="2.5" r="3"/></svg>"#,
+        "M 4 2 A 3 3 0 0 1 -2 2",
+    ] {
+        let (b, _) = lncert::shape::ShapeDesc::parse_reported(other).unwrap();
+        let e = lncert::certify::verify_against(&text, &outline, &b).unwrap_err();
+        assert_eq!(e.at, "curve", "{other}: {}", e.reason);
+    }
+}

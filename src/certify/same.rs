@@ -105,6 +105,14 @@ impl ShapeDesc {
                 };
                 member_by_member().or_else(|e| same_regrouped(x, y).map_err(|_| e))
             }
+            // a union against one member that is split there (an arc as
+            // quarters)
+            (ShapeDesc::Union(x), y) if matches!(y, ShapeDesc::Arc(_)) => {
+                same_regrouped(x, std::slice::from_ref(y))
+            }
+            (x, ShapeDesc::Union(y)) if matches!(x, ShapeDesc::Arc(_)) => {
+                same_regrouped(std::slice::from_ref(x), y)
+            }
             _ => match (conv_form(self), conv_form(other)) {
                 (Some((cx, qx, sx)), Some((cy, qy, sy))) => {
                     if qx != qy {
@@ -150,6 +158,7 @@ fn same_regrouped(x: &[ShapeDesc], y: &[ShapeDesc]) -> Result<(), String> {
         (pieces, rest)
     }
     let ((px, rx), (py, ry)) = (gathered(x), gathered(y));
+    let ((ax, rx), (ay, ry)) = (merged_arcs(&rx), merged_arcs(&ry));
     if rx.len() != ry.len() || px.is_empty() != py.is_empty() {
         return Err("different members".into());
     }
@@ -159,7 +168,111 @@ fn same_regrouped(x: &[ShapeDesc], y: &[ShapeDesc]) -> Result<(), String> {
     for (a, b) in rx.iter().zip(&ry) {
         a.same_as(b)?;
     }
+    // the merged arcs, as sets: each of one side matched once on the other
+    if ax.len() != ay.len() {
+        return Err(format!(
+            "{} and {} arcs after joining the chained arcs of each circle",
+            ax.len(),
+            ay.len()
+        ));
+    }
+    let mut used = vec![false; ay.len()];
+    for a in &ax {
+        let k = (0..ay.len()).find(|&k| !used[k] && a.same(&ay[k])).ok_or(
+            "an arc (chained arcs of one circle joined) with no equal arc on the other side",
+        )?;
+        used[k] = true;
+    }
     Ok(())
+}
+
+/// Counter-clockwise arcs of one circle joined where one ends in the
+/// direction the next starts (the same point set, split differently: a
+/// `<circle>` read as two halves, a certificate's curve as quarters); a
+/// chain that closes is the whole circle.
+struct MergedArc {
+    center: V2<Rational>,
+    radius: Rational,
+    from: V2<Rational>,
+    to: V2<Rational>,
+    full: bool,
+}
+
+impl MergedArc {
+    fn same(&self, o: &MergedArc) -> bool {
+        self.center == o.center
+            && self.radius == o.radius
+            && self.full == o.full
+            && (self.full
+                || (positively_parallel(&self.from, &o.from)
+                    && positively_parallel(&self.to, &o.to)))
+    }
+}
+
+/// The angle of `x` counter-clockwise from `a` is below that of `y`
+/// (angles in `[0, 2π)`), exactly.
+fn ccw_before(a: &V2<Rational>, x: &V2<Rational>, y: &V2<Rational>) -> bool {
+    // half 0: angle in [0, π); half 1: [π, 2π)
+    let half = |v: &V2<Rational>| {
+        let c = a.cross(v);
+        u8::from(!(c.is_positive() || (c.is_zero() && a.dot(v).is_positive())))
+    };
+    let (hx, hy) = (half(x), half(y));
+    hx < hy || (hx == hy && x.cross(y).is_positive())
+}
+
+/// The circular arcs of `rest` merged ([`MergedArc`]), and the other members.
+fn merged_arcs<'a>(rest: &[&'a ShapeDesc]) -> (Vec<MergedArc>, Vec<&'a ShapeDesc>) {
+    let mut arcs = Vec::new();
+    let mut other = Vec::new();
+    for m in rest {
+        match m {
+            ShapeDesc::Arc(a) => arcs.push(MergedArc {
+                center: a.center.clone(),
+                radius: a.radius.clone(),
+                from: a.from.clone(),
+                to: a.to.clone(),
+                full: false,
+            }),
+            o => other.push(*o),
+        }
+    }
+    'merge: loop {
+        for i in 0..arcs.len() {
+            for j in 0..arcs.len() {
+                let (x, y) = (&arcs[i], &arcs[j]);
+                if i == j
+                    || x.full
+                    || y.full
+                    || x.center != y.center
+                    || x.radius != y.radius
+                    || !positively_parallel(&x.to, &y.from)
+                {
+                    continue;
+                }
+                let full = positively_parallel(&y.to, &x.from);
+                // y must not run past x's start (overlapping arcs are left
+                // apart: never the same by mistake)
+                if !full && ccw_before(&y.from, &x.from, &y.to) {
+                    continue;
+                }
+                let joined = MergedArc {
+                    center: x.center.clone(),
+                    radius: x.radius.clone(),
+                    from: x.from.clone(),
+                    to: y.to.clone(),
+                    full,
+                };
+                let (hi, lo) = (i.max(j), i.min(j));
+                arcs.remove(hi);
+                arcs.remove(lo);
+                arcs.push(joined);
+                continue 'merge;
+            }
+        }
+        break;
+    }
+    (arcs, other)
 }
 
 /// `u = λ v` with `λ > 0`, exactly.
@@ -584,5 +697,49 @@ mod tests {
         let reversed = shape(r#"{"offset": {"curve": "M 2 0 Q 1 1 0 0", "distance": "-1/2"}}"#);
         assert!(o.same_as(&reversed).is_err());
         assert!(o.same_as(&a).is_err());
+    }
+
+    #[test]
+    fn chained_arcs_of_one_circle_are_joined_and_overlaps_are_not() {
+        let arc = |f: (i64, i64), t: (i64, i64)| {
+            ShapeDesc::arc(ArcDesc {
+                center: V2::new(Rational::zero(), Rational::zero()),
+                radius: Rational::one(),
+                from: V2::new(
+                    Rational::from_integer(f.0.into()),
+                    Rational::from_integer(f.1.into()),
+                ),
+                to: V2::new(
+                    Rational::from_integer(t.0.into()),
+                    Rational::from_integer(t.1.into()),
+                ),
+            })
+            .unwrap()
+        };
+        let u = |m: Vec<ShapeDesc>| ShapeDesc::Union(m);
+        // two halves and four quarters (any order): the whole circle
+        let halves = u(vec![arc((1, 0), (-1, 0)), arc((-1, 0), (1, 0))]);
+        let quarters = u(vec![
+            arc((0, -1), (1, 0)),
+            arc((1, 0), (0, 1)),
+            arc((-1, 0), (0, -1)),
+            arc((0, 1), (-1, 0)),
+        ]);
+        assert!(halves.same_as(&quarters).is_ok());
+        assert!(quarters.same_as(&halves).is_ok());
+        // three quarters are not the circle; a quarter and its halves
+        let three = u(vec![
+            arc((1, 0), (0, 1)),
+            arc((0, 1), (-1, 0)),
+            arc((-1, 0), (0, -1)),
+        ]);
+        assert!(three.same_as(&halves).is_err());
+        assert!(arc((1, 0), (-1, 0))
+            .same_as(&u(vec![arc((1, 0), (0, 1)), arc((0, 1), (-1, 0))]))
+            .is_ok());
+        // 270° and then 180° overlap (the whole circle as a set): not the
+        // quarter from (1, 0) to (0, 1) that joining the ends would give
+        let overlap = u(vec![arc((1, 0), (0, -1)), arc((0, -1), (0, 1))]);
+        assert!(overlap.same_as(&u(vec![arc((1, 0), (0, 1))])).is_err());
     }
 }

@@ -83,10 +83,13 @@ pub(crate) fn curve_pieces(path: &[PathPiece]) -> Result<Vec<CurvePiece>, Error>
     Ok(out)
 }
 
+/// One step of an arc: its start and end radius vectors.
+type Step = (V2<Rational>, V2<Rational>);
+
 /// An arc's radius vectors split into steps of more than 0 and at most a
 /// quarter turn in its direction: quarter turns `±J` from the start (exact,
 /// on the circle), then the rest.
-fn quarters(a: &Arc) -> Result<Vec<(V2<Rational>, V2<Rational>)>, String> {
+fn quarters(a: &Arc) -> Result<Vec<Step>, String> {
     if !a.radius.is_positive() {
         return Err("the arc's radius must be > 0".into());
     }
@@ -335,19 +338,22 @@ pub fn stroke_path(path: &[PathPiece], opts: &StrokeOptions) -> Result<Stroke, E
     });
     match checked {
         Ok((cert, v)) => {
-            let note = format!(
-                "proven against the exact path by its stroke certificate, checked by the independent verifier: every point of either set within {:.3e} of the other",
-                v.max_bound
-            );
+            let by = "against the exact arcs, by the stroke certificate (checked by the independent verifier)";
             s.a = Claim {
                 proven: true,
                 bound: v.max_bound,
-                note: note.clone(),
+                note: format!(
+                    "every outline point is within {:.3e} of ∂S, {by}",
+                    v.max_bound
+                ),
             };
             s.b = Claim {
                 proven: true,
                 bound: v.max_bound,
-                note,
+                note: format!(
+                    "every point of ∂S is within {:.3e} of the outline, {by}",
+                    v.max_bound
+                ),
             };
             s.certificate = Some(Box::new(cert));
         }

@@ -232,7 +232,14 @@ pub fn run_input(a: &StrokeArgs, input: &CurveInput, pen: PenShape) -> Result<i3
             pieces,
             approx,
             y_down,
-        } => run_curve(a, pieces, approx, &opts, *y_down),
+        } => match circle_pen
+            .is_some()
+            .then(|| lncert::stroke::exact_path(pieces, approx))
+            .flatten()
+        {
+            Some((path, rest)) => run_path(a, pieces, &path, &rest, &opts, *y_down),
+            None => run_curve(a, pieces, approx, &opts, *y_down),
+        },
         CurveInput::Circle { center, radius, .. } => {
             if a.certificate.is_some() {
                 return Err(bad(
@@ -321,6 +328,42 @@ fn run_curve(
     let code = report(a, &s, curve, approx, secs, y_down)?;
     match &a.certificate {
         Some(p) => write_certificate(p, curve, &s, &opts.radius, code),
+        None => Ok(code),
+    }
+}
+
+/// The stroke of an exact path with circular arcs by
+/// [`lncert::stroke::stroke_path`] (claims (a) and (b) proven against the
+/// exact arcs by its certificate); `pieces` (the arcs' cubics) only draw the
+/// skeleton of `--svg`, `rest` is what is still approximated.
+fn run_path(
+    a: &StrokeArgs,
+    pieces: &[lncert::curve::Bezier<Rational>],
+    path: &[lncert::stroke::PathPiece],
+    rest: &InputApprox,
+    opts: &StrokeOptions,
+    y_down: bool,
+) -> Result<i32, CliError> {
+    let t0 = std::time::Instant::now();
+    let s = lncert::stroke::stroke_path(path, opts).map_err(stroke_err)?;
+    let secs = t0.elapsed().as_secs_f64();
+    let code = report(a, &s, pieces, rest, secs, y_down)?;
+    match &a.certificate {
+        Some(p) => {
+            if code != super::EXIT_OK {
+                eprintln!(
+                    "lncert: --certificate {}: not written (the outline is not proven)",
+                    p.display()
+                );
+                return Ok(code);
+            }
+            let doc = s
+                .certificate
+                .as_deref()
+                .cloned()
+                .ok_or_else(|| "the stroke has no certificate".to_string());
+            write_built_certificate(p, "stroke certificate (exact arcs)", doc, t0)
+        }
         None => Ok(code),
     }
 }

@@ -32,7 +32,7 @@ use lncert::curve::V2;
 use lncert::scalar::Rational;
 use lncert::shape::svgarc::{ApproxKind, ExactPiece};
 use lncert::shape::{parse_svg_document_elements, InputApprox, SvgElement};
-use lncert::stroke::{stroke, PenShape, Stroke};
+use lncert::stroke::{exact_path, stroke, stroke_path, PenShape, Stroke};
 use num_traits::{Signed, Zero};
 use rayon::prelude::*;
 use serde_json::json;
@@ -70,9 +70,14 @@ pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
     let (strokes, secs) = stroke_all(a, &jobs)?;
     let mut approx = InputApprox::default();
     for (e, _) in &jobs {
-        // a circle stroked exactly approximated nothing
-        if a.certificate.is_some() || exact_circle(e).is_none() {
-            approx.elements.extend(e.approx.elements.iter().cloned());
+        // a circle stroked exactly approximated nothing; an exact path
+        // leaves only what it could not state exactly
+        if a.certificate.is_none() && exact_circle(e).is_some() {
+            continue;
+        }
+        match exact_path(&e.pieces, &e.approx) {
+            Some((_, rest)) => approx.elements.extend(rest.elements),
+            None => approx.elements.extend(e.approx.elements.iter().cloned()),
         }
     }
     let decided: Vec<bool> = strokes
@@ -130,6 +135,10 @@ fn write_certificate_set(
         .par_iter()
         .zip(strokes.par_iter())
         .map(|((e, r), (s, _))| {
+            // a stroke proven against exact arcs carries its certificate
+            if let Some(c) = &s.certificate {
+                return Ok((e.at.clone(), c.as_ref().clone()));
+            }
             lncert::stroke::certificate(&e.pieces, s, r)
                 .map(|c| (e.at.clone(), c))
                 .map_err(|err| format!("{}: {}", e.at, err.reason))
@@ -206,9 +215,12 @@ fn stroke_all(
             let t = std::time::Instant::now();
             let opts = options(a, PenShape::Circle(r.clone()))?;
             let circle = exact_circle(e).filter(|_| a.certificate.is_none());
-            let s = match circle {
-                Some((c, rho)) => super::stroke::circle_stroke(&c, &rho, r, opts.tol.clone()),
-                None => stroke(&e.pieces, &opts)
+            let s = match (circle, exact_path(&e.pieces, &e.approx)) {
+                (Some((c, rho)), _) => super::stroke::circle_stroke(&c, &rho, r, opts.tol.clone()),
+                (None, Some((path, _))) => stroke_path(&path, &opts)
+                    .map_err(stroke_err)
+                    .map_err(|err| bad("CURVE", format!("{}: {}", e.at, err)))?,
+                (None, None) => stroke(&e.pieces, &opts)
                     .map_err(stroke_err)
                     .map_err(|err| bad("CURVE", format!("{}: {}", e.at, err)))?,
             };

@@ -444,6 +444,7 @@ pub(crate) struct Family {
 /// control points, or an exact circular arc of sweep in `(0, π)` (ends
 /// exactly on the circle, travelled the short way from `from` to `to`).
 #[derive(Clone, Debug, PartialEq)]
+#[allow(clippy::large_enum_variant)]
 pub(crate) enum CurvePiece {
     Bezier(Vec<Q2>),
     Arc {
@@ -1539,12 +1540,38 @@ pub(crate) fn shapes(
     }
     let outline = ShapeDesc::union(members).map_err(shape_err("outline"))?;
     let curve = doc.get("curve").ok_or_else(|| inv("curve", "missing"))?;
-    let pieces: Vec<Bezier<Rational>> = arr(curve, "curve", "Bézier pieces")?
-        .iter()
-        .enumerate()
-        .map(|(j, p)| points(p, &format!("curve[{j}]")).map(bez))
-        .collect::<Result<_, _>>()?;
-    let curve = ShapeDesc::curve(pieces).map_err(shape_err("curve"))?;
+    let mut pieces: Vec<Bezier<Rational>> = Vec::new();
+    let mut arcs = Vec::new();
+    for (j, p) in arr(curve, "curve", "pieces")?.iter().enumerate() {
+        let at = format!("curve[{j}]");
+        match read_curve_piece(p, &at)? {
+            CurvePiece::Bezier(p) => pieces.push(bez(p)),
+            CurvePiece::Arc {
+                c,
+                rho,
+                from,
+                to,
+                clockwise,
+            } => {
+                let v = |q: &Q2| V2::new(q[0].clone(), q[1].clone());
+                let (u, w) = (subq(&from, &c), subq(&to, &c));
+                let (from, to) = if clockwise { (w, u) } else { (u, w) };
+                arcs.push(
+                    ShapeDesc::arc(ArcDesc {
+                        center: v(&c),
+                        radius: rho,
+                        from: v(&from),
+                        to: v(&to),
+                    })
+                    .map_err(shape_err(&at))?,
+                );
+            }
+        }
+    }
+    if !pieces.is_empty() {
+        arcs.insert(0, ShapeDesc::curve(pieces).map_err(shape_err("curve"))?);
+    }
+    let curve = ShapeDesc::union(arcs).map_err(shape_err("curve"))?;
     Ok((outline, curve))
 }
 
