@@ -1263,7 +1263,11 @@ pub fn distance_certificate(
             th.exact()
         ))
     })?;
-    let cs = certificate(curve, &d.stroke, radius)?;
+    // a stroke proven against exact arcs carries its certificate (at E)
+    let cs = match &d.stroke.certificate {
+        Some(c) => c.as_ref().clone(),
+        None => certificate(curve, &d.stroke, radius)?,
+    };
     Ok(json!({
         "format": DISTANCE_FORMAT,
         "version": VERSION,

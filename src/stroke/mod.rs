@@ -48,7 +48,8 @@ pub use intersect::{
 };
 pub use path::{exact_path, parse_path, stroke_path, PathPiece};
 pub use referee::{
-    distance_through, distance_to_stroke, referee, StrokeDistance, StrokeShape, StrokeVerdict,
+    distance_through, distance_to_stroke, distance_to_stroke_path, referee, StrokeDistance,
+    StrokeShape, StrokeVerdict,
 };
 pub use trim::{
     stroke, Cap, CapReport, Claim, Classified, Contour, Orientation, PenShape, Piece, RawCrossing,

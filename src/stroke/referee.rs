@@ -42,6 +42,12 @@ pub struct StrokeShape {
     pub curve: Vec<Bezier<Rational>>,
     /// The pen.
     pub pen: PenShape,
+    /// The curve exactly, with its circular arcs (SVG arcs with a rational
+    /// centre, read by [`super::exact_path`]), when it has any and the pen
+    /// is a circle: the referee then strokes it with
+    /// [`super::stroke_path`], and `∂S` is that of the exact arcs. `curve`
+    /// holds their certified cubics.
+    pub path: Option<Vec<super::PathPiece>>,
 }
 
 fn err(field: impl Into<String>, reason: impl Into<String>) -> ShapeError {
@@ -98,7 +104,11 @@ impl StrokeShape {
             &mut approx,
         )?;
         let pen = pen_value(m.get("pen"))?;
-        Ok(Some((StrokeShape { curve, pen }, approx)))
+        let (path, approx) = match (&pen, super::exact_path(&curve, &approx)) {
+            (PenShape::Circle(_), Some((path, rest))) => (Some(path), rest),
+            _ => (None, approx),
+        };
+        Ok(Some((StrokeShape { curve, pen, path }, approx)))
     }
 
     /// The stroker's options for this shape at tolerance `tol`: round caps,
@@ -118,7 +128,7 @@ impl StrokeShape {
     /// # Examples
     /// ```
     /// use lncert::stroke::{PenShape, StrokeShape};
-    /// let s = StrokeShape { curve: lncert::parse_curve("M 0 0 L 1 0")?, pen: PenShape::Circle(lncert::parse_rational("2")?) };
+    /// let s = StrokeShape { curve: lncert::parse_curve("M 0 0 L 1 0")?, pen: PenShape::Circle(lncert::parse_rational("2")?), path: None };
     /// assert_eq!(s.default_tolerance(Some(&"1/100".parse()?)).to_string(), "1/1600");
     /// assert_eq!(s.default_tolerance(None).to_string(), "1/500");
     /// # Ok::<(), lncert::Error>(())
@@ -194,7 +204,10 @@ pub fn referee(
     let mut tried = vec![e0.clone()];
     let mut next = Some(e0.clone());
     while let Some(e) = next.take() {
-        let d = distance_to_stroke(x, &shape.curve, &shape.options(e), cfg)?;
+        let d = match &shape.path {
+            Some(p) => distance_to_stroke_path(x, p, &shape.options(e), cfg)?,
+            None => distance_to_stroke(x, &shape.curve, &shape.options(e), cfg)?,
+        };
         if decided(&d) {
             return Ok(d);
         }
@@ -380,6 +393,41 @@ pub fn distance_to_stroke(
         });
     }
     distance_through(x, stroke(curve, opts)?, cfg)
+}
+
+/// [`distance_to_stroke`] for an exact path with circular arcs
+/// ([`super::stroke_path`]: the outline `L` is proven against the exact arcs
+/// by its certificate, which [`super::distance_certificate`] then uses).
+///
+/// # Examples
+/// ```
+/// use lncert::certify::Config;
+/// use lncert::shape::ShapeDesc;
+/// use lncert::stroke::{distance_to_stroke_path, parse_path, StrokeOptions};
+/// # fn main() -> Result<(), lncert::Error> {
+/// // ∂(circle of radius 2 ⊕ disk(1/2)): the circles of radii 3/2 and 5/2
+/// let (path, _) = parse_path(r#"<svg><circle cx="0" cy="0" r="2"/></svg>"#)?;
+/// let x = ShapeDesc::parse(r#"<svg><circle cx="0" cy="0" r="2.5"/><circle cx="0" cy="0" r="1.5"/></svg>"#)?;
+/// let o = StrokeOptions::new(lncert::parse_rational("1/2")?, "1e-3".parse()?);
+/// let d = distance_to_stroke_path(&x, &path, &o, &Config::default())?;
+/// assert!(d.hi <= 2e-3); // within the stroke's tolerance and the search's gap
+/// # Ok(())
+/// # }
+/// ```
+pub fn distance_to_stroke_path(
+    x: &ShapeDesc,
+    path: &[super::PathPiece],
+    opts: &StrokeOptions,
+    cfg: &Config,
+) -> Result<StrokeDistance, Error> {
+    if opts.cap != Cap::Round {
+        return Err(Error {
+            field: "cap".into(),
+            reason: "the referee needs round caps (with butt caps the region is not x ⊕ pen)"
+                .into(),
+        });
+    }
+    distance_through(x, super::stroke_path(path, opts)?, cfg)
 }
 
 /// [`distance_to_stroke`] through a stroke already made (round caps, claims

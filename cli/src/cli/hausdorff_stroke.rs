@@ -57,7 +57,10 @@ pub(crate) fn run(
         Some(t) => {
             let e = Tolerance::new(number("--stroke-tol", t)?)
                 .map_err(|e| bad("--stroke-tol", e.reason))?;
-            distance_to_stroke(&shape, &st.curve, &st.options(e), &cfg)
+            match &st.path {
+                Some(p) => lncert::stroke::distance_to_stroke_path(&shape, p, &st.options(e), &cfg),
+                None => distance_to_stroke(&shape, &st.curve, &st.options(e), &cfg),
+            }
         }
         None => referee(&shape, &st, tol.as_ref(), &cfg),
     }

@@ -8,7 +8,7 @@
 //!   "format": "lncert-stroke-certificate", "version": 1,
 //!   "claim": "hausdorff(outline, boundary(curve + disk(radius))) <= tol",
 //!   "tol": Q, "radius": Q,                     exact, > 0
-//!   "curve": [[[Q, Q], ...], ...],             the input x: Bézier pieces (degree ≥ 1)
+//!   "curve": [CURVE_PIECE, ...],               the input x
 //!   "outline": [[PIECE, ...], ...],            closed contours, consecutive pieces sharing
 //!                                              exact end points
 //!   "cover": [[[PART, ...], ...], ...],        per contour, per piece: its parts in order
@@ -29,6 +29,11 @@
 //! stated for `L` (those of `M⁻¹L` times `sign det M`).
 //!
 //! ```text
+//! CURVE_PIECE = [[Q, Q], ...]                 a Bézier (degree ≥ 1, nonzero end tangents)
+//!       | {"arc": {"center": [Q, Q], "radius": Q, "from": [Q, Q], "to": [Q, Q], "clockwise": BOOL}}
+//!                                              an exact arc turning by more than 0 and less
+//!                                              than π from `from` to `to` (ends exactly on
+//!                                              the circle; a circular pen only)
 //! PIECE = {"bezier": [[Q, Q], ...]}
 //!       | {"arc": {"center": [Q, Q], "radius": Q, "from": [Q, Q], "to": [Q, Q], "clockwise": BOOL}}
 //!                                              (ends exactly on the circle; from = to: the whole circle)
@@ -50,7 +55,8 @@
 //! through its end points — the capsule of radius `r` about the segment
 //! between its end points, which its image holds) and a
 //! disk outside `S` (`B(w, μ)`: `|w − x(u)|² − (r + μ)² > 0` on every input
-//! piece, Bernstein signs). For a point `q`, the segment between the two
+//! piece, Bernstein signs; for an arc, `w` farther than `r + μ` from its whole
+//! circle, or outside its sector with both ends farther). For a point `q`, the segment between the two
 //! disks' points nearest to `q` meets `∂S`, so `q` is within
 //! `max(|q − y| − r, |q − w| − μ, 0)` of `∂S`; that maximum over the part's
 //! hull (the restricted control points, or the sub-arc's tangent triangle)
@@ -59,7 +65,8 @@
 //! The parts chain over each piece exactly (rational comparisons).
 //!
 //! **(b) every point of `∂S` is within `tol` of `L`.** `∂S` lies in the exact
-//! offsets `x_j ± r N` of the input pieces and the arcs of radius `r` about
+//! offsets `x_j ± r N` of the input pieces (for an arc of centre `c` and
+//! radius `ρ`: the concentric arcs of radii `ρ ∓ r` over its directions) and the arcs of radius `r` about
 //! the input's vertices in their normal cones (caps at open ends, joins at
 //! corners) — the verifier derives this list (`NAME`s `piece j left|right`,
 //! `start j a|b`, `end j a|b`) from `curve` alone. Each is covered over its
