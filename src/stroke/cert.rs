@@ -890,11 +890,10 @@ pub fn certificate(
 ///
 /// # Examples
 /// ```
-/// use lncert::stroke::{certificate_path, stroke_path, PathPiece, StrokeOptions};
-/// use lncert::shape::parse_path;
+/// use lncert::stroke::{certificate_path, parse_path, stroke_path, StrokeOptions};
 /// # fn main() -> Result<(), lncert::Error> {
 /// // a half circle of radius 2 and its diameter, read exactly
-/// let path: Vec<PathPiece> = parse_path("M 2 0 A 2 2 0 0 1 -2 0 L 2 0")?;
+/// let (path, _) = parse_path("M 2 0 A 2 2 0 0 1 -2 0 L 2 0")?;
 /// let r = lncert::parse_rational("1/2")?;
 /// let s = stroke_path(&path, &StrokeOptions::new(r.clone(), "1e-2".parse()?))?;
 /// assert!(s.proven());

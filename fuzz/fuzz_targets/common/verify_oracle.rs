@@ -137,10 +137,33 @@ fn check_stroke(doc: &Value, tol: &Rational) {
     let mut curve = Vec::new();
     let mut gap = 0.0f64;
     for p in doc["curve"].as_array().expect("curve") {
-        let p = pts(p);
-        let mut prev = bez(&p, 0.0);
+        // a Bézier by its control points; an exact arc (a circular pen
+        // only) sampled by angle from its circle, the way its flag says
+        let at: Box<dyn Fn(f64) -> (f64, f64)> = match p.get("arc") {
+            Some(a) => {
+                let c = (num(&a["center"][0]), num(&a["center"][1]));
+                let rho = num(&a["radius"]);
+                let ang = |v: &Value| (num(&v[1]) - c.1).atan2(num(&v[0]) - c.0);
+                let (t0, t1) = (ang(&a["from"]), ang(&a["to"]));
+                let tau = std::f64::consts::TAU;
+                let sweep = if a["clockwise"] == Value::Bool(true) {
+                    -(t0 - t1).rem_euclid(tau)
+                } else {
+                    (t1 - t0).rem_euclid(tau)
+                };
+                Box::new(move |u| {
+                    let t = t0 + sweep * u;
+                    (c.0 + rho * t.cos(), c.1 + rho * t.sin())
+                })
+            }
+            None => {
+                let p = pts(p);
+                Box::new(move |u| bez(&p, u))
+            }
+        };
+        let mut prev = at(0.0);
         for k in 0..=400 {
-            let q = bez(&p, k as f64 / 400.0);
+            let q = at(k as f64 / 400.0);
             gap = gap.max(((q.0 - prev.0).powi(2) + (q.1 - prev.1).powi(2)).sqrt());
             prev = q;
             curve.push(q);
