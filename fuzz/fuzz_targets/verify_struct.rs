@@ -4,7 +4,7 @@
 //! The bytes are *choices* (read with `arbitrary::Unstructured`): one of the
 //! seed certificates of fuzz/seeds/verify/ (embedded; version 2 with box
 //! covers, version 3 with parametric maps, version 4 with radial cells, stroke certificates (a disk pen on
-//! segments and on a quadratic, and an elliptical one), a stroke distance certificate and a certificate set), then
+//! segments, on a quadratic and on exact arcs, and an elliptical one), a stroke distance certificate and a certificate set), then
 //! 1 to 4 mutations of
 //! its JSON tree ([`Mutation`]): add a key (from the keys of the certificate and
 //! shape formats, plus `clockwise`, `bounds`, `bound`, `digest`, `extra`) with a
@@ -32,7 +32,7 @@ use std::fmt::Write;
 use std::sync::OnceLock;
 use verify_oracle::check_accepted;
 
-const SEED_TEXTS: [&str; 21] = [
+const SEED_TEXTS: [&str; 22] = [
     include_str!("../seeds/verify/cert_quad_seg.json"),
     include_str!("../seeds/verify/cert_quad_seg_tol1.json"),
     include_str!("../seeds/verify/cert_box_deleted.json"),
@@ -51,6 +51,7 @@ const SEED_TEXTS: [&str; 21] = [
     include_str!("../seeds/verify/stroke_ellipse_segment.json"),
     include_str!("../seeds/verify/stroke_set_two.json"),
     include_str!("../seeds/verify/stroke_curve.json"),
+    include_str!("../seeds/verify/stroke_arcs.json"),
     include_str!("../seeds/verify/cert_radial_arc_cubic.json"),
     include_str!("../seeds/verify/cert_radial_half_arc.json"),
     include_str!("../seeds/verify/cert_radial_circle.json"),
