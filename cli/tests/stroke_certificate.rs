@@ -508,3 +508,61 @@ fn stroke_certificate_verifies_against_its_own_svg_output() {
         assert!(out.contains("invalid: outline:"), "{name}: {out}");
     }
 }
+
+/// Issue 25 item 4: a stroke shape whose curve has exact arcs (a rounded
+/// rect's path data) is the boundary of the exact arcs' stroke. Its exact
+/// boundary — two rounded rects, radii 3 and 1 — is certified within 1e-2
+/// (d_H = 0), the certificate verifies and states the exact arcs; the inner
+/// corners drawn with radius 1.2 (about 0.083 off) are refuted.
+#[test]
+fn distance_certificate_against_a_curve_with_exact_arcs() {
+    let stroke = tmp(
+        "sda-stroke.json",
+        r#"{"stroke": {"curve": "M 2 0 L 8 0 A 2 2 0 0 1 10 2 L 10 4 A 2 2 0 0 1 8 6 L 2 6 A 2 2 0 0 1 0 4 L 0 2 A 2 2 0 0 1 2 0 Z", "pen": {"circle": "1"}}}"#,
+    );
+    let exact = tmp(
+        "sda-x.svg",
+        r#"<svg><rect x="-1" y="-1" width="12" height="8" rx="3"/><rect x="1" y="1" width="8" height="4" rx="1"/></svg>"#,
+    );
+    let off = tmp(
+        "sda-off.svg",
+        r#"<svg><rect x="-1" y="-1" width="12" height="8" rx="3"/><rect x="1" y="1" width="8" height="4" rx="1.2"/></svg>"#,
+    );
+    let cert = exact.with_file_name("sda.cert.json");
+    let run = |x: &std::path::Path| {
+        lncert(&[
+            "hausdorff",
+            x.to_str().unwrap(),
+            stroke.to_str().unwrap(),
+            "--tol",
+            "1e-2",
+            "--certificate",
+            cert.to_str().unwrap(),
+        ])
+    };
+    let o = run(&off);
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(1), "{out}");
+    assert!(!cert.exists());
+    let o = run(&exact);
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{out}{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(!out.contains("approximated"), "{out}");
+    let v = lncert(&["verify", cert.to_str().unwrap()]);
+    let vout = String::from_utf8_lossy(&v.stdout);
+    assert_eq!(v.status.code(), Some(0), "{vout}");
+    assert!(
+        vout.contains("≤ 1/100") && vout.contains("4 exact arcs"),
+        "{vout}"
+    );
+    // the certificate's curve states the quarter arcs exactly
+    let doc: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&cert).unwrap()).unwrap();
+    let curve = doc["outline_to_stroke"]["curve"].as_array().unwrap();
+    assert_eq!(curve.iter().filter(|p| p.get("arc").is_some()).count(), 4);
+}

@@ -210,11 +210,20 @@ impl Report<'_> {
             ("X", "∂S")
         };
         let mut out = format!(
-            "X ({}): {}\n∂S ({}): the exact boundary of the stroke of {} piece(s) with the pen {}\n",
+            "X ({}): {}\n∂S ({}): the exact boundary of the stroke of {} with the pen {}\n",
             if self.stroke_is_a { "B" } else { "A" },
             self.shape.summary(),
             if self.stroke_is_a { "A" } else { "B" },
-            self.stroke.curve.len(),
+            match &self.stroke.path {
+                Some(p) => format!(
+                    "{} piece(s) ({} exact arcs)",
+                    p.len(),
+                    p.iter()
+                        .filter(|q| matches!(q, lncert::stroke::PathPiece::Arc(_)))
+                        .count()
+                ),
+                None => format!("{} piece(s)", self.stroke.curve.len()),
+            },
             pen_text(&self.stroke.pen),
         );
         for (name, ap) in [
