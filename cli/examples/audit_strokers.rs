@@ -75,6 +75,11 @@ const GLYPHS: &str = "aeghkmnorsABGQRS&@25";
 struct Case {
     name: String,
     curve: Vec<Bezier<Rational>>,
+    /// The curve with its circular arcs exact (an icon's circles, rounded
+    /// corners and SVG arcs with a rational centre), when it has any: `∂S`
+    /// is then that of the exact arcs (`stroke_path`); kurbo and Skia stroke
+    /// `curve`, the arcs' certified cubics.
+    path: Option<Vec<lncert::stroke::PathPiece>>,
     r: Rational,
     tol: f64,
     /// The same tolerance, read exactly.
@@ -87,10 +92,13 @@ fn cases(only: Option<&str>) -> Vec<Case> {
         let doc = format!(
             r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 24 24" fill="none" stroke="black" stroke-width="2">{el}</svg>"#
         );
-        let curve = lncert::shape::parse_svg_document(&doc).expect("an icon element");
+        let (curve, approx) =
+            lncert::shape::parse_svg_document_reported(&doc).expect("an icon element");
+        let path = lncert::stroke::exact_path(&curve, &approx).map(|(p, _)| p);
         out.push(Case {
             name: name.to_string(),
             curve,
+            path,
             r: Rational::from_integer(1.into()),
             tol: 1e-2,
             tol_text: "1e-2",
@@ -101,6 +109,7 @@ fn cases(only: Option<&str>) -> Vec<Case> {
             out.push(Case {
                 name: format!("{name} r {}", r.approx()),
                 curve,
+                path: None,
                 r,
                 tol: 1e-2,
                 tol_text: "1e-2",
@@ -117,6 +126,7 @@ fn cases(only: Option<&str>) -> Vec<Case> {
                     Ok(curve) => out.push(Case {
                         name: format!("DejaVu Sans {ch}"),
                         curve,
+                        path: None,
                         r: Rational::from_integer(20.into()),
                         tol: 0.5,
                         tol_text: "0.5",
@@ -243,7 +253,10 @@ fn main() {
                 .expect("a tolerance");
             let mut o = StrokeOptions::new(c.r.clone(), e);
             o.output = Output::Cubic;
-            stroke(&c.curve, &o)
+            match &c.path {
+                Some(p) => lncert::stroke::stroke_path(p, &o),
+                None => stroke(&c.curve, &o),
+            }
         };
         let mut ours = None;
         for div in [16, 4, 64] {

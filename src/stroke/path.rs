@@ -331,11 +331,27 @@ pub fn stroke_path(path: &[PathPiece], opts: &StrokeOptions) -> Result<Stroke, E
         s.b = undecided(why);
         return Ok(s);
     }
-    let checked = super::certificate_path(path, &s, &opts.radius).and_then(|cert| {
-        crate::certify::verify::verify(&cert.to_string())
-            .map(|v| (cert, v))
-            .map_err(|e| bad("certificate", format!("refused at {}: {}", e.at, e.reason)))
-    });
+    // the certificate at a tolerance near the outline's own bounds first
+    // (twice the larger; the arcs' cubics are within `delta`), so that the
+    // proven bound is about the outline's and not the tolerance asked for;
+    // at the tolerance asked for where that is refused
+    let certify = |s: &mut Stroke, t: Tolerance| {
+        s.tol = t;
+        let r = super::certificate_path(path, s, &opts.radius).and_then(|cert| {
+            crate::certify::verify::verify(&cert.to_string())
+                .map(|v| (cert, v))
+                .map_err(|e| bad("certificate", format!("refused at {}: {}", e.at, e.reason)))
+        });
+        s.tol = opts.tol.clone();
+        r
+    };
+    let tight = (2.0 * s.a.bound.max(s.b.bound) + 4.0 * delta).next_up();
+    let checked = match Tolerance::from_f64(tight) {
+        Ok(t) if tight < 0.5 * opts.tol.value() => {
+            certify(&mut s, t).or_else(|_| certify(&mut s, opts.tol.clone()))
+        }
+        _ => certify(&mut s, opts.tol.clone()),
+    };
     match checked {
         Ok((cert, v)) => {
             let by = "against the exact arcs, by the stroke certificate (checked by the independent verifier)";

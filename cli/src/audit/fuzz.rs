@@ -150,5 +150,24 @@ pub fn fuzz_parse(data: &[u8]) -> Result<Outcome, String> {
             }
         }
     }
+    // the exact path (SVG arcs kept exact): every arc's ends exactly on its
+    // circle, of radius > 0
+    if let Ok((path, _)) = lncert::stroke::parse_path(text) {
+        for p in &path {
+            if let lncert::stroke::PathPiece::Arc(a) = p {
+                let r2 = &a.radius * &a.radius;
+                let on = |q: &lncert::curve::V2<lncert::scalar::Rational>| {
+                    let d = q.sub(&a.center);
+                    d.dot(&d) == r2
+                };
+                if a.radius <= lncert::scalar::Rational::from_integer(0.into())
+                    || !on(&a.from)
+                    || !on(&a.to)
+                {
+                    return Err(format!("parse_path: an arc off its circle: {a:?}"));
+                }
+            }
+        }
+    }
     Ok(Outcome::Checked)
 }
