@@ -222,3 +222,13 @@ fn verify_against_compares_the_exact_curve() {
         assert_eq!(e.at, "curve", "{other}: {}", e.reason);
     }
 }
+
+#[test]
+fn butt_caps_keep_the_claims_unmade() {
+    let (path, _) = parse_path("M 2 0 A 2 2 0 0 1 -2 0").unwrap();
+    let mut o = opts("1/2", "1e-2");
+    o.cap = lncert::stroke::Cap::Butt;
+    let s = stroke_path(&path, &o).unwrap();
+    assert!(s.c.proven && !s.a.proven && s.certificate.is_none());
+    assert!(s.a.note.contains("not claimed"), "{}", s.a.note);
+}
