@@ -166,8 +166,34 @@ fn certificate_flag_is_refused_where_it_cannot_state_the_stroke() {
         "--certificate",
         o,
     ]);
+    // a {"circle"} is certified as its four exact quarter arcs
+    assert_eq!(
+        r.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&r.stderr)
+    );
+    let v = lncert(&["verify", o]);
+    let vout = String::from_utf8_lossy(&v.stdout);
+    assert_eq!(v.status.code(), Some(0), "{vout}");
+    assert!(
+        vout.contains("4 exact arcs") && vout.contains("(1 closed)"),
+        "{vout}"
+    );
+    std::fs::remove_file(&out).unwrap();
+    // with an elliptical pen it is refused
+    let r = lncert(&[
+        "stroke",
+        circle.to_str().unwrap(),
+        "--pen",
+        "ellipse:1,1/2",
+        "--tol",
+        "1e-2",
+        "--certificate",
+        o,
+    ]);
     assert_eq!(r.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&r.stderr).contains("--certificate"));
+    assert!(!out.exists());
 }
 
 /// `hausdorff X STROKE.json --tol T --certificate C`: a stroke distance

@@ -194,9 +194,11 @@ fn offset_trim_of_an_svg_circle_agrees_with_the_exact_circle() {
 /// `CURVE`), never answered by a one-sided offset with exit 0.
 #[test]
 fn trim_and_stroke_refuse_what_they_cannot_decide() {
+    // an arc whose end points are irrational (from (1, 1): the point
+    // (√2/2, √2/2)): its caps' centres cannot be stated
     let arc = tmp(
         "arc.json",
-        r#"{"arc": {"center": [0, 0], "radius": 1, "from": [1, 0], "to": [0, 1]}}"#,
+        r#"{"arc": {"center": [0, 0], "radius": 1, "from": [1, 1], "to": [0, 1]}}"#,
     );
     let circle = tmp(
         "circle2.json",
@@ -248,6 +250,31 @@ fn trim_and_stroke_refuse_what_they_cannot_decide() {
         "1e-3",
     ]);
     assert_eq!(o.status.code(), Some(0));
+    // an arc with rational end points is stroked and trimmed as an exact arc:
+    // (a) and (b) proven against it by its certificate
+    let exact = tmp(
+        "arc-exact.json",
+        r#"{"arc": {"center": [0, 0], "radius": 1, "from": [1, 0], "to": [0, 1]}}"#,
+    );
+    for cmd in [
+        vec!["stroke", exact.to_str().unwrap(), "--pen", "circle:1/2"],
+        vec![
+            "offset",
+            exact.to_str().unwrap(),
+            "--distance",
+            "1/2",
+            "--trim",
+        ],
+    ] {
+        let mut args = cmd.clone();
+        args.extend(["--tol", "1e-3", "--json"]);
+        let o = lncert(&args);
+        assert_eq!(o.status.code(), Some(0), "{args:?}");
+        let doc = json_of(&o);
+        assert_eq!(doc["verdict"], "proven", "{doc}");
+        let a = doc["outline"]["claims"]["a"].to_string();
+        assert!(a.contains("against the exact arcs"), "{a}");
+    }
 }
 
 // ---------------------------------------------------------------------------

@@ -35,6 +35,36 @@ pub enum PathPiece {
 }
 
 impl PathPiece {
+    /// An arc as read by [`crate::shape::parse_arc_input`], when its end
+    /// points are rational (its direction vectors have rational lengths);
+    /// `None` otherwise.
+    ///
+    /// # Examples
+    /// ```
+    /// use lncert::shape::parse_arc_input;
+    /// use lncert::stroke::PathPiece;
+    /// let arcs = parse_arc_input(r#"{"arc": {"center": [0, 0], "radius": 2, "from": [3, 4], "to": [0, 1]}}"#)
+    ///     .unwrap()
+    ///     .unwrap();
+    /// let p = PathPiece::from_travelled(&arcs[0]).unwrap();
+    /// assert_eq!(p.start().x, lncert::parse_rational("6/5").unwrap());
+    /// ```
+    pub fn from_travelled(t: &crate::shape::TravelledArc) -> Option<PathPiece> {
+        let a = &t.arc;
+        let (p, q) = (
+            on_circle(&a.center, &a.radius, &a.from)?,
+            on_circle(&a.center, &a.radius, &a.to)?,
+        );
+        let (from, to) = if t.clockwise { (q, p) } else { (p, q) };
+        Some(PathPiece::Arc(Arc {
+            center: a.center.clone(),
+            radius: a.radius.clone(),
+            from,
+            to,
+            clockwise: t.clockwise,
+        }))
+    }
+
     /// The start point.
     pub fn start(&self) -> &V2<Rational> {
         match self {
@@ -49,6 +79,13 @@ impl PathPiece {
             PathPiece::Arc(a) => &a.to,
         }
     }
+}
+
+/// The point of the circle `(c, r)` in the direction `d`, when `|d|` is
+/// rational (then the point is).
+fn on_circle(c: &V2<Rational>, r: &Rational, d: &V2<Rational>) -> Option<V2<Rational>> {
+    let n = crate::shape::svgarc::rational_sqrt(&d.dot(d))?;
+    (!n.is_zero()).then(|| V2::new(&c.x + &d.x * r / &n, &c.y + &d.y * r / &n))
 }
 
 fn bad(field: &str, reason: impl Into<String>) -> Error {
@@ -192,16 +229,10 @@ pub fn exact_path(
                     PathPiece::Bezier(b)
                 }
                 ExactPiece::Arc(a) => {
-                    let on = |d: &V2<Rational>| -> Option<V2<Rational>> {
-                        let n = crate::shape::svgarc::rational_sqrt(&d.dot(d))?;
-                        (!n.is_zero()).then(|| {
-                            V2::new(
-                                &a.center.x + &d.x * &a.radius / &n,
-                                &a.center.y + &d.y * &a.radius / &n,
-                            )
-                        })
-                    };
-                    let (p, q) = (on(&a.from)?, on(&a.to)?);
+                    let (p, q) = (
+                        on_circle(&a.center, &a.radius, &a.from)?,
+                        on_circle(&a.center, &a.radius, &a.to)?,
+                    );
                     let arc = |from: V2<Rational>, to: V2<Rational>, clockwise| Arc {
                         center: a.center.clone(),
                         radius: a.radius.clone(),
@@ -351,8 +382,8 @@ pub fn stroke_path(path: &[PathPiece], opts: &StrokeOptions) -> Result<Stroke, E
         r
     };
     let tight = (2.0 * s.a.bound.max(s.b.bound) + 4.0 * delta).next_up();
-    let checked = match Tolerance::from_f64(tight) {
-        Ok(t) if tight < 0.5 * opts.tol.value() => {
+    let checked = match short_above(tight) {
+        Some(t) if t.value() < 0.5 * opts.tol.value() => {
             certify(&mut s, t).or_else(|_| certify(&mut s, opts.tol.clone()))
         }
         _ => certify(&mut s, opts.tol.clone()),
@@ -385,6 +416,24 @@ pub fn stroke_path(path: &[PathPiece], opts: &StrokeOptions) -> Result<Stroke, E
         }
     }
     Ok(s)
+}
+
+/// A tolerance `≥ x` with two significant decimal digits (a short number
+/// for the certificate to state), `None` when `x` is not a normal positive
+/// float.
+fn short_above(x: f64) -> Option<Tolerance> {
+    if !(x.is_normal() && x > 0.0) {
+        return None;
+    }
+    let mut y = x;
+    for _ in 0..4 {
+        let t: Tolerance = format!("{y:.1e}").parse().ok()?;
+        if t.value() >= x {
+            return Some(t);
+        }
+        y *= 1.05;
+    }
+    None
 }
 
 fn undecided(note: String) -> Claim {

@@ -240,12 +240,26 @@ pub fn run_input(a: &StrokeArgs, input: &CurveInput, pen: PenShape) -> Result<i3
             Some((path, rest)) => run_path(a, pieces, &path, &rest, &opts, *y_down),
             None => run_curve(a, pieces, approx, &opts, *y_down),
         },
-        CurveInput::Circle { center, radius, .. } => {
+        CurveInput::Circle {
+            center,
+            radius,
+            arcs,
+        } => {
             if a.certificate.is_some() {
-                return Err(bad(
-                    "--certificate",
-                    "a {\"circle\"} input is stroked exactly (concentric circles) and has no Bézier curve for a certificate to state; give the circle as an SVG <circle> for a certified stroke",
-                ));
+                // the certificate states the circle's four quarter arcs
+                let path: Option<Vec<_>> = arcs
+                    .iter()
+                    .map(lncert::stroke::PathPiece::from_travelled)
+                    .collect();
+                return match (path, circle_pen) {
+                    (Some(path), Some(_)) => {
+                        run_path(a, &[], &path, &InputApprox::default(), &opts, false)
+                    }
+                    _ => Err(bad(
+                        "--certificate",
+                        "a {\"circle\"} is certified as its exact quarter arcs with a circular pen only",
+                    )),
+                };
             }
             let Some(r) = circle_pen else {
                 return Err(bad(
@@ -264,10 +278,13 @@ pub fn run_input(a: &StrokeArgs, input: &CurveInput, pen: PenShape) -> Result<i3
                 false,
             )
         }
-        CurveInput::Arc(_) => Err(bad(
-            "CURVE",
-            "an {\"arc\"} document cannot be stroked or trimmed (its end points, the caps' centres, are irrational in general): give the arc as SVG path data (an A command, read as cubics within a certified bound), or use offset without --trim for its exact one-sided offset",
-        )),
+        CurveInput::Arc(arc) => match (lncert::stroke::PathPiece::from_travelled(arc), circle_pen) {
+            (Some(p), Some(_)) => run_path(a, &[], &[p], &InputApprox::default(), &opts, false),
+            _ => Err(bad(
+                "CURVE",
+                "an {\"arc\"} document is stroked or trimmed with a circular pen when its end points are rational (its from and to vectors of rational length); this one's are not, or the pen is elliptical: give the arc as SVG path data (an A command, read as cubics within a certified bound), or use offset without --trim for its exact one-sided offset",
+            )),
+        },
     }
 }
 
