@@ -385,6 +385,12 @@ pub fn distance_to_stroke(
     opts: &StrokeOptions,
     cfg: &Config,
 ) -> Result<StrokeDistance, Error> {
+    round_caps(opts)?;
+    distance_through(x, stroke(curve, opts)?, cfg)
+}
+
+/// The referee's stroke is `x ⊕ pen`: round caps only.
+fn round_caps(opts: &StrokeOptions) -> Result<(), Error> {
     if opts.cap != Cap::Round {
         return Err(Error {
             field: "cap".into(),
@@ -392,7 +398,7 @@ pub fn distance_to_stroke(
                 .into(),
         });
     }
-    distance_through(x, stroke(curve, opts)?, cfg)
+    Ok(())
 }
 
 /// [`distance_to_stroke`] for an exact path with circular arcs
@@ -420,13 +426,7 @@ pub fn distance_to_stroke_path(
     opts: &StrokeOptions,
     cfg: &Config,
 ) -> Result<StrokeDistance, Error> {
-    if opts.cap != Cap::Round {
-        return Err(Error {
-            field: "cap".into(),
-            reason: "the referee needs round caps (with butt caps the region is not x ⊕ pen)"
-                .into(),
-        });
-    }
+    round_caps(opts)?;
     distance_through(x, super::stroke_path(path, opts)?, cfg)
 }
 

@@ -371,7 +371,6 @@ fn witnesses_on_arc_pieces_are_checked_against_the_arc() {
     part["w"] = json!({"at": [qv(&w[0]), qv(&w[1])], "mu": "0"});
     let e = refused_at(&d, "cover[0][0]");
     assert!(e.reason.contains("arc"), "{}", e.reason);
-    let _ = &f.r;
 }
 
 #[test]

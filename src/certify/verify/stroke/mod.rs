@@ -508,14 +508,7 @@ impl CurvePiece {
         to: Q2,
         clockwise: bool,
     ) -> Result<CurvePiece, String> {
-        if !rho.is_positive() {
-            return Err("radius: must be > 0".into());
-        }
-        let (u, v) = (subq(&from, &c), subq(&to, &c));
-        let r2 = &rho * &rho;
-        if dotq(&u, &u) != r2 || dotq(&v, &v) != r2 {
-            return Err("an end point is not exactly on the circle".into());
-        }
+        let (u, v) = radius_vectors(&c, &rho, &from, &to)?;
         let cr = cross(&u, &v);
         if cr.is_zero() || cr.is_negative() != clockwise {
             return Err(format!(
@@ -531,6 +524,20 @@ impl CurvePiece {
             clockwise,
         })
     }
+}
+
+/// An arc's radius vectors `from − c`, `to − c`, checked: radius `> 0`,
+/// both ends exactly on the circle.
+fn radius_vectors(c: &Q2, rho: &Rational, from: &Q2, to: &Q2) -> Result<(Q2, Q2), String> {
+    if !rho.is_positive() {
+        return Err("radius: must be > 0".into());
+    }
+    let (u, v) = (subq(from, c), subq(to, c));
+    let r2 = rho * rho;
+    if dotq(&u, &u) != r2 || dotq(&v, &v) != r2 {
+        return Err("an end point is not exactly on the circle".into());
+    }
+    Ok((u, v))
 }
 
 /// One input piece, enclosed.
@@ -857,14 +864,7 @@ impl OPiece {
         to: Q2,
         clockwise: bool,
     ) -> Result<OPiece, String> {
-        if !rho.is_positive() {
-            return Err("radius: must be > 0".into());
-        }
-        let (u, v) = (subq(&from, &c), subq(&to, &c));
-        let r2 = &rho * &rho;
-        if dotq(&u, &u) != r2 || dotq(&v, &v) != r2 {
-            return Err("an end point is not exactly on the circle".into());
-        }
+        let (u, v) = radius_vectors(&c, &rho, &from, &to)?;
         let (cu, cv) = if clockwise { (v, u) } else { (u, v) };
         let cr = cross(&cu, &cv);
         let t = ArcT {
@@ -961,11 +961,10 @@ fn points(v: &Json, at: &str) -> Result<Vec<Q2>, Invalid> {
         .collect()
 }
 
-fn read_piece(v: &Json, at: &str) -> Result<OPiece, Invalid> {
-    if let Some(b) = v.get("bezier") {
-        let [_] = exact_object(v, at, ["bezier"])?;
-        return Ok(OPiece::bezier(points(b, &join(at, "bezier"))?));
-    }
+/// The fields of `{"arc": {"center", "radius", "from", "to", "clockwise"}}`
+/// read exactly (no other key), and the path `at.arc` that names them.
+#[allow(clippy::type_complexity)]
+fn arc_fields(v: &Json, at: &str) -> Result<(String, (Q2, Rational, Q2, Q2, bool)), Invalid> {
     let [a] = exact_object(v, at, ["arc"])?;
     let at = join(at, "arc");
     let [c, rho, from, to, cw] =
@@ -979,14 +978,23 @@ fn read_piece(v: &Json, at: &str) -> Result<OPiece, Invalid> {
             ))
         }
     };
-    OPiece::arc(
+    let fields = (
         point(c, &|| join(&at, "center"))?,
         canonical_rational(rho, &join(&at, "radius"))?,
         point(from, &|| join(&at, "from"))?,
         point(to, &|| join(&at, "to"))?,
         cw,
-    )
-    .map_err(|e| inv(at, e))
+    );
+    Ok((at, fields))
+}
+
+fn read_piece(v: &Json, at: &str) -> Result<OPiece, Invalid> {
+    if let Some(b) = v.get("bezier") {
+        let [_] = exact_object(v, at, ["bezier"])?;
+        return Ok(OPiece::bezier(points(b, &join(at, "bezier"))?));
+    }
+    let (at, (c, rho, from, to, cw)) = arc_fields(v, at)?;
+    OPiece::arc(c, rho, from, to, cw).map_err(|e| inv(at, e))
 }
 
 /// One input piece: a Bézier's control points `[[x, y], ...]`, or
@@ -996,27 +1004,8 @@ fn read_curve_piece(v: &Json, at: &str) -> Result<CurvePiece, Invalid> {
     if v.as_array().is_some() {
         return Ok(CurvePiece::Bezier(points(v, at)?));
     }
-    let [a] = exact_object(v, at, ["arc"])?;
-    let at = join(at, "arc");
-    let [c, rho, from, to, cw] =
-        exact_object(a, &at, ["center", "radius", "from", "to", "clockwise"])?;
-    let cw = match cw {
-        Json::Bool(b) => *b,
-        o => {
-            return Err(inv(
-                join(&at, "clockwise"),
-                format!("expected true or false, found {}", o.describe()),
-            ))
-        }
-    };
-    CurvePiece::checked_arc(
-        point(c, &|| join(&at, "center"))?,
-        canonical_rational(rho, &join(&at, "radius"))?,
-        point(from, &|| join(&at, "from"))?,
-        point(to, &|| join(&at, "to"))?,
-        cw,
-    )
-    .map_err(|e| inv(at, e))
+    let (at, (c, rho, from, to, cw)) = arc_fields(v, at)?;
+    CurvePiece::checked_arc(c, rho, from, to, cw).map_err(|e| inv(at, e))
 }
 
 /// The outline's contours, each closed by exact shared end points.
