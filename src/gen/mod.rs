@@ -52,6 +52,8 @@
 
 use arbitrary::{Arbitrary, Result, Unstructured};
 
+pub mod hostile;
+
 /// A finite float from one of several stress distributions.
 pub fn coord(u: &mut Unstructured) -> Result<f64> {
     let x = match u.int_in_range(0u8..=4)? {

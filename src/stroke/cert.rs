@@ -1194,7 +1194,7 @@ fn span_of(v: &Value) -> Result<Span, Error> {
         return Ok(Span::Bez(r(&s[0])?, r(&s[1])?));
     }
     let d = &v["dirs"];
-    Ok(Span::Arc(
+    Ok(Span::arc(
         [r(&d[0][0])?, r(&d[0][1])?],
         [r(&d[1][0])?, r(&d[1][1])?],
     ))

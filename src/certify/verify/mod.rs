@@ -26,10 +26,15 @@
 //! `O(64²)` interval operations (64 control points per piece), and each number
 //! at most 4 096 characters of big-integer parsing.
 
+mod budget;
 mod eval;
+pub(crate) mod index;
 mod radial;
 mod read;
 pub mod stroke;
+
+pub(crate) use budget::Budget;
+pub use budget::{BASE_WORK, WORK_PER_BYTE};
 
 use super::cert::{CLAIM, FORMAT, VERSION, VERSION_2, VERSION_RADIAL};
 use crate::json::{parse, Json, Limits};
@@ -177,30 +182,42 @@ pub fn verify(text: &str) -> Result<Valid, Invalid> {
 }
 
 /// [`verify`] on a document already read by the crate's bounded JSON reader.
+///
+/// The check's work is bounded by the document's size: at most
+/// [`WORK_PER_BYTE`] work units per byte of its compact JSON, plus
+/// [`BASE_WORK`] (see `budget`); a document that needs more is refused as
+/// too costly to check.
 pub(crate) fn verify_json(doc: &Json) -> Result<Valid, Invalid> {
-    check_document(doc).map_err(top_level)
+    let budget = Budget::for_size(budget::json_size(doc));
+    let r = check_document(doc, &budget).map_err(top_level);
+    log::debug!(
+        "certificate: {} of {} work units used",
+        budget.used(),
+        budget.limit()
+    );
+    r
 }
 
 /// A Hausdorff certificate only (no other format): the first part of a
 /// stroke distance certificate.
-pub(crate) fn check_hausdorff_document(doc: &Json) -> Result<Valid, Invalid> {
+pub(crate) fn check_hausdorff_document(doc: &Json, budget: &Budget) -> Result<Valid, Invalid> {
     if doc.get("format").and_then(|f| f.as_str()) != Some(FORMAT) {
         return Err(inv("format", format!("expected \"{FORMAT}\"")));
     }
-    check_document(doc)
+    check_document(doc, budget)
 }
 
-fn check_document(doc: &Json) -> Result<Valid, Invalid> {
+fn check_document(doc: &Json, budget: &Budget) -> Result<Valid, Invalid> {
     // the format and version first: another format's keys are not errors of this one
     if let Some(format) = doc.get("format") {
         if format.as_str() == Some(stroke::FORMAT) {
-            return stroke::check(doc);
+            return stroke::check(doc, budget);
         }
         if format.as_str() == Some(stroke::DISTANCE_FORMAT) {
-            return stroke::check_distance(doc);
+            return stroke::check_distance(doc, budget);
         }
         if format.as_str() == Some(stroke::SET_FORMAT) {
-            return stroke::check_set(doc);
+            return stroke::check_set(doc, budget);
         }
         if format.as_str() != Some(FORMAT) {
             return Err(inv(

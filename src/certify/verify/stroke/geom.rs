@@ -7,6 +7,7 @@
 //! the stroke engine. The writer ([`crate::stroke::certificate`]) calls the same
 //! tests to choose its boxes, so what it writes is what this code accepts.
 
+use super::super::Budget;
 use crate::scalar::{interval_from_rational, ulp, Interval, Rational};
 
 /// A point or vector of intervals.
@@ -177,6 +178,17 @@ impl Bez {
     pub(crate) fn at(&self, t: Interval) -> P {
         casteljau(&self.pts, t)
     }
+    /// The control polygon's box, its ends rounded outward (`None` if not
+    /// finite): it holds the piece.
+    pub(crate) fn bbox(&self) -> Option<([f64; 2], [f64; 2])> {
+        self.bbox
+    }
+    /// The work of one enclosure of the piece over a box (de Casteljau
+    /// steps of its points and hodographs), in the budget's units.
+    pub(crate) fn work(&self) -> u64 {
+        let n = self.pts.len() as u64;
+        n * n
+    }
     pub(crate) fn d_at(&self, t: Interval) -> P {
         casteljau(&self.d, t)
     }
@@ -218,6 +230,11 @@ impl Bez {
 pub(crate) trait Path: Sync {
     fn val(&self, t: Interval) -> Option<P>;
     fn der(&self, t: Interval) -> Option<P>;
+    /// The work of one mean-value enclosure over a box, in the budget's
+    /// units (see `budget`).
+    fn work(&self) -> u64 {
+        1
+    }
 }
 
 /// The exact offset `x(t) + σ r J x′(t)/|x′(t)|` of one input piece.
@@ -252,6 +269,9 @@ impl Path for Side<'_> {
         let nd = sub(scale(dd, ic(1.0) / len), scale(d, dot(d, dd) / (n2 * len)));
         let e = add(d, scale(perp(nd), self.r * ic(self.sigma)));
         (finite(e[0]) && finite(e[1])).then_some(e)
+    }
+    fn work(&self) -> u64 {
+        self.b.work()
     }
 }
 
@@ -457,7 +477,7 @@ pub(crate) fn outside_near(
 ) -> Result<(), String> {
     for (j, b) in input.iter().enumerate() {
         let h = hint.filter(|h| h.0 == j).map(|h| h.1);
-        outside_bez(p, j, b, r2, h)?;
+        outside_bez(p, j, b, r2, h, &Budget::unlimited())?;
     }
     Ok(())
 }
@@ -470,16 +490,19 @@ pub(crate) fn outside_bez(
     b: &Bez,
     r2: Interval,
     hint: Option<f64>,
+    budget: &Budget,
 ) -> Result<(), String> {
     // (called with r2 = (r + μ)² for a disk of radius μ about p)
     let split = |g: Vec<Interval>| -> Result<(), String> {
+        let n = g.len() as u64;
+        budget.charge(n * n).map_err(|e| e.to_string())?;
         match hint {
             Some(u) if u > 0.0 && u < 1.0 => {
                 let (a, b) = split_at(&g, ic(u));
-                positive(a, j)?;
-                positive(b, j)
+                positive(a, j, budget)?;
+                positive(b, j, budget)
             }
-            _ => positive(g, j),
+            _ => positive(g, j, budget),
         }
     };
     // the control polygon's box: farther than r from p ⇒ the piece is
@@ -596,7 +619,10 @@ fn split_at(g: &[Interval], t: Interval) -> (Vec<Interval>, Vec<Interval>) {
     (left, right)
 }
 
-fn positive(g: Vec<Interval>, j: usize) -> Result<(), String> {
+/// Every Bernstein coefficient of `g` proven positive after subdivision;
+/// each subdivision charges `n²` units of `budget` (`n` coefficients).
+fn positive(g: Vec<Interval>, j: usize, budget: &Budget) -> Result<(), String> {
+    let n = g.len() as u64;
     let mut stack = vec![(g, 0u32)];
     let mut leaves = 0usize;
     while let Some((g, depth)) = stack.pop() {
@@ -613,6 +639,7 @@ fn positive(g: Vec<Interval>, j: usize) -> Result<(), String> {
                 "the point is not proven farther than r from input piece {j}"
             ));
         }
+        budget.charge(n * n).map_err(|e| e.to_string())?;
         let (a, b) = split_at(&g, ic(0.5));
         stack.push((a, depth + 1));
         stack.push((b, depth + 1));

@@ -88,8 +88,9 @@ pub(crate) mod geom;
 mod simple;
 pub(crate) use simple::{simple as simple_check, Span};
 
+use super::index::{BoxIndex, FBox};
 use super::read::{canonical_index, canonical_rational, exact_object, join};
-use super::{inv, Invalid, Valid};
+use super::{inv, Budget, Invalid, Valid};
 use crate::json::Json;
 use crate::scalar::Rational;
 use crate::shape::io::{MAX_CONTROL_POINTS, MAX_SEGMENTS};
@@ -140,7 +141,7 @@ pub const SET_CLAIM: &str = "every member's claim holds";
 pub const MAX_SET_MEMBERS: usize = 4096;
 
 /// Checks a set of stroke certificates: each member on its own.
-pub(crate) fn check_set(doc: &Json) -> Result<Valid, Invalid> {
+pub(crate) fn check_set(doc: &Json, budget: &Budget) -> Result<Valid, Invalid> {
     let [_f, version, claim, members] =
         exact_object(doc, "", ["format", "version", "claim", "members"])?;
     if !matches!(version, Json::Number(v) if *v == VERSION.to_string()) {
@@ -176,7 +177,7 @@ pub(crate) fn check_set(doc: &Json) -> Result<Valid, Invalid> {
                 format!("expected \"{FORMAT}\""),
             ));
         }
-        let v = check(cert).map_err(|e| {
+        let v = check(cert, budget).map_err(|e| {
             let w = format!("{at}.certificate");
             inv(if e.at.is_empty() { w } else { join(&w, &e.at) }, e.reason)
         })?;
@@ -223,7 +224,7 @@ pub const DISTANCE_KEYS: [&str; 6] = [
 
 /// Checks a stroke distance certificate: both parts valid, about the same
 /// outline, tolerances adding up to at most `tol`.
-pub(crate) fn check_distance(doc: &Json) -> Result<Valid, Invalid> {
+pub(crate) fn check_distance(doc: &Json, budget: &Budget) -> Result<Valid, Invalid> {
     let [_f, version, claim, tol, h, st] = exact_object(doc, "", DISTANCE_KEYS)?;
     if !matches!(version, Json::Number(v) if *v == VERSION.to_string()) {
         return Err(inv(
@@ -253,14 +254,14 @@ pub(crate) fn check_distance(doc: &Json) -> Result<Valid, Invalid> {
             inv(w, e.reason)
         }
     }
-    let vh = super::check_hausdorff_document(h).map_err(nest("shape_to_outline"))?;
+    let vh = super::check_hausdorff_document(h, budget).map_err(nest("shape_to_outline"))?;
     if st.get("format").and_then(|f| f.as_str()) != Some(FORMAT) {
         return Err(inv(
             "outline_to_stroke.format",
             format!("expected \"{FORMAT}\""),
         ));
     }
-    let vs = check(st).map_err(nest("outline_to_stroke"))?;
+    let vs = check(st, budget).map_err(nest("outline_to_stroke"))?;
     if &vh.tol + &vs.tol > tol {
         return Err(inv(
             "tol",
@@ -574,6 +575,32 @@ pub(crate) struct Input {
     /// Per piece: its control points all lie on the line through its end
     /// points (exactly), so its image holds the segment between them.
     pub(crate) straight: Vec<bool>,
+    /// The pieces' boxes (a Bézier's control polygon, an arc's circle),
+    /// indexed: a part's outside disk is tested only against the pieces
+    /// whose box is within its reach.
+    pub(crate) index: BoxIndex,
+    /// The work budget of the check (unlimited for the writer).
+    pub(crate) budget: Budget,
+}
+
+/// The box of one input piece, rounded outward: it holds the piece (a
+/// Bézier's control polygon's box; an arc's circle's box `c ± ρ`). An
+/// unbounded box when it is not finite (never pruned).
+fn piece_box(p: &InPiece) -> FBox {
+    let unbounded = ([f64::NEG_INFINITY; 2], [f64::INFINITY; 2]);
+    match p {
+        InPiece::Bez(b) => b.bbox().unwrap_or(unbounded),
+        InPiece::Arc { path, .. } => {
+            let r = path.r.mag();
+            let lo = [0, 1].map(|i| (path.c[i].inf() - r).next_down());
+            let hi = [0, 1].map(|i| (path.c[i].sup() + r).next_up());
+            if lo.iter().chain(&hi).all(|x| x.is_finite()) {
+                (lo, hi)
+            } else {
+                unbounded
+            }
+        }
+    }
 }
 
 /// Whether every control point of `p` lies on the line through its end points
@@ -659,12 +686,15 @@ impl Input {
                 }
             }
         }
+        let index = BoxIndex::new(pieces.iter().map(piece_box).collect());
         Ok(Input {
             curve,
             pieces,
             r,
             metric: None,
             straight,
+            index,
+            budget: Budget::unlimited(),
         })
     }
 
@@ -824,21 +854,25 @@ impl Path for OwnedSide {
         }
         .der(t)
     }
+    fn work(&self) -> u64 {
+        self.b.work()
+    }
 }
 
-/// One outline piece, exact and enclosed.
-#[allow(clippy::large_enum_variant)]
+/// One outline piece, exact and enclosed. (An arc's fields are boxed: an
+/// outline holds up to 100 000 pieces, most of them Béziers, and the enum
+/// is as large as its largest variant.)
 pub(crate) enum OPiece {
     Bezier {
         exact: Vec<Q2>,
         iv: Bez,
     },
     Arc {
-        start: Q2,
-        end: Q2,
-        ccw_u: Q2,
-        ccw_v: Q2,
-        t: ArcT,
+        start: Box<Q2>,
+        end: Box<Q2>,
+        ccw_u: Box<Q2>,
+        ccw_v: Box<Q2>,
+        t: Box<ArcT>,
         clockwise: bool,
     },
 }
@@ -882,11 +916,11 @@ impl OPiece {
             full: cu == cv,
         };
         Ok(OPiece::Arc {
-            start: from,
-            end: to,
-            ccw_u: cu,
-            ccw_v: cv,
-            t,
+            start: Box::new(from),
+            end: Box::new(to),
+            ccw_u: Box::new(cu),
+            ccw_v: Box::new(cv),
+            t: Box::new(t),
             clockwise,
         })
     }
@@ -955,10 +989,13 @@ fn points(v: &Json, at: &str) -> Result<Vec<Q2>, Invalid> {
             ),
         ));
     }
-    a.iter()
-        .enumerate()
-        .map(|(i, p)| point(p, &|| format!("{at}[{i}]")))
-        .collect()
+    // (collected at its exact size: a `Result` collect starts at 4 points,
+    // and most pieces are segments)
+    let mut out = Vec::with_capacity(a.len());
+    for (i, p) in a.iter().enumerate() {
+        out.push(point(p, &|| format!("{at}[{i}]"))?);
+    }
+    Ok(out)
 }
 
 /// The fields of `{"arc": {"center", "radius", "from", "to", "clockwise"}}`
@@ -1112,14 +1149,24 @@ pub(crate) fn check_part(
         }
     };
     let r2 = (r + mu_i).sqr();
-    for (j, p) in input.pieces.iter().enumerate() {
-        let h = (hint.0 == j).then_some(hint.1);
-        match p {
-            InPiece::Bez(b) => outside_bez(wi, j, b, r2, h),
-            InPiece::Arc { path, turn } => outside_arc(wi, j, path, *turn, r2),
-        }
-        .map_err(|e| format!("w: {e}"))?;
-    }
+    // the pieces within reach of the disk (every other piece's box is
+    // proven farther than r + μ from w, so the piece is)
+    let budget = &input.budget;
+    let visited = input.index.query(
+        |lo, hi| !geom::box_farther(*lo, *hi, wi, r2),
+        |j| {
+            let h = (hint.0 == j).then_some(hint.1);
+            match &input.pieces[j] {
+                InPiece::Bez(b) => outside_bez(wi, j, b, r2, h, budget),
+                InPiece::Arc { path, turn } => budget
+                    .charge(1)
+                    .map_err(|e| e.to_string())
+                    .and_then(|()| outside_arc(wi, j, path, *turn, r2)),
+            }
+            .map_err(|e| format!("w: {e}"))
+        },
+    )?;
+    budget.charge(visited).map_err(|e| e.to_string())?;
     let b = part_bound(hull, core, r, wi, mu_i);
     if b > tol.inf() {
         return Err(format!(
@@ -1224,7 +1271,7 @@ fn read_part<'j, 't>(
             chain.dir = Some(d1.clone());
             let h = arc_hull(t.c, t.rho, ip(&d0), ip(&d1))
                 .ok_or_else(|| inv(join(&atk(), "dirs"), "hull not finite"))?;
-            Ok((simple::Span::Arc(d0, d1), h, o, w))
+            Ok((simple::Span::arc(d0, d1), h, o, w))
         }
     }
 }
@@ -1270,6 +1317,10 @@ fn read_cover_piece<'j, 't>(v: &'j Json<'t>, at: &str, piece: &OPiece) -> PieceR
             return r;
         }
     };
+    // at their exact sizes (a piece has one part or a few)
+    r.spans.reserve_exact(parts.len());
+    r.hulls.reserve_exact(parts.len());
+    r.witnesses.reserve_exact(parts.len());
     let mut chain = Chain {
         s: Rational::zero(),
         dir: None,
@@ -1350,6 +1401,17 @@ pub(crate) fn check_bbox(
             .and_then(|ps| ps.get(i))
             .ok_or_else(|| format!("near: no outline piece {i} in contour {c}"))
     };
+    let target = match what {
+        BBox::NearBezier { contour, piece, .. } => match get(*contour, *piece) {
+            Ok(OPiece::Bezier { iv, .. }) => iv.work(),
+            _ => 1,
+        },
+        _ => 1,
+    };
+    input
+        .budget
+        .charge(path.work() + target)
+        .map_err(|e| e.to_string())?;
     match what {
         BBox::NearBezier {
             contour,
@@ -1522,8 +1584,8 @@ pub(crate) fn shapes(
                         ShapeDesc::arc(ArcDesc {
                             center: v(c),
                             radius: rho,
-                            from: v(ccw_u),
-                            to: v(ccw_v),
+                            from: v(*ccw_u),
+                            to: v(*ccw_v),
                         })
                         .map_err(shape_err(&at))?,
                     );
@@ -1599,7 +1661,7 @@ pub(crate) fn pre_outline(
 }
 
 /// Checks a stroke certificate (the format and version already read).
-pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
+pub(crate) fn check(doc: &Json, budget: &Budget) -> Result<Valid, Invalid> {
     let elliptic = doc.get("pen").is_some();
     let [_f, version, claim, tol, pen_or_radius, curve, outline, cover, boundary, simple_claim] =
         if elliptic {
@@ -1671,6 +1733,7 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
     }
     let mut input = Input::with_pieces(exact, r, "curve")?;
     input.metric = pen.as_ref().map(PenMap::metric);
+    input.budget = budget.clone();
     log::debug!(
         "stroke certificate: input and outline read in {:?}",
         t0.elapsed()
@@ -1746,16 +1809,16 @@ pub(crate) fn check(doc: &Json) -> Result<Valid, Invalid> {
                     if !(all_read && matches!(simple_claimed, Ok(true))) {
                         return None;
                     }
-                    let mut spans: Vec<Vec<Vec<simple::Span>>> =
-                        outline.iter().map(|_| Vec::new()).collect();
-                    let mut hulls: Vec<Vec<Vec<geom::Hull>>> =
+                    let mut parts: Vec<Vec<simple::PieceParts>> =
                         outline.iter().map(|_| Vec::new()).collect();
                     for (r, (c, _)) in reads.iter().zip(&contour_of) {
-                        spans[*c].push(r.spans.clone());
-                        hulls[*c].push(r.hulls.clone());
+                        parts[*c].push(simple::PieceParts {
+                            spans: &r.spans,
+                            hulls: Some(&r.hulls),
+                        });
                     }
                     Some(
-                        simple::simple_with(&outline, &spans, Some(&hulls))
+                        simple::simple_with(&outline, &parts, budget)
                             .map_err(|e| inv("simple", format!("claimed, but {e}"))),
                     )
                 },

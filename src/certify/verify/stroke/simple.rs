@@ -11,7 +11,12 @@
 //! consecutive ones, sharing the point `J`, must lie on the two sides of a
 //! line through `J`: every hull point but `J` strictly behind it for the
 //! first, strictly ahead for the second — then they meet only at `J`.
-//! Candidates come from a sweep over the segments' boxes.
+//! Candidates are the pairs whose boxes meet, found with a box index (work
+//! proportional to the pairs, memory to the segments: nothing is collected);
+//! a certificate with more than [`MAX_PAIRS_PER_PART`] candidate pairs per
+//! part (plus [`BASE_PAIRS`]) is refused before any is checked — a simple
+//! outline's parts meet only their neighbours and the parts across a thin
+//! place — and every bisection step is charged to the check's budget.
 //!
 //! The area `½∮(x dy − y dx)` is enclosed piece by piece: a Bézier's by its
 //! Bernstein coefficients (degree `2n − 1`, each integrating to `1/2n`), an
@@ -19,22 +24,51 @@
 //! (each `atan(cross/dot)` of directions less than `π/2` apart), which must be
 //! proven below `2π` so that the parts do not wind around more than the arc.
 
+use super::super::index::{meet, BoxIndex};
+use super::super::Budget;
 use super::geom::{arc_hull, bprod, ic, ip, iq, Bez, P};
 use super::{cross, dotq, OPiece, Q2};
 use crate::scalar::{atan_enclosure, Interval, Rational};
 use rayon::prelude::*;
+use std::borrow::Cow;
 
-/// The range of one part: a Bézier's parameters or an arc's radius directions.
+/// The range of one part: a Bézier's parameters or an arc's radius
+/// directions (boxed: most parts are Béziers', and every part of a
+/// certificate is held at once).
 #[derive(Clone, Debug)]
 pub(crate) enum Span {
     Bez(Rational, Rational),
-    Arc(Q2, Q2),
+    Arc(Box<Q2>, Box<Q2>),
+}
+
+impl Span {
+    /// An arc's part from the direction `d0` to `d1`.
+    pub(crate) fn arc(d0: Q2, d1: Q2) -> Span {
+        Span::Arc(Box::new(d0), Box::new(d1))
+    }
+}
+
+/// A part's span, borrowed from the certificate's parts or owned by a
+/// bisection (boxed: a pointer either way).
+enum SpanRef<'a> {
+    Ref(&'a Span),
+    Own(Box<Span>),
+}
+
+impl std::ops::Deref for SpanRef<'_> {
+    type Target = Span;
+    fn deref(&self) -> &Span {
+        match self {
+            SpanRef::Ref(s) => s,
+            SpanRef::Own(s) => s,
+        }
+    }
 }
 
 struct Seg<'a> {
     piece: &'a OPiece,
-    span: Span,
-    hull: Vec<P>,
+    span: SpanRef<'a>,
+    hull: Cow<'a, [P]>,
     lo: [f64; 2],
     hi: [f64; 2],
 }
@@ -47,14 +81,14 @@ fn hull_of(piece: &OPiece, span: &Span) -> Option<Vec<P>> {
     }
 }
 
-fn seg<'a>(piece: &'a OPiece, span: Span, hull: Option<Vec<P>>) -> Option<Seg<'a>> {
+fn seg<'a>(piece: &'a OPiece, span: SpanRef<'a>, hull: Option<&'a [P]>) -> Option<Seg<'a>> {
     let hull = match hull {
-        Some(h) => h,
-        None => hull_of(piece, &span)?,
+        Some(h) => Cow::Borrowed(h),
+        None => Cow::Owned(hull_of(piece, &span)?),
     };
     let mut lo = [f64::INFINITY; 2];
     let mut hi = [f64::NEG_INFINITY; 2];
-    for p in &hull {
+    for p in hull.iter() {
         for i in 0..2 {
             if p[i].is_empty() || !p[i].inf().is_finite() || !p[i].sup().is_finite() {
                 return None;
@@ -73,7 +107,7 @@ fn seg<'a>(piece: &'a OPiece, span: Span, hull: Option<Vec<P>>) -> Option<Seg<'a
 }
 
 fn halves<'a>(s: &Seg<'a>) -> Option<(Seg<'a>, Seg<'a>)> {
-    let (a, b) = match &s.span {
+    let (a, b) = match &*s.span {
         Span::Bez(s0, s1) => {
             let m = (s0 + s1) / Rational::from_integer(2.into());
             (Span::Bez(s0.clone(), m.clone()), Span::Bez(m, s1.clone()))
@@ -81,10 +115,16 @@ fn halves<'a>(s: &Seg<'a>) -> Option<(Seg<'a>, Seg<'a>)> {
         Span::Arc(d0, d1) => {
             // a positive combination: strictly between (less than π/2 apart)
             let m = [&d0[0] + &d1[0], &d0[1] + &d1[1]];
-            (Span::Arc(d0.clone(), m.clone()), Span::Arc(m, d1.clone()))
+            (
+                Span::Arc(d0.clone(), Box::new(m.clone())),
+                Span::Arc(Box::new(m), d1.clone()),
+            )
         }
     };
-    Some((seg(s.piece, a, None)?, seg(s.piece, b, None)?))
+    Some((
+        seg(s.piece, SpanRef::Own(Box::new(a)), None)?,
+        seg(s.piece, SpanRef::Own(Box::new(b)), None)?,
+    ))
 }
 
 fn mid(x: Interval) -> f64 {
@@ -99,7 +139,7 @@ fn dot(t: [f64; 2], p: P) -> Interval {
 /// along its chord (all restricted hodograph control points); a sub-arc of
 /// less than `π/2` is.
 fn injective(s: &Seg) -> bool {
-    match s.span {
+    match *s.span {
         Span::Arc(..) => true,
         Span::Bez(..) => {
             let h = &s.hull;
@@ -160,9 +200,23 @@ fn separated_at(p: &[P], q: &[P]) -> bool {
 
 const DEPTH: u32 = 12;
 
-fn apart(a: &Seg, b: &Seg, depth: u32) -> bool {
+/// Most candidate pairs (parts whose boxes meet) per part of the outline.
+pub const MAX_PAIRS_PER_PART: u64 = 64;
+/// Candidate pairs allowed to every outline, whatever its size.
+pub const BASE_PAIRS: u64 = 4096;
+
+/// The work of one separation test of two hulls, in the budget's units.
+fn work(a: &Seg, b: &Seg) -> u64 {
+    let n = (a.hull.len() + b.hull.len()) as u64;
+    n * n
+}
+
+fn apart(a: &Seg, b: &Seg, depth: u32, budget: &Budget) -> bool {
     if a.hi[0] < b.lo[0] || b.hi[0] < a.lo[0] || a.hi[1] < b.lo[1] || b.hi[1] < a.lo[1] {
         return true;
+    }
+    if budget.charge(work(a, b)).is_err() {
+        return false;
     }
     if disjoint(&a.hull, &b.hull) {
         return true;
@@ -173,13 +227,16 @@ fn apart(a: &Seg, b: &Seg, depth: u32) -> bool {
     let size = |s: &Seg| (s.hi[0] - s.lo[0]).max(s.hi[1] - s.lo[1]);
     let (big, small) = if size(a) >= size(b) { (a, b) } else { (b, a) };
     match halves(big) {
-        Some((x, y)) => apart(&x, small, depth + 1) && apart(&y, small, depth + 1),
+        Some((x, y)) => apart(&x, small, depth + 1, budget) && apart(&y, small, depth + 1, budget),
         None => false,
     }
 }
 
 /// `a` ends where `b` starts: they meet only there.
-fn touch_once(a: &Seg, b: &Seg, depth: u32) -> bool {
+fn touch_once(a: &Seg, b: &Seg, depth: u32, budget: &Budget) -> bool {
+    if budget.charge(work(a, b)).is_err() {
+        return false;
+    }
     if separated_at(&a.hull, &b.hull) {
         return true;
     }
@@ -189,12 +246,21 @@ fn touch_once(a: &Seg, b: &Seg, depth: u32) -> bool {
     // the far halves are apart from the other part, the near halves recurse
     match (halves(a), halves(b)) {
         (Some((a0, a1)), Some((b0, b1))) => {
-            apart(&a0, b, depth + 1)
-                && apart(&a1, &b1, depth + 1)
-                && touch_once(&a1, &b0, depth + 1)
+            apart(&a0, b, depth + 1, budget)
+                && apart(&a1, &b1, depth + 1, budget)
+                && touch_once(&a1, &b0, depth + 1, budget)
         }
         _ => false,
     }
+}
+
+/// One outline piece's parts for claim (c): their spans, in order, and
+/// their hulls when the caller has them already (as `hull_of` computes them
+/// from the same spans — claim (a) does).
+#[derive(Clone, Copy)]
+pub(crate) struct PieceParts<'a> {
+    pub(crate) spans: &'a [Span],
+    pub(crate) hulls: Option<&'a [Vec<P>]>,
 }
 
 /// Claim (c) on the outline whose parts are `spans` (per contour, per piece,
@@ -203,27 +269,38 @@ pub(crate) fn simple(
     outline: &[Vec<OPiece>],
     spans: &[Vec<Vec<Span>>],
 ) -> Result<Vec<bool>, String> {
-    simple_with(outline, spans, None)
+    let parts: Vec<Vec<PieceParts>> = spans
+        .iter()
+        .map(|c| {
+            c.iter()
+                .map(|s| PieceParts {
+                    spans: s,
+                    hulls: None,
+                })
+                .collect()
+        })
+        .collect();
+    simple_with(outline, &parts, &Budget::unlimited())
 }
 
-/// [`simple`] with the parts' hulls when the caller has them already
-/// (`hulls[c][i][k]`: part `k` of piece `i` of contour `c`, as `hull_of`
-/// computes it from the same span — claim (a) does).
+/// [`simple`] on the parts as [`PieceParts`] (`parts[c][i]`: piece `i` of
+/// contour `c`), the work charged to `budget`. Nothing is copied: the
+/// segments borrow the spans and hulls.
 pub(crate) fn simple_with(
     outline: &[Vec<OPiece>],
-    spans: &[Vec<Vec<Span>>],
-    hulls: Option<&[Vec<Vec<Vec<P>>>]>,
+    parts: &[Vec<PieceParts>],
+    budget: &Budget,
 ) -> Result<Vec<bool>, String> {
-    // the segments in travel order per contour: (contour, index in contour)
+    // the segments in travel order per contour:
     // (contour, index in contour, piece, span, its hull if given)
-    type Flat<'a> = (usize, usize, &'a OPiece, &'a Span, Option<&'a Vec<P>>);
+    type Flat<'a> = (usize, usize, &'a OPiece, &'a Span, Option<&'a [P]>);
     let mut flat: Vec<Flat> = Vec::new();
     let mut count = Vec::new();
-    for (c, (pieces, sp)) in outline.iter().zip(spans).enumerate() {
+    for (c, (pieces, pp)) in outline.iter().zip(parts).enumerate() {
         let mut k = 0;
-        for (i, (piece, parts)) in pieces.iter().zip(sp).enumerate() {
-            for (l, s) in parts.iter().enumerate() {
-                let h = hulls.and_then(|h| h.get(c)?.get(i)?.get(l));
+        for (piece, p) in pieces.iter().zip(pp) {
+            for (l, s) in p.spans.iter().enumerate() {
+                let h = p.hulls.and_then(|h| h.get(l)).map(|h| h.as_slice());
                 flat.push((c, k, piece, s, h));
                 k += 1;
             }
@@ -236,7 +313,7 @@ pub(crate) fn simple_with(
     let segs: Vec<(usize, usize, Seg)> = flat
         .into_par_iter()
         .map(|(c, k, piece, s, h)| {
-            let sg = seg(piece, s.clone(), h.cloned()).ok_or("a part's hull is not finite")?;
+            let sg = seg(piece, SpanRef::Ref(s), h).ok_or("a part's hull is not finite")?;
             if !injective(&sg) {
                 return Err(format!("part {k} of contour {c} is not proven injective"));
             }
@@ -248,48 +325,89 @@ pub(crate) fn simple_with(
     let adjacent = |(c1, k1): (usize, usize), (c2, k2): (usize, usize)| {
         c1 == c2 && ((k1 + 1) % count[c1] == k2 || (k2 + 1) % count[c1] == k1)
     };
-    // the sweep's candidate pairs (boxes overlapping in x), then each pair
-    // decided, in parallel; the first failing pair in sweep order is reported
-    let mut order: Vec<usize> = (0..segs.len()).collect();
-    order.sort_by(|&a, &b| segs[a].2.lo[0].total_cmp(&segs[b].2.lo[0]));
-    let mut pairs: Vec<(usize, usize)> = Vec::new();
-    for (oi, &i) in order.iter().enumerate() {
+    let count_of = |c: usize| count[c];
+    // the candidate pairs: parts `j > i` whose boxes meet part `i`'s, found
+    // through the index (never collected). First counted, and refused when
+    // there are too many; then each decided, in parallel over `i`, the
+    // first failing pair in the order of `(i, j)` reported.
+    let index = BoxIndex::new(segs.iter().map(|s| (s.2.lo, s.2.hi)).collect());
+    let later = |i: usize, f: &mut dyn FnMut(usize)| -> Result<(), String> {
         let si = &segs[i].2;
-        for &j in &order[oi + 1..] {
-            if segs[j].2.lo[0] > si.hi[0] {
-                break;
-            }
-            pairs.push((i, j));
-        }
-    }
-    let failed = pairs.par_iter().find_first(|&&(i, j)| {
-        let (ci, ki, si) = &segs[i];
-        let (cj, kj, sj) = &segs[j];
-        !if adjacent((*ci, *ki), (*cj, *kj)) {
-            if (ki + 1) % count[*ci] == *kj {
-                touch_once(si, sj, 0)
-            } else {
-                touch_once(sj, si, 0)
-            }
-        } else {
-            apart(si, sj, 0)
-        }
-    });
-    if let Some(&(i, j)) = failed {
-        let ((ci, ki, _), (cj, kj, _)) = (&segs[i], &segs[j]);
+        let visited = index.query(
+            |lo, hi| meet(&(si.lo, si.hi), lo, hi),
+            |j| {
+                if j > i {
+                    f(j);
+                }
+                Ok::<(), std::convert::Infallible>(())
+            },
+        );
+        let Ok(visited) = visited;
+        budget.charge(visited).map_err(|e| e.to_string())
+    };
+    let n = segs.len() as u64;
+    let limit = MAX_PAIRS_PER_PART
+        .saturating_mul(n)
+        .saturating_add(BASE_PAIRS);
+    let count = (0..segs.len())
+        .into_par_iter()
+        .map(|i| {
+            let mut k = 0u64;
+            later(i, &mut |_| k += 1).map(|()| k)
+        })
+        .try_reduce(|| 0, |a, b| Ok(a + b))?;
+    log::debug!("stroke certificate (c): {count} candidate pairs of {n} parts (limit {limit})");
+    if count > limit {
         return Err(format!(
-            "parts {ki} of contour {ci} and {kj} of contour {cj} are not proven apart (except at a shared end)"
+            "the outline's {n} parts have {count} pairs whose boxes meet, more than the {limit} a simple outline may have ({MAX_PAIRS_PER_PART} per part + {BASE_PAIRS}): too costly to check"
         ));
+    }
+    let failed = (0..segs.len()).into_par_iter().find_map_first(|i| {
+        let mut js = Vec::new();
+        if let Err(e) = later(i, &mut |j| js.push(j)) {
+            return Some(Err(e));
+        }
+        js.sort_unstable();
+        let (ci, ki, si) = &segs[i];
+        for j in js {
+            let (cj, kj, sj) = &segs[j];
+            let ok = if adjacent((*ci, *ki), (*cj, *kj)) {
+                if (ki + 1) % count_of(*ci) == *kj {
+                    touch_once(si, sj, 0, budget)
+                } else {
+                    touch_once(sj, si, 0, budget)
+                }
+            } else {
+                apart(si, sj, 0, budget)
+            };
+            if !ok {
+                return Some(Ok((i, j)));
+            }
+        }
+        None
+    });
+    if budget.spent() {
+        return Err(budget.exhausted().to_string());
+    }
+    match failed {
+        Some(Err(e)) => return Err(e),
+        Some(Ok((i, j))) => {
+            let ((ci, ki, _), (cj, kj, _)) = (&segs[i], &segs[j]);
+            return Err(format!(
+                "parts {ki} of contour {ci} and {kj} of contour {cj} are not proven apart (except at a shared end)"
+            ));
+        }
+        None => {}
     }
     // orientation: the sign of the enclosed area
     outline
         .iter()
-        .zip(spans)
+        .zip(parts)
         .enumerate()
-        .map(|(c, (pieces, sp))| {
+        .map(|(c, (pieces, pp))| {
             let mut area = ic(0.0);
-            for (piece, parts) in pieces.iter().zip(sp) {
-                area += area_term(piece, parts)
+            for (piece, p) in pieces.iter().zip(pp) {
+                area += area_term(piece, p.spans)
                     .ok_or_else(|| format!("contour {c}: an area term is not finite"))?;
             }
             if area.inf() > 0.0 {
@@ -428,16 +546,16 @@ mod tests {
         let b = OPiece::arc(c, q("1"), [q("-1"), q("0")], [q("1"), q("0")], false).unwrap();
         let d = |x: &str, y: &str| [q(x), q(y)];
         let upper = vec![
-            Span::Arc(d("1", "0"), d("1", "1")),
-            Span::Arc(d("1", "1"), d("0", "1")),
-            Span::Arc(d("0", "1"), d("-1", "1")),
-            Span::Arc(d("-1", "1"), d("-1", "0")),
+            Span::arc(d("1", "0"), d("1", "1")),
+            Span::arc(d("1", "1"), d("0", "1")),
+            Span::arc(d("0", "1"), d("-1", "1")),
+            Span::arc(d("-1", "1"), d("-1", "0")),
         ];
         let lower = vec![
-            Span::Arc(d("-1", "0"), d("-1", "-1")),
-            Span::Arc(d("-1", "-1"), d("0", "-1")),
-            Span::Arc(d("0", "-1"), d("1", "-1")),
-            Span::Arc(d("1", "-1"), d("1", "0")),
+            Span::arc(d("-1", "0"), d("-1", "-1")),
+            Span::arc(d("-1", "-1"), d("0", "-1")),
+            Span::arc(d("0", "-1"), d("1", "-1")),
+            Span::arc(d("1", "-1"), d("1", "0")),
         ];
         assert_eq!(
             simple(&[vec![a, b]], &[vec![upper.clone(), lower.clone()]]),

@@ -1216,7 +1216,7 @@ mod geom_edges {
         let f = [q(from.0), q(from.1)];
         let t = [q(to.0), q(to.1)];
         match OPiece::arc(c, q("1"), f, t, clockwise).unwrap() {
-            OPiece::Arc { t, .. } => t,
+            OPiece::Arc { t, .. } => *t,
             OPiece::Bezier { .. } => unreachable!(),
         }
     }
@@ -1853,4 +1853,25 @@ fn a_doubled_contour_is_not_simple() {
     doc["simple"] = json!(false);
     let v = check(&doc).expect("(a) and (b) hold for the doubled outline");
     assert!(v.a.contains("simplicity not claimed"), "{}", v.a);
+}
+
+/// The work budget: a genuine certificate verifies within its size's budget
+/// (using a small fraction of it), and the same certificate is refused as
+/// too costly under a budget below the work it needs.
+#[test]
+fn a_certificate_beyond_its_budget_is_refused_as_too_costly() {
+    use super::super::Budget;
+    let f = fixture(CUBIC);
+    let text = f.cert.to_string();
+    let doc = crate::json::parse(&text, &crate::json::Limits::DEFAULT).unwrap();
+    let size = super::super::budget::json_size(&doc);
+    let budget = Budget::for_size(size);
+    assert!(super::check(&doc, &budget).is_ok());
+    let used = budget.used();
+    assert!(used > 0, "the check charged nothing");
+    // genuine certificates use a few units per byte
+    assert!(used < 8 * size as u64, "{used} units for {size} bytes");
+    let tight = Budget::with_limit(used / 2);
+    let e = super::check(&doc, &tight).unwrap_err();
+    assert!(e.reason.contains("too costly"), "{e}");
 }

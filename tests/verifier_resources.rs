@@ -1,0 +1,40 @@
+//! The stroke verifier on hostile certificates (`lncert::gen::hostile`):
+//! documents built so that a verifier whose work multiplies two sizes runs
+//! for minutes or takes gigabytes. Each is a true claim: it must verify, and
+//! the verifier's work is bounded by its size (the budget of
+//! `lncert::certify::verify::WORK_PER_BYTE`), or it is refused as too costly.
+use lncert::gen::hostile;
+
+/// 2 000 rectangles stacked in y: 8 000 outline parts, every pair
+/// overlapping in x (a sweep in x alone lists 32 million candidate pairs).
+#[test]
+fn stacked_rectangles_verify() {
+    let doc = hostile::stacked_rectangles(2000);
+    let v = lncert::verify(&doc).unwrap();
+    assert!(v.a.contains("2000 closed contour(s)"), "{}", v.a);
+    assert!(
+        v.a.contains("simple and disjoint, 2000 counter-clockwise"),
+        "{}",
+        v.a
+    );
+}
+
+/// 3 000 input pieces far from a 3 000-part outline: the index tests each
+/// witness against nothing.
+#[test]
+fn far_pieces_verify() {
+    let doc = hostile::far_pieces(3000);
+    let v = lncert::verify(&doc).unwrap();
+    assert!(v.b.contains("3000 Bézier piece(s)"), "{}", v.b);
+}
+
+/// Witnesses that almost touch every copy of a wiggly piece: verified or
+/// refused, never a panic; a refusal names its field and reason.
+#[test]
+fn wiggly_witnesses_are_decided() {
+    let doc = hostile::wiggly_witnesses(40, 20, 16);
+    match lncert::verify(&doc) {
+        Ok(v) => assert!(v.a.contains("1 closed contour(s)"), "{}", v.a),
+        Err(e) => assert!(!e.at.is_empty() && !e.reason.is_empty(), "{e:?}"),
+    }
+}
