@@ -36,7 +36,8 @@ use crate::json::Json;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
 
-/// Work units allowed per byte of the document (its [`json_size`]).
+/// Work units allowed per byte of the document (its length as compact JSON:
+/// whitespace counts nothing).
 pub const WORK_PER_BYTE: u64 = 48;
 /// Work units allowed to every document, whatever its size.
 pub const BASE_WORK: u64 = 1 << 21;
