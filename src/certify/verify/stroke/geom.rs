@@ -13,8 +13,11 @@ use crate::scalar::{interval_from_rational, ulp, Interval, Rational};
 /// A point or vector of intervals.
 pub(crate) type P = [Interval; 2];
 
+/// The point interval `[x, x]`; the whole line when `x` is not finite (an
+/// overflowed hint or bound: every test then fails, undecided, instead of
+/// panicking — issue 65).
 pub(crate) fn ic(x: f64) -> Interval {
-    Interval::try_from((x, x)).expect("finite constant")
+    Interval::try_from((x, x)).unwrap_or(Interval::ENTIRE)
 }
 
 pub(crate) fn iq(r: &Rational) -> Interval {
@@ -742,4 +745,35 @@ pub(crate) fn segment_param(a: P, b: P, q: P) -> f64 {
 /// `√x` rounded up (for reporting a bound from its square's sup).
 pub(crate) fn sqrt_up(x: f64) -> f64 {
     x.sqrt().next_up()
+}
+
+#[cfg(test)]
+mod overflow_tests {
+    use super::*;
+
+    /// Issue 65: a boundary derivative near the top of the float range made
+    /// `dot(w, d)` overflow and `near_arc` panicked building a point
+    /// interval from ∞. It is now an ordinary failure of the box.
+    #[test]
+    fn near_arc_with_overflowing_enclosures_fails_without_panicking() {
+        assert_eq!(ic(f64::INFINITY), Interval::ENTIRE);
+        assert_eq!(ic(f64::NAN), Interval::ENTIRE);
+        let path = ConeArc {
+            c: [ic(0.0), ic(0.0)],
+            r: ic(2e299),
+            a: [ic(1e-100), ic(0.0)],
+            b: [ic(0.0), ic(1e-100)],
+        };
+        let arc = ArcT {
+            c: [ic(-5e299), ic(-5e299)],
+            rho: ic(1e299),
+            u: [ic(1.0), ic(0.0)],
+            v: [ic(1.0), ic(0.0)],
+            sign: 0,
+            full: true,
+        };
+        let t = |x: f64| crate::scalar::rational_from_f64(x).unwrap();
+        let bx = BoxT::new(&t(0.0), &t(0.5));
+        assert!(near_arc(&path, &bx, &arc, ic(1e296)).is_err());
+    }
 }
