@@ -28,13 +28,14 @@ fn far_pieces_verify() {
     assert!(v.b.contains("3000 Bézier piece(s)"), "{}", v.b);
 }
 
-/// Witnesses that almost touch every copy of a wiggly piece: verified or
-/// refused, never a panic; a refusal names its field and reason.
+/// Witnesses that almost touch every copy of a wiggly piece: claim (a)'s
+/// 40 parts × 20 copies of Bernstein exclusions pass within the document's
+/// budget; the refusal comes from claim (b)'s coarse boxes on the singular
+/// offset (claim (a) is reported first, so it passed), not from the budget.
 #[test]
-fn wiggly_witnesses_are_decided() {
+fn wiggly_witnesses_pass_claim_a_within_the_budget() {
     let doc = hostile::wiggly_witnesses(40, 20, 16);
-    match lncert::verify(&doc) {
-        Ok(v) => assert!(v.a.contains("1 closed contour(s)"), "{}", v.a),
-        Err(e) => assert!(!e.at.is_empty() && !e.reason.is_empty(), "{e:?}"),
-    }
+    let e = lncert::verify(&doc).unwrap_err();
+    assert!(e.at.starts_with("boundary"), "{e}");
+    assert!(!e.reason.contains("too costly"), "{e}");
 }
