@@ -262,6 +262,75 @@ fn distance_certificate_of_another_outline_verifies() {
         .replace("\"1/2\"", "\"3/5\"");
     d["shape_to_outline"]["b"] = serde_json::from_str(&b).unwrap();
     refused_at(d, "shape_to_outline");
+
+    // issue 65: `verify --against X STROKE.json` (either order, as `hausdorff`
+    // takes them) confirms the shape, the curve and the pen of a distance
+    // certificate; `--against X CURVE --pen circle:R` the same
+    let verify = |extra: &[&str]| {
+        let mut args = vec!["verify", cert.to_str().unwrap(), "--json"];
+        args.extend_from_slice(extra);
+        let o = lncert(&args);
+        let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap_or_default();
+        (o.status.code(), v)
+    };
+    let (xs, ss) = (x.to_str().unwrap(), stroke.to_str().unwrap());
+    let curve = tmp("sd-curve.txt", "M 0 0 L 4 0");
+    for args in [
+        vec!["--against", xs, ss],
+        vec!["--against", ss, xs],
+        vec!["--against", ss],
+        vec![
+            "--against",
+            xs,
+            curve.to_str().unwrap(),
+            "--pen",
+            "circle:1/2",
+            "--tol",
+            "1/4",
+        ],
+    ] {
+        let (code, v) = verify(&args);
+        assert_eq!(code, Some(0), "{args:?}: {v}");
+    }
+    let wide = tmp(
+        "sd-stroke-wide.json",
+        r#"{"stroke": {"curve": "M 0 0 L 4 0", "pen": {"circle": "3/5"}}}"#,
+    );
+    let longer = tmp(
+        "sd-stroke-long.json",
+        r#"{"stroke": {"curve": "M 0 0 L 5 0", "pen": {"circle": "1/2"}}}"#,
+    );
+    let other_x = tmp(
+        "sd-x2.txt",
+        "M -0.5 -0.52 L 4.5 -0.51 L 4.5 0.51 L -0.5 0.51 Z",
+    );
+    for (args, at) in [
+        (
+            vec!["--against", xs, wide.to_str().unwrap()],
+            "outline_to_stroke.radius",
+        ),
+        (
+            vec!["--against", xs, longer.to_str().unwrap()],
+            "outline_to_stroke.curve",
+        ),
+        (
+            vec!["--against", other_x.to_str().unwrap(), ss],
+            "shape_to_outline.a",
+        ),
+        (vec!["--tol", "1/5"], "tol"),
+    ] {
+        let (code, v) = verify(&args);
+        assert_eq!(
+            (code, v["at"].as_str()),
+            (Some(1), Some(at)),
+            "{args:?}: {v}"
+        );
+    }
+    // a --pen that contradicts the stroke given: a usage error
+    assert_eq!(
+        verify(&["--against", xs, ss, "--pen", "circle:1"]).0,
+        Some(2)
+    );
 }
 
 /// Glyphs: a certificate for DejaVu Sans `A` (straight pieces whose foot maps
@@ -328,6 +397,25 @@ fn elliptical_pen_certificates_verify() {
     let out = String::from_utf8_lossy(&v.stdout);
     assert_eq!(v.status.code(), Some(0), "{out}");
     assert!(out.contains("≤ 1/100") && out.contains("M = [["), "{out}");
+    // --pen: the pen as `stroke` builds it at this tolerance is the
+    // certificate's; another rotation, or no --tol to build it at, is not
+    let pen_check = |pen: &str, tol: Option<&str>| {
+        let mut args = vec!["verify", cert.to_str().unwrap(), "--pen", pen, "--json"];
+        if let Some(t) = tol {
+            args.extend(["--tol", t]);
+        }
+        let o = lncert(&args);
+        let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap_or_default();
+        (o.status.code(), v)
+    };
+    let (code, v) = pen_check("ellipse:0.7,0.3,pi/6", Some("1e-2"));
+    assert_eq!(code, Some(0), "{v}");
+    assert_eq!(v["confirmed"], serde_json::json!(["pen", "tol"]), "{v}");
+    let (code, v) = pen_check("ellipse:0.7,0.3,pi/5", Some("1e-2"));
+    assert_eq!((code, v["at"].as_str()), (Some(1), Some("pen")), "{v}");
+    let (code, v) = pen_check("circle:0.7", Some("1e-2"));
+    assert_eq!((code, v["at"].as_str()), (Some(1), Some("pen")), "{v}");
+    assert_eq!(pen_check("ellipse:0.7,0.3,pi/6", None).0, Some(2));
     let doc: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&cert).unwrap()).unwrap();
     let m = &doc["pen"]["ellipse"];
@@ -460,6 +548,66 @@ fn svg_document_certificate_set_verifies() {
         doc.to_str().unwrap(),
     ]);
     assert_eq!(o.status.code(), Some(1));
+    // --pen confirms every member's pen: the polyline's is not the circle's
+    let o = lncert(&[
+        "verify",
+        cert.to_str().unwrap(),
+        "--pen",
+        "circle:1",
+        "--json",
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["at"], "members[1].certificate.radius", "{v}");
+    let o = lncert(&["verify", cert.to_str().unwrap(), "--tol", "1/100"]);
+    assert_eq!(o.status.code(), Some(0));
+}
+
+/// Issue 65: `verify --against CURVE --pen circle:R --tol T` confirms the
+/// curve, the pen and the tolerance of a stroke certificate: each mismatch
+/// is invalid (exit 1) at its field; a smaller proven tolerance proves a
+/// larger one; the same pen given as an ellipse is the same pen.
+#[test]
+fn verify_confirms_the_pen_and_the_tolerance() {
+    let (curve, cert) = cert_of("pt");
+    let other = tmp("pt-other.txt", "M 0 0 C 1 2 3 2 4 0 L 5 2");
+    let run = |extra: &[&str]| {
+        let mut args = vec!["verify", cert.to_str().unwrap(), "--json"];
+        args.extend_from_slice(extra);
+        let o = lncert(&args);
+        let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap_or_default();
+        (o.status.code(), v)
+    };
+    let c = curve.to_str().unwrap();
+    let (code, v) = run(&["--against", c, "--pen", "circle:0.5", "--tol", "2e-2"]);
+    assert_eq!(code, Some(0), "{v}");
+    assert_eq!(v["confirmed"], serde_json::json!(["shapes", "pen", "tol"]));
+    // a larger tolerance is proven too; the disk as a round ellipse is the disk
+    assert_eq!(run(&["--tol", "1/10"]).0, Some(0));
+    assert_eq!(
+        run(&["--pen", "ellipse:1/2,1/2", "--tol", "2e-2"]).0,
+        Some(0)
+    );
+    for (extra, at) in [
+        (vec!["--pen", "circle:1/3"], "radius"),
+        (vec!["--pen", "ellipse:1,1/2", "--tol", "2e-2"], "radius"),
+        (vec!["--tol", "1e-2"], "tol"),
+        (vec!["--against", other.to_str().unwrap()], "curve"),
+    ] {
+        let (code, v) = run(&extra);
+        assert_eq!(
+            (code, v["at"].as_str()),
+            (Some(1), Some(at)),
+            "{extra:?}: {v}"
+        );
+    }
+    // bad options are usage errors, before any work
+    assert_eq!(run(&["--pen", "circle:-1"]).0, Some(2));
+    assert_eq!(run(&["--tol", "0"]).0, Some(2));
+    // the text report says what was confirmed
+    let o = lncert(&["verify", cert.to_str().unwrap(), "--pen", "circle:1/2"]);
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(out.contains("the pen is the disk of radius 1/2"), "{out}");
 }
 
 /// `verify --against` takes the outline as the user has it: the SVG that

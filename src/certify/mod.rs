@@ -50,7 +50,7 @@ pub use arcquad::circular_arc_quadratics;
 pub use cert::{Certificate, MapCover};
 pub use param::{ParamBox, Parametric};
 pub use radial::{RadialCell, RadialProof};
-pub use same::verify_against;
+pub use same::{verify_against, verify_expecting, Expected};
 
 pub use search::{Config, CoverBox, OneSided};
 

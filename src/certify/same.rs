@@ -23,6 +23,7 @@ use crate::json::{parse, Limits};
 use crate::poly::binomial_big;
 use crate::scalar::Rational;
 use crate::shape::{ArcDesc, EllipseArcDesc, ShapeDesc};
+use crate::stroke::PenShape;
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 
@@ -348,50 +349,234 @@ fn same_ellipse_arc(a: &EllipseArcDesc, b: &EllipseArcDesc) -> Result<(), String
 /// assert_eq!(verify_against(&text, &a, &b_dot).unwrap_err().at, "b");
 /// ```
 pub fn verify_against(text: &str, a: &ShapeDesc, b: &ShapeDesc) -> Result<Valid, Invalid> {
+    verify_expecting(
+        text,
+        &Expected {
+            a: Some(a),
+            b: Some(b),
+            ..Expected::default()
+        },
+    )
+}
+
+/// What a user expects a certificate to state, for [`verify_expecting`]: each
+/// field given is confirmed, each left `None` is not looked at.
+///
+/// | format | `a` | `b` | `pen` |
+/// |---|---|---|---|
+/// | Hausdorff / offset certificate | its `a` | its `b` | — (refused) |
+/// | stroke certificate | its outline | its curve | its pen |
+/// | stroke distance certificate | its shape `X` | the stroke certificate's curve | its pen |
+/// | certificate set | — (refused) | — (refused) | every member's pen |
+#[derive(Clone, Debug, Default)]
+pub struct Expected<'a> {
+    /// Shape `A` (see the table).
+    pub a: Option<&'a ShapeDesc>,
+    /// Shape `B`: for stroke certificates, the stroked curve.
+    pub b: Option<&'a ShapeDesc>,
+    /// The pen of a stroke claim. Two pens are the same set `M · disk(1)`
+    /// exactly when their `Q = M Mᵀ` are equal (a disk of radius `r` is `Q =
+    /// r² I`): a certificate stating another pen is invalid at `radius` or `pen`.
+    pub pen: Option<&'a PenShape>,
+    /// The tolerance the user needs: the certificate must prove `d_H ≤ tol'`
+    /// with `tol' ≤ tol` (a smaller proven tolerance proves this one too), or
+    /// it is invalid at `tol`.
+    pub tol: Option<&'a Rational>,
+}
+
+/// `Q = M Mᵀ` of a pen, `[q₁₁, q₁₂, q₂₂]`.
+fn pen_form(p: &PenShape) -> [Rational; 3] {
+    match p {
+        PenShape::Circle(r) => {
+            let r2 = r * r;
+            [r2.clone(), Rational::zero(), r2]
+        }
+        PenShape::Ellipse(pen) => pen.q.clone(),
+    }
+}
+
+fn describe_q(q: &[Rational; 3]) -> String {
+    if q[1].is_zero() && q[0] == q[2] {
+        match rational_root(&q[0], 2) {
+            Some(r) => format!("the disk of radius {r}"),
+            None => format!("the disk of radius √({})", q[0]),
+        }
+    } else {
+        format!(
+            "the ellipse with Q = M Mᵀ = [[{}, {}], [{}, {}]]",
+            q[0], q[1], q[1], q[2]
+        )
+    }
+}
+
+/// Confirms that a valid stroke certificate (`doc`, at `at`) states `pen`.
+fn confirm_pen(doc: &crate::json::Json, at: &str, pen: &PenShape) -> Result<(), Invalid> {
+    let nest = |k: &str| {
+        if at.is_empty() {
+            k.to_string()
+        } else {
+            format!("{at}.{k}")
+        }
+    };
+    let key = if doc.get("pen").is_some() {
+        "pen"
+    } else {
+        "radius"
+    };
+    let theirs = super::verify::stroke::pen_q(doc).map_err(|e| Invalid {
+        at: nest(&e.at),
+        reason: e.reason,
+    })?;
+    let mine = pen_form(pen);
+    if theirs != mine {
+        return Err(Invalid {
+            at: nest(key),
+            reason: format!(
+                "the certificate's pen is {}, not the pen given ({})",
+                describe_q(&theirs),
+                describe_q(&mine)
+            ),
+        });
+    }
+    Ok(())
+}
+
+/// Compares the stated shape `theirs` (at `key`) with `mine` (`--against` `which`).
+fn confirm_shape(
+    theirs: &ShapeDesc,
+    mine: &ShapeDesc,
+    key: &str,
+    which: &str,
+) -> Result<(), Invalid> {
+    theirs.same_as(mine).map_err(|why| Invalid {
+        at: key.into(),
+        reason: format!(
+            "the certificate is about another {} than --against {which}: {why}",
+            key.rsplit('.').next().unwrap_or(key)
+        ),
+    })
+}
+
+/// Verifies a certificate of any format ([`super::verify::verify`]) and then
+/// confirms that it states what the user expects: the shapes, the pen and
+/// the tolerance of [`Expected`] (`lncert verify CERT --against … --pen …
+/// --tol …`). A valid certificate about anything else is [`Invalid`] at the
+/// field that differs.
+///
+/// # Examples
+/// ```
+/// use lncert::certify::{verify_expecting, Expected};
+/// use lncert::shape::ShapeDesc;
+/// use lncert::stroke::{certificate, stroke, PenShape, StrokeOptions};
+/// let q = |s: &str| lncert::parse_rational(s).unwrap();
+/// let x = lncert::parse_curve("M 0 0 L 4 0").unwrap();
+/// let s = stroke(&x, &StrokeOptions::new(q("1/2"), "0.01".parse().unwrap())).unwrap();
+/// let text = certificate(&x, &s, &q("1/2")).unwrap().to_string();
+/// let curve = ShapeDesc::parse("M 0 0 L 4 0").unwrap();
+/// let (pen, tol) = (PenShape::Circle(q("1/2")), q("0.01"));
+/// let want = Expected { b: Some(&curve), pen: Some(&pen), tol: Some(&tol), ..Default::default() };
+/// assert!(verify_expecting(&text, &want).is_ok());
+/// // another pen, or a tolerance smaller than the proven one: invalid
+/// let wide = PenShape::Circle(q("1"));
+/// let e = verify_expecting(&text, &Expected { pen: Some(&wide), ..Default::default() });
+/// assert_eq!(e.unwrap_err().at, "radius");
+/// let tight = q("0.001");
+/// let e = verify_expecting(&text, &Expected { tol: Some(&tight), ..Default::default() });
+/// assert_eq!(e.unwrap_err().at, "tol");
+/// ```
+pub fn verify_expecting(text: &str, want: &Expected) -> Result<Valid, Invalid> {
+    use super::verify::stroke::{DISTANCE_FORMAT, FORMAT, SET_FORMAT};
     let doc = parse(text, &Limits::DEFAULT).map_err(|e| Invalid {
         at: e.path.clone(),
         reason: format!("{} (line {}, column {})", e.reason, e.line, e.column),
     })?;
     let valid = verify_json(&doc)?;
-    if doc.get("format").and_then(|f| f.as_str()) == Some(super::verify::stroke::SET_FORMAT) {
-        return Err(Invalid {
-            at: "format".into(),
-            reason: "a certificate set holds one outline and one curve per member: --against compares a single certificate's".into(),
-        });
-    }
-    if doc.get("format").and_then(|f| f.as_str()) == Some(super::verify::stroke::FORMAT) {
-        // a stroke certificate: A is its outline, B its curve
-        let (outline, curve) = super::verify::stroke::shapes(&doc)?;
-        for (key, theirs, mine) in [("outline", outline, a), ("curve", curve, b)] {
-            theirs.same_as(mine).map_err(|why| Invalid {
-                at: key.into(),
-                reason: format!(
-                    "the certificate is about another {key} than --against {}: {why}",
-                    if key == "outline" { "A" } else { "B" }
-                ),
-            })?;
-        }
-        return Ok(valid);
-    }
-    for (key, mine) in [("a", a), ("b", b)] {
-        // a valid certificate has both keys, in the canonical form
-        let value = doc
-            .get(key)
-            .ok_or_else(|| Invalid {
-                at: key.into(),
-                reason: "missing".into(),
-            })?
-            .to_value();
-        let theirs = ShapeDesc::from_value(&value).map_err(|e| Invalid {
-            at: key.into(),
-            reason: e.to_string(),
-        })?;
-        if theirs.to_json() != value {
+    if let Some(t) = want.tol {
+        if &valid.tol > t {
             return Err(Invalid {
-                at: key.into(),
-                reason: "the shape does not read back to itself in the canonical form".into(),
+                at: "tol".into(),
+                reason: format!(
+                    "the certificate proves d_H ≤ {}, more than the tolerance given ({t})",
+                    valid.tol
+                ),
             });
         }
+    }
+    let format = doc.get("format").and_then(|f| f.as_str());
+    match format {
+        Some(f) if f == SET_FORMAT => {
+            if want.a.is_some() || want.b.is_some() {
+                return Err(Invalid {
+                    at: "format".into(),
+                    reason: "a certificate set holds one outline and one curve per member: --against compares a single certificate's".into(),
+                });
+            }
+            if let Some(pen) = want.pen {
+                let members = doc.get("members").and_then(|m| m.as_array()).unwrap_or(&[]);
+                for (k, m) in members.iter().enumerate() {
+                    let cert = m.get("certificate").ok_or_else(|| Invalid {
+                        at: format!("members[{k}].certificate"),
+                        reason: "missing".into(),
+                    })?;
+                    confirm_pen(cert, &format!("members[{k}].certificate"), pen)?;
+                }
+            }
+            return Ok(valid);
+        }
+        Some(f) if f == FORMAT => {
+            // A is its outline, B its curve
+            if let Some(pen) = want.pen {
+                confirm_pen(&doc, "", pen)?;
+            }
+            if want.a.is_some() || want.b.is_some() {
+                let (outline, curve) = super::verify::stroke::shapes(&doc)?;
+                if let Some(a) = want.a {
+                    confirm_shape(&outline, a, "outline", "A")?;
+                }
+                if let Some(b) = want.b {
+                    confirm_shape(&curve, b, "curve", "B")?;
+                }
+            }
+            return Ok(valid);
+        }
+        Some(f) if f == DISTANCE_FORMAT => {
+            // A is the shape X of its Hausdorff part, B the curve of its stroke part
+            let st = doc.get("outline_to_stroke").ok_or_else(|| Invalid {
+                at: "outline_to_stroke".into(),
+                reason: "missing".into(),
+            })?;
+            if let Some(pen) = want.pen {
+                confirm_pen(st, "outline_to_stroke", pen)?;
+            }
+            if let Some(a) = want.a {
+                let h = doc.get("shape_to_outline").ok_or_else(|| Invalid {
+                    at: "shape_to_outline".into(),
+                    reason: "missing".into(),
+                })?;
+                let theirs = stated_shape(h, "shape_to_outline.a", "a")?;
+                confirm_shape(&theirs, a, "shape_to_outline.a", "A")?;
+            }
+            if let Some(b) = want.b {
+                let (_, curve) = super::verify::stroke::shapes(st).map_err(|e| Invalid {
+                    at: format!("outline_to_stroke.{}", e.at),
+                    reason: e.reason,
+                })?;
+                confirm_shape(&curve, b, "outline_to_stroke.curve", "B")?;
+            }
+            return Ok(valid);
+        }
+        _ => {}
+    }
+    if want.pen.is_some() {
+        return Err(Invalid {
+            at: "format".into(),
+            reason: "a Hausdorff certificate states no pen: --pen confirms stroke certificates"
+                .into(),
+        });
+    }
+    for (key, mine) in [("a", want.a), ("b", want.b)] {
+        let Some(mine) = mine else { continue };
+        let theirs = stated_shape(&doc, key, key)?;
         theirs.same_as(mine).map_err(|why| Invalid {
             at: key.into(),
             reason: format!(
@@ -406,6 +591,30 @@ pub fn verify_against(text: &str, a: &ShapeDesc, b: &ShapeDesc) -> Result<Valid,
         })?;
     }
     Ok(valid)
+}
+
+/// The shape at `key` of a valid Hausdorff certificate `doc`, read back by
+/// the user-language reader; it must be in the canonical form (errors at `at`).
+fn stated_shape(doc: &crate::json::Json, at: &str, key: &str) -> Result<ShapeDesc, Invalid> {
+    // a valid certificate has both keys, in the canonical form
+    let value = doc
+        .get(key)
+        .ok_or_else(|| Invalid {
+            at: at.into(),
+            reason: "missing".into(),
+        })?
+        .to_value();
+    let theirs = ShapeDesc::from_value(&value).map_err(|e| Invalid {
+        at: at.into(),
+        reason: e.to_string(),
+    })?;
+    if theirs.to_json() != value {
+        return Err(Invalid {
+            at: at.into(),
+            reason: "the shape does not read back to itself in the canonical form".into(),
+        });
+    }
+    Ok(theirs)
 }
 
 /// The shape has a circular or an elliptic arc.

@@ -360,7 +360,7 @@ impl ShapeDesc {
         if map.contains_key("stroke") {
             return Err(err(
                 "stroke",
-                "the exact boundary of a stroke is not a shape of certificates: `lncert hausdorff` referees it (lncert::stroke::StrokeShape), `verify --against` cannot take it yet",
+                "the exact boundary of a stroke is not a shape of certificates: `lncert hausdorff` referees it (lncert::stroke::StrokeShape), and `lncert verify --against` reads it as the curve and the pen a stroke certificate states",
             ));
         }
         if let Some(u) = map.get("union") {

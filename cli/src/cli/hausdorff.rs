@@ -61,16 +61,6 @@ pub struct HausdorffArgs {
     pub json: bool,
 }
 
-/// Reads a shape file, with the report of what was approximated (SVG arcs,
-/// circles, ellipses, rounded rects); errors name the argument.
-pub fn read_shape_reported(
-    flag: &str,
-    path: &std::path::Path,
-) -> Result<(ShapeDesc, InputApprox), CliError> {
-    let text = super::curve_input::read_text_limited(flag, path, MAX_FILE_BYTES)?;
-    parse_shape(flag, path, &text)
-}
-
 fn parse_shape(flag: &str, path: &Path, text: &str) -> Result<(ShapeDesc, InputApprox), CliError> {
     ShapeDesc::parse_reported(text).map_err(|e| bad(flag, format!("{}: {e}", path.display())))
 }

@@ -1633,6 +1633,24 @@ pub(crate) fn shapes(
     Ok((outline, curve))
 }
 
+/// The pen of a valid stroke certificate as the set it is, `E = M · disk(1)`
+/// given by `Q = M Mᵀ` as `[q₁₁, q₁₂, q₂₂]` (a disk of radius `r`: `r² I`),
+/// for `verify --pen`: two matrices give the same pen exactly when their `Q`
+/// are equal. Call it on a document [`check`] accepted.
+pub(crate) fn pen_q(doc: &Json) -> Result<[Rational; 3], Invalid> {
+    if let Some(p) = doc.get("pen") {
+        let m = PenMap::read(p)?.m;
+        let dot = |u: &Q2, v: &Q2| &u[0] * &v[0] + &u[1] * &v[1];
+        return Ok([dot(&m[0], &m[0]), dot(&m[0], &m[1]), dot(&m[1], &m[1])]);
+    }
+    let r = canonical_rational(
+        doc.get("radius").ok_or_else(|| inv("radius", "missing"))?,
+        "radius",
+    )?;
+    let r2 = &r * &r;
+    Ok([r2.clone(), Rational::zero(), r2])
+}
+
 /// The pre-image `M⁻¹ L` of an outline under an elliptical pen's map: its
 /// Bézier pieces mapped exactly; an exact circular arc has no Bézier or arc
 /// pre-image and is refused.
