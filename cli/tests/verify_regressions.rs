@@ -64,6 +64,18 @@ const EXPECTED: &[(&str, &str, &str)] = &[
     ("union_member_deleted.json", "maps[1].piece", "out of range"),
     ("union_members_swapped.json", "maps[0].boxes[0]", "exceeds the tolerance"),
     ("union_side_flipped.json", "maps[0].boxes[0]", "exceeds the tolerance"),
+    // 7. huge magnitudes: enclosures overflowing to ∞ (issue 65, a panic before)
+    ("stroke_near_arc_overflow.json", "boundary[0].boxes[0]", "above the tolerance"),
+    (
+        "stroke_near_arc_overflow_half_circle.json",
+        "boundary[0].boxes[0]",
+        "above the tolerance",
+    ),
+    (
+        "stroke_set_near_arc_overflow.json",
+        "members[0].certificate.boundary[0].boxes[0]",
+        "above the tolerance",
+    ),
 ];
 
 fn dir() -> PathBuf {
@@ -214,6 +226,19 @@ fn the_binary_names_the_forged_field() {
         (
             "tol_100k_digits.json",
             "invalid: tol: longer than the limit",
+        ),
+        // issue 65: these three exited 101 (a panic) before
+        (
+            "stroke_near_arc_overflow.json",
+            "invalid: boundary[0].boxes[0]",
+        ),
+        (
+            "stroke_near_arc_overflow_half_circle.json",
+            "invalid: boundary[0].boxes[0]",
+        ),
+        (
+            "stroke_set_near_arc_overflow.json",
+            "invalid: members[0].certificate.boundary[0].boxes[0]",
         ),
     ] {
         let (code, out) = lncert_verify(&dir().join(file));
