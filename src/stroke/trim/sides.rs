@@ -573,6 +573,7 @@ pub(super) fn check(
             return Err(bad("curve", format!("piece {i} is a point")));
         }
     }
+    check_range(curve, opts)?;
     let comps = components(curve);
     if comps.len() > MAX_COMPONENTS {
         return Err(bad(
@@ -606,6 +607,95 @@ pub(super) fn check(
         }
     }
     Ok(comps)
+}
+
+/// The finest detail of a stroke the engine resolves, relative to its
+/// extent: `2⁻⁶⁴ ≈ 5.4·10⁻²⁰` (see [`check_range`]).
+pub const MIN_RELATIVE_DETAIL_LOG2: i32 = -64;
+
+/// The dynamic range of a stroke's input, refused early where the engine
+/// cannot work (issue 65): with `E` the larger of the control points'
+/// bounding-box width and height and the pen's size (radius, or the largest
+/// matrix entry), every nonzero step between consecutive control points
+/// (its larger coordinate difference) and the pen's size must be at least
+/// `2⁻⁶⁴ E`, and the tolerance at least `2⁻⁵⁰ E`. Below that, the f64
+/// enclosures every certified test starts from (relative width ≈ 2⁻⁵² of
+/// the coordinates) cannot tell the detail from nothing: the search would
+/// subdivide to its budget and stay undecided. A step of exactly zero (a
+/// retracted handle) is exact degeneracy and is fine; real designs sit many
+/// orders of magnitude inside these limits (fonts: integer steps against
+/// extents below 2¹⁶).
+fn check_range(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<(), StrokeError> {
+    let pts = || curve.iter().flat_map(|b| b.points().iter());
+    let Some(first) = pts().next() else {
+        return Ok(());
+    };
+    let (mut lo, mut hi) = (first.clone(), first.clone());
+    for p in pts() {
+        if p.x < lo.x {
+            lo.x = p.x.clone();
+        }
+        if p.y < lo.y {
+            lo.y = p.y.clone();
+        }
+        if p.x > hi.x {
+            hi.x = p.x.clone();
+        }
+        if p.y > hi.y {
+            hi.y = p.y.clone();
+        }
+    }
+    let pen = match &opts.ellipse {
+        Some(p) => p.m.iter().flatten().map(|x| x.abs()).max().unwrap_or_default(),
+        None => opts.radius.abs(),
+    };
+    let extent = [&hi.x - &lo.x, &hi.y - &lo.y, pen.clone()]
+        .into_iter()
+        .max()
+        .unwrap_or_default();
+    let scaled = |log2: i32| {
+        &extent / Rational::from_integer(num_bigint::BigInt::from(1u8) << (-log2) as usize)
+    };
+    let floor = scaled(MIN_RELATIVE_DETAIL_LOG2);
+    let approx = |r: &Rational| r.approx();
+    if pen < floor {
+        return Err(bad(
+            if opts.ellipse.is_some() { "pen" } else { "radius" },
+            format!(
+                "the pen's size {:.3e} is below 2^{MIN_RELATIVE_DETAIL_LOG2} of the stroke's extent {:.3e}: finer than the engine's f64 enclosures resolve",
+                approx(&pen),
+                approx(&extent)
+            ),
+        ));
+    }
+    for (i, b) in curve.iter().enumerate() {
+        for (k, w) in b.points().windows(2).enumerate() {
+            let (dx, dy) = ((&w[1].x - &w[0].x).abs(), (&w[1].y - &w[0].y).abs());
+            let step = if dx > dy { dx } else { dy };
+            if step.is_positive() && step < floor {
+                return Err(bad(
+                    "curve",
+                    format!(
+                        "piece {i}: control points {k} and {} are {:.3e} apart, below 2^{MIN_RELATIVE_DETAIL_LOG2} of the stroke's extent {:.3e}: finer than the engine's f64 enclosures resolve (make them coincide exactly, or drop the detail)",
+                        k + 1,
+                        approx(&step),
+                        approx(&extent)
+                    ),
+                ));
+            }
+        }
+    }
+    if *opts.tol.exact() < scaled(-50) {
+        return Err(bad(
+            "tol",
+            format!(
+                "{:.3e} is below 2^-50 of the stroke's extent {:.3e}: finer than the engine's f64 enclosures resolve",
+                opts.tol.value(),
+                approx(&extent)
+            ),
+        ));
+    }
+    Ok(())
 }
 
 /// Most separate contours of one stroke.
@@ -773,4 +863,75 @@ fn ellipse_cap_piece(
             link: None,
         })
         .collect())
+}
+
+#[cfg(test)]
+mod range_tests {
+    use super::*;
+
+    fn q(s: &str) -> Rational {
+        crate::parse_rational(s).unwrap()
+    }
+
+    fn opts(r: &str, tol: &str) -> StrokeOptions {
+        StrokeOptions::new(q(r), tol.parse().unwrap())
+    }
+
+    /// A quadratic `(0,0), (h, 0), (h, 1)` scaled by `s`.
+    fn corner(h: &Rational, s: &Rational) -> Vec<Bezier<Rational>> {
+        let p = |x: Rational, y: Rational| V2::new(x * s, y * s);
+        let z = <Rational as Zero>::zero();
+        vec![Bezier::new(vec![
+            p(z.clone(), z.clone()),
+            p(h.clone(), z),
+            p(h.clone(), Rational::from_integer(1.into())),
+        ])]
+    }
+
+    /// Issue 65: a handle 2⁻⁶⁴ of the extent or longer is taken, a shorter one
+    /// refused naming the piece, at every scale (the limit is relative); a
+    /// handle of exactly zero is exact degeneracy and taken.
+    #[test]
+    fn details_below_the_enclosures_resolution_are_refused_at_any_scale() {
+        let two = |k: i64| {
+            let p = num_bigint::BigInt::from(1u8) << k.unsigned_abs() as usize;
+            if k < 0 {
+                Rational::new(1.into(), p)
+            } else {
+                Rational::from_integer(p)
+            }
+        };
+        for scale in [-300i64, 0, 300] {
+            let s = two(scale);
+            let o = opts(&(s.clone() / Rational::from_integer(5.into())).to_string(), "1");
+            let o = StrokeOptions {
+                tol: Tolerance::new(&s / Rational::from_integer(1000.into())).unwrap(),
+                ..o
+            };
+            assert!(check_range(&corner(&two(-64), &s), &o).is_ok(), "scale 2^{scale}");
+            assert!(check_range(&corner(&<Rational as Zero>::zero(), &s), &o).is_ok());
+            let e = check_range(&corner(&two(-65), &s), &o).unwrap_err();
+            assert_eq!(e.field, "curve");
+            assert!(e.reason.contains("piece 0: control points 0 and 1"), "{}", e.reason);
+        }
+        // the pen and the tolerance, against the extent 1
+        let x = corner(&q("1/2"), &q("1"));
+        assert_eq!(check_range(&x, &opts("1/1e20", "1e-3")).unwrap_err().field, "radius");
+        assert_eq!(check_range(&x, &opts("1/4", "1e-16")).unwrap_err().field, "tol");
+        assert!(check_range(&x, &opts("1/4", "1e-14")).is_ok());
+    }
+
+    /// The slow case of issue 65 (`stroke --pen circle:2e99 --tol 1e96` of a
+    /// quadratic with a 10⁻¹⁰⁰ handle ran past 60 s) is refused before any work.
+    #[test]
+    fn the_slow_huge_quadratic_is_refused_before_any_work() {
+        let e100 = Rational::from_integer(num_bigint::BigInt::from(10u8).pow(100));
+        let x = corner(&(Rational::from_integer(1.into()) / (&e100 * &e100)), &e100);
+        let o = StrokeOptions {
+            tol: Tolerance::new(&e100 / Rational::from_integer(10_000.into())).unwrap(),
+            ..StrokeOptions::new(&e100 / Rational::from_integer(5.into()), "1".parse().unwrap())
+        };
+        let e = crate::stroke::stroke(&x, &o).unwrap_err();
+        assert_eq!(e.field, "curve", "{}", e.reason);
+    }
 }
