@@ -264,7 +264,7 @@ fn applies(arcs: &Arcs, curve: &[Bezier<Rational>]) -> Option<()> {
 }
 
 fn exact(x: f64) -> Interval {
-    Interval::try_from((x, x)).expect("a finite float")
+    crate::scalar::point_interval(x)
 }
 
 /// `C(n, k)` as a float: the crate's exact integer binomial, below `2⁵³`

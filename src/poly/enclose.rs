@@ -112,7 +112,7 @@ fn weights(n: usize) -> std::rc::Rc<Vec<Interval>> {
 }
 
 fn point(x: f64) -> Interval {
-    Interval::try_from((x, x)).expect("finite float")
+    crate::scalar::point_interval(x)
 }
 
 /// The sign of every member of the family on the whole of `[a, b]`, if the

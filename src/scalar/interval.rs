@@ -79,6 +79,23 @@ impl ScalarSqrt for Interval {
     }
 }
 
+/// The point interval `[x, x]` of a float computed along the way (a hint, a
+/// midpoint, a bound), and the whole line when `x` is not finite: an
+/// overflowed value then makes every test that uses it fail (undecided or
+/// invalid), never a panic (issue 65). Sound either way: the whole line
+/// encloses every value.
+///
+/// # Examples
+/// ```
+/// use lncert::scalar::{point_interval, Interval};
+/// assert_eq!(point_interval(0.5).inf(), 0.5);
+/// assert_eq!(point_interval(f64::INFINITY), Interval::ENTIRE);
+/// assert_eq!(point_interval(f64::NAN), Interval::ENTIRE);
+/// ```
+pub fn point_interval(x: f64) -> Interval {
+    Interval::try_from((x, x)).unwrap_or(Interval::ENTIRE)
+}
+
 /// The tightest interval with float ends containing `r` (a point interval when
 /// `r` is a float). Beyond the float range the enclosure is unbounded on that side.
 ///

@@ -27,8 +27,8 @@ pub mod ulp;
 pub use ferr::FloatErr;
 pub use filter::{filter_stats, filtered, reset_filter_stats, Decision, FilterStats, Predicate};
 pub use interval::{
-    atan_enclosure, interval_from_rational, interval_to_json, sin_cos_enclosure, Interval,
-    IntervalExt,
+    atan_enclosure, interval_from_rational, interval_to_json, point_interval, sin_cos_enclosure,
+    Interval, IntervalExt,
 };
 pub(crate) use rational::float_parts;
 pub use rational::{

@@ -84,7 +84,7 @@ fn mid(x: Interval) -> f64 {
     0.5 * (x.inf() + x.sup())
 }
 fn point_iv(t: f64) -> Interval {
-    Interval::try_from((t, t)).expect("finite parameter")
+    crate::scalar::point_interval(t)
 }
 
 /// Float Bézier evaluation (on the stack up to degree 15).

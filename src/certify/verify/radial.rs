@@ -43,7 +43,7 @@ fn on_ray(q: &P, d: &P) -> bool {
 }
 
 fn point_iv(x: f64) -> Interval {
-    Interval::try_from((x, x)).expect("a finite float")
+    crate::scalar::point_interval(x)
 }
 
 /// `C(n, k)` as a float: the crate's exact integer binomial, below `2⁵³`

@@ -137,7 +137,7 @@ impl<'a> ExactCurve<'a> {
         let Some([lo, hi]) = self.boxes[i] else {
             return false;
         };
-        let point = |v: f64| Interval::try_from((v, v)).expect("a finite box");
+        let point = crate::scalar::point_interval;
         // an enclosure of the gap between w and the box along axis k, when
         // it is proven positive on one side; 0 otherwise (a lower bound)
         let gap = |k: usize| {

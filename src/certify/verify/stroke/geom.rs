@@ -17,7 +17,7 @@ pub(crate) type P = [Interval; 2];
 /// overflowed hint or bound: every test then fails, undecided, instead of
 /// panicking — issue 65).
 pub(crate) fn ic(x: f64) -> Interval {
-    Interval::try_from((x, x)).unwrap_or(Interval::ENTIRE)
+    crate::scalar::point_interval(x)
 }
 
 pub(crate) fn iq(r: &Rational) -> Interval {
