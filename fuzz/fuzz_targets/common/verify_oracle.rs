@@ -7,6 +7,46 @@ use lncert::scalar::{rational_from_f64, Rational};
 use serde_json::Value;
 use std::collections::BTreeMap;
 use std::sync::Mutex;
+use std::time::{Duration, Instant};
+
+/// The resource oracle (issue 64): `verify` runs `lncert::certify::verify::verify`
+/// on `text` and the run must take at most `TIME_FACTOR` times as long as
+/// reading the same bytes with serde_json, plus `TIME_FLOOR` (thread start-up,
+/// a noisy shared machine). The verifier's work is bounded by the
+/// certificate's size (48 units per byte of compact JSON plus 2²¹), so a run
+/// past this is a finding: a loop the budget does not meter. Genuine
+/// certificates take 5-10 times their reading time. `LNCERT_FUZZ_TIME_FACTOR`
+/// overrides the factor (0 turns the oracle off, e.g. under valgrind).
+pub const TIME_FACTOR: u32 = 200;
+/// See [`TIME_FACTOR`].
+pub const TIME_FLOOR: Duration = Duration::from_millis(250);
+
+pub fn verify_timed(
+    text: &str,
+) -> Result<lncert::certify::verify::Valid, lncert::certify::verify::Invalid> {
+    static FACTOR: std::sync::OnceLock<u32> = std::sync::OnceLock::new();
+    let factor = *FACTOR.get_or_init(|| {
+        std::env::var("LNCERT_FUZZ_TIME_FACTOR")
+            .ok()
+            .and_then(|v| v.parse().ok())
+            .unwrap_or(TIME_FACTOR)
+    });
+    let start = Instant::now();
+    let verdict = lncert::certify::verify::verify(text);
+    let took = start.elapsed();
+    if factor > 0 && took > TIME_FLOOR {
+        let start = Instant::now();
+        let _ = serde_json::from_str::<Value>(text);
+        let read = start.elapsed();
+        assert!(
+            took <= read * factor + TIME_FLOOR,
+            "resource oracle: verify took {took:?} on {} bytes, more than {factor} x the {read:?} of reading them + {TIME_FLOOR:?} (verdict {:?})",
+            text.len(),
+            verdict.as_ref().map(|v| &v.tol),
+        );
+    }
+    verdict
+}
 
 /// An accepted certificate must state a true claim about canonical shapes.
 ///
