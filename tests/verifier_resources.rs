@@ -39,3 +39,17 @@ fn wiggly_witnesses_pass_claim_a_within_the_budget() {
     assert!(e.at.starts_with("boundary"), "{e}");
     assert!(!e.reason.contains("too costly"), "{e}");
 }
+
+/// The same attack scaled in the parts (2 000 parts × 20 copies of degree
+/// 20, 0.9 MB): every witness is within reach of every copy, so the index
+/// prunes nothing and the work grows like parts × copies — past the
+/// document's budget, where the verifier stops and refuses the certificate
+/// as too costly to check, at the part where the meter ran out (before the
+/// budget, `lncert verify` ran for minutes on documents like this).
+#[test]
+fn wiggly_witnesses_beyond_the_budget_are_refused_as_too_costly() {
+    let doc = hostile::wiggly_witnesses(2000, 20, 20);
+    let e = lncert::verify(&doc).unwrap_err();
+    assert!(e.reason.contains("too costly to check"), "{e}");
+    assert!(e.at.starts_with("cover["), "{e}");
+}

@@ -646,7 +646,13 @@ fn check_range(curve: &[Bezier<Rational>], opts: &StrokeOptions) -> Result<(), S
         }
     }
     let pen = match &opts.ellipse {
-        Some(p) => p.m.iter().flatten().map(|x| x.abs()).max().unwrap_or_default(),
+        Some(p) => {
+            p.m.iter()
+                .flatten()
+                .map(|x| x.abs())
+                .max()
+                .unwrap_or_default()
+        }
         None => opts.radius.abs(),
     };
     let extent = [&hi.x - &lo.x, &hi.y - &lo.y, pen.clone()]
@@ -903,21 +909,37 @@ mod range_tests {
         };
         for scale in [-300i64, 0, 300] {
             let s = two(scale);
-            let o = opts(&(s.clone() / Rational::from_integer(5.into())).to_string(), "1");
+            let o = opts(
+                &(s.clone() / Rational::from_integer(5.into())).to_string(),
+                "1",
+            );
             let o = StrokeOptions {
                 tol: Tolerance::new(&s / Rational::from_integer(1000.into())).unwrap(),
                 ..o
             };
-            assert!(check_range(&corner(&two(-64), &s), &o).is_ok(), "scale 2^{scale}");
+            assert!(
+                check_range(&corner(&two(-64), &s), &o).is_ok(),
+                "scale 2^{scale}"
+            );
             assert!(check_range(&corner(&<Rational as Zero>::zero(), &s), &o).is_ok());
             let e = check_range(&corner(&two(-65), &s), &o).unwrap_err();
             assert_eq!(e.field, "curve");
-            assert!(e.reason.contains("piece 0: control points 0 and 1"), "{}", e.reason);
+            assert!(
+                e.reason.contains("piece 0: control points 0 and 1"),
+                "{}",
+                e.reason
+            );
         }
         // the pen and the tolerance, against the extent 1
         let x = corner(&q("1/2"), &q("1"));
-        assert_eq!(check_range(&x, &opts("1/1e20", "1e-3")).unwrap_err().field, "radius");
-        assert_eq!(check_range(&x, &opts("1/4", "1e-16")).unwrap_err().field, "tol");
+        assert_eq!(
+            check_range(&x, &opts("1/1e20", "1e-3")).unwrap_err().field,
+            "radius"
+        );
+        assert_eq!(
+            check_range(&x, &opts("1/4", "1e-16")).unwrap_err().field,
+            "tol"
+        );
         assert!(check_range(&x, &opts("1/4", "1e-14")).is_ok());
     }
 
@@ -929,7 +951,10 @@ mod range_tests {
         let x = corner(&(Rational::from_integer(1.into()) / (&e100 * &e100)), &e100);
         let o = StrokeOptions {
             tol: Tolerance::new(&e100 / Rational::from_integer(10_000.into())).unwrap(),
-            ..StrokeOptions::new(&e100 / Rational::from_integer(5.into()), "1".parse().unwrap())
+            ..StrokeOptions::new(
+                &e100 / Rational::from_integer(5.into()),
+                "1".parse().unwrap(),
+            )
         };
         let e = crate::stroke::stroke(&x, &o).unwrap_err();
         assert_eq!(e.field, "curve", "{}", e.reason);

@@ -1058,7 +1058,12 @@ pub(crate) fn read_outline(v: &Json) -> Result<Vec<Vec<OPiece>>, Invalid> {
         let ps = arr(c, &at, "pieces")?;
         total += ps.len();
         if ps.is_empty() || total > MAX_SEGMENTS {
-            return Err(inv(at, format!("a contour has 1 to {MAX_SEGMENTS} pieces")));
+            return Err(inv(
+                at,
+                format!(
+                    "a contour has at least 1 piece, and the outline at most {MAX_SEGMENTS} in all"
+                ),
+            ));
         }
         let pieces: Vec<OPiece> = ps
             .iter()
