@@ -745,3 +745,38 @@ fn straight_glyph_pieces_are_decided() {
         }
     }
 }
+
+/// Issue 65's slow case: `stroke --pen circle:2e99 --tol 1e96` of a quadratic
+/// with a 10⁻¹⁰⁰ handle at extent 10¹⁰⁰ ran past 60 s; the detail is below
+/// what f64 enclosures resolve, so it is refused at once (exit 2, naming the
+/// piece), as JSON too.
+#[test]
+fn details_finer_than_the_enclosures_are_refused_at_once() {
+    let tiny = format!("1/1{}", "0".repeat(100));
+    let huge = format!("1{}", "0".repeat(100));
+    let curve = tmp(
+        "range-quad.json",
+        &format!(r#"{{"bezier": [["0","0"],["{tiny}","0"],["{tiny}","{huge}"]]}}"#),
+    );
+    let o = lncert(&[
+        "stroke",
+        curve.to_str().unwrap(),
+        "--pen",
+        "circle:2e99",
+        "--tol",
+        "1e96",
+        "--json",
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(2),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    let reason = v["error"]["reason"].as_str().unwrap_or_default();
+    assert!(
+        reason.contains("piece 0: control points 0 and 1") && reason.contains("2^-64"),
+        "{v}"
+    );
+}
