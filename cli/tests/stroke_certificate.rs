@@ -40,6 +40,16 @@ fn cert_of(name: &str) -> (std::path::PathBuf, std::path::PathBuf) {
     (curve, cert)
 }
 
+/// `lncert verify CERT --json EXTRA…`: the exit code and the JSON report
+/// (`null` when stdout is not JSON, e.g. a usage error).
+fn verify_json(cert: &std::path::Path, extra: &[&str]) -> (Option<i32>, serde_json::Value) {
+    let mut args = vec!["verify", cert.to_str().unwrap(), "--json"];
+    args.extend_from_slice(extra);
+    let o = lncert(&args);
+    let v = serde_json::from_slice(&o.stdout).unwrap_or_default();
+    (o.status.code(), v)
+}
+
 #[test]
 fn stroke_certificate_verifies_and_names_its_shapes() {
     let (curve, cert) = cert_of("sc");
@@ -266,13 +276,7 @@ fn distance_certificate_of_another_outline_verifies() {
     // issue 65: `verify --against X STROKE.json` (either order, as `hausdorff`
     // takes them) confirms the shape, the curve and the pen of a distance
     // certificate; `--against X CURVE --pen circle:R` the same
-    let verify = |extra: &[&str]| {
-        let mut args = vec!["verify", cert.to_str().unwrap(), "--json"];
-        args.extend_from_slice(extra);
-        let o = lncert(&args);
-        let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap_or_default();
-        (o.status.code(), v)
-    };
+    let verify = |extra: &[&str]| verify_json(&cert, extra);
     let (xs, ss) = (x.to_str().unwrap(), stroke.to_str().unwrap());
     let curve = tmp("sd-curve.txt", "M 0 0 L 4 0");
     for args in [
@@ -399,14 +403,9 @@ fn elliptical_pen_certificates_verify() {
     assert!(out.contains("≤ 1/100") && out.contains("M = [["), "{out}");
     // --pen: the pen as `stroke` builds it at this tolerance is the
     // certificate's; another rotation, or no --tol to build it at, is not
-    let pen_check = |pen: &str, tol: Option<&str>| {
-        let mut args = vec!["verify", cert.to_str().unwrap(), "--pen", pen, "--json"];
-        if let Some(t) = tol {
-            args.extend(["--tol", t]);
-        }
-        let o = lncert(&args);
-        let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap_or_default();
-        (o.status.code(), v)
+    let pen_check = |pen: &str, tol: Option<&str>| match tol {
+        Some(t) => verify_json(&cert, &["--pen", pen, "--tol", t]),
+        None => verify_json(&cert, &["--pen", pen]),
     };
     let (code, v) = pen_check("ellipse:0.7,0.3,pi/6", Some("1e-2"));
     assert_eq!(code, Some(0), "{v}");
@@ -571,13 +570,7 @@ fn svg_document_certificate_set_verifies() {
 fn verify_confirms_the_pen_and_the_tolerance() {
     let (curve, cert) = cert_of("pt");
     let other = tmp("pt-other.txt", "M 0 0 C 1 2 3 2 4 0 L 5 2");
-    let run = |extra: &[&str]| {
-        let mut args = vec!["verify", cert.to_str().unwrap(), "--json"];
-        args.extend_from_slice(extra);
-        let o = lncert(&args);
-        let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap_or_default();
-        (o.status.code(), v)
-    };
+    let run = |extra: &[&str]| verify_json(&cert, extra);
     let c = curve.to_str().unwrap();
     let (code, v) = run(&["--against", c, "--pen", "circle:0.5", "--tol", "2e-2"]);
     assert_eq!(code, Some(0), "{v}");

@@ -384,17 +384,6 @@ pub struct Expected<'a> {
     pub tol: Option<&'a Rational>,
 }
 
-/// `Q = M Mᵀ` of a pen, `[q₁₁, q₁₂, q₂₂]`.
-fn pen_form(p: &PenShape) -> [Rational; 3] {
-    match p {
-        PenShape::Circle(r) => {
-            let r2 = r * r;
-            [r2.clone(), Rational::zero(), r2]
-        }
-        PenShape::Ellipse(pen) => pen.q.clone(),
-    }
-}
-
 fn describe_q(q: &[Rational; 3]) -> String {
     if q[1].is_zero() && q[0] == q[2] {
         match rational_root(&q[0], 2) {
@@ -427,7 +416,7 @@ fn confirm_pen(doc: &crate::json::Json, at: &str, pen: &PenShape) -> Result<(), 
         at: nest(&e.at),
         reason: e.reason,
     })?;
-    let mine = pen_form(pen);
+    let mine = pen.q();
     if theirs != mine {
         return Err(Invalid {
             at: nest(key),

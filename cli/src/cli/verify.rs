@@ -167,18 +167,6 @@ fn read_against(
     Ok((shape, None))
 }
 
-/// The same pen as a set (`M Mᵀ` equal; a disk of radius `r` is `r² I`).
-fn same_pen(a: &PenShape, b: &PenShape) -> bool {
-    let q = |p: &PenShape| match p {
-        PenShape::Circle(r) => {
-            let r2 = r * r;
-            [r2.clone(), Rational::from_integer(0.into()), r2]
-        }
-        PenShape::Ellipse(e) => e.q.clone(),
-    };
-    q(a) == q(b)
-}
-
 /// The shapes of `--against`: `(A, B)`, `A` absent when one file is given.
 type Against = (
     Option<(lncert::shape::ShapeDesc, InputApprox)>,
@@ -230,7 +218,7 @@ pub fn run(a: &VerifyArgs) -> Result<i32, CliError> {
     };
     let pen =
         match (pen, stroke_pen) {
-            (Some(p), Some(q)) if !same_pen(&p, &q) => return Err(bad(
+            (Some(p), Some(q)) if p.q() != q.q() => return Err(bad(
                 "--pen",
                 "differs from the pen of the stroke given to --against: no certificate states both",
             )),

@@ -56,6 +56,30 @@ pub enum PenShape {
     Ellipse(Pen),
 }
 
+impl PenShape {
+    /// The pen as the set it is, `M · disk(1)` given by `Q = M Mᵀ` as
+    /// `[q₁₁, q₁₂, q₂₂]` (a disk of radius `r`: `r² I`): two pens are the
+    /// same set exactly when their `Q` are equal.
+    ///
+    /// # Examples
+    /// ```
+    /// use lncert::offset::{Angle, Pen};
+    /// use lncert::stroke::PenShape;
+    /// let q = |s: &str| lncert::parse_rational(s).unwrap();
+    /// let round = Pen::ellipse(&q("2"), &q("2"), &Angle::parse("30deg").unwrap()).unwrap();
+    /// assert_eq!(PenShape::Ellipse(round).q(), PenShape::Circle(q("2")).q());
+    /// ```
+    pub fn q(&self) -> [Rational; 3] {
+        match self {
+            PenShape::Circle(r) => {
+                let r2 = r * r;
+                [r2.clone(), Rational::from_integer(0.into()), r2]
+            }
+            PenShape::Ellipse(pen) => pen.q.clone(),
+        }
+    }
+}
+
 impl StrokeOptions {
     /// Round caps and the default budgets.
     pub fn new(radius: Rational, tol: Tolerance) -> Self {
