@@ -38,6 +38,23 @@ pub fn init() {
     }
 }
 
+/// The process's peak resident memory in kB (`VmHWM` of
+/// `/proc/self/status`, Linux), read only when `debug` is logged: the
+/// figure `cli/benches/verifier_resources.rs` reads from `lncert verify`.
+pub fn peak_memory_kb() -> Option<u64> {
+    if log::max_level() < LevelFilter::Debug {
+        return None;
+    }
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
+    line.trim_start_matches("VmHWM:")
+        .trim()
+        .trim_end_matches("kB")
+        .trim()
+        .parse()
+        .ok()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

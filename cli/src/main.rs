@@ -13,5 +13,9 @@ fn main() {
         Ok(args) => args,
         Err(e) => std::process::exit(cli::usage_error(&e)),
     };
-    std::process::exit(cli::run(args));
+    let code = cli::run(args);
+    if let Some(kb) = logger::peak_memory_kb() {
+        log::debug!("peak memory: {kb} kB (VmHWM)");
+    }
+    std::process::exit(code);
 }

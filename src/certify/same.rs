@@ -19,7 +19,6 @@
 
 use super::verify::{verify_json, Invalid, Valid};
 use crate::curve::{Bezier, V2};
-use crate::json::{parse, Limits};
 use crate::poly::binomial_big;
 use crate::scalar::Rational;
 use crate::shape::{ArcDesc, EllipseArcDesc, ShapeDesc};
@@ -475,10 +474,7 @@ fn confirm_shape(
 /// ```
 pub fn verify_expecting(text: &str, want: &Expected) -> Result<Valid, Invalid> {
     use super::verify::stroke::{DISTANCE_FORMAT, FORMAT, SET_FORMAT};
-    let doc = parse(text, &Limits::DEFAULT).map_err(|e| Invalid {
-        at: e.path.clone(),
-        reason: format!("{} (line {}, column {})", e.reason, e.line, e.column),
-    })?;
+    let doc = super::verify::read_document(text)?;
     let valid = verify_json(&doc)?;
     if let Some(t) = want.tol {
         if &valid.tol > t {

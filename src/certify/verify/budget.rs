@@ -144,7 +144,7 @@ pub(crate) fn json_size(v: &Json) -> usize {
         Json::Object(m) => {
             2 + m
                 .iter()
-                .map(|(k, x)| k.len() + 4 + json_size(x))
+                .map(|(k, x)| k.raw().len() + 4 + json_size(x))
                 .sum::<usize>()
         }
     }

@@ -166,6 +166,13 @@ const KEYS_RADIAL: [&str; 7] = ["format", "version", "claim", "tol", "a", "b", "
 /// assert_eq!(verify(&forged.to_string()).unwrap_err().at, "tol");
 /// ```
 pub fn verify(text: &str) -> Result<Valid, Invalid> {
+    verify_json(&read_document(text)?)
+}
+
+/// A certificate's text read by the crate's bounded JSON reader (the
+/// reading time logged at `debug`: `cli/benches/verifier_resources.rs`
+/// reads it).
+pub(crate) fn read_document(text: &str) -> Result<Json<'_>, Invalid> {
     let t0 = std::time::Instant::now();
     let doc = parse(text, &Limits::DEFAULT).map_err(|e| {
         inv(
@@ -178,7 +185,7 @@ pub fn verify(text: &str) -> Result<Valid, Invalid> {
         text.len(),
         t0.elapsed()
     );
-    verify_json(&doc)
+    Ok(doc)
 }
 
 /// [`verify`] on a document already read by the crate's bounded JSON reader.

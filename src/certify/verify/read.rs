@@ -138,9 +138,9 @@ pub(crate) fn exact_object<'j, 'a, const N: usize>(
             ),
         )
     })?;
-    if let Some((k, _)) = m.iter().find(|(k, _)| !keys.contains(&&**k)) {
+    if let Some((k, _)) = m.iter().find(|(k, _)| !keys.iter().any(|x| k == x)) {
         return Err(inv(
-            join(at, k),
+            join(at, &k.text()),
             format!("unknown key: the canonical form has exactly the keys {keys:?}"),
         ));
     }
@@ -273,7 +273,7 @@ fn conv_shape(bs: &[Vec<[Rational; 2]>], q: [Rational; 3], sigma: i64, text: Str
 /// numbered member after member.
 pub(crate) fn read_shape(v: &Json, at: &str) -> Result<VShape, Invalid> {
     if let Some([(k, members)]) = v.as_object() {
-        if &**k == "union" {
+        if *k == "union" {
             let at = join(at, "union");
             let list = members
                 .as_array()
@@ -345,13 +345,15 @@ fn read_member(v: &Json, at: &str) -> Result<VShape, Invalid> {
         )
     })?;
     let kind = match m {
-        [(k, _)] if kinds.contains(&&**k) => &**k,
-        [(k, _)] => {
-            return Err(inv(
-                join(at, k),
-                format!("unknown key: a canonical shape has exactly one of the keys {kinds:?}"),
-            ))
-        }
+        [(k, _)] => match kinds.iter().copied().find(|x| k == x) {
+            Some(kind) => kind,
+            None => {
+                return Err(inv(
+                    join(at, &k.text()),
+                    format!("unknown key: a canonical shape has exactly one of the keys {kinds:?}"),
+                ))
+            }
+        },
         _ => {
             return Err(inv(
                 at,

@@ -1297,19 +1297,21 @@ fn chain_complete(piece: &OPiece, chain: &Chain) -> bool {
 /// span, hull and witness fields, in order, and the error that stopped the
 /// reading (a malformed part, a gap in the chain, parts stopping short).
 struct PieceRead<'j, 't> {
-    spans: Vec<simple::Span>,
-    hulls: Vec<geom::Hull>,
-    witnesses: Vec<(&'j Json<'t>, &'j Json<'t>)>,
-    stop: Option<Invalid>,
+    // (boxed slices and a boxed error: one of these per outline piece is
+    // alive for the whole check, part of the memory bound)
+    spans: Box<[simple::Span]>,
+    hulls: Box<[geom::Hull]>,
+    witnesses: Box<[(&'j Json<'t>, &'j Json<'t>)]>,
+    stop: Option<Box<Invalid>>,
 }
 
 /// Claim (a), first half: the parts of one piece read and chained over it.
 fn read_cover_piece<'j, 't>(v: &'j Json<'t>, at: &str, piece: &OPiece) -> PieceRead<'j, 't> {
-    let mut r = PieceRead {
-        spans: Vec::new(),
-        hulls: Vec::new(),
-        witnesses: Vec::new(),
-        stop: None,
+    let stopped = |e: Invalid| PieceRead {
+        spans: Box::new([]),
+        hulls: Box::new([]),
+        witnesses: Box::new([]),
+        stop: Some(Box::new(e)),
     };
     let parts = match arr(v, at, "parts") {
         Ok([]) => Err(inv(at, "no parts: the piece is not covered")),
@@ -1317,37 +1319,43 @@ fn read_cover_piece<'j, 't>(v: &'j Json<'t>, at: &str, piece: &OPiece) -> PieceR
     };
     let parts = match parts {
         Ok(p) => p,
-        Err(e) => {
-            r.stop = Some(e);
-            return r;
-        }
+        Err(e) => return stopped(e),
     };
     // at their exact sizes (a piece has one part or a few)
-    r.spans.reserve_exact(parts.len());
-    r.hulls.reserve_exact(parts.len());
-    r.witnesses.reserve_exact(parts.len());
+    let mut spans = Vec::with_capacity(parts.len());
+    let mut hulls = Vec::with_capacity(parts.len());
+    let mut witnesses = Vec::with_capacity(parts.len());
     let mut chain = Chain {
         s: Rational::zero(),
         dir: None,
     };
+    let mut stop = None;
     for (k, p) in parts.iter().enumerate() {
         let atk = || format!("{at}[{k}]");
         match read_part(p, &atk, piece, &mut chain) {
             Ok((span, hull, o, w)) => {
-                r.spans.push(span);
-                r.hulls.push(hull);
-                r.witnesses.push((o, w));
+                spans.push(span);
+                hulls.push(hull);
+                witnesses.push((o, w));
             }
             Err(e) => {
-                r.stop = Some(e);
-                return r;
+                stop = Some(Box::new(e));
+                break;
             }
         }
     }
-    if !chain_complete(piece, &chain) {
-        r.stop = Some(inv(at, "the parts stop before the end of the piece"));
+    if stop.is_none() && !chain_complete(piece, &chain) {
+        stop = Some(Box::new(inv(
+            at,
+            "the parts stop before the end of the piece",
+        )));
     }
-    r
+    PieceRead {
+        spans: spans.into_boxed_slice(),
+        hulls: hulls.into_boxed_slice(),
+        witnesses: witnesses.into_boxed_slice(),
+        stop,
+    }
 }
 
 /// Claim (a), second half: each part read is checked, in order; then the
@@ -1368,7 +1376,7 @@ fn check_read_piece(
         max = max.max(b);
     }
     match &r.stop {
-        Some(e) => Err(e.clone()),
+        Some(e) => Err((**e).clone()),
         None => Ok((max, r.hulls.len())),
     }
 }
@@ -1770,7 +1778,6 @@ pub(crate) fn check(doc: &Json, budget: &Budget) -> Result<Valid, Invalid> {
         ));
     }
     let mut jobs = Vec::new();
-    let mut contour_of = Vec::new();
     for (ci, (c, ps)) in cov.iter().zip(&outline).enumerate() {
         let at = format!("cover[{ci}]");
         let per = arr(c, &at, "pieces")?;
@@ -1781,8 +1788,9 @@ pub(crate) fn check(doc: &Json, budget: &Budget) -> Result<Valid, Invalid> {
             ));
         }
         for (i, (v, p)) in per.iter().zip(ps).enumerate() {
-            jobs.push((format!("cover[{ci}][{i}]"), v, p));
-            contour_of.push((ci, i));
+            // (the path is formatted where it is used: a string per piece
+            // alive for the whole check would be part of the peak memory)
+            jobs.push(((ci, i), v, p));
         }
     }
     let simple_claimed = match simple_claim {
@@ -1800,7 +1808,8 @@ pub(crate) fn check(doc: &Json, budget: &Budget) -> Result<Valid, Invalid> {
     // the order of the claims, (a) first, whichever strand finishes first;
     // (c)'s verdict counts only when (a) has passed.
     type StrandA = (
-        Vec<Result<(f64, usize), Invalid>>,
+        // (the error boxed: one result per outline piece)
+        Vec<Result<(f64, usize), Box<Invalid>>>,
         Option<Result<Vec<bool>, Invalid>>,
     );
     // a failure of (a) is reported before anything of (b): (b) stops once
@@ -1811,7 +1820,7 @@ pub(crate) fn check(doc: &Json, budget: &Budget) -> Result<Valid, Invalid> {
         || {
             let reads: Vec<PieceRead> = jobs
                 .par_iter()
-                .map(|(at, v, p)| read_cover_piece(v, at, p))
+                .map(|((ci, i), v, p)| read_cover_piece(v, &format!("cover[{ci}][{i}]"), p))
                 .collect();
             let all_read = reads.iter().all(|r| r.stop.is_none());
             rayon::join(
@@ -1819,12 +1828,13 @@ pub(crate) fn check(doc: &Json, budget: &Budget) -> Result<Valid, Invalid> {
                     reads
                         .par_iter()
                         .zip(jobs.par_iter())
-                        .map(|(r, (at, _, _))| {
-                            let t = check_read_piece(r, at, &input, tol_i);
+                        .map(|(r, ((ci, i), _, _))| {
+                            let at = format!("cover[{ci}][{i}]");
+                            let t = check_read_piece(r, &at, &input, tol_i);
                             if t.is_err() {
                                 a_failed.store(true, relaxed);
                             }
-                            t
+                            t.map_err(Box::new)
                         })
                         .collect::<Vec<_>>()
                 },
@@ -1834,7 +1844,7 @@ pub(crate) fn check(doc: &Json, budget: &Budget) -> Result<Valid, Invalid> {
                     }
                     let mut parts: Vec<Vec<simple::PieceParts>> =
                         outline.iter().map(|_| Vec::new()).collect();
-                    for (r, (c, _)) in reads.iter().zip(&contour_of) {
+                    for (r, ((c, _), _, _)) in reads.iter().zip(&jobs) {
                         parts[*c].push(simple::PieceParts {
                             spans: &r.spans,
                             hulls: Some(&r.hulls),
@@ -1876,7 +1886,7 @@ pub(crate) fn check(doc: &Json, budget: &Budget) -> Result<Valid, Invalid> {
     };
     let (mut max, mut count) = (0.0f64, 0usize);
     for t in a {
-        let (m, n) = t?;
+        let (m, n) = t.map_err(|e| *e)?;
         max = max.max(m);
         count += n;
     }
