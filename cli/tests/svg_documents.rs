@@ -219,3 +219,107 @@ fn pictures_keep_the_input_orientation() {
         );
     }
 }
+
+/// Zero-length subpaths (issue 59, class 5): a `<line>` with equal ends, a
+/// path's `h 0` subpath, zero-length segments touching the rest of a path,
+/// and a closed subpath of one point (`M x y z`).
+const DOTS: &str = r##"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 24 24" fill="none" stroke="black" stroke-width="2" stroke-linecap="round">
+  <path d="M 4 4 h 16"/>
+  <line x1="12" y1="16" x2="12" y2="16"/>
+  <path d="M 2 20 L 6 20 M 9 20 h 0"/>
+  <path d="M 0 10 L 0 10 L 5 10 L 5 10 L 5 12"/>
+  <path d="M 20 22 z"/>
+</svg>"##;
+
+#[test]
+fn zero_length_subpaths_are_dots_never_dropped() {
+    let doc = tmp("dots.svg", DOTS);
+    let d = doc.to_str().unwrap();
+    let o = lncert(&["stroke", d, "--tol", "1e-2", "--json"]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let v = json_of(&o);
+    let els = v["elements"].as_array().unwrap();
+    let at: Vec<&str> = els.iter().map(|e| e["at"].as_str().unwrap()).collect();
+    assert_eq!(
+        at,
+        [
+            "svg/path[0]",
+            "svg/line[0]",
+            "svg/path[1]",
+            "svg/path[1]/dot[0]",
+            "svg/path[2]",
+            "svg/path[3]"
+        ]
+    );
+    // each dot's outline is the pen's circle about it: arcs about the dot, of
+    // radius stroke-width / 2, chained end to start around the full turn
+    for (k, (x, y)) in [(1, ("12", "16")), (3, ("9", "20")), (5, ("20", "22"))] {
+        let e = &els[k];
+        assert_eq!(e["verdict"], "proven");
+        let contours = e["outline"]["contours"].as_array().unwrap();
+        assert_eq!(contours.len(), 1, "{}", e["at"]);
+        let pieces = contours[0]["pieces"].as_array().unwrap();
+        assert!(!pieces.is_empty());
+        for p in pieces {
+            let arc = &p["arc"];
+            assert_eq!(arc["center"], serde_json::json!([x, y]), "{}", e["at"]);
+            assert_eq!(arc["radius"], "1");
+        }
+        for w in 0..pieces.len() {
+            let next = &pieces[(w + 1) % pieces.len()]["arc"];
+            assert_eq!(
+                pieces[w]["arc"]["to"], next["from"],
+                "{}: not chained",
+                e["at"]
+            );
+        }
+    }
+    // the touching zero-length segments draw nothing more: one contour, no dot
+    assert_eq!(els[4]["outline"]["contours"].as_array().unwrap().len(), 1);
+
+    // butt caps: SVG draws no dot; each is named in the notes
+    let o = lncert(&["stroke", d, "--tol", "1e-2", "--cap", "butt", "--json"]);
+    let v = json_of(&o);
+    let at: Vec<&str> = v["elements"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|e| e["at"].as_str().unwrap())
+        .collect();
+    assert_eq!(at, ["svg/path[0]", "svg/path[1]", "svg/path[2]"]);
+    let notes = v["notes"].as_array().unwrap();
+    assert_eq!(notes.len(), 3, "{notes:?}");
+    assert!(notes[0]
+        .as_str()
+        .unwrap()
+        .starts_with("svg/line[0]: a zero-length subpath at (12, 16)"));
+    assert!(notes[1]
+        .as_str()
+        .unwrap()
+        .starts_with("svg/path[1]/dot[0]: a zero-length subpath at (9, 20)"));
+
+    // a certificate set cannot state a dot: not written, said why, exit 3
+    let cert = tmp("dots-cert.json", "");
+    std::fs::remove_file(&cert).ok();
+    let o = lncert(&[
+        "stroke",
+        d,
+        "--tol",
+        "1e-2",
+        "--certificate",
+        cert.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(3));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("svg/line[0]: a dot"));
+    assert!(!cert.exists());
+
+    // one pen for the whole document: one curve cannot hold a dot, refused by name
+    let o = lncert(&["stroke", d, "--tol", "1e-2", "--pen", "circle:1"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("svg/line[0]"));
+}

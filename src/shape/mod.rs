@@ -64,6 +64,7 @@
 
 mod arc;
 mod desc;
+mod dots;
 #[cfg(feature = "font")]
 mod font;
 pub(crate) mod io;
@@ -74,6 +75,7 @@ mod winding;
 pub use arc::{parse_arc_input, TravelledArc};
 pub(crate) use desc::{check_keys, checked_offset, curve_value, number, parse_json_value, point};
 pub use desc::{ArcDesc, EllipseArcDesc, ShapeDesc, MAX_COORDINATE};
+pub use dots::{is_point_piece, split_dots};
 #[cfg(feature = "font")]
 pub use font::{
     font_info, glyph_id_by_char, glyph_id_by_name, glyph_outline, glyph_outline_by_id, regularize,

@@ -558,6 +558,27 @@ pub fn circle_stroke(c: &V2<Rational>, rho: &Rational, r: &Rational, tol: Tolera
     }
 }
 
+/// The stroke of a dot (a zero-length subpath with round caps) at `p` with
+/// the pen of radius `r`: the disk `B(p, r)`, its boundary the circle
+/// stated exactly (four quarter arcs), bound 0 — [`circle_stroke`] of the
+/// circle of radius 0 about `p`.
+pub fn dot_stroke(p: &V2<Rational>, r: &Rational, tol: Tolerance) -> Stroke {
+    let mut s = circle_stroke(p, &Rational::from_integer(0.into()), r, tol);
+    let exact = |what: &str| {
+        Claim {
+        proven: true,
+        bound: 0.0,
+        note: format!("exact: ∂S is the pen's circle of radius {} about the dot, and the output is exactly {what} (four quarter arcs, their end points exact rational points on it)", q(r)),
+    }
+    };
+    s.a = exact("this circle");
+    s.b = exact("this circle");
+    s.c.note = "1 closed contour of exact arcs, counter-clockwise".to_string();
+    s.closed_curve = false;
+    s.notes = vec!["a dot (a zero-length subpath, SVG 2): with round caps it is stroked as the pen's disk about the point; its outline is computed exactly, nothing is approximated".to_string()];
+    s
+}
+
 /// What keeps a stroke from being decided, for the JSON `uncertain` list:
 /// every claim not proven (with its note) and every open contour (by index).
 pub(crate) fn uncertain(s: &Stroke) -> Vec<serde_json::Value> {

@@ -26,6 +26,7 @@
 //! "outline", ...}], "verdict", "seconds", "tol", "input_approximation"}`.
 
 use super::args::{bad, q};
+use super::modes::Cap;
 use super::stroke::{options, path_data, stroke_err, stroke_json, stroke_text, StrokeArgs};
 use super::{print_out, CliError};
 use lncert::curve::V2;
@@ -37,6 +38,64 @@ use num_traits::{Signed, Zero};
 use rayon::prelude::*;
 use serde_json::json;
 use std::fmt::Write as _;
+
+/// Each element's dots (zero-length subpaths) as elements of their own, one
+/// dot each, named `AT/dot[k]`, after the element's pieces (an element that
+/// is only one dot keeps its name). With butt caps SVG draws no dot: each is
+/// listed in the notes instead (never dropped silently).
+fn with_dots(elements: Vec<SvgElement>, cap: Cap) -> (Vec<SvgElement>, Vec<String>) {
+    let mut out = Vec::new();
+    let mut notes = Vec::new();
+    for mut e in elements {
+        let dots = std::mem::take(&mut e.dots);
+        let alone = e.pieces.is_empty() && dots.len() == 1;
+        let at = e.at.clone();
+        let template = SvgElement {
+            at: String::new(),
+            pieces: Vec::new(),
+            dots: Vec::new(),
+            approx: InputApprox::default(),
+            stroked: e.stroked,
+            stroke_width: e.stroke_width.clone(),
+            pen_radius: e.pen_radius.clone(),
+        };
+        if !e.pieces.is_empty() {
+            out.push(e);
+        }
+        for (k, p) in dots.into_iter().enumerate() {
+            let name = if alone {
+                at.clone()
+            } else {
+                format!("{at}/dot[{k}]")
+            };
+            if matches!(cap, Cap::Butt) {
+                if template.stroked && !template.stroke_width.is_zero() {
+                    notes.push(format!(
+                        "{name}: a zero-length subpath at ({}, {}) draws nothing with butt caps (SVG 2)",
+                        q(&p.x),
+                        q(&p.y)
+                    ));
+                }
+                continue;
+            }
+            let mut d = SvgElement {
+                at: name,
+                ..template.clone()
+            };
+            d.dots = vec![p];
+            out.push(d);
+        }
+    }
+    (out, notes)
+}
+
+/// The one dot of an element made by [`with_dots`].
+fn dot_of(e: &SvgElement) -> Option<&V2<Rational>> {
+    match (e.pieces.is_empty(), e.dots.as_slice()) {
+        (true, [p]) => Some(p),
+        _ => None,
+    }
+}
 
 /// The elements to stroke and their pens, every one checked before any work.
 fn stroked(elements: &[SvgElement]) -> Result<Vec<(&SvgElement, Rational)>, CliError> {
@@ -66,6 +125,7 @@ pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
         super::args::output_file("--certificate", p)?;
     }
     let (text, elements) = read_document(a)?;
+    let (elements, notes) = with_dots(elements, a.cap);
     let jobs = stroked(&elements)?;
     let (strokes, secs) = stroke_all(a, &jobs)?;
     let mut approx = InputApprox::default();
@@ -96,6 +156,7 @@ pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
         secs,
         verdict,
         approx: &approx,
+        notes: &notes,
     };
     if a.json {
         print_out(&format!("{}\n", report.json()));
@@ -139,10 +200,20 @@ fn write_certificate_set(
             if let Some(c) = &s.certificate {
                 return Ok((e.at.clone(), c.as_ref().clone()));
             }
+            if dot_of(e).is_some() {
+                return Err(format!(
+                    "{}: a dot (a zero-length subpath) has no stroke certificate: a certificate states the offsets of a curve, and a point has none (its outline, the pen's circle about it, is exact)",
+                    e.at
+                ));
+            }
             lncert::stroke::certificate(&e.pieces, s, r)
                 .map(|c| (e.at.clone(), c))
                 .map_err(|err| format!("{}: {}", e.at, err.reason))
         })
+        .collect::<Vec<_>>()
+        .into_iter()
+        // the first element that fails, in document order (not whichever
+        // parallel job failed first)
         .collect();
     let n = jobs.len();
     super::stroke::write_built_certificate(
@@ -214,6 +285,10 @@ fn stroke_all(
         .map(|(e, r)| {
             let t = std::time::Instant::now();
             let opts = options(a, PenShape::Circle(r.clone()))?;
+            if let Some(p) = dot_of(e) {
+                let s = super::stroke::dot_stroke(p, r, opts.tol.clone());
+                return Ok((s, t.elapsed().as_secs_f64()));
+            }
             let circle = exact_circle(e).filter(|_| a.certificate.is_none());
             let s = match (circle, exact_path(&e.pieces, &e.approx)) {
                 (Some((c, rho)), _) => super::stroke::circle_stroke(&c, &rho, r, opts.tol.clone()),
@@ -281,6 +356,8 @@ struct Report<'a> {
     secs: f64,
     verdict: &'a str,
     approx: &'a InputApprox,
+    /// What the document holds that draws nothing (dots with butt caps).
+    notes: &'a [String],
 }
 
 impl Report<'_> {
@@ -294,6 +371,7 @@ impl Report<'_> {
             secs,
             verdict,
             approx,
+            notes,
         } = self;
         let elements: Vec<serde_json::Value> = jobs
             .iter()
@@ -320,6 +398,7 @@ impl Report<'_> {
             "tol": a.tol,
             "verdict": verdict,
             "input_approximation": approx.to_json(),
+            "notes": notes,
         })
     }
 
@@ -332,6 +411,7 @@ impl Report<'_> {
             secs,
             verdict,
             approx,
+            notes,
             ..
         } = self;
         let mut out = super::curve_input::input_line("input", approx).unwrap_or_default();
@@ -352,6 +432,9 @@ impl Report<'_> {
             for line in stroke_text(s, *t).lines() {
                 let _ = writeln!(out, "  {line}");
             }
+        }
+        for n in notes.iter() {
+            let _ = writeln!(out, "note: {n}");
         }
         let _ = writeln!(out, "verdict: {verdict}");
         out

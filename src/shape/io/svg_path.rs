@@ -17,6 +17,8 @@ struct SvgParser<'a> {
     out: Vec<Bezier<Rational>>,
     cur: V2<Rational>,
     start: V2<Rational>,
+    /// `out.len()` when the current subpath began (its moveto).
+    subpath_first: usize,
     /// Second control point of the previous segment if it was `C`/`S`.
     last_cubic: Option<V2<Rational>>,
     /// Control point of the previous segment if it was `Q`/`T`.
@@ -64,6 +66,7 @@ impl<'a> SvgParser<'a> {
             out: Vec::new(),
             cur: V2::new(zero(), zero()),
             start: V2::new(zero(), zero()),
+            subpath_first: 0,
             last_cubic: None,
             last_quad: None,
             approx: InputApprox::default(),
@@ -237,6 +240,7 @@ impl<'a> SvgParser<'a> {
             b'M' if !repeat => {
                 let p = self.point(rel, arg(0)?, arg(1)?);
                 self.start = p.clone();
+                self.subpath_first = self.out.len();
                 self.cur = p;
             }
             b'M' | b'L' => {
@@ -369,6 +373,11 @@ impl<'a> SvgParser<'a> {
         if self.cur != self.start {
             let (cur, start) = (self.cur.clone(), self.start.clone());
             self.push(vec![cur, start], at)?;
+        } else if self.out.len() == self.subpath_first {
+            // `M x y z`: a zero-length closed subpath, a point piece (a dot
+            // that round caps draw, SVG 2: `lncert::shape::split_dots`)
+            let p = self.start.clone();
+            self.push(vec![p.clone(), p], at)?;
         }
         self.cur = self.start.clone();
         self.last_cubic = None;

@@ -36,6 +36,10 @@ fn polyline(points: &[V2<Rational>], closed: bool) -> Vec<Bezier<Rational>> {
         .filter(|w| w[0] != w[1])
         .map(|w| Bezier::new(vec![w[0].clone(), w[1].clone()]))
         .collect();
+    if out.is_empty() && points.len() >= 2 {
+        // every point the same: a zero-length subpath (a dot, for the caller)
+        return vec![Bezier::new(vec![points[0].clone(), points[0].clone()])];
+    }
     if closed {
         if let (Some(a), Some(b)) = (points.last(), points.first()) {
             if a != b {

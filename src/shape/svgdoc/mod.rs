@@ -100,8 +100,13 @@ pub struct SvgElement {
     /// Where it is: `svg/g[0]/path[1]`; an instance of `<use>` is
     /// `svg/use[0]/#id` (then the referenced element's own children).
     pub at: String,
-    /// Its pieces, mapped exactly by the rational transform.
+    /// Its pieces, mapped exactly by the rational transform; without point
+    /// pieces (all control points equal: [`crate::shape::split_dots`]).
     pub pieces: Vec<Bezier<Rational>>,
+    /// Its zero-length subpaths (`<line>` with equal ends, `M 5 5 h 0`, …)
+    /// in the document's user coordinates: dots, which round caps stroke as
+    /// the pen's disk and butt caps do not draw (SVG 2).
+    pub dots: Vec<crate::curve::V2<Rational>>,
     /// What was approximated to get them (arcs; irrational rotations and
     /// skews above it), bounds in the document's user coordinates.
     pub approx: InputApprox,

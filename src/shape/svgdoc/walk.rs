@@ -38,6 +38,16 @@ pub fn parse_svg_document_reported(
     let mut out = Vec::new();
     let mut approx = InputApprox::default();
     for mut e in elements {
+        if let Some(p) = e.dots.first() {
+            return Err(err(
+                &e.at,
+                format!(
+                    "a zero-length subpath (a dot) at ({}, {}): one curve has no place for a point; dots are read per element (parse_svg_document_elements; `lncert stroke DOC.svg` without --pen strokes them as disks)",
+                    p.x,
+                    p.y
+                ),
+            ));
+        }
         e.approx.shift(out.len());
         out.extend(e.pieces);
         approx.extend_scaled(e.approx, "", 1.0);
@@ -113,12 +123,13 @@ pub fn parse_svg_document_elements(text: &str) -> Result<Vec<SvgElement>, CurveP
         visible: true,
     };
     w.walk(root, "svg".to_string(), &ctx)?;
-    if w.out.iter().all(|e| e.pieces.is_empty()) {
+    let draws = |e: &SvgElement| !e.pieces.is_empty() || !e.dots.is_empty();
+    if !w.out.iter().any(draws) {
         return Err(CurveParseError::Empty {
             what: "the SVG document".to_string(),
         });
     }
-    w.out.retain(|e| !e.pieces.is_empty());
+    w.out.retain(draws);
     Ok(w.out)
 }
 
@@ -328,6 +339,7 @@ impl<'a, 'input> Walker<'a, 'input> {
             .iter()
             .map(|b| Bezier::new(b.points().iter().map(|p| ctx.m.apply(p)).collect()))
             .collect();
+        let (pieces, dots) = crate::shape::split_dots(pieces, &mut approx);
         let two = Rational::from_integer(2.into());
         let pen_radius = match scale {
             Some(k) => Ok(&ctx.stroke_width / &two * k),
@@ -338,6 +350,7 @@ impl<'a, 'input> Walker<'a, 'input> {
         self.out.push(SvgElement {
             at,
             pieces,
+            dots,
             approx,
             stroked: ctx.stroke,
             stroke_width: ctx.stroke_width.clone(),
