@@ -59,18 +59,9 @@ impl Default for Limits {
 
 /// An object's key: its text between the quotes, as written (escapes
 /// included), so that a member costs no allocation. Compared and shown
-/// decoded.
-///
-/// # Examples
-/// ```
-/// use lncert::json::{parse, Limits};
-/// let doc = parse(r#"{"a\u0062": 1}"#, &Limits::DEFAULT).unwrap();
-/// let (k, _) = &doc.as_object().unwrap()[0];
-/// assert_eq!(k.raw(), "a\\u0062");
-/// assert_eq!(k.text(), "ab");
-/// assert!(*k == "ab");
-/// assert!(doc.get("ab").is_some());
-/// ```
+/// decoded: the key written `"a\u0062"` has the raw text `a\u0062` and the
+/// text `ab`, and `get("ab")` finds it (unit test
+/// `escaped_keys_are_compared_decoded`).
 #[derive(Clone, Copy, Debug, Eq)]
 pub struct Key<'a>(&'a str);
 

@@ -98,7 +98,9 @@ mod tests {
 
     #[test]
     fn isolated_point_pieces_are_dots_and_touching_ones_vanish() {
-        let cases: [(&str, usize, &[(i64, i64)]); 8] = [
+        // (path data, pieces kept, the dots)
+        type Case<'a> = (&'a str, usize, &'a [(i64, i64)]);
+        let cases: [Case; 8] = [
             // a closed subpath of one point; closing a drawn subpath adds none
             ("M 0 0 L 1 0 M 3 3 z", 1, &[(3, 3)]),
             ("M 0 0 L 1 0 L 0 0 z", 2, &[]),

@@ -69,7 +69,7 @@ pub(crate) struct Bez {
     /// are never tested against): `|x − p|²` has the Bernstein coefficients
     /// `sq_k − 2 p·elev_k + |p|²` (degree `2n`), where `sq` are those of
     /// `|x|²` and `elev` the control points raised to degree `2n`.
-    dform: Option<Box<DistForm>>,
+    dform: Option<DistForm>,
     /// The control polygon's box `[lo, hi]`, its ends rounded outward
     /// (`None` if not finite).
     bbox: Option<([f64; 2], [f64; 2])>,
@@ -145,7 +145,7 @@ impl DistForm {
 impl Bez {
     /// A piece of the input: with the distance form of [`outside_near`].
     pub(crate) fn with_distance_form(pts: Vec<P>) -> Bez {
-        let dform = Some(Box::new(DistForm::new(&pts)));
+        let dform = Some(DistForm::new(&pts));
         Bez {
             dform,
             ..Bez::new(pts)
