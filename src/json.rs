@@ -88,11 +88,7 @@ impl PartialEq for Key<'_> {
 
 impl PartialEq<str> for Key<'_> {
     fn eq(&self, other: &str) -> bool {
-        if self.0.contains('\\') {
-            unescape(self.0) == other
-        } else {
-            self.0 == other
-        }
+        self.text() == other
     }
 }
 
@@ -111,21 +107,12 @@ impl fmt::Display for Key<'_> {
 /// Decodes the escapes of a string's text that the parser has validated.
 fn unescape(raw: &str) -> String {
     let quoted = format!("\"{raw}\"");
-    let mut p = Parser {
-        text: &quoted,
-        b: quoted.as_bytes(),
-        pos: 0,
-        nodes: 0,
-        lim: Limits {
-            max_string_bytes: usize::MAX,
-            ..Limits::DEFAULT
-        },
-        path: Vec::new(),
-        items: Vec::new(),
-        members: Vec::new(),
+    let lim = Limits {
+        max_string_bytes: usize::MAX,
+        ..Limits::DEFAULT
     };
     // the text was read by `string` once already: decoding it again cannot fail
-    match p.string() {
+    match Parser::new(&quoted, &lim).string() {
         Ok(s) => s.into_owned(),
         Err(_) => raw.to_string(),
     }
@@ -277,16 +264,7 @@ pub fn parse<'a>(text: &'a str, limits: &Limits) -> Result<Json<'a>, JsonError> 
 }
 
 fn parse_boxed<'a>(text: &'a str, limits: &Limits) -> Parsed<Json<'a>> {
-    let mut p = Parser {
-        text,
-        b: text.as_bytes(),
-        pos: 0,
-        nodes: 0,
-        lim: *limits,
-        path: Vec::new(),
-        items: Vec::new(),
-        members: Vec::new(),
-    };
+    let mut p = Parser::new(text, limits);
     if text.len() > limits.max_bytes {
         return Err(p.limit(format!(
             "the document has {} bytes, more than the limit of {}",
@@ -312,6 +290,19 @@ fn line_col(bytes: &[u8], pos: usize) -> (usize, usize) {
 }
 
 impl<'a> Parser<'a> {
+    fn new(text: &'a str, limits: &Limits) -> Parser<'a> {
+        Parser {
+            text,
+            b: text.as_bytes(),
+            pos: 0,
+            nodes: 0,
+            lim: *limits,
+            path: Vec::new(),
+            items: Vec::new(),
+            members: Vec::new(),
+        }
+    }
+
     fn path_string(&self) -> String {
         if self.path.is_empty() {
             return "(top level)".to_string();

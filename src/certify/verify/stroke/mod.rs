@@ -1777,6 +1777,7 @@ pub(crate) fn check(doc: &Json, budget: &Budget) -> Result<Valid, Invalid> {
             format!("expected {} contours, as the outline", outline.len()),
         ));
     }
+    let cover_at = |(ci, i): (usize, usize)| format!("cover[{ci}][{i}]");
     let mut jobs = Vec::new();
     for (ci, (c, ps)) in cov.iter().zip(&outline).enumerate() {
         let at = format!("cover[{ci}]");
@@ -1788,8 +1789,9 @@ pub(crate) fn check(doc: &Json, budget: &Budget) -> Result<Valid, Invalid> {
             ));
         }
         for (i, (v, p)) in per.iter().zip(ps).enumerate() {
-            // (the path is formatted where it is used: a string per piece
-            // alive for the whole check would be part of the peak memory)
+            // (the path is formatted where it is used, `cover_at`: a string
+            // per piece alive for the whole check would be part of the peak
+            // memory)
             jobs.push(((ci, i), v, p));
         }
     }
@@ -1820,7 +1822,7 @@ pub(crate) fn check(doc: &Json, budget: &Budget) -> Result<Valid, Invalid> {
         || {
             let reads: Vec<PieceRead> = jobs
                 .par_iter()
-                .map(|((ci, i), v, p)| read_cover_piece(v, &format!("cover[{ci}][{i}]"), p))
+                .map(|(k, v, p)| read_cover_piece(v, &cover_at(*k), p))
                 .collect();
             let all_read = reads.iter().all(|r| r.stop.is_none());
             rayon::join(
@@ -1828,9 +1830,8 @@ pub(crate) fn check(doc: &Json, budget: &Budget) -> Result<Valid, Invalid> {
                     reads
                         .par_iter()
                         .zip(jobs.par_iter())
-                        .map(|(r, ((ci, i), _, _))| {
-                            let at = format!("cover[{ci}][{i}]");
-                            let t = check_read_piece(r, &at, &input, tol_i);
+                        .map(|(r, (k, _, _))| {
+                            let t = check_read_piece(r, &cover_at(*k), &input, tol_i);
                             if t.is_err() {
                                 a_failed.store(true, relaxed);
                             }
