@@ -1,6 +1,7 @@
 //! Strokes a corpus of SVG icons element by element, as `lncert stroke
-//! ICON.svg --tol T --json` does (each element with its own
-//! `stroke-width`), and prints what was proven, undecided and refused, why,
+//! ICON.svg --tol T --json --output cubic` does (each element with its own
+//! `stroke-width`; cubic output is what `--out OUT.svg` writes, `--output
+//! native` the outline's own pieces), and prints what was proven, undecided and refused, why,
 //! and how long it took.
 //!
 //! ```sh
@@ -51,7 +52,7 @@ fn class(s: &str) -> String {
     t
 }
 
-fn run_icon(lncert: &Path, icon: &Path, tol: &str, timeout: Duration) -> Outcome {
+fn run_icon(lncert: &Path, icon: &Path, tol: &str, output: &str, timeout: Duration) -> Outcome {
     let name = icon
         .file_name()
         .map(|n| n.to_string_lossy().to_string())
@@ -59,6 +60,7 @@ fn run_icon(lncert: &Path, icon: &Path, tol: &str, timeout: Duration) -> Outcome
     let t0 = Instant::now();
     let child = Command::new(lncert)
         .args(["stroke", &icon.to_string_lossy(), "--tol", tol, "--json"])
+        .args(["--output", output])
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn();
@@ -72,9 +74,22 @@ fn run_icon(lncert: &Path, icon: &Path, tol: &str, timeout: Duration) -> Outcome
             dots: 0,
         };
     };
-    loop {
+    // the pipes are drained while the child runs (a child whose output
+    // fills a pipe that nobody reads would block until the timeout)
+    let drain = |pipe: Option<Box<dyn std::io::Read + Send>>| {
+        std::thread::spawn(move || {
+            let mut buf = Vec::new();
+            if let Some(mut p) = pipe {
+                let _ = p.read_to_end(&mut buf);
+            }
+            buf
+        })
+    };
+    let stdout = drain(child.stdout.take().map(|p| Box::new(p) as _));
+    let stderr = drain(child.stderr.take().map(|p| Box::new(p) as _));
+    let status = loop {
         match child.try_wait() {
-            Ok(Some(_)) => break,
+            Ok(Some(status)) => break status,
             Ok(None) if t0.elapsed() > timeout => {
                 let _ = child.kill();
                 let _ = child.wait();
@@ -87,10 +102,24 @@ fn run_icon(lncert: &Path, icon: &Path, tol: &str, timeout: Duration) -> Outcome
                     dots: 0,
                 };
             }
-            _ => std::thread::sleep(Duration::from_millis(2)),
+            Ok(None) => std::thread::sleep(Duration::from_millis(2)),
+            Err(e) => {
+                return Outcome {
+                    icon: name,
+                    verdict: "refused",
+                    secs: t0.elapsed().as_secs_f64(),
+                    reasons: vec![format!("lncert could not be waited for: {e}")],
+                    elements: 0,
+                    dots: 0,
+                }
+            }
         }
-    }
-    let out = child.wait_with_output().expect("the child's output");
+    };
+    let out = std::process::Output {
+        status,
+        stdout: stdout.join().unwrap_or_default(),
+        stderr: stderr.join().unwrap_or_default(),
+    };
     let secs = t0.elapsed().as_secs_f64();
     let code = out.status.code().unwrap_or(-1);
     let stderr = String::from_utf8_lossy(&out.stderr);
@@ -132,10 +161,11 @@ fn run_icon(lncert: &Path, icon: &Path, tol: &str, timeout: Duration) -> Outcome
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let Some(dir) = args.first().filter(|a| !a.starts_with("--")) else {
-        eprintln!("usage: corpus DIR|FILE.svg [--tol T] [--every K] [--timeout S] [--jobs N] [--json FILE]");
+        eprintln!("usage: corpus DIR|FILE.svg [--tol T] [--output cubic|native] [--every K] [--timeout S] [--jobs N] [--json FILE]");
         std::process::exit(2);
     };
     let tol: String = arg(&args, "--tol", "1e-2".to_string());
+    let output: String = arg(&args, "--output", "cubic".to_string());
     let every: usize = arg(&args, "--every", 1).max(1);
     let timeout = Duration::from_secs(arg(&args, "--timeout", 60));
     let jobs: usize = arg(&args, "--jobs", 2).max(1);
@@ -162,7 +192,10 @@ fn main() {
         eprintln!("corpus: no .svg files in {dir}");
         std::process::exit(2);
     }
-    eprintln!("corpus: {} icons, TOL {tol}, {jobs} at once", icons.len());
+    eprintln!(
+        "corpus: {} icons, TOL {tol}, {output} output, {jobs} at once",
+        icons.len()
+    );
     let next = std::sync::atomic::AtomicUsize::new(0);
     let results = std::sync::Mutex::new(Vec::new());
     let t0 = Instant::now();
@@ -171,7 +204,7 @@ fn main() {
             s.spawn(|| loop {
                 let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
                 let Some(icon) = icons.get(i) else { break };
-                let o = run_icon(&lncert, icon, &tol, timeout);
+                let o = run_icon(&lncert, icon, &tol, &output, timeout);
                 let mut r = results.lock().expect("results");
                 r.push(o);
                 if r.len() % 50 == 0 {
@@ -192,7 +225,7 @@ fn main() {
     let pct = |k: usize| 100.0 * k as f64 / n as f64;
     let (p, u, r) = (count("proven"), count("undecided"), count("refused"));
     println!(
-        "{n} icons ({} elements, {} dots stroked), TOL {tol}, {:.0} s in all",
+        "{n} icons ({} elements, {} dots stroked), TOL {tol}, {output} output, {:.0} s in all",
         results.iter().map(|o| o.elements).sum::<usize>(),
         results.iter().map(|o| o.dots).sum::<usize>(),
         t0.elapsed().as_secs_f64()

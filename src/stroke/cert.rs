@@ -931,6 +931,32 @@ fn disk_certificate(
             "the stroke is not proven: no certificate is written for an unproven outline",
         ));
     }
+    outline_certificate(curve, s, radius, metric)
+}
+
+/// [`certificate_path`] of an outline whose claims (a) and (b) are still to
+/// be proven, by this certificate once the verifier accepts it (the exact
+/// construction of [`super::lines_arcs`]); claim (c) must be proven.
+pub(crate) fn certificate_unproven(
+    path: &[super::PathPiece],
+    s: &Stroke,
+    radius: &Rational,
+) -> Result<Value, Error> {
+    if !s.c.proven {
+        return Err(err("claim (c) is not proven: no certificate is written"));
+    }
+    let pieces = super::path::curve_pieces(path).map_err(|e| err(e.reason))?;
+    outline_certificate(&pieces, s, radius, None)
+}
+
+/// The certificate's parts and boxes for the outline `s` (see
+/// [`disk_certificate`]), whatever the stroke's claims say.
+fn outline_certificate(
+    curve: &[CurvePiece],
+    s: &Stroke,
+    radius: &Rational,
+    metric: Option<(&PenMap, &Rational)>,
+) -> Result<Value, Error> {
     let mut input = Input::with_pieces(curve.to_vec(), radius.clone(), "curve")
         .map_err(|e| err(e.to_string()))?;
     input.metric = metric.map(|(m, _)| m.metric());

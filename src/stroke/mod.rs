@@ -34,6 +34,7 @@ mod cert;
 pub(crate) mod circle;
 pub(crate) mod ellipse;
 pub(crate) mod intersect;
+mod lines_arcs;
 pub(crate) mod onside;
 pub(crate) mod path;
 mod referee;

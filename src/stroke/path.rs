@@ -126,7 +126,7 @@ type Step = (V2<Rational>, V2<Rational>);
 /// An arc's radius vectors split into steps of more than 0 and at most a
 /// quarter turn in its direction: quarter turns `±J` from the start (exact,
 /// on the circle), then the rest.
-fn quarters(a: &Arc) -> Result<Vec<Step>, String> {
+pub(super) fn quarters(a: &Arc) -> Result<Vec<Step>, String> {
     if !a.radius.is_positive() {
         return Err("the arc's radius must be > 0".into());
     }
@@ -304,6 +304,30 @@ pub fn parse_path(text: &str) -> Result<(Vec<PathPiece>, InputApprox), Error> {
 /// # }
 /// ```
 pub fn stroke_path(path: &[PathPiece], opts: &StrokeOptions) -> Result<Stroke, Error> {
+    // lines and arcs: constructed exactly, proven by their certificate
+    let exact = super::lines_arcs::stroke(path, opts);
+    if let Some(s) = &exact {
+        if s.proven() {
+            return Ok(s.clone());
+        }
+    }
+    let mut s = stroke_approximated(path, opts)?;
+    if let Some(e) = exact {
+        let why = [&e.a, &e.b, &e.c]
+            .iter()
+            .find(|c| !c.proven)
+            .map_or(String::new(), |c| c.note.clone());
+        super::trim::add_note(
+            &mut s.notes,
+            format!("the exact construction of lines and arcs was not proven: {why}"),
+        );
+    }
+    Ok(s)
+}
+
+/// [`stroke_path`] through the general construction: Bézier pieces as they
+/// are, arcs by their certified cubic approximations.
+fn stroke_approximated(path: &[PathPiece], opts: &StrokeOptions) -> Result<Stroke, Error> {
     let beziers: Option<Vec<Bezier<Rational>>> = path
         .iter()
         .map(|p| match p {

@@ -33,7 +33,7 @@ use lncert::curve::V2;
 use lncert::scalar::Rational;
 use lncert::shape::svgarc::{ApproxKind, ExactPiece};
 use lncert::shape::{parse_svg_document_elements, InputApprox, SvgElement};
-use lncert::stroke::{exact_path, stroke, stroke_path, PenShape, Stroke};
+use lncert::stroke::{exact_path, stroke_path, PathPiece, PenShape, Stroke};
 use num_traits::{Signed, Zero};
 use rayon::prelude::*;
 use serde_json::json;
@@ -295,9 +295,13 @@ fn stroke_all(
                 (None, Some((path, _))) => stroke_path(&path, &opts)
                     .map_err(stroke_err)
                     .map_err(|err| bad("CURVE", format!("{}: {}", e.at, err)))?,
-                (None, None) => stroke(&e.pieces, &opts)
-                    .map_err(stroke_err)
-                    .map_err(|err| bad("CURVE", format!("{}: {}", e.at, err)))?,
+                (None, None) => {
+                    let path: Vec<PathPiece> =
+                        e.pieces.iter().cloned().map(PathPiece::Bezier).collect();
+                    stroke_path(&path, &opts)
+                }
+                .map_err(stroke_err)
+                .map_err(|err| bad("CURVE", format!("{}: {}", e.at, err)))?,
             };
             Ok((s, t.elapsed().as_secs_f64()))
         })

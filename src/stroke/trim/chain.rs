@@ -20,7 +20,7 @@ use num_traits::{One, Zero};
 /// only contact in a corner around it. The output pieces are the same point
 /// sets, so the same holds for them, and (c) only has to check that pieces
 /// sharing an end point are consecutive in their contour.
-pub(super) struct Known<'a> {
+pub(crate) struct Known<'a> {
     /// Per contour, per piece (as [`chain`] returns them).
     pub(super) origin: Vec<Vec<Option<usize>>>,
     /// The raw pairs `(i, j)`, `i ≤ j`, not proven to meet only at shared
@@ -31,7 +31,7 @@ pub(super) struct Known<'a> {
 /// Chains pieces into contours by exact shared end points; each piece's
 /// tag (the raw piece it is exactly, if any) is returned beside the
 /// contours, in the same order.
-pub(super) fn chain(
+pub(crate) fn chain(
     tagged: Vec<(Piece, Option<usize>)>,
 ) -> (Vec<Contour>, Vec<Vec<Option<usize>>>) {
     let (pieces, tags): (Vec<Piece>, Vec<Option<usize>>) = tagged.into_iter().unzip();
@@ -89,7 +89,7 @@ pub(super) fn chain(
 /// Pairs that `known` answers for (see [`Known`]) are not solved again: they
 /// meet exactly at their shared end points, which must then be joints of
 /// consecutive pieces. Returns (proven, complete, note).
-pub(super) fn check_simple(
+pub(crate) fn check_simple(
     contours: &[Contour],
     iopts: &IntersectOptions,
     known: Option<&Known>,

@@ -74,6 +74,7 @@ mod split;
 mod tests;
 mod types;
 
+pub(crate) use chain::{chain, check_simple};
 pub(crate) use classify::{outside, positive_bernstein, positive_bernstein_iv};
 pub use driver::stroke;
 pub use types::{
