@@ -4,7 +4,7 @@
 //! arcs (computed directly from the circle, not by the engine).
 
 use lncert::certify::verify::verify;
-use lncert::stroke::{parse_path, stroke_path, PathPiece, StrokeOptions};
+use lncert::stroke::{parse_path, stroke_path, PathPiece, Piece, StrokeOptions};
 use lncert::{parse_rational, Rational};
 
 fn opts(r: &str, tol: &str) -> StrokeOptions {
@@ -115,10 +115,25 @@ fn rounded_rect_circle_and_arc_paths_are_proven_against_the_exact_arcs() {
 }
 
 #[test]
-fn a_path_without_arcs_is_the_plain_stroke() {
-    let (path, _) = parse_path("M 0 0 L 4 0 L 4 3").unwrap();
+fn a_path_with_a_cubic_is_the_plain_stroke_and_a_polyline_is_exact() {
+    // a cubic: the general construction, its claims proven without a certificate
+    let (path, _) = parse_path("M 0 0 L 4 0 C 5 1 5 2 4 3").unwrap();
     let s = stroke_path(&path, &opts("1", "1e-2")).unwrap();
     assert!(s.proven() && s.certificate.is_none());
+    // segments only: constructed exactly, the offsets are straight segments
+    // and the caps and join arcs of the pen's circle, proven by the
+    // certificate
+    let (path, _) = parse_path("M 0 0 L 4 0 L 4 3").unwrap();
+    let s = stroke_path(&path, &opts("1", "1e-2")).unwrap();
+    assert!(s.proven() && s.certificate.is_some());
+    assert_eq!(s.contours.len(), 1);
+    let one = lncert::parse_rational("1").unwrap();
+    for p in s.contours.iter().flat_map(|c| &c.pieces) {
+        match p {
+            Piece::Bezier(b) => assert_eq!(b.points().len(), 2),
+            Piece::Arc(a) => assert_eq!(a.radius, one),
+        }
+    }
 }
 
 #[test]

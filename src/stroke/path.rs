@@ -280,7 +280,13 @@ pub fn parse_path(text: &str) -> Result<(Vec<PathPiece>, InputApprox), Error> {
 
 /// The stroke of an exact path with a circular pen.
 ///
-/// Without arcs: [`super::stroke`]. With arcs: the outline is built from
+/// A path of segments and arcs only, with round caps, is first stroked
+/// **exactly** (its boundary from the offset lines, concentric arcs and the
+/// pen's circles about the end points, each stretch decided by exact
+/// predicates; `proofs/trimming.md`, "Lines and arcs exactly"), with claims
+/// (a) and (b) proven by its stroke certificate (kept in
+/// [`Stroke::certificate`]). Where that is not proven, or for other paths:
+/// without arcs, [`super::stroke`]; with arcs, the outline is built from
 /// the arcs' certified cubic approximations at half the tolerance, then
 /// claims (a) and (b) are proven against the exact path by its stroke
 /// certificate, checked by the independent verifier (kept in
