@@ -497,11 +497,49 @@ pub(crate) fn stroke(path: &[PathPiece], opts: &StrokeOptions) -> Option<Stroke>
             },
         })
         .collect();
+    // candidate pairs whose boxes are apart cannot meet
+    let boxes: Vec<[f64; 4]> = cands
+        .iter()
+        .zip(&models)
+        .map(|(c, md)| match c {
+            Cand::Line { .. } => {
+                let (a, b) = (md.b, (md.b.0 + md.d.0, md.b.1 + md.d.1));
+                [a.0.min(b.0), a.1.min(b.1), a.0.max(b.0), a.1.max(b.1)]
+            }
+            Cand::Circ { .. } => [
+                md.b.0 - md.d.0,
+                md.b.1 - md.d.0,
+                md.b.0 + md.d.0,
+                md.b.1 + md.d.0,
+            ],
+        })
+        .collect();
+    let apart = |a: &[f64; 4], b: &[f64; 4], gap: f64| {
+        a[0] > b[2] + gap || b[0] > a[2] + gap || a[1] > b[3] + gap || b[1] > a[3] + gap
+    };
     for i in 0..cands.len() {
         for j in i + 1..cands.len() {
-            meet(i, j, &cands, &models, &r, eps, &mut splits);
+            if !apart(&boxes[i], &boxes[j], 8.0 * eps) {
+                meet(i, j, &cands, &models, &r, eps, &mut splits);
+            }
         }
     }
+    // the input pieces' boxes: a piece farther than `r` (with room) from a
+    // test point is farther exactly too, and need not be compared
+    let input_boxes: Vec<[f64; 4]> = input
+        .iter()
+        .map(|p| match p {
+            In::Seg { p, q } => {
+                let (a, b) = (fp(p), fp(q));
+                [a.0.min(b.0), a.1.min(b.1), a.0.max(b.0), a.1.max(b.1)]
+            }
+            In::Arc { c, rho, .. } => {
+                let (c, rho) = (fp(c), f(rho));
+                [c.0 - rho, c.1 - rho, c.0 + rho, c.1 + rho]
+            }
+        })
+        .collect();
+    let reach = f(&r) * (1.0 + 1e-6) + 1e-6 * scale;
 
     // --- decide every stretch
     struct Kept {
@@ -568,7 +606,13 @@ pub(crate) fn stroke(path: &[PathPiece], opts: &StrokeOptions) -> Option<Stroke>
             .map(|w| {
                 let tm = 0.5 * (w[0].t + w[1].t);
                 test_point(c, md, tm, &r).is_some_and(|(x, m, nu)| {
-                    keep(ci, &x, &m, &nu, &input, &r, &line_of, &arc_of, &vertex_of)
+                    let at = md.point(c, tm);
+                    let near: Vec<usize> = (0..input.len())
+                        .filter(|&j| !apart(&input_boxes[j], &[at.0, at.1, at.0, at.1], reach))
+                        .collect();
+                    keep(
+                        ci, &x, &m, &nu, &input, &near, &r, &line_of, &arc_of, &vertex_of,
+                    )
                 })
             })
             .collect();
@@ -975,7 +1019,8 @@ fn test_point(c: &Cand, md: &Model, t: f64, r: &Q) -> Option<(Pt, Q, Pt)> {
 }
 
 /// Is the stretch of candidate `ci` with test point `x` (outward `nu`) on
-/// `∂S`? (see the module's documentation)
+/// `∂S`? (see the module's documentation; `near`: the pieces that may come
+/// within `r` of `x`, the others are farther)
 #[allow(clippy::too_many_arguments)]
 fn keep(
     ci: usize,
@@ -983,13 +1028,14 @@ fn keep(
     m: &Q,
     nu: &Pt,
     input: &[In],
+    near: &[usize],
     r: &Q,
     line_of: &HashMap<(usize, i8), usize>,
     arc_of: &HashMap<(usize, bool), usize>,
     vertex_of: &HashMap<(Q, Q), usize>,
 ) -> bool {
     let mut coincident: Vec<(usize, Ordering)> = Vec::new();
-    for (j, piece) in input.iter().enumerate() {
+    for (j, piece) in near.iter().map(|&j| (j, &input[j])) {
         let (o, near) = compare(x, m, piece, r);
         match o {
             Ordering::Less => return false,
