@@ -913,8 +913,12 @@ pub fn certificate_path(
             "an exact path with arcs is certified with a circular pen only",
         ));
     }
-    let pieces = super::path::curve_pieces(path).map_err(|e| err(e.reason))?;
-    disk_certificate(&pieces, s, radius, None)
+    if !(s.a.proven && s.b.proven) {
+        return Err(err(
+            "the stroke is not proven: no certificate is written for an unproven outline",
+        ));
+    }
+    certificate_unproven(path, s, radius)
 }
 
 /// [`certificate`] for a disk pen; with `metric = (M, tol)`, of the

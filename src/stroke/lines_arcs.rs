@@ -37,7 +37,7 @@
 //! claim undecided.
 
 use super::circle::{on_circle, snap, Arc};
-use super::path::PathPiece;
+use super::path::{undecided, PathPiece};
 use super::{Claim, Piece, Stroke, StrokeOptions};
 use crate::curve::{Bezier, V2};
 use crate::scalar::{rational_from_f64, Rational, Scalar};
@@ -478,10 +478,7 @@ pub(crate) fn stroke(path: &[PathPiece], opts: &StrokeOptions) -> Option<Stroke>
             }
             Cand::Circ { z, rr, range, .. } => match range {
                 Some((u, v)) => {
-                    let at = |w: &P| {
-                        let n = crate::shape::svgarc::rational_sqrt(&w.norm2())?;
-                        Some(z.add(&w.scale(&(rr / n))))
-                    };
+                    let at = |w: &P| super::path::on_circle(z, rr, w);
                     vec![
                         Split {
                             t: 0.0,
@@ -876,45 +873,14 @@ pub(crate) fn stroke(path: &[PathPiece], opts: &StrokeOptions) -> Option<Stroke>
         s.b = undecided(why);
         return Some(s);
     }
-    let checked = super::cert::certificate_unproven(path, &s, &r).and_then(|cert| {
-        crate::certify::verify::verify(&cert.to_string())
-            .map(|v| (cert, v))
-            .map_err(|e| crate::Error {
-                field: "certificate".into(),
-                reason: format!("refused at {}: {}", e.at, e.reason),
-            })
-    });
+    let checked = super::path::verified(super::cert::certificate_unproven(path, &s, &r));
     log::debug!("lines and arcs: certificate checked ({:?})", t0.elapsed());
-    match checked {
-        Ok((cert, v)) => {
-            let by = "the exact stroke of lines and arcs, by the stroke certificate (checked by the independent verifier)";
-            s.a = Claim {
-                proven: true,
-                bound: v.max_bound,
-                note: format!(
-                    "every outline point is within {:.3e} of ∂S: {by}",
-                    v.max_bound
-                ),
-            };
-            s.b = Claim {
-                proven: true,
-                bound: v.max_bound,
-                note: format!(
-                    "every point of ∂S is within {:.3e} of the outline: {by}",
-                    v.max_bound
-                ),
-            };
-            s.certificate = Some(Box::new(cert));
-        }
-        Err(e) => {
-            let why = format!(
-                "not proven by the exact construction's certificate: {}",
-                e.reason
-            );
-            s.a = undecided(why.clone());
-            s.b = undecided(why);
-        }
-    }
+    super::path::prove_ab(
+        &mut s,
+        checked,
+        "by the exact construction of lines and arcs and its stroke certificate (checked by the independent verifier)",
+        "not proven by the exact construction's certificate",
+    );
     Some(s)
 }
 
@@ -976,14 +942,6 @@ fn merge_run(pieces: Vec<Piece>, closed: bool) -> Vec<Piece> {
         }
     }
     out
-}
-
-fn undecided(note: String) -> Claim {
-    Claim {
-        proven: false,
-        bound: f64::INFINITY,
-        note,
-    }
 }
 
 /// The exact test point of a candidate at the parameter `t`, the field's

@@ -83,7 +83,7 @@ impl PathPiece {
 
 /// The point of the circle `(c, r)` in the direction `d`, when `|d|` is
 /// rational (then the point is).
-fn on_circle(c: &V2<Rational>, r: &Rational, d: &V2<Rational>) -> Option<V2<Rational>> {
+pub(super) fn on_circle(c: &V2<Rational>, r: &Rational, d: &V2<Rational>) -> Option<V2<Rational>> {
     let n = crate::shape::svgarc::rational_sqrt(&d.dot(d))?;
     (!n.is_zero()).then(|| V2::new(&c.x + &d.x * r / &n, &c.y + &d.y * r / &n))
 }
@@ -403,11 +403,7 @@ fn stroke_approximated(path: &[PathPiece], opts: &StrokeOptions) -> Result<Strok
     // at the tolerance asked for where that is refused
     let certify = |s: &mut Stroke, t: Tolerance| {
         s.tol = t;
-        let r = super::certificate_path(path, s, &opts.radius).and_then(|cert| {
-            crate::certify::verify::verify(&cert.to_string())
-                .map(|v| (cert, v))
-                .map_err(|e| bad("certificate", format!("refused at {}: {}", e.at, e.reason)))
-        });
+        let r = verified(super::certificate_path(path, s, &opts.radius));
         s.tol = opts.tol.clone();
         r
     };
@@ -418,33 +414,12 @@ fn stroke_approximated(path: &[PathPiece], opts: &StrokeOptions) -> Result<Strok
         }
         _ => certify(&mut s, opts.tol.clone()),
     };
-    match checked {
-        Ok((cert, v)) => {
-            let by = "against the exact arcs, by the stroke certificate (checked by the independent verifier)";
-            s.a = Claim {
-                proven: true,
-                bound: v.max_bound,
-                note: format!(
-                    "every outline point is within {:.3e} of ∂S, {by}",
-                    v.max_bound
-                ),
-            };
-            s.b = Claim {
-                proven: true,
-                bound: v.max_bound,
-                note: format!(
-                    "every point of ∂S is within {:.3e} of the outline, {by}",
-                    v.max_bound
-                ),
-            };
-            s.certificate = Some(Box::new(cert));
-        }
-        Err(e) => {
-            let why = format!("not proven against the exact arcs: {}", e.reason);
-            s.a = undecided(why.clone());
-            s.b = undecided(why);
-        }
-    }
+    prove_ab(
+        &mut s,
+        checked,
+        "against the exact arcs, by the stroke certificate (checked by the independent verifier)",
+        "not proven against the exact arcs",
+    );
     Ok(s)
 }
 
@@ -466,7 +441,50 @@ fn short_above(x: f64) -> Option<Tolerance> {
     None
 }
 
-fn undecided(note: String) -> Claim {
+/// A stroke certificate checked by the independent verifier: the
+/// certificate and the bound the verifier proved, or why it was not
+/// written or was refused (field `certificate`).
+pub(super) fn verified(
+    cert: Result<serde_json::Value, Error>,
+) -> Result<(serde_json::Value, f64), Error> {
+    let cert = cert?;
+    let v = crate::certify::verify::verify(&cert.to_string())
+        .map_err(|e| bad("certificate", format!("refused at {}: {}", e.at, e.reason)))?;
+    Ok((cert, v.max_bound))
+}
+
+/// Claims (a) and (b) of `s` from a [`verified`] certificate, proven with
+/// its bound (`by`: how, in the notes) and the certificate kept; else
+/// undecided, the reason after `refused`.
+pub(super) fn prove_ab(
+    s: &mut Stroke,
+    checked: Result<(serde_json::Value, f64), Error>,
+    by: &str,
+    refused: &str,
+) {
+    match checked {
+        Ok((cert, bound)) => {
+            s.a = Claim {
+                proven: true,
+                bound,
+                note: format!("every outline point is within {bound:.3e} of ∂S, {by}"),
+            };
+            s.b = Claim {
+                proven: true,
+                bound,
+                note: format!("every point of ∂S is within {bound:.3e} of the outline, {by}"),
+            };
+            s.certificate = Some(Box::new(cert));
+        }
+        Err(e) => {
+            let why = format!("{refused}: {}", e.reason);
+            s.a = undecided(why.clone());
+            s.b = undecided(why);
+        }
+    }
+}
+
+pub(super) fn undecided(note: String) -> Claim {
     Claim {
         proven: false,
         bound: f64::INFINITY,
