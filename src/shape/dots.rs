@@ -48,8 +48,9 @@ pub fn split_dots(
     let protected = |i: usize| {
         approx.elements.iter().any(|e| {
             e.exact
-                .as_ref()
-                .is_some_and(|x| (x.first..x.first + x.count).contains(&i))
+                .iter()
+                .chain(e.near.iter().map(|n| &n.element))
+                .any(|x| (x.first..x.first + x.count).contains(&i))
         })
     };
     let point: Vec<bool> = pieces.iter().map(is_point_piece).collect();
@@ -74,7 +75,11 @@ pub fn split_dots(
     // the approximated elements' piece indices, moved past the removed pieces
     let shift = |i: usize| i - removed[..i.min(n)].iter().filter(|r| **r).count();
     for e in &mut approx.elements {
-        if let Some(x) = &mut e.exact {
+        for x in e
+            .exact
+            .iter_mut()
+            .chain(e.near.iter_mut().map(|n| &mut n.element))
+        {
             x.first = shift(x.first);
         }
     }

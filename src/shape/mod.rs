@@ -86,7 +86,7 @@ pub use io::{
     CurveParseError, MAX_BSPLINE_WORK, MAX_CONTROL_POINTS, MAX_NUMBER_CHARS, MAX_SEGMENTS,
     MAX_SVG_BYTES,
 };
-pub use svgarc::{format_up, ApproxElement, ApproxKind, InputApprox, ARC_TARGET_REL};
+pub use svgarc::{format_up, ApproxElement, ApproxKind, InputApprox, NearElement, ARC_TARGET_REL};
 pub use svgdoc::{
     parse_svg_document, parse_svg_document_elements, parse_svg_document_reported, SvgElement,
     MAX_USE_DEPTH, TRANSFORM_TARGET,

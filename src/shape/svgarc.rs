@@ -48,6 +48,7 @@ use std::f64::consts::{FRAC_PI_2, TAU};
 
 pub(crate) use exact::{axis_ellipse_arc, ellipse, exact_mixed, rational_sqrt, svg_exact_arc};
 pub use exact::{ExactElement, ExactPiece};
+pub(crate) use near::{attach_near, Layout, Pending};
 
 /// Target of the approximation of an elliptical arc, relative to its larger
 /// radius (after the F.6.6 correction): the construction aims at a certified
@@ -83,6 +84,11 @@ pub enum ApproxKind {
     /// An element under `skewX(θ)`/`skewY(θ)` with `tan θ` irrational: mapped
     /// by the skew of a rational `t` within a certified `|tan θ − t|`.
     Skew,
+    /// A circular arc of SVG path data with an irrational centre, replaced
+    /// by a circular arc with a rational centre and radius through the same
+    /// end points (its [`NearElement`], as [`crate::stroke::exact_path`]
+    /// reports it).
+    NearArc,
 }
 
 impl ApproxKind {
@@ -94,12 +100,16 @@ impl ApproxKind {
             ApproxKind::RoundedRect => "rounded rect(s)",
             ApproxKind::Rotation => "element(s) under an irrational rotate",
             ApproxKind::Skew => "element(s) under an irrational skew",
+            ApproxKind::NearArc => "SVG arc(s) with an irrational centre",
         }
     }
     /// An approximated curve (replaced by cubic pieces), rather than an
     /// exactly mapped element under an approximated transform.
     pub fn is_curve(self) -> bool {
-        !matches!(self, ApproxKind::Rotation | ApproxKind::Skew)
+        !matches!(
+            self,
+            ApproxKind::Rotation | ApproxKind::Skew | ApproxKind::NearArc
+        )
     }
 }
 
@@ -127,6 +137,24 @@ pub struct ApproxElement {
     /// of the pieces (see [`ExactElement`]). `None` for ellipses, arcs with
     /// an irrational centre and for [`ApproxKind::Rotation`]/[`ApproxKind::Skew`].
     pub exact: Option<ExactElement>,
+    /// For a circular arc with an irrational centre: a circular arc with a
+    /// rational centre and radius through the same end points, certified
+    /// near the element ([`NearElement`]). Engines that take exact arcs
+    /// ([`crate::stroke::exact_path`]) use it in place of the cubic pieces,
+    /// and report the element within [`NearElement::bound`] instead.
+    pub near: Option<NearElement>,
+}
+
+/// Exact pieces (circular arcs and lines with rational data) certified near
+/// an element that has no exact form of that kind (a circular SVG arc whose
+/// centre is irrational).
+#[derive(Clone, Debug, PartialEq)]
+pub struct NearElement {
+    /// The pieces and the range of the reader's pieces they replace.
+    pub element: ExactElement,
+    /// The Hausdorff distance between these pieces and the exact element is
+    /// at most this (an `f64` rounded up).
+    pub bound: f64,
 }
 
 /// The report of a curve reader: every input element that was *approximated*
@@ -215,6 +243,13 @@ impl InputApprox {
                 self.pieces()
             ));
         }
+        if count(ApproxKind::NearArc) > 0 {
+            parts.push(format!(
+                "{} {} replaced by arcs with a rational centre and radius",
+                count(ApproxKind::NearArc),
+                ApproxKind::NearArc.noun()
+            ));
+        }
         for k in [ApproxKind::Rotation, ApproxKind::Skew] {
             if let Some(first) = self.elements.iter().find(|e| e.kind == k) {
                 parts.push(format!(
@@ -246,8 +281,14 @@ impl InputApprox {
     /// The exact elements' piece indices moved by `by` (their pieces were
     /// appended after `by` others).
     pub(crate) fn shift(&mut self, by: usize) {
-        for x in self.elements.iter_mut().filter_map(|e| e.exact.as_mut()) {
-            x.first += by;
+        for e in &mut self.elements {
+            for x in e
+                .exact
+                .iter_mut()
+                .chain(e.near.iter_mut().map(|n| &mut n.element))
+            {
+                x.first += by;
+            }
         }
     }
     /// Appends `other`'s elements, their places prefixed (`{prefix}, byte 12`)
@@ -260,6 +301,9 @@ impl InputApprox {
                 format!("{prefix}, {}", e.at)
             };
             e.bound = mul_up(e.bound, factor);
+            if let Some(n) = &mut e.near {
+                n.bound = mul_up(n.bound, factor);
+            }
             self.elements.push(e);
         }
     }
@@ -1153,5 +1197,6 @@ fn certify_chain(fr: &Frame, offs: &[[IV; 4]], goal: f64) -> Result<f64, String>
 }
 
 mod exact;
+mod near;
 #[cfg(test)]
 mod tests;

@@ -17,7 +17,7 @@ use super::{Claim, Stroke, StrokeOptions};
 use crate::certify::verify::stroke::{exact_points, CurvePiece};
 use crate::curve::{Bezier, V2};
 use crate::scalar::Rational;
-use crate::shape::svgarc::ExactPiece;
+use crate::shape::svgarc::{ApproxElement, ApproxKind, ExactElement, ExactPiece};
 use crate::shape::InputApprox;
 use crate::{Error, Tolerance};
 use num_traits::{Signed, Zero};
@@ -162,6 +162,18 @@ pub(super) fn quarters(a: &Arc) -> Result<Vec<Step>, String> {
     Err("internal error: an arc of more than a full turn (please report)".into())
 }
 
+/// Whether `p` has `at` as one of its end points (where a piece of a path
+/// can begin, travelled one way or the other).
+fn starts_at(p: &ExactPiece, at: &V2<Rational>) -> bool {
+    match p {
+        ExactPiece::Bezier(b) => b.points()[0] == *at || b.points().last() == Some(at),
+        ExactPiece::Arc(a) => [&a.from, &a.to]
+            .into_iter()
+            .any(|u| on_circle(&a.center, &a.radius, u).as_ref() == Some(at)),
+        ExactPiece::EllipseArc(_) => false,
+    }
+}
+
 /// The path read from `pieces` and the report of a curve reader
 /// ([`crate::shape::parse_curve_reported`]): every approximated element that
 /// is exactly a chain of lines and circular arcs (SVG arcs with a rational
@@ -186,16 +198,27 @@ pub fn exact_path(
 ) -> Option<(Vec<PathPiece>, InputApprox)> {
     let mut rest = InputApprox::default();
     let mut exact = Vec::new();
+    let usable = |x: &ExactElement| {
+        x.count > 0
+            && x.first + x.count <= pieces.len()
+            && x.pieces
+                .iter()
+                .all(|p| !matches!(p, ExactPiece::EllipseArc(_)))
+    };
     for e in &approx.elements {
-        match &e.exact {
-            Some(x)
-                if x.count > 0
-                    && x.first + x.count <= pieces.len()
-                    && x.pieces
-                        .iter()
-                        .all(|p| !matches!(p, ExactPiece::EllipseArc(_))) =>
-            {
-                exact.push(x)
+        match (&e.exact, &e.near) {
+            (Some(x), _) if usable(x) => exact.push(x),
+            // a rational arc near the element: the element stays reported,
+            // within the near arc's bound
+            (None, Some(n)) if usable(&n.element) => {
+                exact.push(&n.element);
+                rest.push(ApproxElement {
+                    kind: ApproxKind::NearArc,
+                    pieces: n.element.pieces.len(),
+                    bound: n.bound,
+                    near: None,
+                    ..e.clone()
+                });
             }
             _ => rest.push(e.clone()),
         }
@@ -214,8 +237,14 @@ pub fn exact_path(
     let mut i = 0;
     for x in exact {
         out.extend(pieces[i..x.first].iter().cloned().map(PathPiece::Bezier));
-        // the element starts where its first replaced piece starts
+        // the element starts where its first replaced piece starts, or (a
+        // near arc after another) where the element before it ended
         let mut at = pieces[x.first].points()[0].clone();
+        if let (true, Some(last), Some(p)) = (x.first == i && i > 0, out.last(), x.pieces.first()) {
+            if !starts_at(p, &at) && starts_at(p, last.end()) {
+                at = last.end().clone();
+            }
+        }
         for p in &x.pieces {
             let next = match p {
                 ExactPiece::Bezier(b) => {
@@ -323,8 +352,9 @@ pub fn stroke_path(path: &[PathPiece], opts: &StrokeOptions) -> Result<Stroke, E
             .iter()
             .find(|c| !c.proven)
             .map_or(String::new(), |c| c.note.clone());
-        super::trim::add_note(
-            &mut s.notes,
+        // first: the general construction's notes may fill the list
+        s.notes.insert(
+            0,
             format!("the exact construction of lines and arcs was not proven: {why}"),
         );
     }

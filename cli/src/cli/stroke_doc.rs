@@ -119,6 +119,19 @@ fn stroked(elements: &[SvgElement]) -> Result<Vec<(&SvgElement, Rational)>, CliE
     Ok(out)
 }
 
+/// What the stroke of `e` approximated of the input: nothing for a circle
+/// stroked exactly; for an exact path only what it could not state exactly
+/// (and arcs with an irrational centre within their near arcs' bounds).
+fn still_approximated(a: &StrokeArgs, e: &SvgElement) -> InputApprox {
+    if a.certificate.is_none() && exact_circle(e).is_some() {
+        return InputApprox::default();
+    }
+    match exact_path(&e.pieces, &e.approx) {
+        Some((_, rest)) => rest,
+        None => e.approx.clone(),
+    }
+}
+
 /// Runs the per-element stroke of an SVG document.
 pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
     if let Some(p) = &a.certificate {
@@ -130,15 +143,7 @@ pub fn run(a: &StrokeArgs) -> Result<i32, CliError> {
     let (strokes, secs) = stroke_all(a, &jobs)?;
     let mut approx = InputApprox::default();
     for (e, _) in &jobs {
-        // a circle stroked exactly approximated nothing; an exact path
-        // leaves only what it could not state exactly
-        if a.certificate.is_none() && exact_circle(e).is_some() {
-            continue;
-        }
-        match exact_path(&e.pieces, &e.approx) {
-            Some((_, rest)) => approx.elements.extend(rest.elements),
-            None => approx.elements.extend(e.approx.elements.iter().cloned()),
-        }
+        approx.elements.extend(still_approximated(a, e).elements);
     }
     let decided: Vec<bool> = strokes
         .iter()
@@ -386,11 +391,7 @@ impl Report<'_> {
                 v["at"] = json!(e.at);
                 v["pen_radius"] = json!(q(r));
                 v["stroke_width"] = json!(q(&e.stroke_width));
-                v["input_approximation"] = if a.certificate.is_none() && exact_circle(e).is_some() {
-                    serde_json::Value::Null // stroked exactly
-                } else {
-                    e.approx.to_json()
-                };
+                v["input_approximation"] = still_approximated(a, e).to_json();
                 v["seconds"] = json!(t);
                 v["verdict"] = json!(if *d { "proven" } else { "undecided" });
                 v

@@ -5,7 +5,8 @@ use super::{exact_number, CurveParseError, MAX_SEGMENTS, MAX_SVG_BYTES};
 use crate::curve::{Bezier, V2};
 use crate::scalar::Rational;
 use crate::shape::svgarc::{
-    svg_arc, svg_exact_arc, ApproxElement, ApproxKind, ExactElement, InputApprox, SvgArc,
+    attach_near, svg_arc, svg_exact_arc, ApproxElement, ApproxKind, ExactElement, InputApprox,
+    Layout, Pending, SvgArc,
 };
 
 /// The exact path-data state machine: scanner plus current point, subpath
@@ -25,6 +26,13 @@ struct SvgParser<'a> {
     last_quad: Option<V2<Rational>>,
     /// The approximated arcs.
     approx: InputApprox,
+    /// Every piece index that begins a subpath.
+    subpath_starts: Vec<usize>,
+    /// Every arc's range of cubic pieces.
+    arc_ranges: Vec<(usize, usize)>,
+    /// The circular arcs with an irrational centre (their near arcs are
+    /// found at the end, when the pieces after them are known).
+    pending: Vec<Pending>,
 }
 
 fn is_wsp(b: u8) -> bool {
@@ -70,6 +78,9 @@ impl<'a> SvgParser<'a> {
             last_cubic: None,
             last_quad: None,
             approx: InputApprox::default(),
+            subpath_starts: Vec::new(),
+            arc_ranges: Vec::new(),
+            pending: Vec::new(),
         }
     }
 
@@ -241,6 +252,7 @@ impl<'a> SvgParser<'a> {
                 let p = self.point(rel, arg(0)?, arg(1)?);
                 self.start = p.clone();
                 self.subpath_first = self.out.len();
+                self.subpath_starts.push(self.out.len());
                 self.cur = p;
             }
             b'M' | b'L' => {
@@ -340,6 +352,19 @@ impl<'a> SvgParser<'a> {
                             pieces: vec![arc],
                         }
                     });
+                self.arc_ranges.push((first, n));
+                if exact.is_none() && num_traits::Signed::abs(rx) == num_traits::Signed::abs(ry) {
+                    self.pending.push(Pending {
+                        element: self.approx.elements.len(),
+                        first,
+                        count: n,
+                        p0: self.cur.clone(),
+                        p1: p.clone(),
+                        r: rx.clone(),
+                        large,
+                        sweep,
+                    });
+                }
                 self.approx.push(ApproxElement {
                     kind: ApproxKind::Arc,
                     at: format!("byte {at}"),
@@ -347,6 +372,7 @@ impl<'a> SvgParser<'a> {
                     bound,
                     detail: String::new(),
                     exact,
+                    near: None,
                 });
             }
         }
@@ -472,6 +498,11 @@ impl<'a> SvgParser<'a> {
                 what: "the SVG path data (it has only moveto commands)".to_string(),
             });
         }
+        let layout = Layout {
+            subpath_starts: &self.subpath_starts,
+            arc_ranges: &self.arc_ranges,
+        };
+        attach_near(&self.out, &mut self.approx, &self.pending, &layout);
         Ok((self.out, self.approx))
     }
 }

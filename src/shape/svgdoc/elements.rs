@@ -154,6 +154,7 @@ fn approximated(
             count: pieces.len(),
             pieces: x,
         }),
+        near: None,
     })
 }
 

@@ -9,7 +9,7 @@ use super::{err, CurveParseError, SvgElement, MAX_DOCUMENT_BYTES, MAX_USE_DEPTH}
 use crate::curve::Bezier;
 use crate::scalar::Rational;
 use crate::shape::io::{svg_number_list, MAX_SEGMENTS};
-use crate::shape::svgarc::{ApproxElement, InputApprox};
+use crate::shape::svgarc::{ApproxElement, InputApprox, NearElement};
 use num_traits::{One, Signed, Zero};
 
 /// Most element visits of a document (`<use>` instances count every time).
@@ -300,6 +300,16 @@ impl<'a, 'input> Walker<'a, 'input> {
             // arcs stay exact under rational affine maps (circles stay circles
             // under similarities with a rational scale)
             e.exact = e.exact.as_ref().map(|x| x.mapped(&ctx.m.0, scale.as_ref()));
+            // a near element is kept only under an exact map (its bound is
+            // then scaled with the element's, below)
+            e.near = if ctx.factors.iter().any(|f| f.approx.is_some()) {
+                None
+            } else {
+                e.near.take().map(|n| NearElement {
+                    element: n.element.mapped(&ctx.m.0, scale.as_ref()),
+                    bound: n.bound,
+                })
+            };
         }
         if !a.is_empty() {
             approx.extend_scaled(a, "", ctx.m.norm_sup());
@@ -321,6 +331,7 @@ impl<'a, 'input> Walker<'a, 'input> {
                 pieces: pieces.len(),
                 bound: delta,
                 exact: None,
+                near: None,
                 detail: inexact
                     .iter()
                     .map(|f| f.detail.clone())

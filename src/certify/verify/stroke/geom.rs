@@ -424,12 +424,22 @@ impl ArcT {
 
 /// `sup dist(path(t), arc)` over the box: the direction from the centre is
 /// proven inside the arc's range, and `||p − c| − ρ| = |q|/(|p − c| + ρ)`
-/// with `q = |p − c|² − ρ²` enclosed by its mean value form.
+/// with `q = |p − c|² − ρ²` enclosed by its mean value form. Otherwise (a
+/// box at an end of the arc, whose directions straddle the end's), the
+/// distance to the nearer end point of the arc, which is a point of it.
 pub(crate) fn near_arc(path: &dyn Path, bx: &BoxT, a: &ArcT, tol: Interval) -> Result<f64, String> {
     let (all, v, d) = mean_value(path, bx).ok_or_else(|| bad("the boundary point"))?;
     let w = sub(all, a.c);
     if !a.contains(w) {
-        return Err("the boundary points' directions are not proven inside the arc's range".into());
+        let to_end = |e: P| {
+            let g = sub(w, e);
+            sqrt_up(dot(g, g).sup())
+        };
+        let b = to_end(a.u).min(to_end(a.v));
+        if b.is_finite() && b <= tol.inf() {
+            return Ok(b);
+        }
+        return Err("the boundary points' directions are not proven inside the arc's range, nor near its ends".into());
     }
     let wm = sub(v, a.c);
     let q = dot(wm, wm) - a.rho.sqr() + ic(2.0) * dot(w, d) * bx.off;
@@ -775,5 +785,37 @@ mod overflow_tests {
         let t = |x: f64| crate::scalar::rational_from_f64(x).unwrap();
         let bx = BoxT::new(&t(0.0), &t(0.5));
         assert!(near_arc(&path, &bx, &arc, ic(1e296)).is_err());
+    }
+
+    /// A family that ends exactly where an outline arc begins, on the same
+    /// circle: its last boxes straddle the arc's first direction, and are
+    /// accepted by their distance to the arc's end point, which is a point
+    /// of the outline; a box reaching farther than TOL from that end is not.
+    #[test]
+    fn boxes_at_an_arc_end_are_near_by_the_end_point() {
+        // the family: the unit quarter circle from (1, 0) to (0, 1)
+        let path = ConeArc {
+            c: [ic(0.0), ic(0.0)],
+            r: ic(1.0),
+            a: [ic(1.0), ic(0.0)],
+            b: [ic(0.0), ic(1.0)],
+        };
+        // the outline arc: the next quarter, from (0, 1) to (−1, 0)
+        let arc = ArcT {
+            c: [ic(0.0), ic(0.0)],
+            rho: ic(1.0),
+            u: [ic(0.0), ic(1.0)],
+            v: [ic(-1.0), ic(0.0)],
+            sign: 1,
+            full: false,
+        };
+        let t = |x: f64| crate::scalar::rational_from_f64(x).unwrap();
+        let end = BoxT::new(&t(1.0 - 2f64.powi(-30)), &t(1.0));
+        let b = near_arc(&path, &end, &arc, ic(1e-6)).expect("near the end point");
+        assert!(b > 0.0 && b < 1e-8, "{b}");
+        // farther than TOL from the end: neither in the range nor near an end
+        let long = BoxT::new(&t(0.5), &t(1.0));
+        assert!(near_arc(&path, &long, &arc, ic(1e-6)).is_err());
+        assert!(near_arc(&path, &end, &arc, ic(1e-12)).is_err());
     }
 }
