@@ -179,8 +179,12 @@ fn starts_at(p: &ExactPiece, at: &V2<Rational>) -> bool {
 /// is exactly a chain of lines and circular arcs (SVG arcs with a rational
 /// centre, `<circle>`, rounded `<rect>` with equal radii) is put in place
 /// of its cubic pieces, each arc travelled the way the pieces it replaces
-/// are. Returns the path and the elements still approximated (ellipses,
-/// irrational centres, rotations), or `None` when no element was exact.
+/// are. A circular arc with an irrational centre is replaced by its near arc
+/// ([`crate::shape::NearElement`]: rational centre and radius, certified
+/// within a small bound) and stays reported as
+/// [`ApproxKind::NearArc`] within that bound. Returns the path and
+/// the elements still approximated (ellipses, near arcs, rotations), or
+/// `None` when no element was exact.
 ///
 /// # Examples
 /// ```

@@ -220,7 +220,7 @@ impl<'a> Exact<'a> {
         let (Some(h2f), Some(dx), Some(dy)) = (h2.to_f64(), d.x.to_f64(), d.y.to_f64()) else {
             return Vec::new();
         };
-        if !(h2f > 0.0) {
+        if h2f.is_nan() || h2f <= 0.0 {
             return Vec::new();
         }
         let hf = h2f.sqrt() * if self.positive { 1.0 } else { -1.0 };
