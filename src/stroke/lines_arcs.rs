@@ -41,6 +41,7 @@ use super::path::{undecided, PathPiece};
 use super::{Claim, Piece, Stroke, StrokeOptions};
 use crate::curve::{Bezier, V2};
 use crate::scalar::{rational_from_f64, Rational, Scalar};
+use crate::shape::svgarc::rational_sqrt;
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 use std::collections::HashMap;
@@ -1149,10 +1150,23 @@ fn meet(
                     found.push((ml.point(&cands[li], sf), exact));
                 }
                 Ordering::Greater => {
-                    let df = (f(&delta.a) + f(&delta.b) * f(m).sqrt()).max(0.0).sqrt();
-                    for sgn in [-1.0, 1.0] {
-                        let sf = (-f(&b) + sgn * df) / f(m);
-                        found.push((ml.point(&cands[li], sf), None));
+                    // rational crossings on a rational offset line (√m is
+                    // rational) where the discriminant is a rational square
+                    let root = offs.as_ref().and_then(|o| {
+                        let sm = rational_sqrt(m)?;
+                        Some((rational_sqrt(&(&delta.a + &delta.b * sm))?, o))
+                    });
+                    if let Some((sq, o)) = root {
+                        for s in [-(&b + &sq) / m, (&sq - &b) / m] {
+                            let x = p.add(&d.scale(&s)).add(o);
+                            found.push((fp(&x), Some(x)));
+                        }
+                    } else {
+                        let df = (f(&delta.a) + f(&delta.b) * f(m).sqrt()).max(0.0).sqrt();
+                        for sgn in [-1.0, 1.0] {
+                            let sf = (-f(&b) + sgn * df) / f(m);
+                            found.push((ml.point(&cands[li], sf), None));
+                        }
                     }
                 }
             }
@@ -1172,12 +1186,22 @@ fn meet(
                         found.push((fp(&x), Some(x)));
                     }
                     Ordering::Greater => {
-                        let mu = (f(&h) / f(&d2)).sqrt();
                         let base = z1.add(&w.scale(&lam));
-                        let (bx, by) = fp(&base);
-                        let (wx, wy) = fp(&w);
-                        for sgn in [-1.0, 1.0] {
-                            found.push(((bx - sgn * mu * wy, by + sgn * mu * wx), None));
+                        // rational crossings where h/|w|² is a rational
+                        // square (circles through one exact point: the pen
+                        // circles about a corner arc's ends meet at its centre)
+                        if let Some(mu) = rational_sqrt(&(&h / &d2)) {
+                            let jw = V2::new(-w.y.clone(), w.x.clone());
+                            for x in [base.sub(&jw.scale(&mu)), base.add(&jw.scale(&mu))] {
+                                found.push((fp(&x), Some(x)));
+                            }
+                        } else {
+                            let mu = (f(&h) / f(&d2)).sqrt();
+                            let (bx, by) = fp(&base);
+                            let (wx, wy) = fp(&w);
+                            for sgn in [-1.0, 1.0] {
+                                found.push(((bx - sgn * mu * wy, by + sgn * mu * wx), None));
+                            }
                         }
                     }
                 }

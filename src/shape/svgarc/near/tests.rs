@@ -292,6 +292,9 @@ fn the_stroke_of_near_arcs_is_built_exactly_and_proven() {
     for d in [
         "M2.297 11.293a1 1 0 0 0 0 1.414l2.377 2.377a1 1 0 0 0 1.414 0l2.377-2.377a1 1 0 0 0 0-1.414L6.088 8.916a1 1 0 0 0-1.414 0z",
         "M2 12a1 1 0 0 0 .58.91l8.6 3.91a2 2 0 0 0 1.65 0l8.58-3.9A1 1 0 0 0 22 12",
+        // chords 1.415: the pen circles about each corner's ends cross
+        // exactly at its (near) centre, a rational crossing of two circles
+        "M8.916 17.912a1 1 0 0 0 0 1.415l2.377 2.376a1 1 0 0 0 1.414 0l2.377-2.376a1 1 0 0 0 0-1.415l-2.377-2.376a1 1 0 0 0-1.414 0z",
     ] {
         let doc = format!("<svg><path d=\"{d}\"/></svg>");
         let (pieces, approx) = parse_curve_reported(&doc).unwrap();
