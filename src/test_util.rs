@@ -20,6 +20,31 @@ pub(crate) fn tol(x: f64) -> crate::Tolerance {
     crate::Tolerance::from_f64(x).unwrap()
 }
 
+/// Claims (a) of a stroke looked at from outside: every float sample of
+/// every outline piece of `s` is within `tol` of `∂S` as far as the dense
+/// samples `input` of the input tell (`|dist(p, input) − r| ≤ tol`), by
+/// distances to points, not by the engine's predicates.
+pub(crate) fn outline_near_boundary(
+    s: &crate::stroke::Stroke,
+    input: &[(f64, f64)],
+    r: f64,
+    tol: f64,
+    what: &str,
+) {
+    for piece in s.contours.iter().flat_map(|c| &c.pieces) {
+        for (x, y) in piece.sample(40) {
+            let dist = input
+                .iter()
+                .map(|(u, v)| (x - u).hypot(y - v))
+                .fold(f64::INFINITY, f64::min);
+            assert!(
+                (dist - r).abs() <= tol,
+                "{what}: ({x}, {y}) is {dist} from the input"
+            );
+        }
+    }
+}
+
 /// Xorshift64 state.
 pub(crate) struct TestRng(u64);
 

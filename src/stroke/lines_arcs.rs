@@ -1309,15 +1309,7 @@ mod tests {
             };
             input.extend(pts);
         }
-        for piece in s.contours.iter().flat_map(|c| &c.pieces) {
-            for (x, y) in piece.sample(40) {
-                let dist = input
-                    .iter()
-                    .map(|(u, v)| (x - u).hypot(y - v))
-                    .fold(f64::INFINITY, f64::min);
-                assert!((dist - r).abs() <= 1e-2, "({x}, {y}) is {dist} from {d}");
-            }
-        }
+        crate::test_util::outline_near_boundary(s, &input, r, 1e-2, d);
     }
 
     fn proven(d: &str, contours: usize) -> Stroke {

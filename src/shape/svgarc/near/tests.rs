@@ -310,22 +310,8 @@ fn the_stroke_of_near_arcs_is_built_exactly_and_proven() {
         // cubic pieces give the input, sampled densely
         let input: Vec<(f64, f64)> = pieces
             .iter()
-            .flat_map(|b| {
-                let fb = b.map(|x| x.approx());
-                (0..=400).map(move |k| {
-                    let p = fb.eval(&(k as f64 / 400.0));
-                    (p.x, p.y)
-                })
-            })
+            .flat_map(|b| crate::stroke::Piece::Bezier(b.clone()).sample(400))
             .collect();
-        for piece in s.contours.iter().flat_map(|c| &c.pieces) {
-            for (x, y) in piece.sample(40) {
-                let dist = input
-                    .iter()
-                    .map(|(u, v)| (x - u).hypot(y - v))
-                    .fold(f64::INFINITY, f64::min);
-                assert!((dist - 1.0).abs() <= 1e-2 + 1e-6, "{d}: ({x}, {y}) is {dist} from the input");
-            }
-        }
+        crate::test_util::outline_near_boundary(&s, &input, 1.0, 1e-2 + 1e-6, d);
     }
 }
