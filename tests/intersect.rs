@@ -15,10 +15,15 @@ use proptest::prelude::*;
 const N: usize = 2048;
 
 fn samples(b: &Bezier<Rational>) -> Vec<(f64, f64)> {
+    samples_on(b, (0.0, 1.0), N)
+}
+
+/// The points of `b` at `n + 1` equally spaced parameters over `lo..=hi`.
+fn samples_on(b: &Bezier<Rational>, (lo, hi): (f64, f64), n: usize) -> Vec<(f64, f64)> {
     let f = b.map(|v| v.approx());
-    (0..=N)
+    (0..=n)
         .map(|k| {
-            let p = f.eval(&(k as f64 / N as f64));
+            let p = f.eval(&(lo + (hi - lo) * k as f64 / n as f64));
             (p.x, p.y)
         })
         .collect()
@@ -83,27 +88,19 @@ fn refined_crossings(
     const M: usize = 512;
     let h = 8.0 / N as f64;
     let window = |c: f64| ((c - h).max(0.0), (c + h).min(1.0));
-    let sample = |bz: &Bezier<Rational>, (lo, hi): (f64, f64)| -> Vec<(f64, (f64, f64))> {
-        let f = bz.map(|x| x.approx());
-        (0..=M)
-            .map(|k| {
-                let t = lo + (hi - lo) * k as f64 / M as f64;
-                let p = f.eval(&t);
-                (t, (p.x, p.y))
-            })
-            .collect()
-    };
-    let (pa, pb) = (sample(a, window(u)), sample(b, window(v)));
+    let (wa, wb) = (window(u), window(v));
+    let (pa, pb) = (samples_on(a, wa, M), samples_on(b, wb, M));
+    let at = |(lo, hi): (f64, f64), k: usize| lo + (hi - lo) * k as f64 / M as f64;
     let mut out = Vec::new();
     for k in 0..M {
         for l in 0..M {
-            let (s0, s1) = (pa[k].0, pa[k + 1].0);
-            let (t0, t1) = (pb[l].0, pb[l + 1].0);
+            let (s0, s1) = (at(wa, k), at(wa, k + 1));
+            let (t0, t1) = (at(wb, l), at(wb, l + 1));
             // the same piece: skip a segment against itself or a neighbour
             if same && (t0 - s1).abs().min((s0 - t1).abs()).min((s0 - t0).abs()) < 1e-12 {
                 continue;
             }
-            if let Some((x, y, sin)) = seg_cross(pa[k].1, pa[k + 1].1, pb[l].1, pb[l + 1].1) {
+            if let Some((x, y, sin)) = seg_cross(pa[k], pa[k + 1], pb[l], pb[l + 1]) {
                 if sin >= 1e-3 {
                     out.push((s0 + (s1 - s0) * x, t0 + (t1 - t0) * y, sin));
                 }
