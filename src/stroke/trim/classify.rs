@@ -500,8 +500,8 @@ pub(super) fn prove_kept(
 /// `g(p − y) < d (1 − e/b_lo)²` at every hull point `p` (so `q − y ∈ ρE`,
 /// `ρ < 1 − e/b_lo`, and `q + disk(e) ⊆ y + (ρ + e/b_lo) E`, since
 /// `disk(b_lo) ⊆ E`; for a circle: `|p − y| < r − e`) — or lies within
-/// `lambda` of one of `near` (kept crossing points). Returns whether `near`
-/// was used.
+/// `lambda` of one of `near` (end points of kept sub-pieces). Returns the
+/// indices into `near` of the points used (empty when none was needed).
 #[allow(clippy::too_many_arguments)]
 pub(super) fn prove_removed(
     curve: &[Bezier<Rational>],
@@ -512,7 +512,7 @@ pub(super) fn prove_removed(
     form: &Form,
     near: &[V2<Rational>],
     lambda: &Rational,
-) -> Option<bool> {
+) -> Option<Vec<usize>> {
     // `d (1 − e/b_lo)²` enclosed from below, for the part's error bound
     let (d_iv, b_lo_iv) = (
         interval_from_rational(&form.d),
@@ -546,7 +546,7 @@ pub(super) fn prove_removed(
         .into_iter()
         .map(|p| (p, 0, (0.0, 1.0)))
         .collect();
-    let mut used = false;
+    let mut used: Vec<usize> = Vec::new();
     let mut n = 0;
     while let Some((part, depth, (t0, t1))) = todo.pop() {
         n += 1;
@@ -560,13 +560,15 @@ pub(super) fn prove_removed(
             Part::Arc(_) => e,
         };
         let re2 = re2_for(e_part).unwrap_or(f64::NEG_INFINITY);
-        if near.iter().any(|x| {
+        if let Some(i) = near.iter().position(|x| {
             hull.iter().all(|p| {
                 let d = p.sub(x).norm2();
                 !d.is_empty() && d.sup() < l2
             })
         }) {
-            used = true;
+            if !used.contains(&i) {
+                used.push(i);
+            }
             continue;
         }
         let (m, _) = part.mid_right_normal();

@@ -5,7 +5,9 @@ use super::chain::{chain, check_simple, Known};
 use super::classify::{foot, prove_kept, prove_removed, ExactCurve, Part, KEPT_MAX_PARTS};
 use super::pinch::pinched_loops;
 use super::sides::{check, dist_hi, raw_contours, Kind, Raw};
-use super::split::{find_crossings, split_piece, Bridge, Sub};
+use super::split::{
+    drop_coincident, find_crossings, share_circle_splits, split_piece, Bridge, Sub,
+};
 use super::types::{Cap, CapReport, Claim, Classified, Piece, Stroke, StrokeError, StrokeOptions};
 use crate::curve::{Bezier, V2};
 use crate::scalar::{rational_from_f64, Rational, Scalar};
@@ -119,9 +121,17 @@ fn stroke_at(
         ..iopts
     };
     let mut found = find_crossings(&raws, &raw_iopts, bridge_mu, &mut notes, t0);
+    let circles = share_circle_splits(&raws, &mut found);
     let mut subs: Vec<Sub> = Vec::new();
     for (i, raw) in raws.iter().enumerate() {
         subs.extend(split_piece(i, &raw.piece, &mut found.splits[i]));
+    }
+    let (subs, dropped) = drop_coincident(&raws, subs, &circles);
+    if dropped > 0 {
+        add_note(
+            &mut notes,
+            format!("{dropped} sub-arcs coincide exactly with sub-arcs of other caps or joins on one circle: one copy of each kept"),
+        );
     }
 
     // --- classify, then drop pinched loops and spurs
@@ -143,7 +153,14 @@ fn stroke_at(
     for b in &bridges {
         tally.a_bound = tally.a_bound.max(b.bound);
     }
-    drop_pinched(&run, &subs, &mut tally, &mut bridges, &mut notes);
+    drop_pinched(
+        &run,
+        &subs,
+        &classes.near,
+        &mut tally,
+        &mut bridges,
+        &mut notes,
+    );
     log::debug!("pinched: {:?}", t0.elapsed());
 
     // --- chain, and claim (c)
@@ -267,11 +284,15 @@ struct Classes {
     estimates: Vec<f64>,
     /// Proven kept, with the bound of claim (a).
     kept: Vec<Option<f64>>,
-    /// Proven removed, and whether the near-crossing relaxation was used.
-    removed: Vec<Option<bool>>,
+    /// Proven removed, with the points of `near` its test leant on (the
+    /// near-end relaxation; empty when none was needed).
+    removed: Vec<Option<Vec<usize>>>,
+    /// The end points of kept sub-pieces the removal test may lean on, each
+    /// with the kept sub-pieces that end there.
+    near: Vec<(V2<Rational>, Vec<usize>)>,
 }
 
-/// λ of the removal: a removed part within λ of a kept crossing point costs
+/// λ of the removal: a removed part within λ of a kept end point costs
 /// (b) `e + λ`, so λ may use what TOL leaves above `e` (at least TOL/2).
 fn lambda_f(tol: f64, e: f64) -> f64 {
     (0.95 * (tol - e)).max(tol / 2.0)
@@ -306,30 +327,36 @@ fn classify(run: &Run, subs: &[Sub]) -> Classes {
         })
         .collect();
     log::debug!("kept: {:?}", run.t0.elapsed());
-    let near: Vec<V2<Rational>> = subs
-        .iter()
-        .zip(&kept)
-        .filter(|(_, k)| k.is_some())
-        .flat_map(|(s, _)| {
-            let mut v = Vec::new();
-            if s.end_splits[0] {
-                v.push(s.post.start().clone());
+    let mut near: Vec<(V2<Rational>, Vec<usize>)> = Vec::new();
+    let mut near_of: std::collections::HashMap<(Rational, Rational), usize> =
+        std::collections::HashMap::new();
+    for (k, s) in subs.iter().enumerate() {
+        if kept[k].is_none() {
+            continue;
+        }
+        for p in [s.post.start(), s.post.end()] {
+            let i = *near_of
+                .entry((p.x.clone(), p.y.clone()))
+                .or_insert_with(|| {
+                    near.push((p.clone(), Vec::new()));
+                    near.len() - 1
+                });
+            if !near[i].1.contains(&k) {
+                near[i].1.push(k);
             }
-            if s.end_splits[1] {
-                v.push(s.post.end().clone());
-            }
-            v
-        })
-        .collect();
-    let removed: Vec<Option<bool>> = subs
+        }
+    }
+    let points: Vec<V2<Rational>> = near.iter().map(|(p, _)| p.clone()).collect();
+    let removed: Vec<Option<Vec<usize>>> = subs
         .par_iter()
         .zip(&kept)
-        .map(|(s, k)| removal(run, s, *k, &near))
+        .map(|(s, k)| removal(run, s, *k, &points))
         .collect();
     Classes {
         estimates,
         kept,
         removed,
+        near,
     }
 }
 
@@ -597,9 +624,9 @@ pub(super) fn tiled(
 }
 
 /// The removal test of one sub-piece that is not kept (only boundary pieces
-/// are tested): `Some(used)` when proven, `used` whether a kept crossing point
-/// of `near` was needed.
-fn removal(run: &Run, s: &Sub, kept: Option<f64>, near: &[V2<Rational>]) -> Option<bool> {
+/// are tested): `Some(used)` when proven, `used` the points of `near` (ends
+/// of kept sub-pieces) it needed.
+fn removal(run: &Run, s: &Sub, kept: Option<f64>, near: &[V2<Rational>]) -> Option<Vec<usize>> {
     let raw = &run.raws[s.raw];
     if kept.is_some() || raw.kind != Kind::Boundary {
         return None;
@@ -642,6 +669,10 @@ struct Tally {
     a_ok: bool,
     b_ok: bool,
     keep: Vec<bool>,
+    /// The removals that leant on kept end points: `(e + λ, i)` for the
+    /// point `i` of [`Classes::near`]. If every kept piece ending there is
+    /// dropped later, its reach adds to that bound.
+    near_uses: Vec<(f64, usize)>,
 }
 
 /// Counts the classes, raises the claims' bounds, and picks the output: kept
@@ -654,6 +685,7 @@ fn tally(run: &Run, subs: &[Sub], classes: &Classes, notes: &mut Vec<String>) ->
         a_ok: true,
         b_ok: true,
         keep: vec![false; subs.len()],
+        near_uses: Vec::new(),
     };
     for (k, s) in subs.iter().enumerate() {
         let raw = &run.raws[s.raw];
@@ -666,15 +698,15 @@ fn tally(run: &Run, subs: &[Sub], classes: &Classes, notes: &mut Vec<String>) ->
             }
         } else if raw.kind == Kind::Connector {
             t.classified.dropped_connectors += 1;
-        } else if let Some(used) = classes.removed[k] {
+        } else if let Some(used) = &classes.removed[k] {
             t.classified.removed += 1;
             t.b_bound = t.b_bound.max(raw.e);
-            if used {
+            if !used.is_empty() {
                 // the λ the removal test was given (its rational is exactly
                 // this f64), plus a hair for the sum's rounding
-                t.b_bound = t
-                    .b_bound
-                    .max((raw.e + lambda_f(run.tol, raw.e)) * (1.0 + 1e-12));
+                let near = (raw.e + lambda_f(run.tol, raw.e)) * (1.0 + 1e-12);
+                t.b_bound = t.b_bound.max(near);
+                t.near_uses.extend(used.iter().map(|&i| (near, i)));
             }
         } else {
             t.classified.undecided += 1;
@@ -753,6 +785,7 @@ fn bridge_connectors(
 fn drop_pinched(
     run: &Run,
     subs: &[Sub],
+    near: &[(V2<Rational>, Vec<usize>)],
     tally: &mut Tally,
     bridges: &mut [BridgeConnector],
     notes: &mut Vec<String>,
@@ -782,6 +815,7 @@ fn drop_pinched(
         &spur_caps,
     );
     if !dropped.is_empty() {
+        let mut reach_of: std::collections::HashMap<usize, f64> = std::collections::HashMap::new();
         for &(d, reach) in &dropped {
             if d >= kept_idx.len() {
                 bridges[d - kept_idx.len()].keep = false;
@@ -789,11 +823,24 @@ fn drop_pinched(
             }
             let k = kept_idx[d];
             tally.keep[k] = false;
+            reach_of.insert(k, reach);
             let raw = &run.raws[subs[k].raw];
             if raw.kind == Kind::Boundary {
                 tally.b_bound = tally
                     .b_bound
                     .max(((raw.e + subs[k].delta).next_up() + reach).next_up());
+            }
+        }
+        // a removal that leant on an end point of dropped pieces only: that
+        // point is within their reach of the pieces that stay
+        for &(bound, i) in &tally.near_uses {
+            let owners = &near[i].1;
+            if owners.iter().all(|k| !tally.keep[*k]) {
+                let reach = owners
+                    .iter()
+                    .map(|k| reach_of.get(k).copied().unwrap_or(f64::INFINITY))
+                    .fold(0.0, f64::max);
+                tally.b_bound = tally.b_bound.max((bound + reach).next_up());
             }
         }
         add_note(

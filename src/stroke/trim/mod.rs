@@ -46,7 +46,7 @@
 //!    within the piece's certified bound, the segment between them crosses `∂S`;
 //!    **removed** when every point `q` of it has `dist(q, x) < r − e` (`e` the
 //!    piece's two-sided bound; an exact witness point of `x` for each part of a
-//!    subdivision) or lies within `λ = tol/2` of a kept crossing point;
+//!    subdivision) or lies within `λ = tol/2` of an end point of a kept sub-piece;
 //!    otherwise **undecided**, never guessed.
 //! 5. Kept pieces are chained into contours by their exact shared end points;
 //!    the orientation is the sign of the enclosed area `½∮(x dy − y dx)`

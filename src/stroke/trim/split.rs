@@ -1,7 +1,7 @@
 //! Splitting the raw pieces at their certified crossings (step 3).
 
 use super::add_note;
-use super::sides::{approx_dir, dist_hi, set_end, Raw};
+use super::sides::{approx_dir, dist_hi, set_end, Kind, Raw};
 use super::types::{Piece, RawCrossing};
 use crate::curve::{Bezier, V2};
 use crate::scalar::{rational_from_f64, Interval, Rational, Scalar};
@@ -472,6 +472,11 @@ fn arc_arc_crossings(
                 continue;
             }
             found.unsure.insert((ai.min(aj), ai.max(aj)));
+            if matches!(meetings, Some(Meetings::Overlap)) {
+                // one circle: split at each other's points, exactly (see
+                // [`share_circle_splits`]); no crossing to bridge
+                continue;
+            }
             let points = match meetings {
                 Some(Meetings::Points(ps)) if ps.len() == 1 || disjoint(&ps[0], &ps[1]) => ps,
                 _ => {
@@ -517,6 +522,113 @@ fn arc_arc_crossings(
             }
         }
     }
+}
+
+/// Raw arcs of **one circle** (equal centre and radius, exactly) overlap
+/// along stretches, which no crossing search can decide. Their split points
+/// are shared instead: every arc of such a group is split at every end point
+/// and split point of the group that lies strictly inside its range (exact
+/// tests: the points are rational points of the circle). After the split,
+/// two sub-arcs of a group either are one point set or meet at most at end
+/// points, and [`drop_coincident`] keeps one copy of each point set. Returns
+/// the groups (raw indices, two or more each).
+pub(super) fn share_circle_splits(raws: &[Raw], found: &mut Crossings) -> Vec<Vec<usize>> {
+    let mut groups: Vec<Vec<usize>> = Vec::new();
+    for (i, raw) in raws.iter().enumerate() {
+        let Piece::Arc(a) = &raw.piece else { continue };
+        if raw.kind != Kind::Boundary {
+            continue;
+        }
+        let same = |g: &Vec<usize>| match &raws[g[0]].piece {
+            Piece::Arc(b) => b.center == a.center && b.radius == a.radius,
+            Piece::Bezier(_) => false,
+        };
+        match groups.iter_mut().find(|g| same(g)) {
+            Some(g) => g.push(i),
+            None => groups.push(vec![i]),
+        }
+    }
+    groups.retain(|g| g.len() > 1);
+    for g in &groups {
+        let mut points: Vec<V2<Rational>> = Vec::new();
+        for &i in g {
+            let Piece::Arc(a) = &raws[i].piece else {
+                continue;
+            };
+            let own = found.splits[i].iter().map(|s| &s.point);
+            for p in [&a.from, &a.to].into_iter().chain(own) {
+                if !points.contains(p) {
+                    points.push(p.clone());
+                }
+            }
+        }
+        for &i in g {
+            let Piece::Arc(a) = &raws[i].piece else {
+                continue;
+            };
+            for p in &points {
+                let inside =
+                    *p != a.from && *p != a.to && a.contains_dir(&p.sub(&a.center)) == Some(true);
+                if inside && !found.splits[i].iter().any(|s| s.point == *p) {
+                    found.splits[i].push(Split {
+                        param: <Rational as Zero>::zero(),
+                        point: p.clone(),
+                    });
+                }
+            }
+        }
+    }
+    groups
+}
+
+/// Keeps one copy of each point set among the sub-arcs of a group of
+/// [`share_circle_splits`] (an arc and its reverse are one point set): the
+/// copy of the raw piece with the largest error bound `e`, so that its
+/// classification covers the exact counterparts of every copy (a kept copy
+/// adds its `e` to claim (b); a removed one has the `e`-disk of each of its
+/// points inside `S`). Returns the sub-pieces left and how many were dropped.
+pub(super) fn drop_coincident(
+    raws: &[Raw],
+    subs: Vec<Sub>,
+    groups: &[Vec<usize>],
+) -> (Vec<Sub>, usize) {
+    let group_of = |raw: usize| groups.iter().position(|g| g.contains(&raw));
+    let same = |x: &Arc, y: &Arc| {
+        (x.from == y.from && x.to == y.to && x.clockwise == y.clockwise)
+            || (x.from == y.to && x.to == y.from && x.clockwise != y.clockwise)
+    };
+    let mut drop = vec![false; subs.len()];
+    for k in 0..subs.len() {
+        let (Some(gk), Piece::Arc(ak)) = (group_of(subs[k].raw), &subs[k].pre) else {
+            continue;
+        };
+        for j in 0..subs.len() {
+            if j == k || drop[j] || subs[j].raw == subs[k].raw || group_of(subs[j].raw) != Some(gk)
+            {
+                continue;
+            }
+            let Piece::Arc(aj) = &subs[j].pre else {
+                continue;
+            };
+            if !same(ak, aj) {
+                continue;
+            }
+            // the copy kept: the larger e, then the lower raw index
+            let (ek, ej) = (raws[subs[k].raw].e, raws[subs[j].raw].e);
+            if ej > ek || (ej == ek && subs[j].raw < subs[k].raw) {
+                drop[k] = true;
+                break;
+            }
+        }
+    }
+    let dropped = drop.iter().filter(|d| **d).count();
+    let kept = subs
+        .into_iter()
+        .zip(drop)
+        .filter(|(_, d)| !d)
+        .map(|(s, _)| s)
+        .collect();
+    (kept, dropped)
 }
 
 fn disjoint(p: &V2<Interval>, q: &V2<Interval>) -> bool {

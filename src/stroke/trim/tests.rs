@@ -467,3 +467,45 @@ fn float_boxes_exclude_only_what_is_far() {
     }
     assert!(far > 0 && near > 0, "far {far}, near {near}");
 }
+
+/// The stroke of an SVG path of Bézier pieces at `r = 1`, TOL 1e-2: proven,
+/// and its outline looked at from outside (dense samples of the input, not
+/// the engine's predicates).
+fn proven_bezier_stroke(d: &str) -> super::types::Stroke {
+    let curve = crate::shape::parse_curve(d).unwrap();
+    let opts = super::types::StrokeOptions::new(
+        <Rational as num_traits::One>::one(),
+        crate::test_util::tol(1e-2),
+    );
+    let s = super::stroke(&curve, &opts).unwrap();
+    assert!(
+        s.proven(),
+        "{d}: {:?} {:?} {:?} {:?}",
+        s.a,
+        s.b,
+        s.c,
+        s.notes
+    );
+    let input: Vec<(f64, f64)> = curve
+        .iter()
+        .flat_map(|b| Piece::Bezier(b.clone()).sample(2000))
+        .collect();
+    crate::test_util::outline_near_boundary(&s, &input, 1.0, 1e-2, d);
+    s
+}
+
+fn coincident_note(s: &super::types::Stroke) -> bool {
+    s.notes.iter().any(|n| n.contains("coincide exactly"))
+}
+
+#[test]
+fn caps_and_joins_on_one_circle_are_split_at_each_others_points() {
+    // class 1 with Bézier pieces: a leaf of quadratics that passes through
+    // its start point three times (joins and the closing join on one circle)
+    let s = proven_bezier_stroke("M15 9q4 4 7 0-3-4-7 0 4-4 0-7-4 3 0 7");
+    assert!(coincident_note(&s), "{:?}", s.notes);
+    // an arrowhead of three subpaths from one point, two of them curved:
+    // three round caps on one circle
+    let s = proven_bezier_stroke("M7.5 12q-2 1-3.75 3.75m0 0q2 1 3.75 3.75m-3.75-3.75h16.5");
+    assert!(coincident_note(&s), "{:?}", s.notes);
+}
